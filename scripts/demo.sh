@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The demo of ./run.sh (after scripts/setup.sh built everything): render every demo scene in
+# scenes/ through every path and variant, and write images plus the speed-against-error report
+# under out/ (out/report.md is the table; out/index.html shows renders and heatmaps).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=build/ltrender
+mkdir -p out
+"$bin" bench scenes/*.json -o out "$@"
+echo
+cat out/report.md
+echo
+echo "demo: images and heatmaps in out/images/, chart in out/chart.svg, contact sheet out/contact.png"

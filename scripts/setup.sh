@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Shared set-up for ./run.sh and ./test.sh: install the Debian packages that are missing, then
+# configure and build (Release) into build/. Idempotent and quiet when there is nothing to do.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake pkg-config
+  libosmesa6-dev mesa-common-dev libgl-dev   # OSMesa offscreen context + legacy GL headers
+  libglm-dev                                 # vector maths
+  libopenmesh-dev                            # mesh I/O and processing
+  libopenimageio-dev                         # image I/O
+  libembree-dev                              # ray casting for the thickness baker
+  nlohmann-json3-dev libcli11-dev            # scene files, command line
+  libgtest-dev libbenchmark-dev              # tests, micro-benchmarks
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+fi
+
+jobs=$(nproc)
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build build -j "$jobs" 2>&1 | grep -v -E '^\[ *[0-9]+%\]|^-- ' || true
+# The grep above hides progress lines only; a failed build must still stop us.
+cmake --build build -j "$jobs" >/dev/null

@@ -1,0 +1,157 @@
+// Thickness baker: the GDC 2011 talk's "local thickness", i.e. ambient occlusion computed with
+// the normals flipped, stored per vertex (the talk's Wii variant, "Computing Local Thickness").
+//
+// From every vertex, rays go into the interior, over the hemisphere around the flipped normal,
+// up to a max distance D. A ray that hits the surface within D means a wall of the object is
+// close behind this point: the object is thin there. So:
+//
+//   occlusion     = fraction of the rays that hit within D            (1 = thin, 0 = thick)
+//   translucency  = lerp(min, max, occlusion) * tint                  (thin parts are bright)
+//
+// This is the addendum's 3ds Max recipe with Dark and Bright swapped: an occluded ray
+// (Max's "Dark") gets the maximum translucency (`max`, white by default) and an unoccluded one
+// (Max's "Bright") the minimum (`min`; the addendum used 50% grey, i.e. `min = 0.5`).
+//
+// The core works on plain arrays (bake_occlusion) so that it can be tested without files; the
+// mesh-level functions below add OpenMesh smoothing and the colour attribute.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/mesh.h"
+
+namespace lt::bake {
+
+// How ray directions are spread over the hemisphere around the flipped normal.
+enum class Distribution {
+  Cosine,   // pdf cos(theta)/pi: what AO bakers use; the chord test gives occlusion (D/2R)^2
+  Uniform,  // pdf 1/(2 pi): every direction counts the same; occlusion D/2R on a sphere
+};
+
+// What a vertex's rays are turned into.
+enum class Estimator {
+  Occlusion,  // fraction of rays hitting within D (classic AO, the addendum's recipe)
+  Distance,   // 1 - mean(min(hit distance, D)) / D, escaped rays counting as D (Meshmixer, Maya)
+};
+
+// How the N (u1, u2) points of one vertex are chosen. Both give every ray a uniformly
+// distributed direction (so both are unbiased); they differ in how evenly the N rays of one
+// vertex cover the hemisphere.
+enum class Sampler {
+  // Hammersley points ((i + 0.5) / N, radical inverse of i) shifted by a per-vertex random
+  // offset modulo 1 (Cranley-Patterson rotation): noise falls faster than 1/sqrt(N).
+  Stratified,
+  // Independent uniform points: plain Monte Carlo, binomial noise sqrt(p(1-p)/N).
+  Random,
+};
+
+// The default max distance, as a fraction of the bounding-box diagonal. A quarter of the
+// diagonal is about half the diameter of a sphere (diagonal = 2 sqrt(3) R, so D = 0.87 R and a
+// sphere bakes to occlusion (D/2R)^2 = 0.19 with cosine rays): walls closer than that read as
+// thin, the bulk of a roughly convex object reads as thick. The addendum's advice applies:
+// "If you have a big object, make it bigger. The opposite for a small object."
+inline constexpr double kDefaultMaxDistanceRelative = 0.25;
+
+// Ray origins are offset along the flipped normal by this fraction of the bounding-box diagonal,
+// and hits closer than the same distance are ignored (Embree's tnear). Positions are converted
+// to float relative to the box centre, so a vertex is off by at most about
+// 0.5 * diagonal * 2^-24 = 3e-8 diagonal: 1e-5 leaves a margin of ~300 over that rounding, yet
+// stays far below any wall thickness worth baking (1e-5 of the object's size).
+inline constexpr double kRayEpsilonRelative = 1e-5;
+
+// Upper bound on --rays: far past where 8-bit (or float) colours stop changing.
+inline constexpr int kMaxRays = 1 << 20;
+
+struct BakeSettings {
+  int rays = 256;  // rays per vertex, >= 1
+  // Max ray distance in scene units; when unset, max_distance_relative * bbox diagonal.
+  std::optional<double> max_distance;
+  double max_distance_relative = kDefaultMaxDistanceRelative;
+  Distribution distribution = Distribution::Cosine;
+  Estimator estimator = Estimator::Occlusion;
+  Sampler sampler = Sampler::Stratified;
+  // Every ray's random numbers are a hash of (seed, vertex index, ray index): the result does
+  // not depend on the thread count or the order in which vertices are processed.
+  std::uint64_t seed = 0;
+  int threads = 0;  // 0: std::thread::hardware_concurrency()
+};
+
+// translucency = lerp(min, max, occlusion) * tint, per channel, in [0, 1].
+struct ColorMap {
+  double min = 0.0;  // translucency of a vertex whose rays all escape (thick)
+  double max = 1.0;  // translucency of a vertex whose rays all hit at once (thin)
+  glm::dvec3 tint{1.0, 1.0, 1.0};
+};
+
+// Throws InputError naming the option (e.g. "--rays: must be in [1, 1048576], got 0").
+void validate(const BakeSettings& settings);
+void validate(const ColorMap& map);
+
+// Called from the calling thread only, after each batch of vertices.
+using Progress = std::function<void(std::size_t done, std::size_t total)>;
+
+struct BakeResult {
+  std::vector<double> occlusion;  // per vertex, in [0, 1], 1 = thin (see Estimator)
+  double max_distance = 0.0;      // D actually used, scene units
+  double epsilon = 0.0;           // origin offset and tnear, scene units
+  std::uint64_t rays_traced = 0;
+  std::size_t vertices_without_normal = 0;  // baked as occlusion 0, no rays
+  int threads = 1;
+  double build_seconds = 0.0;  // Embree BVH
+  double trace_seconds = 0.0;
+};
+
+// The core. `normals` need not be unit length; a zero or non-finite normal is replaced by the
+// area-weighted normal of the vertex's triangles (orientation from the winding), and a vertex
+// with neither gets occlusion 0 and casts no rays (counted in vertices_without_normal).
+// Degenerate triangles are fine (Embree skips them). Rays that leave through a hole in an open
+// mesh find nothing and count as unoccluded (at distance D for the distance estimator).
+BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
+                          const std::vector<glm::dvec3>& normals,
+                          const std::vector<glm::uvec3>& triangles, const BakeSettings& settings,
+                          const Progress& progress = {});
+
+// Open and non-manifold edges, counted after welding vertices with identical positions (so a
+// mesh with split normals at its creases, or the duplicated vertices OpenMesh's importer makes
+// for non-manifold faces, is not reported as open). Internal fan diagonals are shared by two
+// triangles and so never counted.
+struct EdgeReport {
+  std::size_t boundary_edges = 0;      // used by one triangle: a hole or an open border
+  std::size_t non_manifold_edges = 0;  // used by three or more triangles
+};
+EdgeReport count_problem_edges(const std::vector<glm::dvec3>& positions,
+                               const std::vector<glm::uvec3>& triangles);
+
+// The mesh's vertices, normals and faces (fan-triangulated) as arrays, vertex i = handle i.
+struct Surface {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;  // zero where the mesh has none
+  std::vector<glm::uvec3> triangles;
+};
+Surface surface_of(const PolyMesh& mesh);
+
+// `iterations` Jacobi steps of value <- (value + sum of neighbours) / (1 + valence), neighbours
+// from OpenMesh's vertex-vertex circulator. Isolated vertices keep their value.
+void smooth(const PolyMesh& mesh, std::vector<double>& values, int iterations);
+
+// lerp(min, max, occlusion) * tint, clamped to [0, 1].
+glm::dvec3 translucency(double occlusion, const ColorMap& map);
+
+// What bake_mesh did, for the command's report and warnings.
+struct MeshBakeReport {
+  BakeResult result;
+  EdgeReport edges;
+};
+
+// Bakes, smooths `smooth_iterations` times, and writes the translucency into the mesh's vertex
+// colours. Nothing else in the mesh changes.
+MeshBakeReport bake_mesh(PolyMesh& mesh, const BakeSettings& settings, const ColorMap& map,
+                         int smooth_iterations, const Progress& progress = {});
+
+}  // namespace lt::bake

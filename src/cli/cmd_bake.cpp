@@ -1,0 +1,240 @@
+// `ltrender bake MESH -o OUT.ply`: local thickness (inverted-normal AO) into vertex colours.
+// The baking itself is lt::bake (src/bake/thickness_baker.h); this file maps options, prints
+// warnings, the progress bar and the rate, and writes the result.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "bake/thickness_baker.h"
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "scene/mesh.h"
+
+namespace lt::cli {
+
+namespace {
+
+struct BakeOptions {
+  std::string mesh;
+  std::string out;
+  int rays = 256;
+  std::optional<double> max_distance;
+  std::optional<double> max_distance_relative;
+  double min = 0.0;
+  double max = 1.0;
+  std::string tint = "1,1,1";
+  std::uint64_t seed = 0;
+  std::string distribution = "cosine";
+  std::string estimator = "occlusion";
+  std::string sampler = "stratified";
+  int smooth = 0;
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  bool float_colors = false;
+};
+
+// "R,G,B" with three numbers (validated against [0, 1] by bake::validate).
+glm::dvec3 parse_tint(const std::string& text) {
+  glm::dvec3 rgb(0.0);
+  std::istringstream in(text);
+  std::string part;
+  int n = 0;
+  while (std::getline(in, part, ',')) {
+    if (n == 3)
+      throw InputError("--tint", "", "expected R,G,B (three numbers), got '" + text + "'");
+    try {
+      std::size_t used = 0;
+      rgb[n] = std::stod(part, &used);
+      while (used < part.size() && std::isspace(static_cast<unsigned char>(part[used]))) ++used;
+      if (used != part.size()) throw std::invalid_argument(part);
+    } catch (const std::exception&) {
+      throw InputError("--tint", "", "'" + part + "' is not a number (expected R,G,B)");
+    }
+    ++n;
+  }
+  if (n != 3) throw InputError("--tint", "", "expected R,G,B (three numbers), got '" + text + "'");
+  return rgb;
+}
+
+bake::BakeSettings settings_from(const BakeOptions& o) {
+  bake::BakeSettings s;
+  s.rays = o.rays;
+  if (o.max_distance && o.max_distance_relative) {
+    throw InputError("--max-distance", "", "give either --max-distance or --max-distance-relative");
+  }
+  s.max_distance = o.max_distance;
+  if (o.max_distance_relative) s.max_distance_relative = *o.max_distance_relative;
+  if (o.distribution == "cosine") {
+    s.distribution = bake::Distribution::Cosine;
+  } else if (o.distribution == "uniform") {
+    s.distribution = bake::Distribution::Uniform;
+  } else {
+    throw InputError("--distribution", "",
+                     "must be cosine or uniform, got '" + o.distribution + "'");
+  }
+  if (o.estimator == "occlusion") {
+    s.estimator = bake::Estimator::Occlusion;
+  } else if (o.estimator == "distance") {
+    s.estimator = bake::Estimator::Distance;
+  } else {
+    throw InputError("--estimator", "", "must be occlusion or distance, got '" + o.estimator + "'");
+  }
+  if (o.sampler == "stratified") {
+    s.sampler = bake::Sampler::Stratified;
+  } else if (o.sampler == "random") {
+    s.sampler = bake::Sampler::Random;
+  } else {
+    throw InputError("--sampler", "", "must be stratified or random, got '" + o.sampler + "'");
+  }
+  s.seed = o.seed;
+  s.threads = o.threads;
+  bake::validate(s);
+  return s;
+}
+
+// A one-line bar redrawn in place; only when stderr is a terminal, so logs and pipes stay clean.
+class ProgressBar {
+ public:
+  ProgressBar() : enabled_(::isatty(STDERR_FILENO) == 1) {}
+
+  void update(std::size_t done, std::size_t total) {
+    if (!enabled_ || total == 0) return;
+    const int percent = static_cast<int>(100 * done / total);
+    if (percent == last_percent_) return;  // redraw at most 101 times
+    last_percent_ = percent;
+    constexpr int kWidth = 40;
+    const int filled = percent * kWidth / 100;
+    std::fprintf(stderr, "\rbake [%s%s] %3d%%",
+                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                 std::string(static_cast<std::size_t>(kWidth - filled), ' ').c_str(), percent);
+    std::fflush(stderr);
+  }
+
+  void finish() {
+    if (enabled_ && last_percent_ >= 0) std::fprintf(stderr, "\r\033[K");  // erase the bar
+  }
+
+ private:
+  bool enabled_;
+  int last_percent_ = -1;
+};
+
+void warn(const std::string& file, const std::string& what) {
+  std::fprintf(stderr, "ltrender: warning: %s: %s\n", file.c_str(), what.c_str());
+}
+
+bool has_ply_extension(const fs::path& p) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".ply";
+}
+
+int run_bake(const BakeOptions& o) {
+  // Every option first, so a typo fails before a long bake.
+  const bake::BakeSettings settings = settings_from(o);
+  bake::ColorMap map;
+  map.min = o.min;
+  map.max = o.max;
+  map.tint = parse_tint(o.tint);
+  bake::validate(map);
+  if (o.smooth < 0 || o.smooth > 100000) throw InputError("--smooth", "", "must be in [0, 100000]");
+  if (!has_ply_extension(o.out)) {
+    throw InputError(o.out, "", "bake writes PLY (vertex colours): the output must end in .ply");
+  }
+  ensure_not_an_input(o.out, {o.mesh});
+
+  LoadedMesh loaded = read_mesh(o.mesh);
+  for (const auto& w : loaded.warnings) warn(o.mesh, w);
+
+  ProgressBar bar;
+  const auto start = std::chrono::steady_clock::now();
+  const bake::MeshBakeReport report =
+      bake::bake_mesh(loaded.mesh, settings, map, o.smooth,
+                      [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  bar.finish();
+
+  if (report.edges.boundary_edges > 0 || report.edges.non_manifold_edges > 0) {
+    warn(o.mesh, "not closed: " + std::to_string(report.edges.boundary_edges) +
+                     " boundary edges, " + std::to_string(report.edges.non_manifold_edges) +
+                     " non-manifold edges; rays leaving through an opening count as unoccluded "
+                     "(thick)");
+  }
+  if (report.result.vertices_without_normal > 0) {
+    warn(o.mesh, std::to_string(report.result.vertices_without_normal) +
+                     " vertices have no normal and no non-degenerate face: baked as unoccluded "
+                     "(translucency = --min)");
+  }
+
+  // Keep what the file had (binary or ASCII, normals, ...) and add the colours. Alpha is dropped:
+  // the thickness is rgb. 8-bit colours unless --float-colors (OpenMesh rounds to nearest).
+  OpenMesh::IO::Options options = loaded.read_options;
+  options += OpenMesh::IO::Options::VertexColor;
+  options -= OpenMesh::IO::Options::ColorAlpha;
+  if (o.float_colors) {
+    options += OpenMesh::IO::Options::ColorFloat;
+  } else {
+    options -= OpenMesh::IO::Options::ColorFloat;
+  }
+  write_mesh(o.out, loaded.mesh, options);
+
+  const auto& r = report.result;
+  const double mrays =
+      r.trace_seconds > 0.0 ? static_cast<double>(r.rays_traced) / r.trace_seconds / 1e6 : 0.0;
+  std::printf(
+      "ltrender: bake: %zu vertices, %llu rays (%d per vertex, D = %g), %.3f s (rays %.3f s), "
+      "%.2f Mrays/s, %d threads -> %s\n",
+      r.occlusion.size(), static_cast<unsigned long long>(r.rays_traced), settings.rays,
+      r.max_distance, seconds, r.trace_seconds, mrays, r.threads, o.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Action add_bake(CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "bake",
+      "Bake local thickness (ambient occlusion with flipped normals) into per-vertex colours: "
+      "translucency = lerp(--min, --max, occlusion) * --tint, thin parts bright");
+  auto o = std::make_shared<BakeOptions>();
+  sub->add_option("MESH", o->mesh, "Input mesh (PLY, OFF, OBJ, STL, OM)")->required();
+  sub->add_option("-o,--output", o->out, "Output PLY with vertex colours")->required();
+  sub->add_option("--rays", o->rays, "Rays per vertex")->capture_default_str();
+  sub->add_option("--max-distance", o->max_distance, "Max ray distance in scene units");
+  sub->add_option("--max-distance-relative", o->max_distance_relative,
+                  "Max ray distance as a fraction of the bounding-box diagonal (default 0.25)");
+  sub->add_option("--min", o->min, "Translucency where no ray hits (thick; addendum: 0.5)")
+      ->capture_default_str();
+  sub->add_option("--max", o->max, "Translucency where every ray hits (thin)")
+      ->capture_default_str();
+  sub->add_option("--tint", o->tint, "Colour multiplied in, R,G,B in [0,1] (e.g. 1,0.2,0.1)")
+      ->capture_default_str();
+  sub->add_option("--seed", o->seed, "Random seed; same seed, same output on any thread count")
+      ->capture_default_str();
+  sub->add_option("--distribution", o->distribution, "cosine or uniform")->capture_default_str();
+  sub->add_option("--estimator", o->estimator,
+                  "occlusion (fraction of rays hitting) or distance (1 - mean hit distance / D)")
+      ->capture_default_str();
+  sub->add_option("--sampler", o->sampler,
+                  "stratified (rotated Hammersley per vertex) or random (independent rays)")
+      ->capture_default_str();
+  sub->add_option("--smooth", o->smooth, "Neighbour-averaging iterations after baking")
+      ->capture_default_str();
+  sub->add_option("--threads", o->threads, "Worker threads (0: all cores)")->capture_default_str();
+  sub->add_flag("--float-colors", o->float_colors, "Write float colours instead of 8-bit");
+  return [o]() -> int { return run_bake(*o); };
+}
+
+}  // namespace lt::cli

@@ -1,0 +1,51 @@
+#include <algorithm>
+#include <iostream>
+#include <sstream>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "report/bench.h"
+
+namespace lt::cli {
+
+Action add_bench(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  auto scenes = std::make_shared<std::vector<std::string>>();
+  auto paths = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  auto* sub = app.add_subcommand("bench", "Speed against error: scenes x paths x variants");
+  sub->add_option("SCENE", *scenes, "Scene files (default: scenes/*.json of the source tree)");
+  sub->add_option("--paths", *paths, "Comma-separated paths (default: all; flat always runs)");
+  sub->add_option("--frames", o->frames, "Timed frames per measurement (>= 10)")
+      ->check(CLI::Range(10, 100000));
+  sub->add_option("--warmup", o->warmup, "Warm-up frames")->check(CLI::Range(0, 1000));
+  sub->add_option("-o,--output", *out, "Output directory")->required();
+  sub->add_flag("--quiet", o->quiet, "No progress lines");
+  return [o, scenes, paths, out]() -> int {
+    o->out_dir = *out;
+    o->paths.clear();
+    std::stringstream ss(*paths);
+    for (std::string p; std::getline(ss, p, ',');) {
+      if (!p.empty()) o->paths.push_back(p);
+    }
+    o->scenes.clear();
+    for (const auto& s : *scenes) o->scenes.push_back(s);
+    if (o->scenes.empty()) {
+      for (const auto& e : fs::directory_iterator(fs::path(LT_SOURCE_DIR) / "scenes")) {
+        if (e.path().extension() == ".json") o->scenes.push_back(e.path());
+      }
+      std::sort(o->scenes.begin(), o->scenes.end());
+    }
+    std::error_code ec;
+    fs::create_directories(o->out_dir, ec);
+    if (ec) throw InputError(o->out_dir.string(), "", "cannot create output directory");
+    const auto rows = run_bench(*o);
+    write_bench_reports(*o, rows);
+    std::cout << "bench: " << rows.size() << " rows -> " << (o->out_dir / "report.md").string()
+              << "\n";
+    return 0;
+  };
+}
+
+}  // namespace lt::cli

@@ -1,0 +1,63 @@
+#include <iostream>
+
+#include "cli/commands.h"
+#include "render/session.h"
+
+namespace lt::cli {
+
+namespace {
+const char* yes_no(bool b) { return b ? "yes" : "no"; }
+}  // namespace
+
+Action add_info(CLI::App& app) {
+  auto scene_path = std::make_shared<std::string>();
+  auto show_source = std::make_shared<bool>(false);
+  auto* sub = app.add_subcommand("info", "What a scene needs and what each path builds for it");
+  sub->add_option("SCENE", *scene_path, "Scene file (JSON)")->required();
+  sub->add_flag("--source", *show_source, "Also print every generated program");
+  return [scene_path, show_source]() -> int {
+    const Scene scene = load_scene(*scene_path);
+    const SceneNeeds n = scene_needs(scene);
+    std::ostream& o = std::cout;
+    size_t tris = 0, verts = 0;
+    for (const SceneObject& obj : scene.objects) {
+      tris += obj.mesh.triangles.size();
+      verts += obj.mesh.positions.size();
+    }
+    o << "scene " << *scene_path << ": " << scene.width << "x" << scene.height << ", "
+      << (scene.camera.projection == Camera::Projection::Perspective ? "perspective" : "orthographic")
+      << " camera, " << scene.objects.size() << " objects (" << verts << " vertices, " << tris
+      << " triangles)\n";
+    o << "needs: " << n.directional_lights << " directional + " << n.point_lights
+      << " point lights (attenuation " << yes_no(n.point_lights > 0) << "), translucency "
+      << yes_no(n.any_translucency) << ", vertex thickness " << yes_no(n.any_vertex_thickness)
+      << ", normalised H " << yes_no(n.any_normalized_h) << ", ambient light "
+      << yes_no(n.ambient_light) << "\n";
+    for (const Material& m : scene.materials) {
+      o << "  material " << m.name << ": ";
+      if (!m.translucency) {
+        o << "diffuse only (no translucency stage)\n";
+        continue;
+      }
+      const Translucency& t = *m.translucency;
+      o << "power " << t.power << ", distortion " << t.distortion << ", ambient " << t.ambient
+        << ", thickness "
+        << (t.thickness_source == ThicknessSource::Vertex ? "vertex" : "constant")
+        << (t.normalize_distorted_light ? ", normalised H" : "") << "\n";
+    }
+    // Build every path once (1x1 is enough to build programs) and list what it made.
+    RenderSession session(scene, 1, 1);
+    for (const PathInfo& p : all_paths()) {
+      const std::string v = resolve_variant(p, "");
+      auto path = session.build(p, v);
+      o << "path " << p.name << " (" << v << "):\n";
+      for (const BuiltStage& s : path->stages()) {
+        o << "  [" << s.kind << "] " << s.name << "\n";
+        if (*show_source && !s.source.empty()) o << s.source << "\n";
+      }
+    }
+    return 0;
+  };
+}
+
+}  // namespace lt::cli

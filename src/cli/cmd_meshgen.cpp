@@ -1,0 +1,65 @@
+// `ltrender meshgen OUTDIR`: writes the procedural meshes of scene/meshgen.h (the committed
+// meshes/ directory is this command's output).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "scene/meshgen.h"
+
+namespace lt::cli {
+
+namespace {
+
+std::string human_size(std::uintmax_t bytes) {
+  char buf[32];
+  if (bytes < 1024) {
+    std::snprintf(buf, sizeof buf, "%ju B", bytes);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.1f KiB", static_cast<double>(bytes) / 1024.0);
+  }
+  return buf;
+}
+
+// Creates `dir` if needed; an existing non-directory is an error rather than something to
+// replace.
+void ensure_directory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw InputError(dir.string(), "", "exists and is not a directory");
+  }
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string(), "", "cannot create directory: " + ec.message());
+}
+
+}  // namespace
+
+Action add_meshgen(CLI::App& app) {
+  auto out_dir = std::make_shared<std::string>();
+  auto* sub = app.add_subcommand(
+      "meshgen", "Write the procedural test meshes (binary PLY with normals) into OUTDIR");
+  sub->add_option("OUTDIR", *out_dir, "Output directory (created if missing)")->required();
+  return [out_dir]() -> int {
+    const std::filesystem::path root(*out_dir);
+    ensure_directory(root);
+    const auto options = OpenMesh::IO::Options(OpenMesh::IO::Options::Binary |
+                                               OpenMesh::IO::Options::VertexNormal);
+    std::uintmax_t total = 0;
+    for (const auto& named : meshgen::standard_set()) {
+      const std::filesystem::path path = root / named.path;
+      ensure_directory(path.parent_path());
+      write_mesh(path, named.mesh, options);
+      std::error_code ec;
+      const auto size = std::filesystem::file_size(path, ec);
+      total += ec ? 0 : size;
+      std::printf("wrote %s: %zu vertices, %zu faces, %s\n", path.string().c_str(),
+                  named.mesh.n_vertices(), named.mesh.n_faces(), human_size(size).c_str());
+    }
+    std::printf("meshgen: %s in total\n", human_size(total).c_str());
+    return 0;
+  };
+}
+
+}  // namespace lt::cli

@@ -1,0 +1,53 @@
+#include <memory>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "image/image.h"
+#include "render/session.h"
+
+namespace lt::cli {
+
+namespace {
+struct RenderArgs {
+  std::string scene, path, variant, output;
+  int width = 0, height = 0;
+};
+
+std::string path_help() {
+  std::string s = "Paths and their variants (the first is the default):\n";
+  for (const PathInfo& p : all_paths()) {
+    s += "  " + p.name + ": " + p.summary + "\n";
+    for (const VariantInfo& v : p.variants) s += "      --variant " + v.name + "  " + v.summary + "\n";
+  }
+  return s;
+}
+}  // namespace
+
+Action add_render(CLI::App& app) {
+  auto a = std::make_shared<RenderArgs>();
+  auto* sub = app.add_subcommand("render", "Render a scene through one path");
+  sub->add_option("SCENE", a->scene, "Scene file (JSON)")->required();
+  sub->add_option("--path", a->path, "reference | glsl | flat | ...")->required();
+  sub->add_option("--variant", a->variant, "The path's approximation (see below)");
+  sub->add_option("--width", a->width, "Override the scene's width")->check(CLI::Range(1, 16384));
+  sub->add_option("--height", a->height, "Override the scene's height")->check(CLI::Range(1, 16384));
+  sub->add_option("-o,--output", a->output, "OUT.png (8-bit) or OUT.exr (float, A = coverage)")
+      ->required();
+  sub->footer(path_help());
+  return [a]() -> int {
+    // Validate everything cheap before the scene's meshes are read.
+    const PathInfo& info = find_path(a->path);
+    const std::string variant = resolve_variant(info, a->variant);
+    check_output_extension(a->output);
+    const Scene scene = load_scene(a->scene);
+    std::vector<fs::path> inputs = {a->scene};
+    for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);
+    ensure_not_an_input(a->output, inputs);
+    const Image img = render_scene(scene, info.name, variant, a->width, a->height);
+    write_image(a->output, img);
+    return 0;
+  };
+}
+
+}  // namespace lt::cli

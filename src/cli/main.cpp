@@ -1,0 +1,71 @@
+// ltrender: thin main. Parses the command line, dispatches to a subcommand, and maps failures
+// to the exit codes of cli.md: 0 success, 1 a check failed, 2 bad input or usage (one line).
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/commands.h"
+#include "core/error.h"
+
+namespace {
+
+// cli.md promises one line: library messages (OpenImageIO, OpenMesh) may hold newlines.
+std::string one_line(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return s;
+}
+
+int usage_error(const std::string& what) {
+  std::fprintf(stderr, "ltrender: error: %s\n", one_line(what).c_str());
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ltrender: translucency (Barre-Brisebois & Bouchard, GDC 2011) on low-end pipelines"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Help for every subcommand");
+
+  using Registration = lt::cli::Action (*)(CLI::App&);
+  const std::vector<Registration> registrations = {
+      lt::cli::add_render, lt::cli::add_compare, lt::cli::add_info, lt::cli::add_bench,
+      lt::cli::add_bake,   lt::cli::add_budget,  lt::cli::add_meshgen,
+  };
+  std::vector<lt::cli::Action> actions;
+  for (auto reg : registrations) actions.push_back(reg(app));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // CLI11's own exit codes differ; cli.md says usage errors are exit 2 with one line.
+    return usage_error(std::string("usage: ") + e.what());
+  }
+
+  const auto subs = app.get_subcommands();
+  const std::vector<CLI::App*> all = app.get_subcommands({});
+  for (size_t i = 0; i < all.size() && i < actions.size(); ++i) {
+    if (all[i] != subs.front()) continue;
+    try {
+      return actions[i]();
+    } catch (const lt::InputError& e) {
+      return usage_error(e.what());
+    } catch (const lt::CheckFailed& e) {
+      std::fprintf(stderr, "ltrender: check failed: %s\n", one_line(e.what()).c_str());
+      return 1;
+    } catch (const std::exception& e) {
+      // Anything else is still reported as one line with a non-zero code, never a crash.
+      return usage_error(e.what());
+    }
+  }
+  return usage_error("usage: no subcommand");
+}

@@ -1,0 +1,40 @@
+// Two kinds of failure, never mixed (pbrt's rule):
+//  - InputError: the user's input is bad (file, key or line named). The CLI prints one line
+//    `ltrender: error: <file>[:<where>]: <what>` and exits 2.
+//  - LT_CHECK: our own bug. It prints both the condition and a message and aborts.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace lt {
+
+class InputError : public std::runtime_error {
+ public:
+  // `where` is a key path ("materials.marble.translucency.power"), a line ("12") or empty.
+  InputError(std::string file, std::string where, std::string what);
+
+  const std::string& file() const { return file_; }
+  const std::string& where() const { return where_; }
+  const std::string& what_only() const { return what_; }
+
+ private:
+  std::string file_, where_, what_;
+};
+
+// A check the user asked for failed (compare over threshold, budget exceeded): exit code 1.
+class CheckFailed : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void check_failed(const char* expr, const char* file, int line, const std::string& msg);
+
+}  // namespace lt
+
+#define LT_CHECK(cond, msg)                                        \
+  do {                                                             \
+    if (!(cond)) ::lt::check_failed(#cond, __FILE__, __LINE__, (msg)); \
+  } while (0)

@@ -1,0 +1,118 @@
+#include "gl/scene_geometry.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/context.h"
+
+namespace lt::gl {
+
+namespace {
+GLuint upload(GLenum target, const void* data, size_t bytes) {
+  GLuint b = 0;
+  glGenBuffers(1, &b);
+  glBindBuffer(target, b);
+  glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
+  glBindBuffer(target, 0);
+  return b;
+}
+
+std::vector<float> to_float(const std::vector<glm::dvec3>& v, const glm::dvec3& offset) {
+  std::vector<float> out(v.size() * 3);
+  for (size_t i = 0; i < v.size(); ++i) {
+    for (int c = 0; c < 3; ++c) out[i * 3 + c] = static_cast<float>(v[i][c] - offset[c]);
+  }
+  return out;
+}
+}  // namespace
+
+SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
+    : origin_(scene.camera.eye) {
+  const Camera& cam = scene.camera;
+  const double aspect = static_cast<double>(width) / height;
+  // The view looks from the origin (camera-relative), so its translation is zero.
+  view_ = glm::lookAt(glm::dvec3(0), cam.forward(), cam.up);
+  if (cam.projection == Camera::Projection::Perspective) {
+    projection_ = glm::perspective(glm::radians(cam.fov_y_deg), aspect, cam.near, cam.far);
+  } else {
+    const double h = cam.height / 2, w = h * aspect;
+    projection_ = glm::ortho(-w, w, -h, h, cam.near, cam.far);
+  }
+  for (const SceneObject& obj : scene.objects) {
+    const TriangleMesh& m = obj.mesh;
+    GpuMesh g;
+    g.material = obj.material;
+    g.vertex_count = m.positions.size();
+    const auto pos = to_float(m.positions, origin_);
+    const auto nrm = to_float(m.normals, glm::dvec3(0));
+    g.positions = upload(GL_ARRAY_BUFFER, pos.data(), pos.size() * sizeof(float));
+    g.normals = upload(GL_ARRAY_BUFFER, nrm.data(), nrm.size() * sizeof(float));
+    if (m.has_colors()) {
+      const auto col = to_float(m.colors, glm::dvec3(0));
+      g.colors = upload(GL_ARRAY_BUFFER, col.data(), col.size() * sizeof(float));
+      g.has_colors = true;
+    }
+    g.indices = upload(GL_ELEMENT_ARRAY_BUFFER, m.triangles.data(),
+                       m.triangles.size() * sizeof(glm::uvec3));
+    g.index_count = static_cast<GLsizei>(m.triangles.size() * 3);
+    meshes_.push_back(g);
+  }
+  check_error("uploading scene geometry");
+}
+
+SceneGeometry::~SceneGeometry() {
+  for (const GpuMesh& g : meshes_) {
+    const GLuint b[] = {g.positions, g.normals, g.colors, g.indices};
+    for (GLuint id : b) {
+      if (id) glDeleteBuffers(1, &id);
+    }
+  }
+}
+
+void SceneGeometry::load_matrices() const {
+  const glm::mat4 p(projection_), v(view_);
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixf(glm::value_ptr(p));
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixf(glm::value_ptr(v));
+}
+
+void SceneGeometry::bind(const GpuMesh& g) const {
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glBindBuffer(GL_ARRAY_BUFFER, g.positions);
+  glVertexPointer(3, GL_FLOAT, 0, nullptr);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glBindBuffer(GL_ARRAY_BUFFER, g.normals);
+  glNormalPointer(GL_FLOAT, 0, nullptr);
+  if (g.has_colors) {
+    glEnableClientState(GL_COLOR_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, g.colors);
+    glColorPointer(3, GL_FLOAT, 0, nullptr);
+  } else {
+    glDisableClientState(GL_COLOR_ARRAY);
+    glColor4f(1, 1, 1, 1);
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices);
+}
+
+void SceneGeometry::draw(const GpuMesh& g) const {
+  bind(g);
+  glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
+  unbind();
+}
+
+void SceneGeometry::unbind() const {
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+}
+
+size_t SceneGeometry::total_triangles() const {
+  size_t n = 0;
+  for (const GpuMesh& g : meshes_) n += static_cast<size_t>(g.index_count) / 3;
+  return n;
+}
+
+}  // namespace lt::gl

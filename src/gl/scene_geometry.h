@@ -1,0 +1,55 @@
+// A scene's geometry on the GPU, shared by every GL path. Positions are uploaded relative to the
+// camera eye (camera-relative rendering): world coordinates near 1e6 would lose everything below
+// 0.06 in float, but their offsets from a nearby eye are small and keep full float precision.
+// Transforms are done in double on the CPU first.
+//
+// All paths read the same conventional arrays (gl_Vertex / vertex.position, gl_Normal, gl_Color)
+// and the same fixed-function MODELVIEW/PROJECTION matrices, so GLSL (ftransform), ARB programs
+// (position_invariant) and fixed-function all rasterise exactly the same pixels.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "gl/gl.h"
+#include "scene/scene.h"
+
+namespace lt::gl {
+
+struct GpuMesh {
+  GLuint positions = 0, normals = 0, colors = 0, indices = 0;
+  GLsizei index_count = 0;
+  int material = 0;
+  bool has_colors = false;
+  size_t vertex_count = 0;
+};
+
+class SceneGeometry {
+ public:
+  // Needs a current context. `width`/`height` give the aspect ratio of the projection.
+  SceneGeometry(const Scene& scene, int width, int height);
+  ~SceneGeometry();
+  SceneGeometry(const SceneGeometry&) = delete;
+  SceneGeometry& operator=(const SceneGeometry&) = delete;
+
+  const std::vector<GpuMesh>& meshes() const { return meshes_; }
+  // The eye, subtracted from every position: lights go through to_camera_relative too.
+  glm::dvec3 origin() const { return origin_; }
+  glm::dvec3 to_camera_relative(const glm::dvec3& world) const { return world - origin_; }
+
+  // Loads PROJECTION and MODELVIEW (camera-relative view) into fixed-function state.
+  void load_matrices() const;
+  // Binds the conventional vertex arrays of one mesh; colours only where the mesh has them.
+  void bind(const GpuMesh& mesh) const;
+  void draw(const GpuMesh& mesh) const;
+  void unbind() const;
+
+  size_t total_triangles() const;
+
+ private:
+  std::vector<GpuMesh> meshes_;
+  glm::dvec3 origin_;
+  glm::dmat4 projection_, view_;
+};
+
+}  // namespace lt::gl

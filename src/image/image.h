@@ -1,0 +1,49 @@
+// The image every path produces: linear float RGBA, top row first. Alpha is coverage (1 where
+// geometry was drawn, 0 on the background); it is what the metrics use as the coverage mask.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace lt {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;  // width * height * 4, row-major, top row first
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(static_cast<size_t>(w) * h * 4, 0.0f) {}
+
+  float* at(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  const float* at(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  size_t pixel_count() const { return static_cast<size_t>(width) * height; }
+};
+
+// 8-bit conversion of model.md: clamp to [0, 1], then round to nearest (0.5 LSB floor).
+// The product is taken in double: in float, 0.7f * 255 rounds up to 178.5 exactly and lands on
+// 179, 0.500003 LSB from the value, breaking the 0.5 LSB floor the metrics promise.
+inline uint8_t to_unorm8(float v) {
+  if (!(v > 0.0f)) return 0;  // also maps NaN to 0: a NaN never reaches an 8-bit image
+  if (v >= 1.0f) return 255;
+  return static_cast<uint8_t>(static_cast<double>(v) * 255.0 + 0.5);
+}
+
+// Writes by extension, atomically (core/fs.h):
+//  .exr  float RGBA, unclamped (A = coverage)
+//  .png  8-bit RGB of clamp(c, 0, 1) rounded to nearest
+// Throws InputError for an unknown extension or an unwritable target.
+void write_image(const std::filesystem::path& path, const Image& image);
+
+// Throws InputError unless `path` ends in .png or .exr (checked before any work is done).
+void check_output_extension(const std::filesystem::path& path);
+
+// Reads PNG/EXR/anything OpenImageIO reads into linear float RGBA (8-bit values become v/255;
+// no alpha channel means fully covered). Throws InputError naming the file.
+Image read_image(const std::filesystem::path& path);
+
+// Flip rows: GL reads bottom row first.
+void flip_vertically(Image& image);
+
+}  // namespace lt

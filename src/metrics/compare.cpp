@@ -1,0 +1,325 @@
+#include "metrics/compare.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace lt {
+
+namespace {
+
+constexpr const char* kChannelNames[3] = {"R", "G", "B"};
+
+double clamp01(double v) {
+  return std::clamp(v, 0.0, 1.0);
+}
+
+// Accumulates one region's figures in one pass over the pixels; the percentile needs every
+// per-pixel error, so those are kept.
+class RegionAccumulator {
+ public:
+  void add(int x, int y, const double e[3]) {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      sum_ += e[c];
+      sum_sq_ += e[c] * e[c];
+      // Strictly greater: the first pixel in reading order (top-left first, R first) wins ties.
+      if (e[c] > stats_.max_lsb || stats_.max_x < 0) {
+        stats_.max_lsb = e[c];
+        stats_.max_x = x, stats_.max_y = y, stats_.max_channel = c;
+      }
+      worst = std::max(worst, e[c]);
+    }
+    pixel_errors_.push_back(worst);
+    if (worst > 1.0) ++over_1_;
+    if (worst > 4.0) ++over_4_;
+  }
+
+  ErrorStats finish() {
+    const size_t n = pixel_errors_.size();
+    stats_.pixels = n;
+    if (n == 0) return stats_;  // empty region: zeros, PSNR inf, max at -1,-1
+    const double values = 3.0 * static_cast<double>(n);
+    stats_.mean_lsb = sum_ / values;
+    stats_.rmse_lsb = std::sqrt(sum_sq_ / values);
+    // Peak 1.0 = 255 LSB: PSNR = 10 log10(1 / MSE) with MSE in [0, 1] units.
+    stats_.psnr_db = stats_.rmse_lsb > 0.0 ? 20.0 * std::log10(255.0 / stats_.rmse_lsb)
+                                           : std::numeric_limits<double>::infinity();
+    // Nearest rank: the smallest error that at least 99% of pixels are at or under. Integer
+    // ceil(0.99 n) so that n = 100 gives rank 99, not 100 through 0.99's rounding.
+    const size_t rank = (99 * n + 99) / 100;
+    std::nth_element(pixel_errors_.begin(), pixel_errors_.begin() + (rank - 1),
+                     pixel_errors_.end());
+    stats_.p99_lsb = pixel_errors_[rank - 1];
+    stats_.percent_over_1_lsb = 100.0 * static_cast<double>(over_1_) / static_cast<double>(n);
+    stats_.percent_over_4_lsb = 100.0 * static_cast<double>(over_4_) / static_cast<double>(n);
+    return stats_;
+  }
+
+ private:
+  ErrorStats stats_;
+  double sum_ = 0.0, sum_sq_ = 0.0;
+  size_t over_1_ = 0, over_4_ = 0;
+  std::vector<double> pixel_errors_;
+};
+
+std::string size_string(const Image& image) {
+  return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+bool pixel_is_finite(const float* p) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(p[3]);
+}
+
+const ErrorStats& region_stats(const Comparison& comparison, Region region) {
+  return region == Region::kCovered ? comparison.covered : comparison.image;
+}
+
+// JSON has no infinity; null says "no finite value" without looking like a measurement.
+nlohmann::ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json stats_to_json(const ErrorStats& s) {
+  nlohmann::ordered_json max_at = nullptr;
+  if (s.max_channel >= 0) {
+    max_at = {{"x", s.max_x}, {"y", s.max_y}, {"channel", kChannelNames[s.max_channel]}};
+  }
+  return {
+      {"pixels", s.pixels},
+      {"max_lsb", s.max_lsb},
+      {"max_at", max_at},
+      {"mean_lsb", s.mean_lsb},
+      {"rmse_lsb", s.rmse_lsb},
+      {"psnr_db", number_or_null(s.psnr_db)},
+      {"p99_lsb", s.p99_lsb},
+      {"percent_over_1_lsb", s.percent_over_1_lsb},
+      {"percent_over_4_lsb", s.percent_over_4_lsb},
+  };
+}
+
+std::string format(const char* fmt, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
+}
+
+std::string lsb_string(double v) {
+  return std::isfinite(v) ? format("%.3f", v) : "inf";
+}
+
+std::string location_string(const ErrorStats& s) {
+  if (s.max_channel < 0) return "-";
+  return std::to_string(s.max_x) + "," + std::to_string(s.max_y) + " " +
+         kChannelNames[s.max_channel];
+}
+
+}  // namespace
+
+double channel_error_lsb(float test, float reference, TestEncoding encoding) {
+  // The reference is clamped because the displayed range is [0, 1]: a reference value of 1.3
+  // shows as white, and an output that shows white is right.
+  const double r = clamp01(reference);
+  if (encoding == TestEncoding::kUnorm8) {
+    // O is the stored byte. to_unorm8 is how every 8-bit image is written (image.h), so an
+    // in-memory render judged here gives the same figures as its PNG; on values read from an
+    // 8-bit file (k/255) it gives back k exactly. Comparing k with 255 r keeps the 0.5 LSB
+    // floor exact: no division by 255 on the 8-bit side.
+    return std::abs(static_cast<double>(to_unorm8(test)) - r * 255.0);
+  }
+  // Float output, unquantised: clamped like the reference, for the same reason (a float image
+  // is displayed through [0, 1] too), so overshoot beyond white or below black is not error.
+  return std::abs(clamp01(test) - r) * 255.0;
+}
+
+Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding) {
+  LT_CHECK(test.width == reference.width && test.height == reference.height,
+           "test " + size_string(test) + " vs reference " + size_string(reference));
+  LT_CHECK(test.rgba.size() == test.pixel_count() * 4 &&
+               reference.rgba.size() == reference.pixel_count() * 4,
+           "image storage does not match its size");
+  Comparison out;
+  out.width = test.width;
+  out.height = test.height;
+  out.encoding = encoding;
+  out.pixel_error_lsb.assign(test.pixel_count(), 0.0);
+  out.covered_mask.assign(test.pixel_count(), false);
+
+  RegionAccumulator covered, image;
+  for (int y = 0; y < test.height; ++y) {
+    for (int x = 0; x < test.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * test.width + x;
+      const float* o = test.at(x, y);
+      const float* r = reference.at(x, y);
+      LT_CHECK(pixel_is_finite(r),
+               "non-finite reference value at " + std::to_string(x) + "," + std::to_string(y));
+      out.covered_mask[i] = is_covered(r[3]);
+      if (!pixel_is_finite(o)) {
+        for (int c = 0; c < 4; ++c) out.test_non_finite += std::isfinite(o[c]) ? 0 : 1;
+        ++out.test_non_finite_pixels;
+        out.pixel_error_lsb[i] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      double e[3];
+      for (int c = 0; c < 3; ++c) e[c] = channel_error_lsb(o[c], r[c], encoding);
+      out.pixel_error_lsb[i] = std::max({e[0], e[1], e[2]});
+      image.add(x, y, e);
+      if (out.covered_mask[i]) covered.add(x, y, e);
+    }
+  }
+  out.covered = covered.finish();
+  out.image = image.finish();
+  return out;
+}
+
+Verdict judge(const Comparison& comparison, const Tolerance& tolerance) {
+  LT_CHECK(
+      tolerance.fail_lsb >= 0.0 && tolerance.fail_percent >= 0.0 && tolerance.hard_fail_lsb >= 0.0,
+      "tolerances must be >= 0 (the CLI rejects others as bad input)");
+  Verdict v;
+  const ErrorStats& stats = region_stats(comparison, tolerance.region);
+  for (size_t i = 0; i < comparison.pixel_error_lsb.size(); ++i) {
+    if (tolerance.region == Region::kCovered && !comparison.covered_mask[i]) continue;
+    const double e = comparison.pixel_error_lsb[i];
+    if (!std::isfinite(e)) continue;  // counted as non-finite below, not as error
+    if (e > tolerance.fail_lsb) ++v.failing_pixels;
+    if (e > tolerance.hard_fail_lsb) ++v.hard_failing_pixels;
+  }
+  // Percent of the region's finite pixels, the same denominator as the reported figures.
+  if (stats.pixels > 0) {
+    v.failing_percent =
+        100.0 * static_cast<double>(v.failing_pixels) / static_cast<double>(stats.pixels);
+  }
+
+  const std::string where = to_string(tolerance.region);
+  if (comparison.test_non_finite > 0) {
+    v.reasons.push_back(std::to_string(comparison.test_non_finite) +
+                        " non-finite values (NaN/Inf) in the test image, in " +
+                        std::to_string(comparison.test_non_finite_pixels) + " pixels");
+  }
+  if (v.failing_percent > tolerance.fail_percent) {
+    v.reasons.push_back(format("%g", v.failing_percent) + "% of " + where + " pixels (" +
+                        std::to_string(v.failing_pixels) + " of " + std::to_string(stats.pixels) +
+                        ") have error > " + format("%g", tolerance.fail_lsb) + " LSB, allowed " +
+                        format("%g", tolerance.fail_percent) + "%");
+  }
+  if (v.hard_failing_pixels > 0) {
+    v.reasons.push_back(std::to_string(v.hard_failing_pixels) + " " + where +
+                        " pixels have error > " + format("%g", tolerance.hard_fail_lsb) +
+                        " LSB (max " + lsb_string(stats.max_lsb) + " LSB at " +
+                        location_string(stats) + ")");
+  }
+  v.pass = v.reasons.empty();
+  return v;
+}
+
+TestEncoding encoding_of(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "file not found");
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(path.string(), "", "cannot read image: " + OIIO::geterror());
+  // Per-channel formats (EXR can mix) report the widest in spec.format; alpha is not compared
+  // but an 8-bit file has one format for all its channels anyway.
+  const OIIO::TypeDesc format = in->spec().format;
+  const bool eight_bit =
+      format.basetype == OIIO::TypeDesc::UINT8 || format.basetype == OIIO::TypeDesc::INT8;
+  return eight_bit ? TestEncoding::kUnorm8 : TestEncoding::kFloat;
+}
+
+Comparison compare_files(const std::filesystem::path& test,
+                         const std::filesystem::path& reference) {
+  const Image test_image = read_image(test);
+  const Image reference_image = read_image(reference);
+  const TestEncoding encoding = encoding_of(test);
+  if (test_image.width != reference_image.width || test_image.height != reference_image.height) {
+    throw InputError(test.string(), "",
+                     "size " + size_string(test_image) + " does not match the reference " +
+                         reference.string() + " (" + size_string(reference_image) + ")");
+  }
+  // A reference is ours and finite by construction; a non-finite one is a broken file, not a
+  // failed comparison.
+  for (int y = 0; y < reference_image.height; ++y) {
+    for (int x = 0; x < reference_image.width; ++x) {
+      if (!pixel_is_finite(reference_image.at(x, y))) {
+        throw InputError(reference.string(), "pixel " + std::to_string(x) + "," + std::to_string(y),
+                         "non-finite value (NaN/Inf) in the reference");
+      }
+    }
+  }
+  return compare_images(test_image, reference_image, encoding);
+}
+
+nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& tolerance,
+                               const Verdict& verdict) {
+  return {
+      {"encoding", to_string(comparison.encoding)},
+      {"width", comparison.width},
+      {"height", comparison.height},
+      {"covered", stats_to_json(comparison.covered)},
+      {"image", stats_to_json(comparison.image)},
+      {"test_non_finite", comparison.test_non_finite},
+      {"thresholds",
+       {
+           {"fail_lsb", tolerance.fail_lsb},
+           {"fail_percent", tolerance.fail_percent},
+           {"hard_fail_lsb", number_or_null(tolerance.hard_fail_lsb)},
+           {"region", to_string(tolerance.region)},
+       }},
+      {"failing_pixels", verdict.failing_pixels},
+      {"failing_percent", verdict.failing_percent},
+      {"hard_failing_pixels", verdict.hard_failing_pixels},
+      {"reasons", verdict.reasons},
+      {"pass", verdict.pass},
+  };
+}
+
+std::string to_table(const Comparison& comparison, const Tolerance& tolerance,
+                     const Verdict& verdict) {
+  const ErrorStats& c = comparison.covered;
+  const ErrorStats& a = comparison.image;
+  std::string out;
+  auto row = [&out](const char* name, const std::string& covered, const std::string& image) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%-14s %14s %14s\n", name, covered.c_str(), image.c_str());
+    out += buf;
+  };
+  out += std::to_string(comparison.width) + "x" + std::to_string(comparison.height) + ", test " +
+         (comparison.encoding == TestEncoding::kUnorm8 ? "8-bit" : "float (unquantised)") +
+         ", error in LSB of 8 bits\n";
+  row("", "covered", "image");
+  row("pixels", std::to_string(c.pixels), std::to_string(a.pixels));
+  row("max", lsb_string(c.max_lsb), lsb_string(a.max_lsb));
+  row("  at x,y ch", location_string(c), location_string(a));
+  row("mean", lsb_string(c.mean_lsb), lsb_string(a.mean_lsb));
+  row("RMSE", lsb_string(c.rmse_lsb), lsb_string(a.rmse_lsb));
+  row("PSNR dB", lsb_string(c.psnr_db), lsb_string(a.psnr_db));
+  row("p99", lsb_string(c.p99_lsb), lsb_string(a.p99_lsb));
+  row("% > 1 LSB", format("%.3f", c.percent_over_1_lsb), format("%.3f", a.percent_over_1_lsb));
+  row("% > 4 LSB", format("%.3f", c.percent_over_4_lsb), format("%.3f", a.percent_over_4_lsb));
+  out += "non-finite test values: " + std::to_string(comparison.test_non_finite) + "\n";
+  out += std::string("thresholds (") + to_string(tolerance.region) + " pixels): fail if > " +
+         format("%g", tolerance.fail_percent) + "% have error > " +
+         format("%g", tolerance.fail_lsb) + " LSB" +
+         (std::isfinite(tolerance.hard_fail_lsb)
+              ? ", or any has error > " + format("%g", tolerance.hard_fail_lsb) + " LSB"
+              : std::string()) +
+         "\n";
+  out += "result: " + std::string(verdict.pass ? "PASS" : "FAIL") + "\n";
+  for (const auto& reason : verdict.reasons) out += "  " + reason + "\n";
+  return out;
+}
+
+const char* to_string(TestEncoding encoding) {
+  return encoding == TestEncoding::kUnorm8 ? "unorm8" : "float";
+}
+
+const char* to_string(Region region) {
+  return region == Region::kCovered ? "covered" : "image";
+}
+
+}  // namespace lt

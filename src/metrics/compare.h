@@ -1,0 +1,124 @@
+// Error of a rendered image against the double-precision reference (metrics.md), in LSB of an
+// 8-bit channel (1 LSB = 1/255). One library for `ltrender compare`, `ltrender bench` and the
+// golden-image tests: compute a Comparison once, then judge it against a Tolerance (Filament's
+// imagediff: the tolerance is data and the verdict is a struct, never a bare bool). The heatmap
+// of a Comparison is in metrics/heatmap.h.
+//
+// What the figures are over:
+//  - "channel" figures (max, mean, RMSE, PSNR) use every R, G, B value of the region; alpha is
+//    never compared (the reference's alpha is the coverage mask, the test's alpha is unused).
+//  - "pixel" figures (99th percentile, percent over 1 and 4 LSB, the threshold counts) use one
+//    error per pixel, the max over its three channels: a pixel is as wrong as its worst channel,
+//    and "percent of pixels" then reads the same as idiff's failing-pixel fraction.
+//  - A pixel with any non-finite TEST value (NaN/Inf in any of R, G, B, A) is left out of every
+//    figure, which would otherwise all become NaN, and is counted in `test_non_finite`; any
+//    non-finite value fails the comparison whatever the tolerance.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+
+namespace lt {
+
+// How the TEST image stores its values, which decides how it is compared (metrics.md).
+enum class TestEncoding {
+  kUnorm8,  // 8-bit file: O is the stored byte; an in-memory image is quantised by to_unorm8
+  kFloat,   // half/float/16-bit file: compared unquantised
+};
+
+// Per-channel error in LSB of one TEST value against one reference value (the formula of
+// metrics.md; see compare.cpp for why each side is clamped).
+double channel_error_lsb(float test, float reference, TestEncoding encoding);
+
+// A pixel is covered when the reference's alpha (coverage) is over one half.
+inline bool is_covered(float reference_alpha) {
+  return reference_alpha > 0.5f;
+}
+
+struct ErrorStats {
+  size_t pixels = 0;  // finite pixels in the region (the channel figures use 3 * pixels values)
+  double max_lsb = 0.0;
+  int max_x = -1, max_y = -1, max_channel = -1;  // where max_lsb is; -1 when the region is empty
+  double mean_lsb = 0.0;
+  double rmse_lsb = 0.0;
+  double psnr_db = std::numeric_limits<double>::infinity();  // peak 1.0; inf when RMSE is 0
+  double p99_lsb = 0.0;             // nearest-rank 99th percentile of per-pixel error
+  double percent_over_1_lsb = 0.0;  // percent of pixels whose error is > 1 LSB
+  double percent_over_4_lsb = 0.0;  // percent of pixels whose error is > 4 LSB
+};
+
+struct Comparison {
+  int width = 0, height = 0;
+  TestEncoding encoding = TestEncoding::kUnorm8;
+  ErrorStats covered;          // pixels the reference covers
+  ErrorStats image;            // every pixel
+  size_t test_non_finite = 0;  // non-finite values (not pixels) in TEST, all four channels
+  size_t test_non_finite_pixels = 0;
+  // Per pixel, top row first: max-channel error in LSB (NaN for a non-finite pixel), and the
+  // reference's coverage. Kept so that a Tolerance can be judged and a heatmap drawn later;
+  // double, like the figures, so a threshold set to a reported max judges that max consistently.
+  std::vector<double> pixel_error_lsb;
+  std::vector<bool> covered_mask;
+};
+
+// Which pixels the thresholds judge.
+enum class Region {
+  kCovered,  // default: the background is not the technique under test, and the
+             // reference's coverage is ground truth (silhouette pixels still count)
+  kImage,    // every pixel, so geometry drawn where the reference has none also fails
+};
+
+// idiff-style thresholds: fail if more than `fail_percent` percent of the region's pixels have
+// error > `fail_lsb`, or if any pixel of the region has error > `hard_fail_lsb`.
+struct Tolerance {
+  double fail_lsb = 1.0;
+  double fail_percent = 0.0;
+  double hard_fail_lsb = std::numeric_limits<double>::infinity();
+  Region region = Region::kCovered;
+};
+
+struct Verdict {
+  bool pass = true;
+  size_t failing_pixels = 0;  // error > fail_lsb in the region
+  double failing_percent = 0.0;
+  size_t hard_failing_pixels = 0;    // error > hard_fail_lsb in the region
+  std::vector<std::string> reasons;  // one line per failed criterion; empty when pass
+};
+
+// Pure computation on in-memory images. Both must have the same size (LT_CHECK: callers that
+// take images from the user go through compare_files, which reports a mismatch as an
+// InputError) and the reference must be finite (LT_CHECK, likewise).
+Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding);
+
+Verdict judge(const Comparison& comparison, const Tolerance& tolerance);
+
+// The encoding of an image file, from OpenImageIO's spec: 8-bit formats are kUnorm8, anything
+// wider is kFloat. Throws InputError naming the file if it cannot be opened.
+TestEncoding encoding_of(const std::filesystem::path& path);
+
+// Reads both files and compares them. Throws InputError for a missing or unreadable file, a
+// size mismatch (naming both sizes) or a reference with non-finite values.
+Comparison compare_files(const std::filesystem::path& test, const std::filesystem::path& reference);
+
+// All figures as one JSON object, keys in this order: "encoding", "width", "height", "covered" and
+// "image" (ErrorStats; "max_at" is null for an empty region), "test_non_finite", "thresholds",
+// "failing_pixels", "failing_percent", "hard_failing_pixels", "reasons", "pass". Infinite values (a
+// PSNR of identical images, the default hard_fail_lsb) are written as null: JSON has no infinity,
+// and null cannot be mistaken for a measured number.
+nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& tolerance,
+                               const Verdict& verdict);
+
+// A small readable table of the figures and the verdict, for the terminal.
+std::string to_table(const Comparison& comparison, const Tolerance& tolerance,
+                     const Verdict& verdict);
+
+const char* to_string(TestEncoding encoding);
+const char* to_string(Region region);
+
+}  // namespace lt

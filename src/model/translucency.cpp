@@ -1,0 +1,65 @@
+#include "model/translucency.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lt::model {
+
+double lobe(double t, double p) {
+  if (p == 0) return 1.0;  // 0^0 := 1: the lobe is flat, t plays no part
+  if (t <= 0) return 0.0;
+  return std::pow(t, p);
+}
+
+LightSample sample_light(const Light& light, const glm::dvec3& P, const glm::dvec3& N) {
+  if (light.type == Light::Type::Directional) return {-light.direction, 1.0};
+  const glm::dvec3 to_light = light.position - P;
+  const double dist = glm::length(to_light);
+  const glm::dvec3 L = dist > 0 ? to_light / dist : N;
+  const double den = light.kc + light.kl * dist + light.kq * dist * dist;
+  return {L, 1.0 / std::max(den, kMinAttenuationDenominator)};
+}
+
+double translucency_dot(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
+                        const Translucency& tr) {
+  glm::dvec3 H = L + N * tr.distortion;
+  if (tr.normalize_distorted_light) {
+    const double len = glm::length(H);
+    H = len > 0 ? H / len : glm::dvec3(0);
+  }
+  return std::clamp(glm::dot(V, -H), 0.0, 1.0);
+}
+
+glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness) {
+  const glm::dvec3 source =
+      tr.thickness_source == ThicknessSource::Vertex ? vertex_thickness : tr.thickness;
+  return source * tr.tint;
+}
+
+glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoint& sp) {
+  const double len = glm::length(sp.N);
+  const glm::dvec3 N = len >= kMinNormalLength ? sp.N / len : glm::dvec3(0);
+  glm::dvec3 sum(0);
+  const glm::dvec3 T =
+      material.translucency ? thickness(*material.translucency, sp.vertex_thickness) : glm::dvec3(0);
+  for (const Light& light : scene.lights) {
+    const LightSample ls = sample_light(light, sp.P, N);
+    glm::dvec3 term(ls.attenuation * std::max(glm::dot(N, ls.L), 0.0));
+    if (material.translucency) {
+      const Translucency& tr = *material.translucency;
+      const double t = translucency_dot(sp.V, ls.L, N, tr);
+      term += ls.attenuation * (lobe(t, tr.power) * light.translucency_scale + tr.ambient) * T;
+    }
+    sum += light.color * term;
+  }
+  return material.albedo * (scene.ambient_light + sum);
+}
+
+glm::dvec3 view_vector(const Camera& camera, const glm::dvec3& P_rel) {
+  if (camera.projection == Camera::Projection::Orthographic) return -camera.forward();
+  const double len = glm::length(P_rel);
+  // A point exactly at the eye cannot be rasterised (near > 0); guard anyway.
+  return len > 0 ? -P_rel / len : -camera.forward();
+}
+
+}  // namespace lt::model

@@ -1,0 +1,57 @@
+// The shading model of model.md in double precision: the ground truth every path is judged
+// against. Every hard case has one documented result here, and every GPU path mirrors it.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace lt::model {
+
+// Numeric conventions for the hard cases (model.md). The GPU paths implement the same intent.
+//
+// A normal shorter than this after interpolation is "no normal" (zero-length normals in the mesh,
+// or opposite normals cancelling across a triangle): diffuse = 0 and H = L (no distortion).
+// 1e-6 is well above the float noise of interpolating unit vectors and far below any normal a
+// real mesh interpolates to.
+inline constexpr double kMinNormalLength = 1e-6;
+// Point-light attenuation denominators are floored here so a light at distance 0 with kc = 0
+// gives a large finite value (1e6), never Inf. Validation guarantees kc + kl + kq > 0.
+inline constexpr double kMinAttenuationDenominator = 1e-6;
+
+// t^p with 0^0 := 1 and t^p := 0 for t = 0, p > 0. Underflow for huge p is a plain 0, not a
+// denormal soup: std::pow does that already in double.
+double lobe(double t, double p);
+
+// Unit light direction (towards the light) and attenuation for one light at world point P.
+// A point light exactly at P (distance 0) lights P head-on: L = N (or 0 when N is 0).
+struct LightSample {
+  glm::dvec3 L;
+  double attenuation;
+};
+LightSample sample_light(const Light& light, const glm::dvec3& P, const glm::dvec3& N);
+
+// The translucency factor t = saturate(dot(V, -H)) with H = L + N*d, normalised on request
+// (normalize(0) := 0, so a cancelled H gives t = 0 like the unnormalised form).
+double translucency_dot(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
+                        const Translucency& tr);
+
+// Inputs at a shaded point. N need not be unit (it is renormalised here), V must be unit.
+struct SurfacePoint {
+  glm::dvec3 P;
+  glm::dvec3 N;
+  glm::dvec3 V;
+  glm::dvec3 vertex_thickness{1, 1, 1};  // interpolated vertex colour (used for "vertex")
+};
+
+// The thickness T of model.md: (vertex colour or constant) times tint.
+glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness);
+
+// c = albedo * (ambient_light + sum over lights of color * (diffuse + trans)).
+glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoint& sp);
+
+// View vector for a camera at a point: normalize(E - P), or -forward for orthographic.
+// `P_rel` is the point relative to the eye (the paths work camera-relative).
+glm::dvec3 view_vector(const Camera& camera, const glm::dvec3& P_rel);
+
+}  // namespace lt::model

@@ -1,0 +1,52 @@
+#include "paths/flat/flat_path.h"
+
+namespace lt {
+
+namespace {
+
+class FlatPath final : public Path {
+ public:
+  explicit FlatPath(const PathContext& ctx) : ctx_(ctx) {}
+
+  void frame() override {
+    const glm::dvec3& bg = ctx_.scene.background;
+    glViewport(0, 0, ctx_.width, ctx_.height);
+    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_TEXTURE_2D);
+    ctx_.geometry.load_matrices();
+    for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
+      const glm::dvec3 a = ctx_.scene.materials[m.material].albedo;
+      ctx_.geometry.bind(m);
+      // Colour arrays off: the albedo is the one constant colour, whatever the mesh carries.
+      glDisableClientState(GL_COLOR_ARRAY);
+      glColor4f(static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b), 1);
+      glDrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
+      ctx_.geometry.unbind();
+    }
+  }
+
+  Image result() override { return read_framebuffer(ctx_.gl); }
+
+  std::vector<BuiltStage> stages() const override {
+    return {{"fixed-function: constant colour per material, no lighting", "fixed-function", ""}};
+  }
+
+ private:
+  PathContext ctx_;
+};
+
+}  // namespace
+
+PathInfo flat_path_info() {
+  return {"flat",
+          "timing baseline: same geometry in one constant colour (not an approximation)",
+          {{"constant", "albedo as a constant colour"}},
+          [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
+            return std::make_unique<FlatPath>(ctx);
+          }};
+}
+
+}  // namespace lt

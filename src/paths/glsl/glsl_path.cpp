@@ -1,0 +1,160 @@
+#include "paths/glsl/glsl_path.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <sstream>
+
+#include "gl/program.h"
+
+namespace lt {
+
+namespace {
+
+std::string define(const char* name, bool on) {
+  return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+}
+
+std::string light_prefix(size_t i) { return "u_light" + std::to_string(i) + "_"; }
+
+}  // namespace
+
+GlslSources generate_glsl(const Scene& scene, const Material& material) {
+  const bool translucent = material.translucency.has_value();
+  const Translucency tr = material.translucency.value_or(Translucency{});
+  bool any_point = false;
+  std::ostringstream uniforms, calls;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& l = scene.lights[i];
+    const std::string u = light_prefix(i);
+    // The scale uniform exists only where a translucency term reads it.
+    const std::string scale = translucent ? u + "scale" : "0.0";
+    uniforms << "uniform vec3 " << u << "color;\n";
+    if (translucent) uniforms << "uniform float " << u << "scale;\n";
+    if (l.type == Light::Type::Directional) {
+      uniforms << "uniform vec3 " << u << "to_light;  // -direction\n";
+      calls << "  sum += light_term(N, V, " << u << "to_light, 1.0, " << u << "color, " << scale
+            << ", T);\n";
+    } else {
+      any_point = true;
+      uniforms << "uniform vec3 " << u << "position;\n"
+               << "uniform vec3 " << u << "attenuation;  // kc, kl, kq\n";
+      calls << "  {\n    vec3 L;\n    float att;\n    point_light(v_position, N, " << u
+            << "position, " << u << "attenuation, L, att);\n    sum += light_term(N, V, L, att, "
+            << u << "color, " << scale << ", T);\n  }\n";
+    }
+  }
+  const bool vertex_thickness = translucent && tr.thickness_source == ThicknessSource::Vertex;
+  const std::string defines =
+      define("LT_TRANSLUCENCY", translucent) + define("LT_VERTEX_THICKNESS", vertex_thickness) +
+      define("LT_NORMALIZE_H", translucent && tr.normalize_distorted_light) +
+      define("LT_POWER_ZERO", translucent && tr.power == 0) +
+      define("LT_POINT_LIGHTS", any_point) +
+      define("LT_AMBIENT_LIGHT", scene.ambient_light != glm::dvec3(0)) +
+      define("LT_ORTHOGRAPHIC", scene.camera.projection == Camera::Projection::Orthographic);
+  GlslSources s;
+  s.vertex = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.vert"),
+                               {{"DEFINES", defines}}, "translucency.vert");
+  s.fragment = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.frag"),
+                                 {{"DEFINES", defines},
+                                  {"LIGHT_UNIFORMS", uniforms.str()},
+                                  {"LIGHT_CALLS", calls.str()}},
+                                 "translucency.frag");
+  return s;
+}
+
+namespace {
+
+void set3(const gl::GlslProgram& p, const std::string& name, const glm::dvec3& v) {
+  glUniform3f(p.uniform(name.c_str()), static_cast<float>(v.x), static_cast<float>(v.y),
+              static_cast<float>(v.z));
+}
+void set1(const gl::GlslProgram& p, const std::string& name, double v) {
+  glUniform1f(p.uniform(name.c_str()), static_cast<float>(v));
+}
+
+class GlslPath final : public Path {
+ public:
+  explicit GlslPath(const PathContext& ctx) : ctx_(ctx) {
+    // Only the materials some object uses get a program.
+    programs_.resize(ctx.scene.materials.size());
+    for (const gl::GpuMesh& m : ctx.geometry.meshes()) {
+      if (programs_[m.material]) continue;
+      const Material& mat = ctx.scene.materials[m.material];
+      const GlslSources src = generate_glsl(ctx.scene, mat);
+      auto p = std::make_unique<gl::GlslProgram>(src.vertex, src.fragment, "glsl:" + mat.name);
+      set_uniforms(*p, mat);
+      programs_[m.material] = std::move(p);
+    }
+    gl::check_error("building glsl programs");
+  }
+
+  void frame() override {
+    const glm::dvec3& bg = ctx_.scene.background;
+    glViewport(0, 0, ctx_.width, ctx_.height);
+    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    ctx_.geometry.load_matrices();
+    for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
+      glUseProgram(programs_[m.material]->id());
+      ctx_.geometry.draw(m);
+    }
+    glUseProgram(0);
+  }
+
+  Image result() override { return read_framebuffer(ctx_.gl); }
+
+  std::vector<BuiltStage> stages() const override {
+    std::vector<BuiltStage> out;
+    for (size_t i = 0; i < programs_.size(); ++i) {
+      if (!programs_[i]) continue;
+      const std::string name = "material " + ctx_.scene.materials[i].name;
+      out.push_back({name + ": vertex shader", "glsl-vertex", programs_[i]->vertex_source()});
+      out.push_back({name + ": fragment shader", "glsl-fragment", programs_[i]->fragment_source()});
+    }
+    return out;
+  }
+
+ private:
+  void set_uniforms(const gl::GlslProgram& p, const Material& mat) {
+    const Scene& s = ctx_.scene;
+    glUseProgram(p.id());
+    set3(p, "u_albedo", mat.albedo);
+    set3(p, "u_ambient_light", s.ambient_light);
+    set3(p, "u_view_dir", -s.camera.forward());
+    if (mat.translucency) {
+      const Translucency& tr = *mat.translucency;
+      set1(p, "u_power", tr.power);
+      set1(p, "u_distortion", tr.distortion);
+      set1(p, "u_lt_ambient", tr.ambient);
+      // Vertex thickness is multiplied by the tint in the shader; a constant is premultiplied.
+      set3(p, "u_thickness",
+           tr.thickness_source == ThicknessSource::Vertex ? tr.tint : tr.thickness * tr.tint);
+    }
+    for (size_t i = 0; i < s.lights.size(); ++i) {
+      const Light& l = s.lights[i];
+      const std::string u = light_prefix(i);
+      set3(p, u + "color", l.color);
+      set1(p, u + "scale", l.translucency_scale);
+      set3(p, u + "to_light", -l.direction);
+      set3(p, u + "position", ctx_.geometry.to_camera_relative(l.position));
+      set3(p, u + "attenuation", glm::dvec3(l.kc, l.kl, l.kq));
+    }
+    glUseProgram(0);
+  }
+
+  PathContext ctx_;
+  std::vector<std::unique_ptr<gl::GlslProgram>> programs_;
+};
+
+}  // namespace
+
+PathInfo glsl_path_info() {
+  return {"glsl",
+          "per-pixel GLSL 1.10 shaders, exact pow, float arithmetic, 8-bit framebuffer",
+          {{"pow=exact", "pow() with 0^0 guarded; the only variant"}},
+          [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
+            return std::make_unique<GlslPath>(ctx);
+          }};
+}
+
+}  // namespace lt

@@ -1,0 +1,72 @@
+// A path is one way of rendering a scene (reference, glsl, flat, later arbfp and combiners).
+// Each lives in its own folder behind this interface; adding one touches only registry.cpp.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "gl/scene_geometry.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace lt {
+
+// What a path renders with: the scene, a current context at the output size, the uploaded
+// geometry (matrices loaded), and the variant string the user picked (already validated).
+struct PathContext {
+  const Scene& scene;
+  gl::Context& gl;
+  gl::SceneGeometry& geometry;
+  int width, height;
+};
+
+// One built stage or program, for `ltrender info` and the budget checker.
+struct BuiltStage {
+  std::string name;    // e.g. "material marble: fragment program"
+  std::string kind;    // "glsl-vertex", "glsl-fragment", "arb-vertex", "arb-fragment", "cpu", ...
+  std::string source;  // the generated program text, if any
+};
+
+class Path {
+ public:
+  virtual ~Path() = default;
+  // Renders one frame. Bench brackets it with glFinish; a CPU path finishes its work inside.
+  virtual void frame() = 0;
+  // The image of the last frame: linear float RGBA, top row first, alpha = coverage.
+  virtual Image result() = 0;
+  // What was built for this scene (programs, stages, textures).
+  virtual std::vector<BuiltStage> stages() const = 0;
+  // True when the output is float (the reference); false for 8-bit framebuffer paths.
+  virtual bool float_output() const { return false; }
+  // Figures of the last frame a path can report (e.g. the reference's CPU shading time).
+  virtual std::map<std::string, double> frame_stats() const { return {}; }
+};
+
+struct VariantInfo {
+  std::string name;     // as given to --variant, e.g. "pow=exact"
+  std::string summary;  // one line: what it trades
+};
+
+struct PathInfo {
+  std::string name;
+  std::string summary;
+  std::vector<VariantInfo> variants;  // the first is the default
+  std::function<std::unique_ptr<Path>(const PathContext&, const std::string& variant)> create;
+};
+
+// Every path, in the order the report lists them.
+const std::vector<PathInfo>& all_paths();
+// Throws InputError(file_for_errors, "--path", ...) listing the valid names.
+const PathInfo& find_path(const std::string& name);
+// The variant to use: `requested` if the path has it, its default if empty; throws InputError
+// listing the valid variants otherwise.
+std::string resolve_variant(const PathInfo& path, const std::string& requested);
+
+// Reads the 8-bit OSMesa colour buffer as the path result (flips to top row first, A = coverage).
+Image read_framebuffer(const gl::Context& gl);
+
+}  // namespace lt

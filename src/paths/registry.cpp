@@ -1,0 +1,49 @@
+#include <algorithm>
+
+#include "core/error.h"
+#include "paths/flat/flat_path.h"
+#include "paths/glsl/glsl_path.h"
+#include "paths/path.h"
+#include "paths/reference/reference_path.h"
+
+namespace lt {
+
+const std::vector<PathInfo>& all_paths() {
+  static const std::vector<PathInfo> paths = {
+      reference_path_info(),
+      glsl_path_info(),
+      flat_path_info(),
+  };
+  return paths;
+}
+
+const PathInfo& find_path(const std::string& name) {
+  std::string names;
+  for (const PathInfo& p : all_paths()) {
+    if (p.name == name) return p;
+    names += (names.empty() ? "" : ", ") + p.name;
+  }
+  throw InputError("--path", name, "unknown path (valid: " + names + ")");
+}
+
+std::string resolve_variant(const PathInfo& path, const std::string& requested) {
+  if (requested.empty()) return path.variants.front().name;
+  std::string names;
+  for (const VariantInfo& v : path.variants) {
+    if (v.name == requested) return requested;
+    names += (names.empty() ? "" : ", ") + v.name;
+  }
+  throw InputError("--variant", requested,
+                   "path " + path.name + " has no such variant (valid: " + names + ")");
+}
+
+Image read_framebuffer(const gl::Context& gl) {
+  Image img(gl.width(), gl.height());
+  std::vector<unsigned char> px(img.pixel_count() * 4);
+  glReadPixels(0, 0, gl.width(), gl.height(), GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+  for (size_t i = 0; i < px.size(); ++i) img.rgba[i] = px[i] / 255.0f;
+  flip_vertically(img);
+  return img;
+}
+
+}  // namespace lt

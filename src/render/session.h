@@ -1,0 +1,38 @@
+// A scene ready to render at one size: the OSMesa context and the uploaded geometry that every
+// path of that scene shares.
+#pragma once
+
+#include <memory>
+
+#include "gl/context.h"
+#include "gl/scene_geometry.h"
+#include "paths/path.h"
+
+namespace lt {
+
+class RenderSession {
+ public:
+  RenderSession(const Scene& scene, int width, int height)
+      : scene_(scene), gl_(width, height), geometry_(scene, width, height) {}
+
+  // Builds a path for this scene (variant already resolved).
+  std::unique_ptr<Path> build(const PathInfo& path, const std::string& variant) {
+    return path.create(PathContext{scene_, gl_, geometry_, gl_.width(), gl_.height()}, variant);
+  }
+
+  const Scene& scene() const { return scene_; }
+  gl::Context& gl() { return gl_; }
+  gl::SceneGeometry& geometry() { return geometry_; }
+
+ private:
+  const Scene& scene_;
+  gl::Context gl_;
+  gl::SceneGeometry geometry_;
+};
+
+// Renders one frame of `path_name` (with `variant`, empty for the default) at the scene's size
+// unless width/height > 0 are given.
+Image render_scene(const Scene& scene, const std::string& path_name, const std::string& variant,
+                   int width = 0, int height = 0);
+
+}  // namespace lt

@@ -1,0 +1,396 @@
+#include "report/bench.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "metrics/heatmap.h"
+#include "render/session.h"
+
+namespace lt {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+FrameTiming time_frames(Path& path, const BenchOptions& o,
+                        std::map<std::string, std::vector<double>>* stats_out = nullptr) {
+  for (int i = 0; i < o.warmup; ++i) {
+    path.frame();
+    glFinish();
+  }
+  std::vector<double> ms;
+  for (int i = 0; i < o.frames; ++i) {
+    const auto t0 = Clock::now();
+    path.frame();
+    glFinish();  // a frame is over when the GL work is, not when the calls return
+    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    if (stats_out) {
+      for (const auto& [k, v] : path.frame_stats()) (*stats_out)[k].push_back(v);
+    }
+  }
+  return summarize_frames(ms);
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string scene_name(const fs::path& p) { return p.stem().string(); }
+
+std::string safe(const std::string& s) {
+  std::string r = s;
+  for (char& c : r) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  }
+  return r;
+}
+
+std::string fmt(double v, int prec = 2) {
+  if (!std::isfinite(v)) return v > 0 ? "inf" : "nan";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(prec) << v;
+  return s.str();
+}
+
+}  // namespace
+
+FrameTiming summarize_frames(std::vector<double> frame_ms) {
+  FrameTiming t;
+  if (frame_ms.empty()) return t;
+  t.min_ms = *std::min_element(frame_ms.begin(), frame_ms.end());
+  t.median_ms = median(std::move(frame_ms));
+  return t;
+}
+
+std::vector<BenchRow> run_bench(const BenchOptions& o) {
+  std::vector<const PathInfo*> paths;
+  for (const PathInfo& p : all_paths()) {
+    if (o.paths.empty() || std::find(o.paths.begin(), o.paths.end(), p.name) != o.paths.end()) {
+      paths.push_back(&p);
+    }
+  }
+  for (const std::string& name : o.paths) find_path(name);  // unknown names are input errors
+  // The baseline is always measured, whatever --paths says: every ratio needs it.
+  const PathInfo& flat = find_path("flat");
+  const PathInfo& reference = find_path("reference");
+
+  fs::create_directories(o.out_dir / "images");
+  std::vector<BenchRow> rows;
+  for (const fs::path& scene_path : o.scenes) {
+    const Scene scene = load_scene(scene_path);
+    const std::string sname = scene_name(scene_path);
+    if (!o.quiet) std::fprintf(stderr, "bench: %s\n", sname.c_str());
+
+    // Pass 1, at the scene's size: the reference image, every path's image, error, timing.
+    std::vector<BenchRow> scene_rows;
+    Image ref_image;
+    {
+      RenderSession session(scene, scene.width, scene.height);
+      auto ref = session.build(reference, reference.variants.front().name);
+      ref->frame();
+      ref_image = ref->result();
+      write_image(o.out_dir / "images" / (sname + "__reference.exr"), ref_image);
+      for (const PathInfo* p : paths) {
+        for (const VariantInfo& v : p->variants) {
+          BenchRow row;
+          row.scene = sname;
+          row.path = p->name;
+          row.variant = v.name;
+          auto path = session.build(*p, v.name);
+          row.at_scene_size = time_frames(*path, o);
+          const Image img = path->result();
+          const std::string base = sname + "__" + safe(p->name + "_" + v.name);
+          row.image = "images/" + base + ".png";
+          write_image(o.out_dir / row.image, img);
+          if (p->name != flat.name) {
+            const TestEncoding enc = path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8;
+            const Comparison cmp = compare_images(img, ref_image, enc);
+            row.error = cmp.covered;
+            row.heatmap = "images/" + base + "__heatmap.png";
+            write_image(o.out_dir / row.heatmap, error_heatmap(cmp));
+          }
+          scene_rows.push_back(std::move(row));
+        }
+      }
+    }
+    // Pass 2, at 1280x720: timing only, flat first so every ratio is from this session.
+    {
+      RenderSession session(scene, o.wide_width, o.wide_height);
+      auto base = session.build(flat, flat.variants.front().name);
+      const FrameTiming flat_t = time_frames(*base, o);
+      for (BenchRow& row : scene_rows) {
+        const PathInfo& p = find_path(row.path);
+        auto path = session.build(p, row.variant);
+        std::map<std::string, std::vector<double>> stats;
+        row.at_wide = row.path == flat.name ? flat_t : time_frames(*path, o, &stats);
+        row.ratio_to_flat = flat_t.median_ms > 0 ? row.at_wide.median_ms / flat_t.median_ms : 0;
+        if (stats.count("shading_seconds") && stats.count("covered_pixels")) {
+          const double secs = median(stats["shading_seconds"]);
+          const double px = median(stats["covered_pixels"]);
+          row.stats["shading_mpixels_per_s"] = secs > 0 ? px / secs / 1e6 : 0;
+          row.stats["threads"] = median(stats["threads"]);
+        }
+      }
+    }
+    rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
+  }
+  return rows;
+}
+
+namespace {
+
+void write_text(const fs::path& p, const std::string& text) {
+  write_atomically(p, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw InputError(p.string(), "", "cannot write");
+  });
+}
+
+std::string error_cell(const BenchRow& r, bool max) {
+  if (!r.error) return "-";
+  return fmt(max ? r.error->max_lsb : r.error->mean_lsb, max ? 2 : 3);
+}
+
+std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  std::ostringstream s;
+  s << "# ltrender bench\n\n"
+    << "Frames: median and min of " << o.frames << " after " << o.warmup
+    << " warm-up, each bounded by glFinish. `ratio` = median at " << o.wide_width << "x"
+    << o.wide_height << " / `flat` median in the same session. Error: covered pixels against "
+       "the reference, in LSB (1/255).\n\n"
+    << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
+    << o.wide_height << ") median / min | ratio to flat | max LSB | mean LSB | p99 LSB | "
+       "% > 1 LSB | notes |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& r : rows) {
+    std::string notes;
+    if (r.stats.count("shading_mpixels_per_s")) {
+      notes = "CPU shading " + fmt(r.stats.at("shading_mpixels_per_s")) + " Mpixels/s on " +
+              fmt(r.stats.at("threads"), 0) + " threads";
+    }
+    s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
+      << fmt(r.at_scene_size.median_ms) << " / " << fmt(r.at_scene_size.min_ms) << " | "
+      << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | "
+      << fmt(r.ratio_to_flat) << " | " << error_cell(r, true) << " | " << error_cell(r, false)
+      << " | " << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
+      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << notes << " |\n";
+  }
+  s << "\n![speed against error](chart.svg)\n\nContact sheet: `contact.png` (one row per scene: "
+       "the reference, then each path's render followed by its error heatmap, in the table's "
+       "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background) and "
+       "`index.html` with labels.\n";
+  return s.str();
+}
+
+std::string csv(const std::vector<BenchRow>& rows) {
+  std::ostringstream s;
+  s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
+       "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
+       "shading_mpixels_per_s\n";
+  for (const BenchRow& r : rows) {
+    s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
+      << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
+      << r.ratio_to_flat << ",";
+    if (r.error) {
+      s << r.error->max_lsb << "," << r.error->mean_lsb << "," << r.error->rmse_lsb << ","
+        << (std::isfinite(r.error->psnr_db) ? std::to_string(r.error->psnr_db) : "inf") << ","
+        << r.error->p99_lsb << "," << r.error->percent_over_1_lsb << ","
+        << r.error->percent_over_4_lsb << ",";
+    } else {
+      s << ",,,,,,,";
+    }
+    if (r.stats.count("shading_mpixels_per_s")) s << r.stats.at("shading_mpixels_per_s");
+    s << "\n";
+  }
+  return s.str();
+}
+
+nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  nlohmann::json j;
+  j["frames"] = o.frames;
+  j["warmup"] = o.warmup;
+  j["wide"] = {o.wide_width, o.wide_height};
+  j["rows"] = nlohmann::json::array();
+  auto finite = [](double v) -> nlohmann::json {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  for (const BenchRow& r : rows) {
+    nlohmann::json x = {{"scene", r.scene},
+                        {"path", r.path},
+                        {"variant", r.variant},
+                        {"ms_median", r.at_scene_size.median_ms},
+                        {"ms_min", r.at_scene_size.min_ms},
+                        {"ms_median_wide", r.at_wide.median_ms},
+                        {"ms_min_wide", r.at_wide.min_ms},
+                        {"ratio_to_flat", r.ratio_to_flat},
+                        {"image", r.image},
+                        {"heatmap", r.heatmap},
+                        {"stats", r.stats}};
+    if (r.error) {
+      x["error"] = {{"max_lsb", r.error->max_lsb},        {"mean_lsb", r.error->mean_lsb},
+                    {"rmse_lsb", r.error->rmse_lsb},      {"psnr_db", finite(r.error->psnr_db)},
+                    {"p99_lsb", r.error->p99_lsb},        {"percent_over_1_lsb", r.error->percent_over_1_lsb},
+                    {"percent_over_4_lsb", r.error->percent_over_4_lsb}};
+    }
+    j["rows"].push_back(x);
+  }
+  return j;
+}
+
+// x = ms per frame at the wide size (log scale: paths span orders of magnitude, the CPU
+// reference most of all), y = error in LSB; max as a filled circle, mean as a ring.
+std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  const double W = 900, H = 520, L = 70, R = 220, T = 30, B = 60;
+  double xmin = 1e30, xmax = 0, ymax = 1;
+  for (const BenchRow& r : rows) {
+    if (!r.error || r.at_wide.median_ms <= 0) continue;
+    xmin = std::min(xmin, r.at_wide.median_ms);
+    xmax = std::max(xmax, r.at_wide.median_ms);
+    ymax = std::max(ymax, r.error->max_lsb);
+  }
+  if (xmax <= 0) xmin = 1, xmax = 10;
+  const double lx0 = std::floor(std::log10(xmin)), lx1 = std::max(lx0 + 1, std::ceil(std::log10(xmax)));
+  ymax = std::ceil(ymax * 1.1);
+  auto X = [&](double ms) { return L + (std::log10(ms) - lx0) / (lx1 - lx0) * (W - L - R); };
+  auto Y = [&](double lsb) { return H - B - lsb / ymax * (H - T - B); };
+  static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
+                                  "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  std::map<std::string, std::string> colour;
+  for (const BenchRow& r : rows) {
+    const std::string key = r.path + " " + r.variant;
+    if (!colour.count(key)) colour[key] = palette[colour.size() % 8];
+  }
+  std::ostringstream s;
+  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
+    << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
+    << "<text x='" << L << "' y='18' font-size='14'>Speed against error (ms per frame at "
+    << o.wide_width << "x" << o.wide_height << ", log scale; filled = max, ring = mean LSB)</text>\n";
+  for (double e = lx0; e <= lx1; e += 1) {
+    for (int m = 1; m < 10; ++m) {
+      const double v = std::pow(10.0, e) * m;
+      if (v > std::pow(10.0, lx1)) break;
+      s << "<line x1='" << X(v) << "' x2='" << X(v) << "' y1='" << T << "' y2='" << H - B
+        << "' stroke='" << (m == 1 ? "#bbb" : "#eee") << "'/>\n";
+      if (m == 1) s << "<text x='" << X(v) - 10 << "' y='" << H - B + 18 << "'>" << v << "</text>\n";
+    }
+  }
+  for (int i = 0; i <= 5; ++i) {
+    const double v = ymax * i / 5;
+    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(v) << "' y2='" << Y(v)
+      << "' stroke='#eee'/><text x='" << L - 40 << "' y='" << Y(v) + 4 << "'>" << fmt(v, 1)
+      << "</text>\n";
+  }
+  s << "<text x='" << (L + W - R) / 2 - 40 << "' y='" << H - 15 << "'>ms per frame</text>\n"
+    << "<text transform='translate(20," << H / 2 << ") rotate(-90)'>error (LSB)</text>\n";
+  for (const BenchRow& r : rows) {
+    if (!r.error || r.at_wide.median_ms <= 0) continue;
+    const std::string c = colour[r.path + " " + r.variant];
+    const std::string title = "<title>" + r.scene + " / " + r.path + " " + r.variant + ": " +
+                              fmt(r.at_wide.median_ms) + " ms, max " + fmt(r.error->max_lsb) +
+                              ", mean " + fmt(r.error->mean_lsb, 3) + " LSB</title>";
+    s << "<circle cx='" << X(r.at_wide.median_ms) << "' cy='" << Y(r.error->max_lsb)
+      << "' r='5' fill='" << c << "'>" << title << "</circle>\n"
+      << "<circle cx='" << X(r.at_wide.median_ms) << "' cy='" << Y(r.error->mean_lsb)
+      << "' r='5' fill='none' stroke='" << c << "' stroke-width='2'>" << title << "</circle>\n";
+  }
+  int i = 0;
+  for (const auto& [key, c] : colour) {
+    s << "<circle cx='" << W - R + 20 << "' cy='" << T + 20 + i * 20 << "' r='5' fill='" << c
+      << "'/><text x='" << W - R + 32 << "' y='" << T + 24 + i * 20 << "'>" << key << "</text>\n";
+    ++i;
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  const int tw = 160, th = 120, pad = 4;
+  // Group by scene, in row order.
+  std::vector<std::pair<std::string, std::vector<std::string>>> grid;
+  for (const BenchRow& r : rows) {
+    if (grid.empty() || grid.back().first != r.scene) {
+      grid.push_back({r.scene, {"images/" + r.scene + "__reference.exr"}});
+    }
+    if (r.path == "reference") continue;
+    grid.back().second.push_back(r.image);
+    if (!r.heatmap.empty()) grid.back().second.push_back(r.heatmap);
+  }
+  size_t cols = 0;
+  for (const auto& g : grid) cols = std::max(cols, g.second.size());
+  if (grid.empty()) return;
+  Image sheet(static_cast<int>(cols) * (tw + pad) + pad, static_cast<int>(grid.size()) * (th + pad) + pad);
+  for (size_t i = 0; i < sheet.rgba.size(); ++i) sheet.rgba[i] = (i % 4 == 3) ? 1.0f : 1.0f;
+  for (size_t row = 0; row < grid.size(); ++row) {
+    for (size_t col = 0; col < grid[row].second.size(); ++col) {
+      const Image src = read_image(o.out_dir / grid[row].second[col]);
+      OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::FLOAT),
+                        const_cast<float*>(src.rgba.data()));
+      OIIO::ImageBuf small = OIIO::ImageBufAlgo::fit(in, "", 0.0f, "letterbox",
+                                                     OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4));
+      std::vector<float> px(static_cast<size_t>(tw) * th * 4);
+      small.get_pixels(OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, px.data());
+      const int ox = pad + static_cast<int>(col) * (tw + pad);
+      const int oy = pad + static_cast<int>(row) * (th + pad);
+      for (int y = 0; y < th; ++y) {
+        for (int x = 0; x < tw; ++x) {
+          float* d = sheet.at(ox + x, oy + y);
+          const float* s = &px[(static_cast<size_t>(y) * tw + x) * 4];
+          d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = 1;
+        }
+      }
+    }
+  }
+  write_image(o.out_dir / "contact.png", sheet);
+}
+
+std::string html(const std::vector<BenchRow>& rows) {
+  std::ostringstream s;
+  s << "<!doctype html><meta charset='utf-8'><title>ltrender bench</title>"
+       "<style>body{font-family:sans-serif} td{vertical-align:top;font-size:12px}"
+       "img{width:240px;image-rendering:pixelated}</style><h1>ltrender bench</h1>"
+       "<p><img src='chart.svg' style='width:900px'></p><table>";
+  std::string scene;
+  for (const BenchRow& r : rows) {
+    if (r.scene != scene) {
+      if (!scene.empty()) s << "</tr>";
+      scene = r.scene;
+      s << "<tr><th colspan='20' align='left'><h2>" << scene << "</h2></th></tr><tr>";
+    }
+    s << "<td><b>" << r.path << "</b> " << r.variant << "<br>" << fmt(r.at_wide.median_ms)
+      << " ms";
+    if (r.error) s << ", max " << fmt(r.error->max_lsb) << " / mean " << fmt(r.error->mean_lsb, 3) << " LSB";
+    s << "<br><img src='" << r.image << "'>";
+    if (!r.heatmap.empty()) s << "<br><img src='" << r.heatmap << "'>";
+    s << "</td>";
+  }
+  s << "</tr></table>";
+  return s.str();
+}
+
+}  // namespace
+
+void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  write_text(o.out_dir / "report.md", markdown(o, rows));
+  write_text(o.out_dir / "report.csv", csv(rows));
+  write_text(o.out_dir / "report.json", json_rows(o, rows).dump(2) + "\n");
+  write_text(o.out_dir / "chart.svg", svg_chart(o, rows));
+  write_text(o.out_dir / "index.html", html(rows));
+  write_contact_sheet(o, rows);
+}
+
+}  // namespace lt

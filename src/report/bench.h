@@ -1,0 +1,48 @@
+// `ltrender bench`: every scene through every path and variant, speed against error, in one run
+// (metrics.md): median and min of N frames after warm-up, each bounded by glFinish, at the
+// scene's size and at 1280x720, with the `flat` baseline measured in the same session so the
+// ratio path/flat is the technique's cost. A new path or variant adds rows by itself.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "metrics/compare.h"
+
+namespace lt {
+
+struct BenchOptions {
+  std::vector<std::filesystem::path> scenes;
+  std::vector<std::string> paths;  // empty: every path
+  std::filesystem::path out_dir;
+  int frames = 10;  // >= 10 (metrics.md)
+  int warmup = 2;
+  int wide_width = 1280, wide_height = 720;
+  bool quiet = false;
+};
+
+struct FrameTiming {
+  double median_ms = 0, min_ms = 0;
+};
+
+struct BenchRow {
+  std::string scene, path, variant;
+  FrameTiming at_scene_size, at_wide;
+  double ratio_to_flat = 0;  // at 1280x720, flat measured in the same session
+  std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
+  std::map<std::string, double> stats;  // path's own figures (reference: shading Mpixels/s)
+  std::string image, heatmap;  // relative to out_dir
+};
+
+std::vector<BenchRow> run_bench(const BenchOptions& options);
+
+// report.md, report.csv, report.json, chart.svg, contact.png and index.html under out_dir.
+void write_bench_reports(const BenchOptions& options, const std::vector<BenchRow>& rows);
+
+// Median and min of a list of frame times (for tests).
+FrameTiming summarize_frames(std::vector<double> frame_ms);
+
+}  // namespace lt

@@ -1,0 +1,375 @@
+#include "scene/scene.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "core/error.h"
+#include "core/fs.h"
+
+namespace lt {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Strict reading of one JSON object: every key is either taken or reported as unknown, so a
+// typo never silently renders something else (scene-format.md).
+class ObjectReader {
+ public:
+  ObjectReader(const json& j, std::string path, const std::string& file)
+      : j_(j), path_(std::move(path)), file_(file) {
+    if (!j_.is_object()) fail(path_, "expected an object");
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw InputError(file_, key.empty() ? "(top level)" : key, what);
+  }
+  std::string key_path(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+  }
+  bool has(const std::string& key) const { return j_.contains(key); }
+  const json& get(const std::string& key) {
+    used_.insert(key);
+    if (!j_.contains(key)) fail(key_path(key), "missing required key");
+    return j_.at(key);
+  }
+
+  double number(const std::string& key, std::optional<double> def = {},
+                double lo = -INFINITY, double hi = INFINITY) {
+    if (!has(key)) {
+      if (!def) fail(key_path(key), "missing required key");
+      used_.insert(key);
+      return *def;
+    }
+    const json& v = get(key);
+    if (!v.is_number()) fail(key_path(key), "expected a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(key_path(key), "must be finite");
+    if (d < lo || d > hi) {
+      fail(key_path(key), "out of range: " + v.dump() + " (allowed " + range(lo, hi) + ")");
+    }
+    return d;
+  }
+  int integer(const std::string& key, int def, int lo, int hi) {
+    if (!has(key)) {
+      used_.insert(key);
+      return def;
+    }
+    const json& v = get(key);
+    if (!v.is_number_integer()) fail(key_path(key), "expected an integer");
+    const auto i = v.get<long long>();
+    if (i < lo || i > hi) {
+      fail(key_path(key), "out of range: " + v.dump() + " (allowed " + range(lo, hi) + ")");
+    }
+    return static_cast<int>(i);
+  }
+  glm::dvec3 vec3(const std::string& key, std::optional<glm::dvec3> def = {},
+                  double lo = -INFINITY, double hi = INFINITY) {
+    if (!has(key)) {
+      if (!def) fail(key_path(key), "missing required key");
+      used_.insert(key);
+      return *def;
+    }
+    return vec3_value(get(key), key_path(key), lo, hi);
+  }
+  glm::dvec3 vec3_value(const json& v, const std::string& kp, double lo, double hi) const {
+    if (!v.is_array() || v.size() != 3) fail(kp, "expected an array of 3 numbers");
+    glm::dvec3 r;
+    for (int i = 0; i < 3; ++i) {
+      if (!v[i].is_number()) fail(kp, "expected an array of 3 numbers");
+      r[i] = v[i].get<double>();
+      if (!std::isfinite(r[i])) fail(kp, "must be finite");
+      if (r[i] < lo || r[i] > hi) {
+        fail(kp, "component out of range: " + v[i].dump() + " (allowed " + range(lo, hi) + ")");
+      }
+    }
+    return r;
+  }
+  std::string string(const std::string& key, std::optional<std::string> def = {}) {
+    if (!has(key)) {
+      if (!def) fail(key_path(key), "missing required key");
+      used_.insert(key);
+      return *def;
+    }
+    const json& v = get(key);
+    if (!v.is_string()) fail(key_path(key), "expected a string");
+    return v.get<std::string>();
+  }
+  bool boolean(const std::string& key, bool def) {
+    if (!has(key)) {
+      used_.insert(key);
+      return def;
+    }
+    const json& v = get(key);
+    if (!v.is_boolean()) fail(key_path(key), "expected true or false");
+    return v.get<bool>();
+  }
+  ObjectReader object(const std::string& key) { return ObjectReader(get(key), key_path(key), file_); }
+
+  // Call after reading: any key not taken is a typo or an unsupported feature.
+  void finish() const {
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      if (!used_.count(it.key())) fail(key_path(it.key()), "unknown key");
+    }
+  }
+
+ private:
+  static std::string range(double lo, double hi) {
+    auto s = [](double v) {
+      if (v == INFINITY) return std::string("inf");
+      if (v == -INFINITY) return std::string("-inf");
+      json j = v;
+      return j.dump();
+    };
+    return "[" + s(lo) + ", " + s(hi) + "]";
+  }
+
+  const json& j_;
+  std::string path_;
+  const std::string& file_;
+  std::set<std::string> used_;
+};
+
+// JSON syntax errors carry a byte offset; users want a line.
+int line_of_offset(const std::string& text, size_t offset) {
+  int line = 1;
+  for (size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
+  return line;
+}
+
+constexpr double kMaxImageSide = 16384;
+
+}  // namespace
+
+glm::dmat4 Transform::matrix() const {
+  glm::dmat4 m(1.0);
+  m = glm::translate(m, translate);
+  m = glm::rotate(m, glm::radians(rotate_deg.z), glm::dvec3(0, 0, 1));
+  m = glm::rotate(m, glm::radians(rotate_deg.y), glm::dvec3(0, 1, 0));
+  m = glm::rotate(m, glm::radians(rotate_deg.x), glm::dvec3(1, 0, 0));
+  m = glm::scale(m, scale);
+  return m;
+}
+
+Scene parse_scene(const std::string& text, const fs::path& file_for_errors, const fs::path& base_dir) {
+  const std::string file = file_for_errors.string();
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string msg = e.what();
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    const auto pos = msg.find("parse error");
+    throw InputError(file, std::to_string(line_of_offset(text, e.byte)),
+                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos)));
+  }
+
+  Scene scene;
+  scene.file = file_for_errors;
+  ObjectReader top(root, "", file);
+
+  {
+    ObjectReader img = top.object("image");
+    scene.width = img.integer("width", 640, 1, static_cast<int>(kMaxImageSide));
+    scene.height = img.integer("height", 480, 1, static_cast<int>(kMaxImageSide));
+    scene.background = img.vec3("background", glm::dvec3(0), 0, INFINITY);
+    img.finish();
+  }
+  {
+    ObjectReader cam = top.object("camera");
+    Camera& c = scene.camera;
+    c.eye = cam.vec3("eye");
+    c.target = cam.vec3("target");
+    c.up = cam.vec3("up", glm::dvec3(0, 1, 0));
+    const std::string proj = cam.string("projection", std::string("perspective"));
+    if (proj == "perspective") {
+      c.projection = Camera::Projection::Perspective;
+      c.fov_y_deg = cam.number("fov_y_deg", 40.0, 1e-3, 179.0);
+    } else if (proj == "orthographic") {
+      c.projection = Camera::Projection::Orthographic;
+      c.height = cam.number("height");
+      if (!(c.height > 0)) cam.fail(cam.key_path("height"), "must be > 0");
+    } else {
+      cam.fail(cam.key_path("projection"), "must be \"perspective\" or \"orthographic\"");
+    }
+    c.near = cam.number("near", 0.1);
+    c.far = cam.number("far", 100.0);
+    if (c.projection == Camera::Projection::Perspective && !(c.near > 0)) {
+      cam.fail(cam.key_path("near"), "must be > 0 for a perspective camera");
+    }
+    if (!(c.far > c.near)) cam.fail(cam.key_path("far"), "must be greater than near");
+    const glm::dvec3 fwd = c.target - c.eye;
+    if (!(glm::length(fwd) > 0)) cam.fail(cam.key_path("target"), "must differ from eye");
+    if (!(glm::length(glm::cross(glm::normalize(fwd), c.up)) > 1e-9)) {
+      cam.fail(cam.key_path("up"), "must not be parallel to the view direction");
+    }
+    cam.finish();
+  }
+  scene.ambient_light = top.vec3("ambient_light", glm::dvec3(0), 0, INFINITY);
+
+  // Materials: an object of named materials.
+  std::vector<std::string> material_names;
+  {
+    const json& mats = top.get("materials");
+    if (!mats.is_object() || mats.empty()) {
+      top.fail("materials", "expected a non-empty object of named materials");
+    }
+    for (auto it = mats.begin(); it != mats.end(); ++it) {
+      ObjectReader m(it.value(), "materials." + it.key(), file);
+      Material mat;
+      mat.name = it.key();
+      mat.albedo = m.vec3("albedo", glm::dvec3(1), 0, INFINITY);
+      if (m.has("translucency")) {
+        ObjectReader t = m.object("translucency");
+        Translucency tr;
+        tr.power = t.number("power", 1.0, 0, INFINITY);
+        tr.distortion = t.number("distortion", 0.0);
+        tr.ambient = t.number("ambient", 0.0, 0, INFINITY);
+        tr.tint = t.vec3("tint", glm::dvec3(1), 0, INFINITY);
+        tr.normalize_distorted_light = t.boolean("normalize_distorted_light", false);
+        if (t.has("thickness")) {
+          const json& th = t.get("thickness");
+          const std::string kp = t.key_path("thickness");
+          if (th.is_string()) {
+            if (th.get<std::string>() != "vertex") {
+              t.fail(kp, "must be \"vertex\", a number or an rgb triple");
+            }
+            tr.thickness_source = ThicknessSource::Vertex;
+          } else if (th.is_number()) {
+            const double v = th.get<double>();
+            if (!std::isfinite(v) || v < 0) t.fail(kp, "must be a finite number >= 0");
+            tr.thickness = glm::dvec3(v);
+          } else {
+            tr.thickness = t.vec3_value(th, kp, 0, INFINITY);
+          }
+        }
+        t.finish();
+        mat.translucency = tr;
+      }
+      m.finish();
+      material_names.push_back(mat.name);
+      scene.materials.push_back(std::move(mat));
+    }
+  }
+
+  if (top.has("lights")) {
+    const json& lights = top.get("lights");
+    if (!lights.is_array()) top.fail("lights", "expected an array");
+    for (size_t i = 0; i < lights.size(); ++i) {
+      ObjectReader l(lights[i], "lights[" + std::to_string(i) + "]", file);
+      Light light;
+      const std::string type = l.string("type");
+      const double intensity = l.number("intensity", 1.0, 0, INFINITY);
+      light.color = l.vec3("color", glm::dvec3(1), 0, INFINITY) * intensity;
+      light.translucency_scale = l.number("translucency_scale", 1.0, 0, INFINITY);
+      if (type == "directional") {
+        light.type = Light::Type::Directional;
+        const glm::dvec3 d = l.vec3("direction");
+        if (!(glm::length(d) > 0)) l.fail(l.key_path("direction"), "must not be zero");
+        light.direction = glm::normalize(d);
+      } else if (type == "point") {
+        light.type = Light::Type::Point;
+        light.position = l.vec3("position");
+        if (l.has("attenuation")) {
+          ObjectReader a = l.object("attenuation");
+          light.kc = a.number("constant", 1.0, 0, INFINITY);
+          light.kl = a.number("linear", 0.0, 0, INFINITY);
+          light.kq = a.number("quadratic", 0.0, 0, INFINITY);
+          a.finish();
+          if (!(light.kc + light.kl + light.kq > 0)) {
+            l.fail(l.key_path("attenuation"), "constant, linear and quadratic are all 0");
+          }
+        }
+      } else {
+        l.fail(l.key_path("type"), "must be \"directional\" or \"point\"");
+      }
+      l.finish();
+      scene.lights.push_back(light);
+    }
+  }
+
+  {
+    const json& objs = top.get("objects");
+    if (!objs.is_array() || objs.empty()) top.fail("objects", "expected a non-empty array");
+    for (size_t i = 0; i < objs.size(); ++i) {
+      const std::string kp = "objects[" + std::to_string(i) + "]";
+      ObjectReader o(objs[i], kp, file);
+      SceneObject obj;
+      obj.mesh_path = base_dir / o.string("mesh");
+      const std::string mat = o.string("material");
+      auto found = std::find(material_names.begin(), material_names.end(), mat);
+      if (found == material_names.end()) {
+        o.fail(o.key_path("material"), "unknown material \"" + mat + "\"");
+      }
+      obj.material = static_cast<int>(found - material_names.begin());
+      if (o.has("transform")) {
+        ObjectReader t = o.object("transform");
+        obj.transform.translate = t.vec3("translate", glm::dvec3(0));
+        obj.transform.rotate_deg = t.vec3("rotate_deg", glm::dvec3(0));
+        if (t.has("scale") && t.get("scale").is_number()) {
+          const double s = t.number("scale");
+          if (!(s > 0)) t.fail(t.key_path("scale"), "must be > 0");
+          obj.transform.scale = glm::dvec3(s);
+        } else {
+          // Extension: a per-axis scale [sx, sy, sz] (normals use the inverse transpose).
+          obj.transform.scale = t.vec3("scale", glm::dvec3(1), 1e-300, INFINITY);
+        }
+        t.finish();
+      }
+      o.finish();
+      scene.objects.push_back(std::move(obj));
+    }
+  }
+  top.finish();
+
+  // Meshes last, so a typo in the JSON is reported before any file I/O.
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    SceneObject& obj = scene.objects[i];
+    const Material& mat = scene.materials[obj.material];
+    TriangleMesh mesh = load_triangle_mesh(obj.mesh_path);
+    if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex &&
+        !mesh.has_colors()) {
+      throw InputError(file, "objects[" + std::to_string(i) + "].mesh",
+                       "material \"" + mat.name + "\" uses \"thickness\": \"vertex\" but " +
+                           obj.mesh_path.string() +
+                           " has no vertex colours (bake them with `ltrender bake`)");
+    }
+    // World space in double: what the reference shades and what the GL paths upload
+    // (camera-relative) as float.
+    const glm::dmat4 m = obj.transform.matrix();
+    const glm::dmat3 nm = glm::transpose(glm::inverse(glm::dmat3(m)));
+    for (auto& p : mesh.positions) p = glm::dvec3(m * glm::dvec4(p, 1.0));
+    for (auto& n : mesh.normals) {
+      const glm::dvec3 w = nm * n;
+      const double len = glm::length(w);
+      n = len > 0 ? w / len : glm::dvec3(0);
+    }
+    obj.mesh = std::move(mesh);
+  }
+  return scene;
+}
+
+Scene load_scene(const fs::path& path) {
+  const std::string text = read_text_file(path);
+  return parse_scene(text, path, path.parent_path());
+}
+
+SceneNeeds scene_needs(const Scene& scene) {
+  SceneNeeds n;
+  for (const Light& l : scene.lights) {
+    (l.type == Light::Type::Directional ? n.directional_lights : n.point_lights)++;
+  }
+  for (const SceneObject& o : scene.objects) {
+    const Material& m = scene.materials[o.material];
+    if (!m.translucency) continue;
+    n.any_translucency = true;
+    n.any_vertex_thickness |= m.translucency->thickness_source == ThicknessSource::Vertex;
+    n.any_normalized_h |= m.translucency->normalize_distorted_light;
+  }
+  n.ambient_light = scene.ambient_light != glm::dvec3(0);
+  return n;
+}
+
+}  // namespace lt

@@ -1,0 +1,99 @@
+// The scene of scene-format.md, validated. A scene names only what it uses, and every stage a
+// path builds is derived from it (see SceneNeeds), so nothing is built for a feature it lacks.
+#pragma once
+
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/mesh.h"
+
+namespace lt {
+
+struct Camera {
+  enum class Projection { Perspective, Orthographic };
+  glm::dvec3 eye{0, 0, 4}, target{0, 0, 0}, up{0, 1, 0};
+  Projection projection = Projection::Perspective;
+  double fov_y_deg = 40;  // perspective
+  double height = 2;      // orthographic: visible height in scene units
+  double near = 0.1, far = 100;
+
+  glm::dvec3 forward() const { return glm::normalize(target - eye); }
+};
+
+enum class ThicknessSource { Vertex, Constant };
+
+struct Translucency {
+  double power = 1;       // p >= 0
+  double distortion = 0;  // d, any real
+  double ambient = 0;     // a >= 0
+  ThicknessSource thickness_source = ThicknessSource::Constant;
+  glm::dvec3 thickness{1, 1, 1};  // the constant (Constant), unused for Vertex
+  glm::dvec3 tint{1, 1, 1};
+  bool normalize_distorted_light = false;
+};
+
+struct Material {
+  std::string name;
+  glm::dvec3 albedo{1, 1, 1};
+  std::optional<Translucency> translucency;  // absent: plain diffuse, no translucency stage
+};
+
+struct Light {
+  enum class Type { Directional, Point };
+  Type type = Type::Directional;
+  glm::dvec3 direction{0, 0, 1};  // directional: where the light travels (L = -direction)
+  glm::dvec3 position{0, 0, 0};   // point
+  glm::dvec3 color{1, 1, 1};      // already multiplied by intensity
+  double translucency_scale = 1;  // s >= 0, the seed's per-light control
+  double kc = 1, kl = 0, kq = 0;  // point-light attenuation (GL/GX k0 k1 k2)
+};
+
+struct Transform {
+  glm::dvec3 translate{0, 0, 0};
+  glm::dvec3 rotate_deg{0, 0, 0};  // applied X, then Y, then Z
+  glm::dvec3 scale{1, 1, 1};       // a number in the file means uniform scale
+
+  glm::dmat4 matrix() const;
+};
+
+struct SceneObject {
+  std::filesystem::path mesh_path;
+  int material = 0;  // index into Scene::materials
+  Transform transform;
+  TriangleMesh mesh;  // world space (transform applied in double, normals renormalised)
+};
+
+struct Scene {
+  std::filesystem::path file;
+  int width = 640, height = 480;
+  glm::dvec3 background{0, 0, 0};
+  Camera camera;
+  glm::dvec3 ambient_light{0, 0, 0};
+  std::vector<Material> materials;
+  std::vector<Light> lights;
+  std::vector<SceneObject> objects;
+};
+
+// Parses, validates and loads every mesh. Throws InputError naming the file and the key
+// (e.g. "materials.marble.translucency.power") or the line of a JSON syntax error.
+Scene load_scene(const std::filesystem::path& path);
+
+// Parses a scene from text (for tests); meshes are resolved relative to `base_dir`.
+Scene parse_scene(const std::string& text, const std::filesystem::path& file_for_errors,
+                  const std::filesystem::path& base_dir);
+
+// What a scene uses, derived once, shared by every path and by `ltrender info`.
+struct SceneNeeds {
+  int directional_lights = 0;
+  int point_lights = 0;
+  bool any_translucency = false;
+  bool any_vertex_thickness = false;
+  bool any_normalized_h = false;
+  bool ambient_light = false;  // scene ambient_light non-zero
+};
+SceneNeeds scene_needs(const Scene& scene);
+
+}  // namespace lt

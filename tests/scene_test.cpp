@@ -1,0 +1,184 @@
+// Scene validation: every bad input is one line naming the file and the key, exit 2, and no
+// output file; good scenes parse to what the file says.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "scene/scene.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+const char* kGood = R"({
+  "image": {"width": 64, "height": 48, "background": [0, 0, 0]},
+  "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0],
+             "projection": "perspective", "fov_y_deg": 40, "near": 0.1, "far": 100},
+  "ambient_light": [0.02, 0.02, 0.02],
+  "materials": {
+    "marble": {"albedo": [0.9, 0.88, 0.85],
+               "translucency": {"power": 8, "distortion": 0.2, "ambient": 0.1,
+                                "thickness": [0.5, 0.4, 0.3], "tint": [1, 1, 1],
+                                "normalize_distorted_light": false}},
+    "plaster": {"albedo": [0.7, 0.7, 0.7]}
+  },
+  "lights": [
+    {"type": "directional", "direction": [0, 0, 2], "color": [1, 1, 1], "intensity": 1,
+     "translucency_scale": 2},
+    {"type": "point", "position": [0, 1, -2], "color": [1, 0.5, 0.2], "intensity": 3,
+     "translucency_scale": 1, "attenuation": {"constant": 1, "linear": 0, "quadratic": 0.25}}
+  ],
+  "objects": [{"mesh": "quad.obj", "material": "marble",
+               "transform": {"translate": [1, 0, 0], "rotate_deg": [0, 90, 0], "scale": 2}}]
+})";
+
+class SceneFile : public ::testing::Test {
+ protected:
+  void SetUp() override { test::write_file(dir_ / "quad.obj", test::quad_obj()); }
+  Scene parse(const std::string& text) { return parse_scene(text, dir_ / "s.json", dir_.path()); }
+  // Replaces the first occurrence of `from` in the good scene.
+  std::string edit(const std::string& from, const std::string& to) {
+    std::string s = kGood;
+    const size_t pos = s.find(from);
+    EXPECT_NE(pos, std::string::npos) << from;
+    return s.replace(pos, from.size(), to);
+  }
+  std::string error_of(const std::string& text) {
+    try {
+      parse(text);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+  test::TempDir dir_;
+};
+
+TEST_F(SceneFile, GoodSceneParsesToWhatTheFileSays) {
+  const Scene s = parse(kGood);
+  EXPECT_EQ(s.width, 64);
+  ASSERT_EQ(s.materials.size(), 2u);
+  const Material& marble = s.materials[0];  // keys are sorted: marble, plaster
+  EXPECT_EQ(marble.name, "marble");
+  ASSERT_TRUE(marble.translucency);
+  EXPECT_EQ(marble.translucency->power, 8);
+  EXPECT_EQ(marble.translucency->thickness, glm::dvec3(0.5, 0.4, 0.3));
+  EXPECT_FALSE(s.materials[1].translucency);  // plain diffuse: no translucency stage
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].direction, glm::dvec3(0, 0, 1));  // normalised
+  EXPECT_EQ(s.lights[1].color, glm::dvec3(3, 1.5, 0.6000000000000001));  // times intensity
+  EXPECT_EQ(s.lights[1].kq, 0.25);
+  // Transform: scale 2, rotate 90 about Y, translate +1 in x. Quad vertex (-1,-1,0) ->
+  // scaled (-2,-2,0) -> rotated (0,-2,2) -> translated (1,-2,2).
+  const glm::dvec3 p = s.objects[0].mesh.positions[0];
+  EXPECT_NEAR(p.x, 1, 1e-12);
+  EXPECT_NEAR(p.y, -2, 1e-12);
+  EXPECT_NEAR(p.z, 2, 1e-12);
+  // The normal (0,0,1) rotates to (1,0,0) and stays unit under the uniform scale.
+  const glm::dvec3 n = s.objects[0].mesh.normals[0];
+  EXPECT_NEAR(n.x, 1, 1e-12);
+  EXPECT_NEAR(glm::length(n), 1, 1e-12);
+  const SceneNeeds needs = scene_needs(s);
+  EXPECT_EQ(needs.directional_lights, 1);
+  EXPECT_EQ(needs.point_lights, 1);
+  EXPECT_TRUE(needs.any_translucency);
+  EXPECT_FALSE(needs.any_vertex_thickness);
+}
+
+struct BadCase {
+  const char* name;
+  const char* from;
+  const char* to;
+  const char* expect_in_message;
+};
+
+const BadCase kBad[] = {
+    {"unknown_top_key", "\"ambient_light\"", "\"ambient_lihgt\"", "ambient_lihgt: unknown key"},
+    {"unknown_material_key", "\"albedo\": [0.9", "\"albedoo\": [0.9",
+     "materials.marble.albedoo: unknown key"},
+    {"negative_power", "\"power\": 8", "\"power\": -1",
+     "materials.marble.translucency.power: out of range"},
+    {"power_as_string", "\"power\": 8", "\"power\": \"8\"",
+     "materials.marble.translucency.power: expected a number"},
+    {"bad_thickness_word", "\"thickness\": [0.5, 0.4, 0.3]", "\"thickness\": \"vertexx\"",
+     "materials.marble.translucency.thickness"},
+    {"negative_scale", "\"translucency_scale\": 2", "\"translucency_scale\": -2",
+     "lights[0].translucency_scale: out of range"},
+    {"bad_light_type", "\"type\": \"directional\"", "\"type\": \"spot\"", "lights[0].type"},
+    {"zero_direction", "\"direction\": [0, 0, 2]", "\"direction\": [0, 0, 0]",
+     "lights[0].direction: must not be zero"},
+    {"short_colour", "\"color\": [1, 1, 1]", "\"color\": [1, 1]", "lights[0].color"},
+    {"zero_attenuation", "\"constant\": 1, \"linear\": 0, \"quadratic\": 0.25",
+     "\"constant\": 0, \"linear\": 0, \"quadratic\": 0", "lights[1].attenuation"},
+    {"unknown_material_ref", "\"material\": \"marble\"", "\"material\": \"marbel\"",
+     "objects[0].material: unknown material"},
+    {"missing_mesh", "\"mesh\": \"quad.obj\"", "\"mesh\": \"nope.obj\"", "nope.obj"},
+    {"width_zero", "\"width\": 64", "\"width\": 0", "image.width: out of range"},
+    {"far_before_near", "\"far\": 100", "\"far\": 0.01", "camera.far"},
+    {"bad_projection", "\"perspective\"", "\"fisheye\"", "camera.projection"},
+    {"up_parallel", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 1]", "camera.up"},
+    {"vertex_thickness_without_colours", "\"thickness\": [0.5, 0.4, 0.3]",
+     "\"thickness\": \"vertex\"", "has no vertex colours"},
+    {"syntax_error_line", "\"lights\": [", "\"lights\": [,", "s.json:16: invalid JSON"},
+};
+
+class BadScene : public SceneFile, public ::testing::WithParamInterface<BadCase> {};
+
+TEST_P(BadScene, NamesTheFileAndTheKey) {
+  const BadCase& c = GetParam();
+  const std::string msg = error_of(edit(c.from, c.to));
+  EXPECT_NE(msg.find(c.expect_in_message), std::string::npos) << msg;
+  EXPECT_NE(msg.find("s.json"), std::string::npos) << msg;
+}
+
+INSTANTIATE_TEST_SUITE_P(Validation, BadScene, ::testing::ValuesIn(kBad),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST_F(SceneFile, CliReportsOneLineExitTwoAndWritesNothing) {
+  test::write_file(dir_ / "bad.json", edit("\"power\": 8", "\"power\": -3"));
+  const auto out = dir_ / "out.png";
+  const auto r = test::run_ltrender("render " + (dir_ / "bad.json").string() +
+                                    " --path glsl -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("bad.json:materials.marble.translucency.power"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(SceneFile, CliRejectsUnknownPathAndVariantAndMissingScene) {
+  test::write_file(dir_ / "good.json", kGood);
+  const std::string scene = (dir_ / "good.json").string();
+  const auto out = dir_ / "out.png";
+  auto r = test::run_ltrender("render " + scene + " --path glsll -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown path"), std::string::npos) << r.err;
+  r = test::run_ltrender("render " + scene + " --path glsl --variant pow=nope -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no such variant"), std::string::npos) << r.err;
+  r = test::run_ltrender("render " + (dir_ / "missing.json").string() + " --path glsl -o " +
+                         out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("missing.json: file not found"), std::string::npos) << r.err;
+  r = test::run_ltrender("render " + scene + " --path glsl -o " + (dir_ / "out.jpg").string());
+  EXPECT_EQ(r.exit_code, 2);
+  r = test::run_ltrender("render " + scene + " --path glsl --width -5 -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(SceneFile, CliNeverOverwritesAnInput) {
+  test::write_file(dir_ / "good.json", kGood);
+  const auto before = std::filesystem::file_size(dir_ / "quad.obj");
+  // An output named like an input mesh (with an image extension it would still be refused:
+  // here the scene file itself, renamed to .png, is the input).
+  test::write_file(dir_ / "scene.png", kGood);
+  const auto r = test::run_ltrender("render " + (dir_ / "scene.png").string() +
+                                    " --path glsl -o " + (dir_ / "scene.png").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("overwrite an input"), std::string::npos) << r.err;
+  EXPECT_EQ(std::filesystem::file_size(dir_ / "quad.obj"), before);
+  EXPECT_EQ(test::run_ltrender("info " + (dir_ / "scene.png").string()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace lt

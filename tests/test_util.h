@@ -1,0 +1,75 @@
+// Shared helpers for tests: temporary directories, running the CLI, small scenes.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace lt::test {
+
+namespace fs = std::filesystem;
+
+// A fresh directory under the system temp dir, removed at scope exit.
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            ("lt_" + std::string(info ? info->test_suite_name() : "t") + "_" +
+             std::string(info ? info->name() : "t") + "_" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
+inline void write_file(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+struct RunResult {
+  int exit_code;
+  std::string out, err;
+};
+
+// Runs the built ltrender binary with `args` (a shell-quoted string).
+inline RunResult run_ltrender(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path();
+  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(std::rand());
+  const fs::path out = dir / ("lt_out_" + tag), err = dir / ("lt_err_" + tag);
+  const std::string cmd =
+      std::string(LT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(out),
+              slurp(err)};
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+// A unit quad in the XY plane facing +Z (two triangles), as OBJ with explicit normals.
+inline std::string quad_obj() {
+  return "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+         "vn 0 0 1\n"
+         "f 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
+}
+
+inline const fs::path source_dir() { return fs::path(LT_SOURCE_DIR); }
+
+}  // namespace lt::test
