@@ -15,101 +15,29 @@
 #include "bake/thickness_baker.h"
 #include "core/error.h"
 #include "scene/mesh.h"
+#include "scene/meshgen.h"
 #include "test_util.h"
 
 namespace lt::bake {
 namespace {
 
+namespace fs = std::filesystem;
+
 // ---------------------------------------------------------------------------------------------
 // Meshes on plain arrays (the baker's core input).
 
-// Geodesic sphere: icosahedron, each triangle split in four `subdivisions` times, new vertices
-// pushed onto the sphere. Vertices lie exactly on the sphere; normals are exactly radial, so the
+// meshgen's geodesic sphere: vertices exactly on the sphere, normals exactly radial, so the
 // analytic tests check the baker, not a normal estimator.
 Surface icosphere(double radius, int subdivisions, const glm::dvec3& centre = glm::dvec3(0.0)) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<glm::dvec3> unit = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
-                                  {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                                  {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (auto& p : unit) p = glm::normalize(p);
-  std::vector<glm::uvec3> tri = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<unsigned, unsigned>, unsigned> midpoint;
-    auto mid = [&](unsigned a, unsigned b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoint.find(key);
-      if (it != midpoint.end()) return it->second;
-      unit.push_back(glm::normalize(unit[a] + unit[b]));
-      return midpoint[key] = static_cast<unsigned>(unit.size() - 1);
-    };
-    std::vector<glm::uvec3> next;
-    for (const auto& f : tri) {
-      const unsigned a = mid(f.x, f.y), b = mid(f.y, f.z), c = mid(f.z, f.x);
-      next.insert(next.end(), {{f.x, a, c}, {f.y, b, a}, {f.z, c, b}, {a, b, c}});
-    }
-    tri.swap(next);
-  }
-  Surface s;
-  for (const auto& u : unit) {
-    s.positions.push_back(centre + radius * u);
-    s.normals.push_back(u);
-  }
-  s.triangles = tri;
+  Surface s = surface_of(meshgen::icosphere(radius, subdivisions));
+  for (auto& p : s.positions) p += centre;
   return s;
 }
 
-// Axis-aligned box centred at the origin, each face an n x n grid, vertices shared between
-// faces (so corner and edge normals are the average of the faces meeting there, as a smooth
-// mesh would have). Normals are area-weighted face normals.
+// meshgen's box: each face an n x n grid with its own vertices and flat normals, so corners and
+// edges are split (three and two vertices at one position), as exported hard-edged meshes are.
 Surface box(const glm::dvec3& half, int n) {
-  Surface s;
-  std::map<std::tuple<int, int, int>, unsigned> index;  // on the integer lattice 0..n
-  auto vertex = [&](const glm::ivec3& g) {
-    const auto key = std::make_tuple(g.x, g.y, g.z);
-    auto it = index.find(key);
-    if (it != index.end()) return it->second;
-    s.positions.push_back(half * (2.0 * glm::dvec3(g) / double(n) - 1.0));
-    return index[key] = static_cast<unsigned>(s.positions.size() - 1);
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int side = 0; side < 2; ++side) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-          const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
-          unsigned q[4];
-          for (int k = 0; k < 4; ++k) {
-            glm::ivec3 g;
-            g[axis] = side * n;
-            g[u] = i + di[k];
-            g[v] = j + dj[k];
-            q[k] = vertex(g);
-          }
-          // (u, v, axis) is right-handed: counter-clockwise seen from +axis for side 1.
-          if (side == 1) {
-            s.triangles.push_back({q[0], q[1], q[2]});
-            s.triangles.push_back({q[0], q[2], q[3]});
-          } else {
-            s.triangles.push_back({q[0], q[2], q[1]});
-            s.triangles.push_back({q[0], q[3], q[2]});
-          }
-        }
-      }
-    }
-  }
-  s.normals.assign(s.positions.size(), glm::dvec3(0.0));
-  for (const auto& t : s.triangles) {
-    const glm::dvec3 n =
-        glm::cross(s.positions[t.y] - s.positions[t.x], s.positions[t.z] - s.positions[t.x]);
-    s.normals[t.x] += n;
-    s.normals[t.y] += n;
-    s.normals[t.z] += n;
-  }
-  for (auto& nn : s.normals) nn = glm::normalize(nn);
-  return s;
+  return surface_of(meshgen::box(half, n));
 }
 
 BakeResult bake(const Surface& s, const BakeSettings& settings) {
@@ -170,6 +98,18 @@ struct SphereCase {
   Sampler sampler;
 };
 
+// "R1_D0.5_cosine_stratified", readable in test names and failure messages.
+std::string name_of(const SphereCase& c) {
+  std::ostringstream out;
+  out << "R" << c.radius << "_D" << c.d << "_"
+      << (c.distribution == Distribution::Cosine ? "cosine" : "uniform") << "_"
+      << (c.sampler == Sampler::Stratified ? "stratified" : "random");
+  return out.str();
+}
+void PrintTo(const SphereCase& c, std::ostream* os) {
+  *os << name_of(c);
+}
+
 class AnalyticSphere : public ::testing::TestWithParam<SphereCase> {};
 
 // 40962 vertices x 64 rays: 2.6 M rays, so 5 sigma of the mean is at most 1.6e-3. The sagitta
@@ -198,8 +138,8 @@ TEST_P(AnalyticSphere, OcclusionMatchesChordLength) {
                            << "], 5 sigma " << tol;
   EXPECT_LE(m, e.hi + tol) << "analytic " << analytic << ", sandwich [" << e.lo << ", " << e.hi
                            << "], 5 sigma " << tol;
-  // The sandwich is tight: the polyhedron changes the answer by < 1e-3 here.
-  EXPECT_NEAR(e.lo, analytic, 1e-12);
+  // The sandwich is tight: the polyhedron and the eps offset change the answer by < 1e-3.
+  EXPECT_NEAR(e.lo, analytic, 5e-4);
   EXPECT_LT(e.hi - e.lo, 1e-3);
 
   if (c.sampler == Sampler::Stratified) {
@@ -222,7 +162,12 @@ INSTANTIATE_TEST_SUITE_P(
                       SphereCase{1.0, 0.2, Distribution::Uniform, Sampler::Stratified},
                       SphereCase{1.0, 1.5, Distribution::Uniform, Sampler::Stratified},
                       SphereCase{3.0, 2.0, Distribution::Cosine, Sampler::Random},
-                      SphereCase{1.0, 0.7, Distribution::Uniform, Sampler::Random}));
+                      SphereCase{1.0, 0.7, Distribution::Uniform, Sampler::Random}),
+    [](const ::testing::TestParamInfo<SphereCase>& info) {
+      std::string name = name_of(info.param);
+      std::replace(name.begin(), name.end(), '.', 'p');  // test names are identifiers
+      return name;
+    });
 
 // A max distance longer than the diameter: every chord is shorter, every ray hits.
 TEST(Bake, SphereWithMaxDistanceBeyondTheDiameterIsFullyOccluded) {
@@ -294,7 +239,7 @@ TEST(Bake, DistanceEstimatorMatchesMeanChordOnASphere) {
   };
   const double lo = estimate(radius);
   const double hi = estimate(radius - sagitta(s, glm::dvec3(0.0), radius));
-  EXPECT_NEAR(lo, analytic, 1e-6);
+  EXPECT_NEAR(lo, analytic, 1e-4);  // the eps offset shortens chords a little
   // Per-ray values lie in [0, 1]: their standard deviation is at most 1/2.
   const double tol = 5.0 * 0.5 / std::sqrt(double(s.positions.size()) * settings.rays);
   EXPECT_GE(mean(r.occlusion), lo - tol);
@@ -335,30 +280,36 @@ TEST(Bake, ThinSlabIsMoreTranslucentThanAThickBlock) {
 
 // Addendum: with flipped normals "you will end up with a different value at each vertex, because
 // the inner faces that meet at each vertex create occlusion between each other": at a corner
-// three inner faces meet, at an edge two, at a face centre none is near.
+// three inner faces meet, at an edge two, at a face centre none is near. meshgen's box splits its
+// corners (3 copies) and edges (2 copies): every copy must get the same value.
 TEST(Bake, CubeCornersAreMoreOccludedThanEdgesThanFaceCentres) {
   const Surface cube = box({1.0, 1.0, 1.0}, 8);
   BakeSettings settings;
   settings.rays = 256;
   settings.max_distance = 1.0;
   const BakeResult r = bake(cube, settings);
-  double corner = 0, edge = 0, face = 0;
-  int nc = 0, ne = 0, nf = 0;
+  std::vector<double> corner, edge, face;
   for (std::size_t i = 0; i < cube.positions.size(); ++i) {
     const glm::dvec3 a = glm::abs(cube.positions[i]);
     const int on_faces = (a.x == 1.0) + (a.y == 1.0) + (a.z == 1.0);
     const int zeros = (a.x == 0.0) + (a.y == 0.0) + (a.z == 0.0);
-    if (on_faces == 3) corner += r.occlusion[i], ++nc;
-    if (on_faces == 2 && zeros == 1) edge += r.occlusion[i], ++ne;
-    if (on_faces == 1 && zeros == 2) face += r.occlusion[i], ++nf;
+    if (on_faces == 3) corner.push_back(r.occlusion[i]);
+    if (on_faces == 2 && zeros == 1) edge.push_back(r.occlusion[i]);
+    if (on_faces == 1 && zeros == 2) face.push_back(r.occlusion[i]);
   }
-  ASSERT_EQ(nc, 8);
-  ASSERT_EQ(ne, 12);
-  ASSERT_EQ(nf, 6);
-  corner /= nc, edge /= ne, face /= nf;
-  EXPECT_GT(corner, edge + 0.05);
-  EXPECT_GT(edge, face + 0.05);
-  EXPECT_LT(face, 0.01);  // the nearest wall is 1 away, reachable only at grazing angles
+  ASSERT_EQ(corner.size(), 8u * 3u);
+  ASSERT_EQ(edge.size(), 12u * 2u);
+  ASSERT_EQ(face.size(), 6u);
+  // Copies at one position share their rays: vertex i and the copy found at the same position.
+  for (std::size_t i = 0; i < cube.positions.size(); ++i) {
+    for (std::size_t j = i + 1; j < cube.positions.size(); ++j) {
+      if (cube.positions[i] == cube.positions[j]) EXPECT_EQ(r.occlusion[i], r.occlusion[j]);
+    }
+  }
+  // By symmetry all corners see the same geometry; they differ only by sampling noise.
+  EXPECT_GT(mean(corner), mean(edge) + 0.05);
+  EXPECT_GT(mean(edge), mean(face) + 0.05);
+  EXPECT_LT(mean(face), 0.01);  // the nearest wall is 1 away, reachable only at grazing angles
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -407,7 +358,7 @@ TEST(Bake, ZeroNormalsFallBackToFaceNormals) {
 
 TEST(Bake, DegenerateTrianglesAndOpenMeshesWork) {
   Surface s = box({1.0, 1.0, 1.0}, 4);
-  // Open the box: drop the top face's triangles (the last 32 are side 1 of axis 2, i.e. +z).
+  // Open the box: drop the last face's 4 x 4 x 2 triangles (its vertices stay, unreferenced).
   s.triangles.resize(s.triangles.size() - 32);
   const EdgeReport edges = count_problem_edges(s.positions, s.triangles);
   EXPECT_EQ(edges.boundary_edges, 4u * 4u);  // the rim of the missing 4 x 4 face
@@ -416,8 +367,8 @@ TEST(Bake, DegenerateTrianglesAndOpenMeshesWork) {
   // Degenerate triangles: a repeated index, and three collinear points of their own.
   s.triangles.push_back({0, 0, 1});
   s.positions.push_back({0.0, 0.0, 0.0});
+  s.positions.push_back({0.25, 0.0, 0.0});
   s.positions.push_back({0.5, 0.0, 0.0});
-  s.positions.push_back({1.0, 0.0, 0.0});
   s.normals.insert(s.normals.end(), 3, glm::dvec3(0.0));
   const unsigned n = static_cast<unsigned>(s.positions.size());
   s.triangles.push_back({n - 3, n - 2, n - 1});
@@ -448,6 +399,23 @@ TEST(Bake, EdgeCountsWeldByPositionAndFindNonManifoldEdges) {
       0u);
 }
 
+// meshgen's degenerate sphere: closed, with zero-area slivers (collinear, or with a corner
+// duplicated at one position). Slivers are not holes, and they bake like the sphere around them.
+TEST(Bake, DegenerateSliversAreNeitherHolesNorNonManifoldAndBakeLikeTheSphere) {
+  const Surface s = surface_of(meshgen::degenerate_sphere(3, 24));
+  const EdgeReport e = count_problem_edges(s.positions, s.triangles);
+  EXPECT_EQ(e.boundary_edges, 0u);
+  EXPECT_EQ(e.non_manifold_edges, 0u);
+  BakeSettings settings;
+  settings.rays = 64;
+  settings.max_distance = 1.0;
+  const BakeResult r = bake(s, settings);
+  // (D/2R)^2 = 0.25; a subdivision-3 sphere has a sagitta of 3e-3 R, and each vertex is within
+  // 2/64 of the sandwich (see AnalyticSphere).
+  for (double o : r.occlusion) EXPECT_NEAR(o, 0.25, 0.05);
+  EXPECT_EQ(r.vertices_without_normal, 0u);
+}
+
 TEST(Bake, EmptyInputGivesAnEmptyResult) {
   EXPECT_TRUE(bake_occlusion({}, {}, {}, {}).occlusion.empty());
 }
@@ -474,29 +442,20 @@ TEST(Bake, SettingsAndColourMapsAreValidated) {
 // translucency = lerp(min, max, occlusion) * tint: thin (occlusion 1) gets max.
 TEST(Bake, TranslucencyIsALerpFromMinToMaxTimesTint) {
   const ColorMap map{0.5, 1.0, {1.0, 0.2, 0.1}};
-  EXPECT_EQ(translucency(0.0, map), glm::dvec3(0.5, 0.1, 0.05));
-  EXPECT_EQ(translucency(1.0, map), glm::dvec3(1.0, 0.2, 0.1));
-  EXPECT_EQ(translucency(0.5, map), glm::dvec3(0.75, 0.15, 0.075));
+  auto expect_rgb = [](const glm::dvec3& got, const glm::dvec3& want) {
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-15) << c;
+  };
+  expect_rgb(translucency(0.0, map), {0.5, 0.1, 0.05});
+  expect_rgb(translucency(1.0, map), {1.0, 0.2, 0.1});
+  expect_rgb(translucency(0.5, map), {0.75, 0.15, 0.075});
+  expect_rgb(translucency(0.5, ColorMap{}), {0.5, 0.5, 0.5});
 }
 
 // ---------------------------------------------------------------------------------------------
 // OpenMesh level: smoothing and the colour attribute.
 
-PolyMesh to_polymesh(const Surface& s) {
-  PolyMesh m;
-  std::vector<PolyMesh::VertexHandle> vh;
-  for (std::size_t i = 0; i < s.positions.size(); ++i) {
-    const auto& p = s.positions[i];
-    vh.push_back(m.add_vertex(PolyMesh::Point(p.x, p.y, p.z)));
-    const auto& n = s.normals[i];
-    m.set_normal(vh.back(), PolyMesh::Normal(n.x, n.y, n.z));
-  }
-  for (const auto& t : s.triangles) m.add_face(vh[t.x], vh[t.y], vh[t.z]);
-  return m;
-}
-
 TEST(Bake, SmoothingAveragesOverOneRingNeighbours) {
-  const PolyMesh m = to_polymesh(icosphere(1.0, 2));
+  const PolyMesh m = meshgen::icosphere(1.0, 2);
   std::vector<double> v(m.n_vertices(), 0.25);
   smooth(m, v, 3);
   for (double x : v) EXPECT_DOUBLE_EQ(x, 0.25);  // a constant is a fixed point
@@ -508,11 +467,23 @@ TEST(Bake, SmoothingAveragesOverOneRingNeighbours) {
   int touched = 0;
   for (std::size_t i = 1; i < v.size(); ++i) touched += v[i] > 0.0;
   EXPECT_EQ(touched, 5);
+
+  // meshgen's box splits corners and edges: copies at one position must stay equal.
+  const PolyMesh box_mesh = meshgen::box({1.0, 1.0, 1.0}, 2);
+  const Surface b = surface_of(box_mesh);
+  std::vector<double> w(b.positions.size());
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] = b.positions[i].x > 0.5 ? 1.0 : 0.0;
+  smooth(box_mesh, w, 2);
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    for (std::size_t j = i + 1; j < w.size(); ++j) {
+      if (b.positions[i] == b.positions[j]) EXPECT_EQ(w[i], w[j]) << i << " " << j;
+    }
+  }
 }
 
 TEST(Bake, BakeMeshWritesTheMappedColoursAndNothingElse) {
-  const Surface slab = box({1.0, 1.0, 0.05}, 4);
-  PolyMesh m = to_polymesh(slab);
+  PolyMesh m = meshgen::box({1.0, 1.0, 0.05}, 4);
+  const Surface slab = surface_of(m);
   BakeSettings settings;
   settings.rays = 64;
   settings.max_distance = 0.5;
@@ -594,7 +565,8 @@ TEST_F(BakeCommand, WritesVertexColoursAndKeepsPositionsAndNormals) {
   ASSERT_EQ(after.mesh.n_faces(), before.mesh.n_faces());
   for (auto vh : after.mesh.vertices()) {
     EXPECT_EQ(after.mesh.point(vh), before.mesh.point(vh));
-    EXPECT_EQ(after.mesh.normal(vh), before.mesh.normal(vh));
+    // Normals survive to float precision (the PLY writer stores them as float).
+    EXPECT_LT((after.mesh.normal(vh) - before.mesh.normal(vh)).norm(), 1e-7);
     const auto c = after.mesh.color(vh);
     // Red within [0.5, 1] (lerp from --min), green and blue the tint's share of it, 8-bit.
     EXPECT_GE(c[0], 0.5f - 1.0f / 255);
@@ -626,7 +598,7 @@ TEST_F(BakeCommand, SameSeedOnOneAndTwoThreadsGivesIdenticalFiles) {
 
 TEST_F(BakeCommand, OpenMeshBakesWithAWarningCountingItsBoundaryEdges) {
   Surface s = box({1.0, 1.0, 1.0}, 4);
-  s.triangles.resize(s.triangles.size() - 32);  // no top face
+  s.triangles.resize(s.triangles.size() - 32);  // one face missing
   test::write_file(dir_ / "open.ply", ply_text(s));
   const test::RunResult r =
       test::run_ltrender("bake " + (dir_ / "open.ply").string() + " -o " + out() + " --rays 16");

@@ -42,7 +42,8 @@ TEST_P(Golden, MatchesWithinThreeLsb) {
   const GoldenCase& g = GetParam();
   const Scene scene = load_scene(test::source_dir() / "scenes" / (g.scene + ".json"));
   const Image img = render_scene(scene, g.path, "", kGoldenWidth, kGoldenHeight);
-  const fs::path golden = test::source_dir() / "tests" / "goldens" / (g.scene + "__" + g.path + ".png");
+  const fs::path golden =
+      test::source_dir() / "tests" / "goldens" / (g.scene + "__" + g.path + ".png");
   if (std::getenv("LT_UPDATE_GOLDENS")) {
     write_image(golden, img);
     GTEST_SKIP() << "updated " << golden;
@@ -61,7 +62,9 @@ TEST_P(Golden, MatchesWithinThreeLsb) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Renders, Golden, ::testing::ValuesIn(golden_cases()),
-                         [](const auto& info) { return info.param.scene + "__" + info.param.path; });
+                         [](const auto& info) {
+                           return info.param.scene + "__" + info.param.path;
+                         });
 
 }  // namespace
 }  // namespace lt

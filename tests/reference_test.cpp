@@ -39,47 +39,127 @@ std::string quad_scene(const QuadCase& c) {
                 "translucency_scale": %.17g}],
     "objects": [{"mesh": "quad.obj", "material": "m"}]
   })",
-                v3(c.ambient_light).c_str(), v3(c.albedo).c_str(), c.power, c.distortion,
-                c.ambient, v3(c.thickness).c_str(), c.normalize_h ? "true" : "false",
-                v3(c.light_dir).c_str(), v3(c.color).c_str(), c.scale);
+                v3(c.ambient_light).c_str(), v3(c.albedo).c_str(), c.power, c.distortion, c.ambient,
+                v3(c.thickness).c_str(), c.normalize_h ? "true" : "false", v3(c.light_dir).c_str(),
+                v3(c.color).c_str(), c.scale);
   return buf;
 }
 
 // The quad's normal is +Z and the orthographic view vector V is +Z everywhere.
 const QuadCase kCases[] = {
     // Backlit: L = (0,0,-1), diffuse 0; H = L + N*0.2 = (0,0,-0.8); t = 0.8; 0.8^4 = 0.4096.
-    // trans = (0.4096*2 + 0.1) * T(0.5) = 0.4548; c = albedo 0.9 * 0.4548 = 0.40932.
-    {"backlit_p4", 4, 0.2, 0.1, 2, {0, 0, 1}, glm::dvec3(0.9), glm::dvec3(1), glm::dvec3(0.5),
-     glm::dvec3(0), false, glm::dvec3(0.40932)},
+    // trans = (0.4096*2 + 0.1) * T(0.5) = 0.9192 * 0.5 = 0.4596; c = albedo 0.9 * 0.4596 = 0.41364.
+    {"backlit_p4",
+     4,
+     0.2,
+     0.1,
+     2,
+     {0, 0, 1},
+     glm::dvec3(0.9),
+     glm::dvec3(1),
+     glm::dvec3(0.5),
+     glm::dvec3(0),
+     false,
+     glm::dvec3(0.41364)},
     // 0^0: front light L = (0,0,1): diffuse 1; H = (0,0,1), t = sat(-1) = 0; p = 0 so lobe = 1.
     // c = 0.5 * (1 + (1*1 + 0)*1) = 1.0.
-    {"zero_pow_zero", 0, 0, 0, 1, {0, 0, -1}, glm::dvec3(0.5), glm::dvec3(1), glm::dvec3(1),
-     glm::dvec3(0), false, glm::dvec3(1.0)},
+    {"zero_pow_zero",
+     0,
+     0,
+     0,
+     1,
+     {0, 0, -1},
+     glm::dvec3(0.5),
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(0),
+     false,
+     glm::dvec3(1.0)},
     // Huge p: backlit, d = 0.5: t = 0.5, 0.5^1024 underflows to ~5.6e-309 in double: 0 in any
     // 8-bit or float image. c = 1 * (0.05 + (0 * 3 + 0.25) * 0.8) = 0.25.
-    {"huge_power_1024", 1024, 0.5, 0.25, 3, {0, 0, 1}, glm::dvec3(1), glm::dvec3(1),
-     glm::dvec3(0.8), glm::dvec3(0.05), false, glm::dvec3(0.25)},
+    {"huge_power_1024",
+     1024,
+     0.5,
+     0.25,
+     3,
+     {0, 0, 1},
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(0.8),
+     glm::dvec3(0.05),
+     false,
+     glm::dvec3(0.25)},
     // Fractional p, coloured: backlit, d = 0: t = 1, lobe = 1 for any p.
     // c = albedo * color * (1*0.5 + 0) * T = (0.8*1*0.5*1, 0.6*0.5*0.5*0.5, 0.4*0.25*0.5*0.2).
-    {"coloured_fractional", 2.5, 0, 0, 0.5, {0, 0, 1}, {0.8, 0.6, 0.4}, {1, 0.5, 0.25},
-     {1, 0.5, 0.2}, glm::dvec3(0), false, {0.4, 0.075, 0.01}},
+    {"coloured_fractional",
+     2.5,
+     0,
+     0,
+     0.5,
+     {0, 0, 1},
+     {0.8, 0.6, 0.4},
+     {1, 0.5, 0.25},
+     {1, 0.5, 0.2},
+     glm::dvec3(0),
+     false,
+     {0.4, 0.075, 0.01}},
     // Grazing light from the side, 60 degrees behind: direction = (sin60, 0, cos60) so
     // L = (-0.8660254, 0, -0.5); diffuse 0. d = 1: H = (-0.8660254, 0, 0.5), t = sat(-0.5) = 0.
     // p = 3: lobe 0. c = 1 * (0 + (0 + 0.2) * 1) = 0.2 (the ambient translucency alone).
-    {"negative_dot", 3, 1, 0.2, 4, {0.8660254037844386, 0, 0.5}, glm::dvec3(1), glm::dvec3(1),
-     glm::dvec3(1), glm::dvec3(0), false, glm::dvec3(0.2)},
+    {"negative_dot",
+     3,
+     1,
+     0.2,
+     4,
+     {0.8660254037844386, 0, 0.5},
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(0),
+     false,
+     glm::dvec3(0.2)},
     // Normalised H: same light, d = -1 (negative distortion, |H| > 1):
     // H = L - N = (-0.8660254, 0, -1.5), |H| = sqrt(0.75 + 2.25) = sqrt(3); H/|H| z = -0.8660254;
     // t = 0.8660254, p = 2: 0.75. c = 1 * ((0.75 * 1 + 0) * 1) = 0.75.
-    {"normalized_h", 2, -1, 0, 1, {0.8660254037844386, 0, 0.5}, glm::dvec3(1), glm::dvec3(1),
-     glm::dvec3(1), glm::dvec3(0), true, glm::dvec3(0.75)},
+    {"normalized_h",
+     2,
+     -1,
+     0,
+     1,
+     {0.8660254037844386, 0, 0.5},
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(0),
+     true,
+     glm::dvec3(0.75)},
     // Saturating scale: backlit, d = 0, t = 1: c = 1 * (1 * 50) * 1 = 50 (HDR, unclamped in EXR).
-    {"saturating_scale", 8, 0, 0, 50, {0, 0, 1}, glm::dvec3(1), glm::dvec3(1), glm::dvec3(1),
-     glm::dvec3(0), false, glm::dvec3(50)},
+    {"saturating_scale",
+     8,
+     0,
+     0,
+     50,
+     {0, 0, 1},
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(1),
+     glm::dvec3(0),
+     false,
+     glm::dvec3(50)},
     // Thickness 0: only diffuse remains; front light at 60 deg: diffuse = cos60 = 0.5.
     // c = 0.6 * (0.5 + anything * 0) = 0.3.
-    {"thickness_zero", 4, 0.2, 0.3, 2, {-0.8660254037844386, 0, -0.5}, glm::dvec3(0.6),
-     glm::dvec3(1), glm::dvec3(0), glm::dvec3(0), false, glm::dvec3(0.3)},
+    {"thickness_zero",
+     4,
+     0.2,
+     0.3,
+     2,
+     {-0.8660254037844386, 0, -0.5},
+     glm::dvec3(0.6),
+     glm::dvec3(1),
+     glm::dvec3(0),
+     glm::dvec3(0),
+     false,
+     glm::dvec3(0.3)},
 };
 
 class ReferenceQuad : public ::testing::TestWithParam<QuadCase> {};

@@ -1,9 +1,10 @@
 // Scene validation: every bad input is one line naming the file and the key, exit 2, and no
 // output file; good scenes parse to what the file says.
+#include "scene/scene.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "scene/scene.h"
 #include "test_util.h"
 
 namespace lt {
@@ -64,7 +65,7 @@ TEST_F(SceneFile, GoodSceneParsesToWhatTheFileSays) {
   EXPECT_EQ(marble.translucency->thickness, glm::dvec3(0.5, 0.4, 0.3));
   EXPECT_FALSE(s.materials[1].translucency);  // plain diffuse: no translucency stage
   ASSERT_EQ(s.lights.size(), 2u);
-  EXPECT_EQ(s.lights[0].direction, glm::dvec3(0, 0, 1));  // normalised
+  EXPECT_EQ(s.lights[0].direction, glm::dvec3(0, 0, 1));                 // normalised
   EXPECT_EQ(s.lights[1].color, glm::dvec3(3, 1.5, 0.6000000000000001));  // times intensity
   EXPECT_EQ(s.lights[1].kq, 0.25);
   // Transform: scale 2, rotate 90 about Y, translate +1 in x. Quad vertex (-1,-1,0) ->
@@ -118,7 +119,7 @@ const BadCase kBad[] = {
     {"up_parallel", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 1]", "camera.up"},
     {"vertex_thickness_without_colours", "\"thickness\": [0.5, 0.4, 0.3]",
      "\"thickness\": \"vertex\"", "has no vertex colours"},
-    {"syntax_error_line", "\"lights\": [", "\"lights\": [,", "s.json:16: invalid JSON"},
+    {"syntax_error_line", "\"lights\": [", "\"lights\": [,", "s.json:13: invalid JSON"},
 };
 
 class BadScene : public SceneFile, public ::testing::WithParamInterface<BadCase> {};
@@ -136,8 +137,8 @@ INSTANTIATE_TEST_SUITE_P(Validation, BadScene, ::testing::ValuesIn(kBad),
 TEST_F(SceneFile, CliReportsOneLineExitTwoAndWritesNothing) {
   test::write_file(dir_ / "bad.json", edit("\"power\": 8", "\"power\": -3"));
   const auto out = dir_ / "out.png";
-  const auto r = test::run_ltrender("render " + (dir_ / "bad.json").string() +
-                                    " --path glsl -o " + out.string());
+  const auto r = test::run_ltrender("render " + (dir_ / "bad.json").string() + " --path glsl -o " +
+                                    out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("bad.json:materials.marble.translucency.power"), std::string::npos) << r.err;
@@ -172,8 +173,8 @@ TEST_F(SceneFile, CliNeverOverwritesAnInput) {
   // An output named like an input mesh (with an image extension it would still be refused:
   // here the scene file itself, renamed to .png, is the input).
   test::write_file(dir_ / "scene.png", kGood);
-  const auto r = test::run_ltrender("render " + (dir_ / "scene.png").string() +
-                                    " --path glsl -o " + (dir_ / "scene.png").string());
+  const auto r = test::run_ltrender("render " + (dir_ / "scene.png").string() + " --path glsl -o " +
+                                    (dir_ / "scene.png").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("overwrite an input"), std::string::npos) << r.err;
   EXPECT_EQ(std::filesystem::file_size(dir_ / "quad.obj"), before);

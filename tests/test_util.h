@@ -8,6 +8,10 @@
 #include <fstream>
 #include <string>
 
+namespace lt {
+namespace fs = std::filesystem;  // the same alias as core/fs.h
+}  // namespace lt
+
 namespace lt::test {
 
 namespace fs = std::filesystem;
@@ -70,6 +74,8 @@ inline std::string quad_obj() {
          "f 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
 }
 
-inline const fs::path source_dir() { return fs::path(LT_SOURCE_DIR); }
+inline const fs::path source_dir() {
+  return fs::path(LT_SOURCE_DIR);
+}
 
 }  // namespace lt::test

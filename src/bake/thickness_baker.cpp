@@ -32,8 +32,8 @@ std::uint64_t mix64(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
-// Nested rather than xor-ed together so that (seed, vertex, ray) triples cannot collide by
-// cancelling each other out.
+// Nested rather than xor-ed together, so that related triples such as (s, v, r) and (s, r, v)
+// give unrelated numbers.
 std::uint64_t hash3(std::uint64_t seed, std::uint64_t vertex, std::uint64_t ray) {
   return mix64(mix64(mix64(seed) ^ vertex) ^ ray);
 }
@@ -66,7 +66,8 @@ constexpr std::uint64_t kShiftStream = ~0ull;
 // Directions.
 
 // Orthonormal basis around unit n without a branch on a "least aligned axis": Duff et al.,
-// "Building an Orthonormal Basis, Revisited" (JCGT 2017). Continuous except at n.z = -1 exactly.
+// "Building an Orthonormal Basis, Revisited" (JCGT 2017). Defined for every unit n; the frame
+// flips where n.z changes sign, which is harmless: each vertex's azimuths are randomly rotated.
 void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
   const double sign = std::copysign(1.0, n.z);
   const double a = -1.0 / (sign + n.z);
@@ -75,16 +76,26 @@ void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
   b = {c, sign + n.y * n.y * a, -n.y};
 }
 
-// (u1, u2) in [0,1)^2 -> direction around +z. u1 picks the polar angle, u2 the azimuth, so the
-// stratification in u1 is a stratification in cos(theta), which is what the chord test of a
-// sphere depends on.
-glm::dvec3 hemisphere(const glm::dvec2& u, Distribution distribution) {
-  // Cosine: cos(theta) = sqrt(1 - u1) (Malley's method: a uniform disk point lifted to the
-  // hemisphere). Uniform: cos(theta) = 1 - u1. Both are > 0 for u1 in [0, 1).
-  const double cos_theta = distribution == Distribution::Cosine ? std::sqrt(1.0 - u.x) : 1.0 - u.x;
-  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  const double phi = 2.0 * std::numbers::pi * u.y;
-  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+// (u1, azimuth) -> direction around +z. u1 in [0, 1) picks the polar angle, so stratifying u1
+// stratifies cos(theta), which is what the chord test of a sphere depends on. The azimuth comes
+// as (cos(phi), sin(phi)).
+glm::dvec3 hemisphere(double u1, const glm::dvec2& azimuth, Distribution distribution) {
+  // Cosine: cos(theta) = sqrt(1 - u1), sin(theta) = sqrt(u1) (Malley's method: a uniform disk
+  // point lifted to the hemisphere). Uniform: cos(theta) = 1 - u1. Both are > 0 for u1 < 1.
+  double cos_theta, sin_theta;
+  if (distribution == Distribution::Cosine) {
+    cos_theta = std::sqrt(1.0 - u1);
+    sin_theta = std::sqrt(u1);
+  } else {
+    cos_theta = 1.0 - u1;
+    sin_theta = std::sqrt(std::max(0.0, u1 * (2.0 - u1)));  // 1 - cos^2, without cancellation
+  }
+  return {sin_theta * azimuth.x, sin_theta * azimuth.y, cos_theta};
+}
+
+glm::dvec2 unit_circle(double turns) {
+  const double phi = 2.0 * std::numbers::pi * turns;
+  return {std::cos(phi), std::sin(phi)};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -115,9 +126,9 @@ class EmbreeScene {
     rtcSetDeviceErrorFunction(device_, on_embree_error, &errors_);
 
     scene_ = rtcNewScene(device_);
-    // ROBUST: watertight triangle tests, so rays cannot slip between two triangles that share an
-    // edge (a leak would read as "unoccluded", i.e. thick). HIGH: spatial splits, a slower build
-    // that pays off with hundreds of rays per vertex.
+    // ROBUST: no traversal shortcuts that trade accuracy for speed, so a ray cannot slip through
+    // the shared edge of two triangles (a leak would read as "unoccluded", i.e. thick). HIGH:
+    // spatial splits, a slower build that pays off with hundreds of rays per vertex.
     rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
 
@@ -202,11 +213,15 @@ struct Tracer {
   const BakeSettings& settings;
   float epsilon;
   float max_distance;
+  // Stratified sampler: (cos, sin) of 2 pi * radical_inverse2(i) for every ray i, computed once
+  // per bake. A vertex's random azimuth shift is then a rotation of these, not N sincos calls.
+  std::vector<glm::dvec2> azimuths;
 
   // Occlusion in [0, 1] of one vertex; `vertex` only seeds the random numbers.
   double trace(std::uint64_t vertex, const VertexJob& job, std::vector<RTCRayHit>& buffer) const {
     const int n = settings.rays;
     const glm::dvec2 shift = unit_pair(hash3(settings.seed, vertex, kShiftStream));
+    const glm::dvec2 rotation = unit_circle(shift.y);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     const bool distance = settings.estimator == Estimator::Distance;
@@ -217,14 +232,21 @@ struct Tracer {
       const int count = std::min(kRayBlock, n - begin);
       for (int k = 0; k < count; ++k) {
         const int i = begin + k;
-        glm::dvec2 u;
+        double u1;
+        glm::dvec2 azimuth;
         if (settings.sampler == Sampler::Stratified) {
-          u = {frac((i + 0.5) / n + shift.x),
-               frac(radical_inverse2(static_cast<std::uint32_t>(i)) + shift.y)};
+          // Cranley-Patterson rotation of the Hammersley point ((i + 0.5) / N, radical_inverse(i))
+          // by `shift`, modulo 1; for the azimuth, adding shift.y turns is a rotation.
+          u1 = frac((i + 0.5) / n + shift.x);
+          const glm::dvec2 a = azimuths[static_cast<std::size_t>(i)];
+          azimuth = {a.x * rotation.x - a.y * rotation.y, a.y * rotation.x + a.x * rotation.y};
         } else {
-          u = unit_pair(hash3(settings.seed, vertex, static_cast<std::uint64_t>(i)));
+          const glm::dvec2 u =
+              unit_pair(hash3(settings.seed, vertex, static_cast<std::uint64_t>(i)));
+          u1 = u.x;
+          azimuth = unit_circle(u.y);
         }
-        const glm::dvec3 local = hemisphere(u, settings.distribution);
+        const glm::dvec3 local = hemisphere(u1, azimuth, settings.distribution);
         const glm::vec3 dir(job.tangent * local.x + job.bitangent * local.y + job.inward * local.z);
         RTCRayHit& rh = buffer[static_cast<std::size_t>(k)];
         rh.ray.org_x = job.origin.x;
@@ -275,6 +297,34 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 bool usable(const glm::dvec3& v) {
   const double len = glm::length(v);
   return std::isfinite(len) && len > 0.0;
+}
+
+// Vertices with bit-identical positions share one id, ids numbered in sorted position order.
+// Sorting, not hashing, so that -0.0 and 0.0 weld like they do geometrically.
+struct Welding {
+  std::vector<std::uint32_t> id;  // per vertex
+  std::size_t groups = 0;
+};
+
+Welding weld_by_position(const std::vector<glm::dvec3>& positions) {
+  const std::size_t nv = positions.size();
+  std::vector<std::uint32_t> order(nv);
+  for (std::size_t i = 0; i < nv; ++i) order[i] = static_cast<std::uint32_t>(i);
+  auto key = [&](std::uint32_t i) {
+    return std::tie(positions[i].x, positions[i].y, positions[i].z);
+  };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return key(a) < key(b) || (key(a) == key(b) && a < b);
+  });
+  Welding w;
+  w.id.resize(nv);
+  std::uint32_t id = 0;
+  for (std::size_t k = 0; k < nv; ++k) {
+    if (k > 0 && key(order[k]) != key(order[k - 1])) ++id;
+    w.id[order[k]] = id;
+  }
+  w.groups = nv == 0 ? 0 : static_cast<std::size_t>(id) + 1;
+  return w;
 }
 
 }  // namespace
@@ -345,44 +395,54 @@ BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
   result.max_distance =
       settings.max_distance ? *settings.max_distance : settings.max_distance_relative * diagonal;
 
-  // Fallback normals: area-weighted face normals (the cross product's length is twice the area),
-  // only needed where the given normal is zero or not finite.
-  std::vector<glm::dvec3> inward(nv);
-  std::vector<char> has_normal(nv, 0);
-  bool any_missing = false;
+  // Ray normals, one per position. Vertices at the same position (split for hard edges or
+  // texture seams) cast their rays together, with the mean of their unit normals: at a box corner
+  // split three ways the rays go along the inward diagonal, so the origin is inside the solid
+  // (an origin pushed along one face's normal would sit on the two other faces' planes and see
+  // half its rays leave at once), and every copy of the corner gets the same thickness.
+  const Welding weld = weld_by_position(positions);
+  const std::size_t ng = weld.groups;
+  std::vector<std::uint32_t> representative(ng, std::numeric_limits<std::uint32_t>::max());
+  std::vector<glm::dvec3> normal_sum(ng, glm::dvec3(0.0));
   for (std::size_t v = 0; v < nv; ++v) {
-    if (usable(normals[v])) {
-      inward[v] = -glm::normalize(normals[v]);
-      has_normal[v] = 1;
-    } else {
-      any_missing = true;
-    }
+    const std::uint32_t g = weld.id[v];
+    representative[g] = std::min(representative[g], static_cast<std::uint32_t>(v));
+    if (usable(normals[v])) normal_sum[g] += glm::normalize(normals[v]);
   }
+  // Fallback where no copy has a usable normal: the area-weighted normal of the faces around the
+  // position (a cross product's length is twice its triangle's area).
+  bool any_missing = false;
+  for (const auto& n : normal_sum) any_missing = any_missing || !usable(n);
   if (any_missing) {
-    std::vector<glm::dvec3> face_sum(nv, glm::dvec3(0.0));
+    std::vector<glm::dvec3> face_sum(ng, glm::dvec3(0.0));
     for (const auto& t : triangles) {
       const glm::dvec3 n =
           glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]);
       if (!usable(n)) continue;
-      face_sum[t.x] += n;
-      face_sum[t.y] += n;
-      face_sum[t.z] += n;
+      for (const unsigned v : {t.x, t.y, t.z}) face_sum[weld.id[v]] += n;
     }
-    for (std::size_t v = 0; v < nv; ++v) {
-      if (has_normal[v]) continue;
-      if (usable(face_sum[v])) {
-        inward[v] = -glm::normalize(face_sum[v]);
-        has_normal[v] = 1;
-      } else {
-        ++result.vertices_without_normal;
-      }
+    for (std::size_t g = 0; g < ng; ++g) {
+      if (!usable(normal_sum[g])) normal_sum[g] = face_sum[g];
     }
   }
+  // The positions to trace, in the order of their first vertex. A position whose normals cancel
+  // (a double-sided sheet) or that touches no face with area has no inside: occlusion 0.
+  std::vector<std::uint32_t> tasks;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::uint32_t g = weld.id[v];
+    if (!usable(normal_sum[g])) {
+      ++result.vertices_without_normal;
+    } else if (representative[g] == v) {
+      tasks.push_back(g);
+    }
+  }
+  const std::size_t n_tasks = tasks.size();
+  std::vector<double> occlusion(ng, 0.0);
 
   // Nothing to hit, or nowhere to go: all-degenerate geometry (every point the same), or a max
   // distance that does not reach past the origin offset. Every vertex is unoccluded.
-  if (!(diagonal > 0.0) || !(result.max_distance > result.epsilon)) {
-    if (progress) progress(nv, nv);
+  if (!(diagonal > 0.0) || !(result.max_distance > result.epsilon) || n_tasks == 0) {
+    if (progress) progress(n_tasks, n_tasks);
     return result;
   }
 
@@ -392,31 +452,42 @@ BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
   EmbreeScene embree(relative, triangles, result.threads);
   result.build_seconds = seconds_since(build_start);
 
-  const Tracer tracer{embree.scene(), settings, static_cast<float>(result.epsilon),
-                      static_cast<float>(result.max_distance)};
+  Tracer tracer{embree.scene(),
+                settings,
+                static_cast<float>(result.epsilon),
+                static_cast<float>(result.max_distance),
+                {}};
+  if (settings.sampler == Sampler::Stratified) {
+    tracer.azimuths.resize(static_cast<std::size_t>(settings.rays));
+    for (std::size_t i = 0; i < tracer.azimuths.size(); ++i) {
+      tracer.azimuths[i] = unit_circle(radical_inverse2(static_cast<std::uint32_t>(i)));
+    }
+  }
 
-  // Work sharing: threads take chunks of vertices from a shared counter; each vertex's result
-  // goes to its own slot, so the output is the same whatever the thread count or schedule.
+  // Work sharing: threads take chunks of positions from a shared counter; each result goes to
+  // its own slot and its random numbers are seeded by its first vertex's index, so the output is
+  // the same whatever the thread count or schedule.
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> done{0};
   auto work = [&](bool report) {
     std::vector<RTCRayHit> buffer(static_cast<std::size_t>(std::min(settings.rays, kRayBlock)));
     for (;;) {
       const std::size_t begin = next.fetch_add(kVertexChunk);
-      if (begin >= nv) break;
-      const std::size_t end = std::min(nv, begin + kVertexChunk);
-      for (std::size_t v = begin; v < end; ++v) {
-        if (!has_normal[v]) continue;
+      if (begin >= n_tasks) break;
+      const std::size_t end = std::min(n_tasks, begin + kVertexChunk);
+      for (std::size_t k = begin; k < end; ++k) {
+        const std::uint32_t g = tasks[k];
+        const std::uint32_t v = representative[g];
         VertexJob job;
-        job.inward = inward[v];
+        job.inward = -glm::normalize(normal_sum[g]);
         basis(job.inward, job.tangent, job.bitangent);
         // Origin pushed inside along the flipped normal by epsilon (see kRayEpsilonRelative),
         // computed in double before the float conversion.
         job.origin = glm::vec3(positions[v] - centre + result.epsilon * job.inward);
-        result.occlusion[v] = tracer.trace(v, job, buffer);
+        occlusion[g] = tracer.trace(v, job, buffer);
       }
       const std::size_t finished = done.fetch_add(end - begin) + (end - begin);
-      if (report && progress) progress(finished, nv);
+      if (report && progress) progress(finished, n_tasks);
     }
   };
 
@@ -427,41 +498,28 @@ BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
     work(true);  // the calling thread works too, and is the one that reports progress
   }
   result.trace_seconds = seconds_since(trace_start);
-  if (progress) progress(nv, nv);
+  if (progress) progress(n_tasks, n_tasks);
 
   const std::string error = embree.error();
   if (!error.empty()) throw std::runtime_error(error);
-  result.rays_traced = static_cast<std::uint64_t>(nv - result.vertices_without_normal) *
-                       static_cast<std::uint64_t>(settings.rays);
+  for (std::size_t v = 0; v < nv; ++v) result.occlusion[v] = occlusion[weld.id[v]];
+  result.rays_traced =
+      static_cast<std::uint64_t>(n_tasks) * static_cast<std::uint64_t>(settings.rays);
   return result;
 }
 
 EdgeReport count_problem_edges(const std::vector<glm::dvec3>& positions,
                                const std::vector<glm::uvec3>& triangles) {
-  // Weld: vertices with bit-identical positions share one id (sorting, not hashing, so that -0.0
-  // and 0.0 compare equal like they do geometrically).
-  const std::size_t nv = positions.size();
-  std::vector<std::uint32_t> order(nv);
-  for (std::size_t i = 0; i < nv; ++i) order[i] = static_cast<std::uint32_t>(i);
-  auto key = [&](std::uint32_t i) {
-    return std::tie(positions[i].x, positions[i].y, positions[i].z);
-  };
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
-  std::vector<std::uint32_t> weld(nv);
-  std::uint32_t id = 0;
-  for (std::size_t k = 0; k < nv; ++k) {
-    if (k > 0 && key(order[k]) != key(order[k - 1])) ++id;
-    weld[order[k]] = id;
-  }
-
+  const std::vector<std::uint32_t> weld = weld_by_position(positions).id;
   std::vector<std::uint64_t> edges;
   edges.reserve(3 * triangles.size());
   for (const auto& t : triangles) {
     const std::uint32_t c[3] = {weld[t.x], weld[t.y], weld[t.z]};
+    // A triangle with two corners at one position is a collapsed sliver, not part of the surface:
+    // counting it would make its long edge look used three or four times.
+    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) continue;
     for (int e = 0; e < 3; ++e) {
       std::uint32_t a = c[e], b = c[(e + 1) % 3];
-      if (a == b) continue;  // collapsed edge of a degenerate triangle
       if (a > b) std::swap(a, b);
       edges.push_back((static_cast<std::uint64_t>(a) << 32) | b);
     }
@@ -507,19 +565,49 @@ Surface surface_of(const PolyMesh& mesh) {
 
 void smooth(const PolyMesh& mesh, std::vector<double>& values, int iterations) {
   LT_CHECK(values.size() == mesh.n_vertices(), "one value per vertex");
-  std::vector<double> next(values.size());
-  for (int it = 0; it < iterations; ++it) {
-    for (auto vh : mesh.vertices()) {
-      double sum = values[static_cast<std::size_t>(vh.idx())];
-      int count = 1;
-      for (auto nh : mesh.vv_range(vh)) {
-        sum += values[static_cast<std::size_t>(nh.idx())];
-        ++count;
-      }
-      next[static_cast<std::size_t>(vh.idx())] = sum / count;
-    }
-    values.swap(next);
+  if (iterations <= 0 || values.empty()) return;
+  // Smooth per position, like the bake: copies of a vertex split at a hard edge share one value
+  // and the union of their one-rings, so smoothing cannot open a seam between them.
+  std::vector<glm::dvec3> positions;
+  positions.reserve(mesh.n_vertices());
+  for (auto vh : mesh.vertices()) {
+    const auto& p = mesh.point(vh);
+    positions.emplace_back(p[0], p[1], p[2]);
   }
+  const Welding weld = weld_by_position(positions);
+  const std::size_t ng = weld.groups;
+
+  std::vector<double> value(ng, 0.0);
+  std::vector<int> copies(ng, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> links;  // (group, neighbour group)
+  for (auto vh : mesh.vertices()) {
+    const std::uint32_t g = weld.id[static_cast<std::size_t>(vh.idx())];
+    value[g] += values[static_cast<std::size_t>(vh.idx())];
+    ++copies[g];
+    for (auto nh : mesh.vv_range(vh)) {
+      const std::uint32_t h = weld.id[static_cast<std::size_t>(nh.idx())];
+      if (h != g) links.emplace_back(g, h);
+    }
+  }
+  for (std::size_t g = 0; g < ng; ++g) value[g] /= copies[g];
+  std::sort(links.begin(), links.end());
+  links.erase(std::unique(links.begin(), links.end()), links.end());
+  std::vector<std::size_t> first(ng + 1, 0);  // links of group g: [first[g], first[g + 1])
+  for (const auto& l : links) ++first[l.first + 1];
+  for (std::size_t g = 0; g < ng; ++g) first[g + 1] += first[g];
+
+  // Jacobi steps: every new value from the previous iteration's values only, so the result does
+  // not depend on the vertex order.
+  std::vector<double> next(ng);
+  for (int it = 0; it < iterations; ++it) {
+    for (std::size_t g = 0; g < ng; ++g) {
+      double sum = value[g];
+      for (std::size_t k = first[g]; k < first[g + 1]; ++k) sum += value[links[k].second];
+      next[g] = sum / static_cast<double>(1 + first[g + 1] - first[g]);
+    }
+    value.swap(next);
+  }
+  for (std::size_t v = 0; v < values.size(); ++v) values[v] = value[weld.id[v]];
 }
 
 glm::dvec3 translucency(double occlusion, const ColorMap& map) {

@@ -97,19 +97,22 @@ void validate(const ColorMap& map);
 using Progress = std::function<void(std::size_t done, std::size_t total)>;
 
 struct BakeResult {
-  std::vector<double> occlusion;  // per vertex, in [0, 1], 1 = thin (see Estimator)
-  double max_distance = 0.0;      // D actually used, scene units
-  double epsilon = 0.0;           // origin offset and tnear, scene units
-  std::uint64_t rays_traced = 0;
+  std::vector<double> occlusion;            // per vertex, in [0, 1], 1 = thin (see Estimator)
+  double max_distance = 0.0;                // D actually used, scene units
+  double epsilon = 0.0;                     // origin offset and tnear, scene units
+  std::uint64_t rays_traced = 0;            // rays per vertex x distinct positions baked
   std::size_t vertices_without_normal = 0;  // baked as occlusion 0, no rays
   int threads = 1;
   double build_seconds = 0.0;  // Embree BVH
   double trace_seconds = 0.0;
 };
 
-// The core. `normals` need not be unit length; a zero or non-finite normal is replaced by the
-// area-weighted normal of the vertex's triangles (orientation from the winding), and a vertex
-// with neither gets occlusion 0 and casts no rays (counted in vertices_without_normal).
+// The core. Vertices at bit-identical positions (split for hard edges or seams) are baked once,
+// together, with the mean of their unit normals, seeded by their lowest vertex index; `normals`
+// need not be unit length. Where no copy has a usable (non-zero, finite) normal, the
+// area-weighted normal of the faces around the position is used (orientation from the winding);
+// a position with neither (no face with area, or normals that cancel as on a double-sided sheet)
+// gets occlusion 0 and casts no rays (counted in vertices_without_normal).
 // Degenerate triangles are fine (Embree skips them). Rays that leave through a hole in an open
 // mesh find nothing and count as unoccluded (at distance D for the distance estimator).
 BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
@@ -120,7 +123,7 @@ BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
 // Open and non-manifold edges, counted after welding vertices with identical positions (so a
 // mesh with split normals at its creases, or the duplicated vertices OpenMesh's importer makes
 // for non-manifold faces, is not reported as open). Internal fan diagonals are shared by two
-// triangles and so never counted.
+// triangles and so never counted; triangles with two corners at one position are skipped.
 struct EdgeReport {
   std::size_t boundary_edges = 0;      // used by one triangle: a hole or an open border
   std::size_t non_manifold_edges = 0;  // used by three or more triangles
@@ -136,8 +139,10 @@ struct Surface {
 };
 Surface surface_of(const PolyMesh& mesh);
 
-// `iterations` Jacobi steps of value <- (value + sum of neighbours) / (1 + valence), neighbours
-// from OpenMesh's vertex-vertex circulator. Isolated vertices keep their value.
+// `iterations` Jacobi steps of value <- (value + sum of neighbours) / (1 + neighbour count),
+// neighbours from OpenMesh's vertex-vertex circulator. Like the bake, it works per position:
+// copies of a vertex split at a hard edge are merged (their one-rings united) and stay equal.
+// Isolated vertices keep their value.
 void smooth(const PolyMesh& mesh, std::vector<double>& values, int iterations);
 
 // lerp(min, max, occlusion) * tint, clamped to [0, 1].

@@ -167,7 +167,7 @@ int run_bake(const BakeOptions& o) {
   bar.finish();
 
   if (report.edges.boundary_edges > 0 || report.edges.non_manifold_edges > 0) {
-    warn(o.mesh, "not closed: " + std::to_string(report.edges.boundary_edges) +
+    warn(o.mesh, "not a closed manifold: " + std::to_string(report.edges.boundary_edges) +
                      " boundary edges, " + std::to_string(report.edges.non_manifold_edges) +
                      " non-manifold edges; rays leaving through an opening count as unoccluded "
                      "(thick)");

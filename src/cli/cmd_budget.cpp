@@ -1,17 +1,39 @@
+#include <iostream>
+
+#include "budget/budget.h"
 #include "cli/commands.h"
 #include "core/error.h"
 
 namespace lt::cli {
 
-// The instruction/stage budget checker arrives with the arbfp and combiners paths (issues 4, 5).
-// Until then the command exists so that `ltrender --help` is complete, and says so plainly.
+// `ltrender budget SCENE [--path arbfp] [--variant V] [--profile P] [--json]`: counts every
+// program the path generates for the scene and checks it against the profile (and its partner
+// for the other program kind). Exit 1 when a program is over, naming the limit.
 Action add_budget(CLI::App& app) {
   auto* sub = app.add_subcommand("budget", "Check program/stage budgets against hardware profiles");
   auto scene = std::make_shared<std::string>();
+  auto path = std::make_shared<std::string>("arbfp");
+  auto variant = std::make_shared<std::string>();
+  auto profile = std::make_shared<std::string>("ps_2_0");
+  auto json = std::make_shared<bool>(false);
   sub->add_option("SCENE", *scene, "Scene file")->required();
-  sub->allow_extras();
-  return [scene]() -> int {
-    throw InputError(*scene, "", "budget: no path with a budget (arbfp, combiners) is built yet");
+  sub->add_option("--path", *path, "Path whose programs to count (arbfp; combiners later)");
+  sub->add_option("--variant", *variant, "Path variant (default: the path's default)");
+  sub->add_option("--profile", *profile,
+                  "ps_2_0 (default), ps_2_x, arbfp1-min, vs_2_0, arbvp1-min; the partner profile "
+                  "checks the other program kind");
+  sub->add_flag("--json", *json, "Print the counts as one JSON object");
+  return [=]() -> int {
+    const Scene s = load_scene(*scene);
+    const budget::BudgetReport r = budget::run_budget(s, *path, *variant, *profile);
+    if (*json) {
+      std::cout << budget::to_json(r).dump(2) << "\n";
+    } else {
+      std::cout << budget::format_table(r);
+    }
+    std::cout.flush();
+    if (!r.fits()) throw CheckFailed("budget: " + r.first_overrun());
+    return 0;
   };
 }
 

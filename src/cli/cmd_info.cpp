@@ -6,7 +6,9 @@
 namespace lt::cli {
 
 namespace {
-const char* yes_no(bool b) { return b ? "yes" : "no"; }
+const char* yes_no(bool b) {
+  return b ? "yes" : "no";
+}
 }  // namespace
 
 Action add_info(CLI::App& app) {
@@ -25,7 +27,8 @@ Action add_info(CLI::App& app) {
       verts += obj.mesh.positions.size();
     }
     o << "scene " << *scene_path << ": " << scene.width << "x" << scene.height << ", "
-      << (scene.camera.projection == Camera::Projection::Perspective ? "perspective" : "orthographic")
+      << (scene.camera.projection == Camera::Projection::Perspective ? "perspective"
+                                                                     : "orthographic")
       << " camera, " << scene.objects.size() << " objects (" << verts << " vertices, " << tris
       << " triangles)\n";
     o << "needs: " << n.directional_lights << " directional + " << n.point_lights
@@ -41,8 +44,7 @@ Action add_info(CLI::App& app) {
       }
       const Translucency& t = *m.translucency;
       o << "power " << t.power << ", distortion " << t.distortion << ", ambient " << t.ambient
-        << ", thickness "
-        << (t.thickness_source == ThicknessSource::Vertex ? "vertex" : "constant")
+        << ", thickness " << (t.thickness_source == ThicknessSource::Vertex ? "vertex" : "constant")
         << (t.normalize_distorted_light ? ", normalised H" : "") << "\n";
     }
     // Build every path once (1x1 is enough to build programs) and list what it made.

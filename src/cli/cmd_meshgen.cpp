@@ -44,8 +44,8 @@ Action add_meshgen(CLI::App& app) {
   return [out_dir]() -> int {
     const std::filesystem::path root(*out_dir);
     ensure_directory(root);
-    const auto options = OpenMesh::IO::Options(OpenMesh::IO::Options::Binary |
-                                               OpenMesh::IO::Options::VertexNormal);
+    const auto options =
+        OpenMesh::IO::Options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::VertexNormal);
     std::uintmax_t total = 0;
     for (const auto& named : meshgen::standard_set()) {
       const std::filesystem::path path = root / named.path;

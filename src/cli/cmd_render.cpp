@@ -18,7 +18,8 @@ std::string path_help() {
   std::string s = "Paths and their variants (the first is the default):\n";
   for (const PathInfo& p : all_paths()) {
     s += "  " + p.name + ": " + p.summary + "\n";
-    for (const VariantInfo& v : p.variants) s += "      --variant " + v.name + "  " + v.summary + "\n";
+    for (const VariantInfo& v : p.variants)
+      s += "      --variant " + v.name + "  " + v.summary + "\n";
   }
   return s;
 }
@@ -31,7 +32,8 @@ Action add_render(CLI::App& app) {
   sub->add_option("--path", a->path, "reference | glsl | flat | ...")->required();
   sub->add_option("--variant", a->variant, "The path's approximation (see below)");
   sub->add_option("--width", a->width, "Override the scene's width")->check(CLI::Range(1, 16384));
-  sub->add_option("--height", a->height, "Override the scene's height")->check(CLI::Range(1, 16384));
+  sub->add_option("--height", a->height, "Override the scene's height")
+      ->check(CLI::Range(1, 16384));
   sub->add_option("-o,--output", a->output, "OUT.png (8-bit) or OUT.exr (float, A = coverage)")
       ->required();
   sub->footer(path_help());

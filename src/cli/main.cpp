@@ -28,13 +28,14 @@ int usage_error(const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"ltrender: translucency (Barre-Brisebois & Bouchard, GDC 2011) on low-end pipelines"};
+  CLI::App app{
+      "ltrender: translucency (Barre-Brisebois & Bouchard, GDC 2011) on low-end pipelines"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every subcommand");
 
   using Registration = lt::cli::Action (*)(CLI::App&);
   const std::vector<Registration> registrations = {
-      lt::cli::add_render, lt::cli::add_compare, lt::cli::add_info, lt::cli::add_bench,
+      lt::cli::add_render, lt::cli::add_compare, lt::cli::add_info,    lt::cli::add_bench,
       lt::cli::add_bake,   lt::cli::add_budget,  lt::cli::add_meshgen,
   };
   std::vector<lt::cli::Action> actions;

@@ -30,11 +30,12 @@ class CheckFailed : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-[[noreturn]] void check_failed(const char* expr, const char* file, int line, const std::string& msg);
+[[noreturn]] void check_failed(const char* expr, const char* file, int line,
+                               const std::string& msg);
 
 }  // namespace lt
 
-#define LT_CHECK(cond, msg)                                        \
-  do {                                                             \
+#define LT_CHECK(cond, msg)                                            \
+  do {                                                                 \
     if (!(cond)) ::lt::check_failed(#cond, __FILE__, __LINE__, (msg)); \
   } while (0)

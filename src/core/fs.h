@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 // extension (OpenImageIO and OpenMesh pick the format from it), then renames tmp -> target.
 // If `write` throws, the temporary is removed and the target is left as it was.
 // Throws InputError if the target's directory does not exist.
-void write_atomically(const fs::path& target, const std::function<void(const fs::path& tmp)>& write);
+void write_atomically(const fs::path& target,
+                      const std::function<void(const fs::path& tmp)>& write);
 
 // Throws InputError if `output` names the same file as one of `inputs` (an input is never
 // overwritten, even through a different spelling of its path).

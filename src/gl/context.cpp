@@ -25,8 +25,8 @@ Context::Context(int width, int height) : width_(width), height_(height) {
   buffer_.assign(static_cast<size_t>(width) * height * 4, 0);
   if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
     OSMesaDestroyContext(ctx_);
-    throw std::runtime_error("OSMesa: cannot make the context current at " +
-                             std::to_string(width) + "x" + std::to_string(height));
+    throw std::runtime_error("OSMesa: cannot make the context current at " + std::to_string(width) +
+                             "x" + std::to_string(height));
   }
   // OSMesa's default is y-up (bottom row first), the same as glReadPixels.
   const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
@@ -53,8 +53,8 @@ bool Context::has_extension(const std::string& name) const {
 
 void Context::require_extension(const std::string& name, const std::string& why) const {
   if (!has_extension(name)) {
-    throw std::runtime_error("OSMesa context (" + renderer() + ") lacks " + name +
-                             " (needed for " + why + ")");
+    throw std::runtime_error("OSMesa context (" + renderer() + ") lacks " + name + " (needed for " +
+                             why + ")");
   }
 }
 

@@ -2,6 +2,6 @@
 // GL_GLEXT_PROTOTYPES (set by CMake) we call them directly, no loader needed.
 #pragma once
 
-#include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/osmesa.h>

@@ -3,8 +3,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/error.h"
 #include "core/embedded.h"
+#include "core/error.h"
 #include "gl/context.h"
 
 namespace lt::gl {
@@ -30,8 +30,8 @@ GLuint compile(GLenum type, const std::string& src, const std::string& name) {
     glGetShaderInfoLog(s, sizeof log, nullptr, log);
     glDeleteShader(s);
     throw std::runtime_error("GLSL compile error in " + name +
-                             (type == GL_VERTEX_SHADER ? " (vertex)" : " (fragment)") + ": " +
-                             log + "\n" + numbered(src));
+                             (type == GL_VERTEX_SHADER ? " (vertex)" : " (fragment)") + ": " + log +
+                             "\n" + numbered(src));
   }
   return s;
 }
@@ -70,7 +70,8 @@ FloatTarget::FloatTarget(int width, int height, int count) : width_(width), heig
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, textures_[i], 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, textures_[i],
+                           0);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   glGenRenderbuffers(1, &depth_);
@@ -100,7 +101,9 @@ void FloatTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-void FloatTarget::unbind() const { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+void FloatTarget::unbind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
 void FloatTarget::read(int index, std::vector<float>& out) const {
   out.resize(static_cast<size_t>(width_) * height_ * 4);

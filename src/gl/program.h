@@ -50,7 +50,8 @@ class FloatTarget {
 
 // Replaces every `{{KEY}}` in `text` by its value; throws if a placeholder is left unreplaced,
 // so a template and its generator cannot drift apart silently.
-std::string fill_template(std::string text, const std::vector<std::pair<std::string, std::string>>& values,
+std::string fill_template(std::string text,
+                          const std::vector<std::pair<std::string, std::string>>& values,
                           const std::string& name);
 
 // A file under legacy_shaders/ or combiners/, embedded at build time (core/embedded.h).

@@ -47,8 +47,7 @@ void write_image(const std::filesystem::path& path, const Image& image) {
       for (size_t i = 0; i < image.pixel_count(); ++i) {
         for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_unorm8(image.rgba[i * 4 + c]);
       }
-      ok = out->open(tmp.string(), spec) &&
-           out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+      ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
     }
     if (!ok || !out->close()) {
       throw InputError(path.string(), "", "cannot write image: " + out->geterror());

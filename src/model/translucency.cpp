@@ -40,8 +40,9 @@ glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoin
   const double len = glm::length(sp.N);
   const glm::dvec3 N = len >= kMinNormalLength ? sp.N / len : glm::dvec3(0);
   glm::dvec3 sum(0);
-  const glm::dvec3 T =
-      material.translucency ? thickness(*material.translucency, sp.vertex_thickness) : glm::dvec3(0);
+  const glm::dvec3 T = material.translucency
+                           ? thickness(*material.translucency, sp.vertex_thickness)
+                           : glm::dvec3(0);
   for (const Light& light : scene.lights) {
     const LightSample ls = sample_light(light, sp.P, N);
     glm::dvec3 term(ls.attenuation * std::max(glm::dot(N, ls.L), 0.0));

@@ -1,6 +1,8 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "paths/arbfp/arbfp_path.h"
+#include "paths/combiners/combiners_path.h"
 #include "paths/flat/flat_path.h"
 #include "paths/glsl/glsl_path.h"
 #include "paths/path.h"
@@ -10,9 +12,8 @@ namespace lt {
 
 const std::vector<PathInfo>& all_paths() {
   static const std::vector<PathInfo> paths = {
-      reference_path_info(),
-      glsl_path_info(),
-      flat_path_info(),
+      reference_path_info(), glsl_path_info(),      flat_path_info(),
+      arbfp_path_info(),     combiners_path_info(),
   };
   return paths;
 }

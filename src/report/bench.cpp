@@ -49,7 +49,9 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string scene_name(const fs::path& p) { return p.stem().string(); }
+std::string scene_name(const fs::path& p) {
+  return p.stem().string();
+}
 
 std::string safe(const std::string& s) {
   std::string r = s;
@@ -117,7 +119,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           row.image = "images/" + base + ".png";
           write_image(o.out_dir / row.image, img);
           if (p->name != flat.name) {
-            const TestEncoding enc = path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8;
+            const TestEncoding enc =
+                path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8;
             const Comparison cmp = compare_images(img, ref_image, enc);
             row.error = cmp.covered;
             row.heatmap = "images/" + base + "__heatmap.png";
@@ -171,10 +174,12 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   s << "# ltrender bench\n\n"
     << "Frames: median and min of " << o.frames << " after " << o.warmup
     << " warm-up, each bounded by glFinish. `ratio` = median at " << o.wide_width << "x"
-    << o.wide_height << " / `flat` median in the same session. Error: covered pixels against "
+    << o.wide_height
+    << " / `flat` median in the same session. Error: covered pixels against "
        "the reference, in LSB (1/255).\n\n"
     << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
-    << o.wide_height << ") median / min | ratio to flat | max LSB | mean LSB | p99 LSB | "
+    << o.wide_height
+    << ") median / min | ratio to flat | max LSB | mean LSB | p99 LSB | "
        "% > 1 LSB | notes |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
@@ -185,9 +190,9 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
     }
     s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
       << fmt(r.at_scene_size.median_ms) << " / " << fmt(r.at_scene_size.min_ms) << " | "
-      << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | "
-      << fmt(r.ratio_to_flat) << " | " << error_cell(r, true) << " | " << error_cell(r, false)
-      << " | " << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
+      << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
+      << " | " << error_cell(r, true) << " | " << error_cell(r, false) << " | "
+      << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
       << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << notes << " |\n";
   }
   s << "\n![speed against error](chart.svg)\n\nContact sheet: `contact.png` (one row per scene: "
@@ -242,9 +247,12 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                         {"heatmap", r.heatmap},
                         {"stats", r.stats}};
     if (r.error) {
-      x["error"] = {{"max_lsb", r.error->max_lsb},        {"mean_lsb", r.error->mean_lsb},
-                    {"rmse_lsb", r.error->rmse_lsb},      {"psnr_db", finite(r.error->psnr_db)},
-                    {"p99_lsb", r.error->p99_lsb},        {"percent_over_1_lsb", r.error->percent_over_1_lsb},
+      x["error"] = {{"max_lsb", r.error->max_lsb},
+                    {"mean_lsb", r.error->mean_lsb},
+                    {"rmse_lsb", r.error->rmse_lsb},
+                    {"psnr_db", finite(r.error->psnr_db)},
+                    {"p99_lsb", r.error->p99_lsb},
+                    {"percent_over_1_lsb", r.error->percent_over_1_lsb},
                     {"percent_over_4_lsb", r.error->percent_over_4_lsb}};
     }
     j["rows"].push_back(x);
@@ -264,7 +272,8 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
     ymax = std::max(ymax, r.error->max_lsb);
   }
   if (xmax <= 0) xmin = 1, xmax = 10;
-  const double lx0 = std::floor(std::log10(xmin)), lx1 = std::max(lx0 + 1, std::ceil(std::log10(xmax)));
+  const double lx0 = std::floor(std::log10(xmin)),
+               lx1 = std::max(lx0 + 1, std::ceil(std::log10(xmax)));
   ymax = std::ceil(ymax * 1.1);
   auto X = [&](double ms) { return L + (std::log10(ms) - lx0) / (lx1 - lx0) * (W - L - R); };
   auto Y = [&](double lsb) { return H - B - lsb / ymax * (H - T - B); };
@@ -277,16 +286,19 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   }
   std::ostringstream s;
   s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
-    << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
+    << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' "
+       "fill='white'/>\n"
     << "<text x='" << L << "' y='18' font-size='14'>Speed against error (ms per frame at "
-    << o.wide_width << "x" << o.wide_height << ", log scale; filled = max, ring = mean LSB)</text>\n";
+    << o.wide_width << "x" << o.wide_height
+    << ", log scale; filled = max, ring = mean LSB)</text>\n";
   for (double e = lx0; e <= lx1; e += 1) {
     for (int m = 1; m < 10; ++m) {
       const double v = std::pow(10.0, e) * m;
       if (v > std::pow(10.0, lx1)) break;
       s << "<line x1='" << X(v) << "' x2='" << X(v) << "' y1='" << T << "' y2='" << H - B
         << "' stroke='" << (m == 1 ? "#bbb" : "#eee") << "'/>\n";
-      if (m == 1) s << "<text x='" << X(v) - 10 << "' y='" << H - B + 18 << "'>" << v << "</text>\n";
+      if (m == 1)
+        s << "<text x='" << X(v) - 10 << "' y='" << H - B + 18 << "'>" << v << "</text>\n";
     }
   }
   for (int i = 0; i <= 5; ++i) {
@@ -333,15 +345,16 @@ void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& row
   size_t cols = 0;
   for (const auto& g : grid) cols = std::max(cols, g.second.size());
   if (grid.empty()) return;
-  Image sheet(static_cast<int>(cols) * (tw + pad) + pad, static_cast<int>(grid.size()) * (th + pad) + pad);
+  Image sheet(static_cast<int>(cols) * (tw + pad) + pad,
+              static_cast<int>(grid.size()) * (th + pad) + pad);
   for (size_t i = 0; i < sheet.rgba.size(); ++i) sheet.rgba[i] = (i % 4 == 3) ? 1.0f : 1.0f;
   for (size_t row = 0; row < grid.size(); ++row) {
     for (size_t col = 0; col < grid[row].second.size(); ++col) {
       const Image src = read_image(o.out_dir / grid[row].second[col]);
       OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::FLOAT),
                         const_cast<float*>(src.rgba.data()));
-      OIIO::ImageBuf small = OIIO::ImageBufAlgo::fit(in, "", 0.0f, "letterbox",
-                                                     OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4));
+      OIIO::ImageBuf small =
+          OIIO::ImageBufAlgo::fit(in, "", 0.0f, "letterbox", OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4));
       std::vector<float> px(static_cast<size_t>(tw) * th * 4);
       small.get_pixels(OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, px.data());
       const int ox = pad + static_cast<int>(col) * (tw + pad);
@@ -371,9 +384,9 @@ std::string html(const std::vector<BenchRow>& rows) {
       scene = r.scene;
       s << "<tr><th colspan='20' align='left'><h2>" << scene << "</h2></th></tr><tr>";
     }
-    s << "<td><b>" << r.path << "</b> " << r.variant << "<br>" << fmt(r.at_wide.median_ms)
-      << " ms";
-    if (r.error) s << ", max " << fmt(r.error->max_lsb) << " / mean " << fmt(r.error->mean_lsb, 3) << " LSB";
+    s << "<td><b>" << r.path << "</b> " << r.variant << "<br>" << fmt(r.at_wide.median_ms) << " ms";
+    if (r.error)
+      s << ", max " << fmt(r.error->max_lsb) << " / mean " << fmt(r.error->mean_lsb, 3) << " LSB";
     s << "<br><img src='" << r.image << "'>";
     if (!r.heatmap.empty()) s << "<br><img src='" << r.heatmap << "'>";
     s << "</td>";

@@ -31,10 +31,10 @@ struct FrameTiming {
 struct BenchRow {
   std::string scene, path, variant;
   FrameTiming at_scene_size, at_wide;
-  double ratio_to_flat = 0;  // at 1280x720, flat measured in the same session
-  std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
+  double ratio_to_flat = 0;             // at 1280x720, flat measured in the same session
+  std::optional<ErrorStats> error;      // covered pixels against the reference (none for flat)
   std::map<std::string, double> stats;  // path's own figures (reference: shading Mpixels/s)
-  std::string image, heatmap;  // relative to out_dir
+  std::string image, heatmap;           // relative to out_dir
 };
 
 std::vector<BenchRow> run_bench(const BenchOptions& options);

@@ -1,12 +1,16 @@
-// Mesh input and output. OpenMesh 9.0 is the mesh library, but its readers trust their input:
-// a truncated PLY header makes the PLY reader loop forever, an out-of-range OBJ index makes the
-// OBJ reader write outside its arrays, a corrupt OM file trips asserts compiled into the library,
-// and text values it cannot parse silently shift every value after them. So each format gets a
-// check of its own before OpenMesh sees it (see the section per format below), and OpenMesh's
-// log streams are captured so that the user sees our one-line error, not its chatter.
+// Mesh input and output. OpenMesh 9.0 is the mesh library, but its readers trust their input
+// and lose precision: the PLY reader rounds positions to float, truncates float colours to 8 bits
+// and loops forever on a truncated header; the OBJ reader writes outside its arrays on an
+// out-of-range index; a corrupt OM file aborts or segfaults inside the library; and a text value
+// a reader cannot parse silently shifts every value after it. So PLY has a reader of its own,
+// OBJ, OFF and STL are checked before OpenMesh reads them, OM is read in a child process (one
+// section per format below), and OpenMesh's log streams are captured so that the user sees our
+// one-line error rather than its chatter.
 #include "scene/mesh.h"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,6 +18,7 @@
 #include <OpenMesh/Core/IO/importer/ImporterT.hh>
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -53,7 +58,8 @@ std::string lower_extension(const fs::path& path) {
 
 std::string read_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open file: " + std::string(std::strerror(errno)));
+  if (!in)
+    throw InputError(path.string(), "", "cannot open file: " + std::string(std::strerror(errno)));
   std::ostringstream ss;
   ss << in.rdbuf();
   if (in.bad()) throw InputError(path.string(), "", "cannot read file");
@@ -101,7 +107,7 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
   return tokens;
 }
 
-// Text split into lines (without '\n' and a trailing '\r'), numbered from 1.
+// Text split into lines, without '\n' and a trailing '\r' (line n of the file is lines[n - 1]).
 std::vector<std::string_view> split_lines(const std::string& text) {
   std::vector<std::string_view> lines;
   std::size_t start = 0;
@@ -122,8 +128,12 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-glm::dvec3 to_glm(const OpenMesh::Vec3d& v) { return {v[0], v[1], v[2]}; }
-OpenMesh::Vec3d to_om(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 to_glm(const OpenMesh::Vec3d& v) {
+  return {v[0], v[1], v[2]};
+}
+OpenMesh::Vec3d to_om(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
 
 bool is_finite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -196,19 +206,37 @@ class OpenMeshLogCapture {
 
 // What the attributes request: normals and colours. ColorFloat is not requested: it only
 // changes OpenMesh's binary OFF reader, and there it would misread the usual integer colours.
-Options requested_options() { return Options(Options::VertexNormal | Options::VertexColor); }
+Options requested_options() {
+  return Options(Options::VertexNormal | Options::VertexColor);
+}
+
+void read_with_openmesh(PolyMesh& mesh, const std::string& file, Options& options,
+                        OpenMeshLogCapture& capture) {
+  bool ok = false;
+  try {
+    ok = OpenMesh::IO::read_mesh(mesh, file, options);
+  } catch (const std::exception& e) {
+    // e.g. std::bad_alloc from a reserve() sized by a corrupt count.
+    throw InputError(file, "", std::string("OpenMesh could not read it: ") + e.what());
+  }
+  if (!ok) {
+    const std::string why = capture.last_line();
+    throw InputError(file, "",
+                     "OpenMesh could not read it" + (why.empty() ? std::string() : ": " + why));
+  }
+}
 
 // ---------------------------------------------------------------------------------------------
 // What the format checks learn about a file, used once OpenMesh has read it.
 
 struct FileFacts {
-  std::size_t vertices = 0;          // vertex records in the file; 0 when the check cannot tell
-  std::size_t repeated_faces = 0;    // faces naming a vertex twice (OpenMesh drops or shrinks them)
-  std::vector<char> normal_given;    // per vertex: the file gave it a normal (OBJ: via a face)
-  std::vector<glm::vec3> colors;     // exact colours when we parsed them ourselves
-  bool has_colors = false;           // `colors` is valid for every vertex
-  bool partial_colors = false;       // some vertices had colours and others not: dropped
-  bool colors_checked = false;       // our pass decides about colours, not OpenMesh's options
+  std::size_t vertices = 0;        // vertex records in the file; 0 when the check cannot tell
+  std::size_t repeated_faces = 0;  // faces naming a vertex twice (OpenMesh drops or shrinks them)
+  std::vector<char> normal_given;  // per vertex: the file gave it a normal (OBJ: via a face)
+  std::vector<glm::vec3> colors;   // exact colours when we parsed them ourselves
+  bool has_colors = false;         // `colors` is valid for every vertex
+  bool partial_colors = false;     // some vertices had colours and others not: dropped
+  bool colors_checked = false;     // our pass decides about colours, not OpenMesh's options
 };
 
 [[noreturn]] void fail(const std::string& file, std::size_t line, const std::string& what) {
@@ -254,8 +282,11 @@ std::size_t ply_size(PlyType t) {
   return 8;
 }
 
-bool ply_is_float(PlyType t) { return t == PlyType::Float32 || t == PlyType::Float64; }
+bool ply_is_float(PlyType t) {
+  return t == PlyType::Float32 || t == PlyType::Float64;
+}
 
+// X..Z, NX..NZ and Red..Blue must stay consecutive: parse_ply indexes with them.
 enum class PlyRole { Other, X, Y, Z, NX, NY, NZ, Red, Green, Blue, Alpha, VertexIndices };
 
 struct PlyProperty {
@@ -297,7 +328,8 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
   };
   std::string_view line;
   if (!next_line(line) || trim(line) != "ply") {
-    fail(file, data.empty() ? 0 : 1, data.empty() ? "file is empty" : "not a PLY file (no 'ply' magic)");
+    fail(file, data.empty() ? 0 : 1,
+         data.empty() ? "file is empty" : "not a PLY file (no 'ply' magic)");
   }
   while (next_line(line)) {
     auto tokens = split_whitespace(line);
@@ -334,10 +366,13 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
       if (h.elements.empty()) fail(file, line_no, "property before any element");
       PlyProperty p;
       if (tokens.size() >= 2 && tokens[1] == "list") {
-        if (tokens.size() != 5) fail(file, line_no, "list property must be 'property list <count type> <type> <name>'");
+        if (tokens.size() != 5)
+          fail(file, line_no, "list property must be 'property list <count type> <type> <name>'");
         auto ct = ply_type(tokens[2]);
         auto et = ply_type(tokens[3]);
-        if (!ct || ply_is_float(*ct)) fail(file, line_no, "list count type '" + std::string(tokens[2]) + "' is not an integer type");
+        if (!ct || ply_is_float(*ct))
+          fail(file, line_no,
+               "list count type '" + std::string(tokens[2]) + "' is not an integer type");
         if (!et) fail(file, line_no, "unknown property type '" + std::string(tokens[3]) + "'");
         p.is_list = true;
         p.count_type = *ct;
@@ -362,11 +397,21 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
   return h;
 }
 
+template <typename T>
+double load(const unsigned char* bytes) {
+  T v;
+  std::memcpy(&v, bytes, sizeof v);
+  return static_cast<double>(v);
+}
+
 // Reads values of the body one at a time, in either encoding.
 class PlyBody {
  public:
-  struct End {};                        // the data ran out
-  struct BadToken { std::string token; };  // ascii token that is not a number of that type
+  // Thrown when the data runs out, and for an ascii token that is not a number of its type.
+  struct End {};
+  struct BadToken {
+    std::string token;
+  };
 
   PlyBody(const std::string& data, const PlyHeader& h)
       : data_(data), pos_(h.body_offset), line_(h.body_line), format_(h.format) {}
@@ -405,16 +450,24 @@ class PlyBody {
     unsigned char b[8];
     std::memcpy(b, data_.data() + pos_, n);
     pos_ += n;
-    if (format_ == PlyFormat::BinaryBig) std::reverse(b, b + n);  // we only run on little-endian
+    if (format_ == PlyFormat::BinaryBig) std::reverse(b, b + n);  // to native (little) order
     switch (type) {
-      case PlyType::Int8: return static_cast<double>(static_cast<std::int8_t>(b[0]));
-      case PlyType::UInt8: return static_cast<double>(b[0]);
-      case PlyType::Int16: { std::int16_t v; std::memcpy(&v, b, 2); return v; }
-      case PlyType::UInt16: { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
-      case PlyType::Int32: { std::int32_t v; std::memcpy(&v, b, 4); return v; }
-      case PlyType::UInt32: { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
-      case PlyType::Float32: { float v; std::memcpy(&v, b, 4); return static_cast<double>(v); }
-      case PlyType::Float64: { double v; std::memcpy(&v, b, 8); return v; }
+      case PlyType::Int8:
+        return load<std::int8_t>(b);
+      case PlyType::UInt8:
+        return load<std::uint8_t>(b);
+      case PlyType::Int16:
+        return load<std::int16_t>(b);
+      case PlyType::UInt16:
+        return load<std::uint16_t>(b);
+      case PlyType::Int32:
+        return load<std::int32_t>(b);
+      case PlyType::UInt32:
+        return load<std::uint32_t>(b);
+      case PlyType::Float32:
+        return load<float>(b);
+      case PlyType::Float64:
+        return load<double>(b);
     }
     return 0;
   }
@@ -426,8 +479,9 @@ class PlyBody {
   PlyFormat format_;
 };
 
-// The parsed contents of a PLY file, before they become a PolyMesh.
-struct PlyContents {
+// A mesh as plain arrays (a parsed PLY file, or what an OM file's halfedges describe), before
+// it becomes a PolyMesh.
+struct RawMesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // empty when the file has none
   std::vector<glm::vec3> colors;    // empty when the file has none
@@ -437,9 +491,9 @@ struct PlyContents {
   bool binary = false;
 };
 
-PlyContents parse_ply(const std::string& data, const std::string& file) {
+RawMesh parse_ply(const std::string& data, const std::string& file) {
   PlyHeader h = parse_ply_header(data, file);
-  PlyContents out;
+  RawMesh out;
   out.binary = h.format != PlyFormat::Ascii;
 
   // Find the vertex and face elements and give each property its role.
@@ -507,8 +561,9 @@ PlyContents parse_ply(const std::string& data, const std::string& file) {
       min_record += out.binary ? ply_size(p.is_list ? p.count_type : p.type) : 2;
     }
     if (min_record > 0 && e.count > remaining / min_record) {
-      fail(file, 0, "header declares " + std::to_string(e.count) + " " + e.name +
-                        " elements but the file is too short to hold them (truncated?)");
+      fail(file, 0,
+           "header declares " + std::to_string(e.count) + " " + e.name +
+               " elements but the file is too short to hold them (truncated?)");
     }
   }
 
@@ -529,13 +584,14 @@ PlyContents parse_ply(const std::string& data, const std::string& file) {
         for (auto& p : e.properties) {
           if (p.is_list) {
             double count = body.read(p.count_type);
-            if (count < 0) fail(file, body.line(), e.name + " " + std::to_string(i) + ": negative list length");
+            if (count < 0)
+              fail(file, body.line(), e.name + " " + std::to_string(i) + ": negative list length");
             auto n = static_cast<std::size_t>(count);
             if (p.role == PlyRole::VertexIndices) {
               if (n < 3) {
-                fail(file, body.line(), "face " + std::to_string(i) + " has " +
-                                            plural(n, "vertex", "vertices") +
-                                            " (a face needs at least 3)");
+                fail(file, body.line(),
+                     "face " + std::to_string(i) + " has " + plural(n, "vertex", "vertices") +
+                         " (a face needs at least 3)");
               }
               for (std::size_t k = 0; k < n; ++k) {
                 double index = body.read(p.type);
@@ -543,7 +599,8 @@ PlyContents parse_ply(const std::string& data, const std::string& file) {
                   fail(file, body.line(),
                        "face " + std::to_string(i) + ": vertex index " +
                            std::to_string(static_cast<long long>(index)) +
-                           " is out of range (the file has " + plural(nv, "vertex", "vertices") + ")");
+                           " is out of range (the file has " + plural(nv, "vertex", "vertices") +
+                           ")");
                 }
                 out.face_indices.push_back(static_cast<std::uint32_t>(index));
               }
@@ -556,26 +613,25 @@ PlyContents parse_ply(const std::string& data, const std::string& file) {
           double v = body.read(p.type);
           if (!is_vertex) continue;
           // Integer colours are 8-bit (checked above): v / 255, as OpenMesh's color_cast does.
-          const float c = ply_is_float(p.type) ? static_cast<float>(v) : static_cast<float>(v) / 255.0f;
-          switch (p.role) {
-            case PlyRole::X: out.positions[i].x = v; break;
-            case PlyRole::Y: out.positions[i].y = v; break;
-            case PlyRole::Z: out.positions[i].z = v; break;
-            case PlyRole::NX: out.normals[i].x = v; break;
-            case PlyRole::NY: out.normals[i].y = v; break;
-            case PlyRole::NZ: out.normals[i].z = v; break;
-            case PlyRole::Red: out.colors[i].r = c; break;
-            case PlyRole::Green: out.colors[i].g = c; break;
-            case PlyRole::Blue: out.colors[i].b = c; break;
-            default: break;
+          const float c =
+              ply_is_float(p.type) ? static_cast<float>(v) : static_cast<float>(v) / 255.0f;
+          const int role = static_cast<int>(p.role);
+          if (p.role >= PlyRole::X && p.role <= PlyRole::Z) {
+            out.positions[i][role - static_cast<int>(PlyRole::X)] = v;
+          } else if (p.role >= PlyRole::NX && p.role <= PlyRole::NZ) {
+            out.normals[i][role - static_cast<int>(PlyRole::NX)] = v;
+          } else if (p.role >= PlyRole::Red && p.role <= PlyRole::Blue) {
+            out.colors[i][role - static_cast<int>(PlyRole::Red)] = c;
           }
         }
       } catch (const PlyBody::End&) {
-        fail(file, 0, "file ends inside " + e.name + " " + std::to_string(i) + " of " +
-                          std::to_string(e.count) + " (truncated?)");
+        fail(file, 0,
+             "file ends inside " + e.name + " " + std::to_string(i) + " of " +
+                 std::to_string(e.count) + " (truncated?)");
       } catch (const PlyBody::BadToken& bad) {
-        fail(file, body.line(), "'" + bad.token + "' in " + e.name + " " + std::to_string(i) +
-                                    " is not a number of the declared type");
+        fail(file, body.line(),
+             "'" + bad.token + "' in " + e.name + " " + std::to_string(i) +
+                 " is not a number of the declared type");
       }
       if (is_vertex && !is_finite(out.positions[i])) {
         std::ostringstream what;
@@ -596,14 +652,15 @@ PlyContents parse_ply(const std::string& data, const std::string& file) {
   return out;
 }
 
-// Builds the mesh from parsed PLY contents through OpenMesh's importer.
-void build_ply_mesh(const PlyContents& ply, LoadedMesh& loaded, FileFacts& facts) {
+// Builds the mesh from arrays through OpenMesh's importer, so that the connectivity is whatever
+// add_face makes of the faces (consistent by construction), whatever the file said.
+void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts) {
   PolyMesh& mesh = loaded.mesh;
   mesh.clear();
-  const std::size_t nv = ply.positions.size();
-  const std::size_t nf = ply.face_offsets.size() - 1;
+  const std::size_t nv = raw.positions.size();
+  const std::size_t nf = raw.face_offsets.size() - 1;
   mesh.reserve(nv, 3 * nv, nf);
-  for (const auto& p : ply.positions) mesh.add_vertex(to_om(p));
+  for (const auto& p : raw.positions) mesh.add_vertex(to_om(p));
 
   // Which file vertex each mesh vertex came from: itself, or for the copies the importer makes
   // to split off a non-manifold face, the corner it copied (copies are made in corner order).
@@ -614,8 +671,8 @@ void build_ply_mesh(const PlyContents& ply, LoadedMesh& loaded, FileFacts& facts
   std::vector<OpenMesh::VertexHandle> handles;
   for (std::size_t f = 0; f < nf; ++f) {
     handles.clear();
-    for (auto k = ply.face_offsets[f]; k < ply.face_offsets[f + 1]; ++k) {
-      handles.emplace_back(static_cast<int>(ply.face_indices[k]));
+    for (auto k = raw.face_offsets[f]; k < raw.face_offsets[f + 1]; ++k) {
+      handles.emplace_back(static_cast<int>(raw.face_indices[k]));
     }
     auto sorted = handles;
     std::sort(sorted.begin(), sorted.end());
@@ -626,26 +683,26 @@ void build_ply_mesh(const PlyContents& ply, LoadedMesh& loaded, FileFacts& facts
     const std::size_t before = mesh.n_vertices();
     importer.add_face(handles);
     for (std::size_t v = before; v < mesh.n_vertices(); ++v) {
-      origin.push_back(ply.face_indices[ply.face_offsets[f] + (v - before)]);
+      origin.push_back(raw.face_indices[raw.face_offsets[f] + (v - before)]);
     }
   }
 
   loaded.read_options = Options();
-  if (ply.binary) loaded.read_options += Options::Binary;
+  if (raw.binary) loaded.read_options += Options::Binary;
   facts.vertices = nv;
   facts.normal_given.assign(mesh.n_vertices(), 0);
-  if (!ply.normals.empty()) {
+  if (!raw.normals.empty()) {
     loaded.read_options += Options::VertexNormal;
     for (auto vh : mesh.vertices()) {
-      mesh.set_normal(vh, to_om(ply.normals[origin[vh.idx()]]));
+      mesh.set_normal(vh, to_om(raw.normals[origin[vh.idx()]]));
       facts.normal_given[vh.idx()] = 1;
     }
   }
-  if (!ply.colors.empty()) {
+  if (!raw.colors.empty()) {
     loaded.read_options += Options::VertexColor;
-    if (ply.float_colors) loaded.read_options += Options::ColorFloat;
+    if (raw.float_colors) loaded.read_options += Options::ColorFloat;
     for (auto vh : mesh.vertices()) {
-      const auto& c = ply.colors[origin[vh.idx()]];
+      const auto& c = raw.colors[origin[vh.idx()]];
       mesh.set_color(vh, OpenMesh::Vec3f(c.r, c.g, c.b));
     }
   }
@@ -708,9 +765,11 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
       for (int k = 0; has_rgb && k < 3; ++k) has_rgb = parse_double(t[k + 4], rgb[k]);
       if (has_rgb) {
         for (double c : rgb) {
-          if (!fits_openmesh_float(c)) fail(file, line_no, "vertex " + std::to_string(seen_v) + " has a non-finite colour");
+          if (!fits_openmesh_float(c))
+            fail(file, line_no, "vertex " + std::to_string(seen_v) + " has a non-finite colour");
         }
-        colors.emplace_back(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]));
+        colors.emplace_back(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
+                            static_cast<float>(rgb[2]));
         ++colored;
       } else {
         colors.emplace_back(0.0f);
@@ -737,26 +796,28 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
         }
         long long v = 0;
         if (parts[0].empty() || !parse_int(parts[0], v) || v == 0) {
-          fail(file, line_no, "face corner '" + std::string(corner) + "' has no valid vertex index");
+          fail(file, line_no,
+               "face corner '" + std::string(corner) + "' has no valid vertex index");
         }
         // Negative indices count back from the last vertex defined so far (OBJ spec, OpenMesh).
         long long resolved = v < 0 ? static_cast<long long>(seen_v) + v + 1 : v;
         if (resolved < 1 || resolved > static_cast<long long>(total_v)) {
-          fail(file, line_no, "face vertex index " + std::to_string(v) +
-                                  " is out of range (the file has " +
-                                  plural(total_v, "vertex", "vertices") + ")");
+          fail(file, line_no,
+               "face vertex index " + std::to_string(v) + " is out of range (the file has " +
+                   plural(total_v, "vertex", "vertices") + ")");
         }
         corners.push_back(resolved - 1);
         if (!parts[2].empty()) {
           long long n = 0;
           if (!parse_int(parts[2], n) || n == 0) {
-            fail(file, line_no, "face corner '" + std::string(corner) + "' has an invalid normal index");
+            fail(file, line_no,
+                 "face corner '" + std::string(corner) + "' has an invalid normal index");
           }
           long long rn = n < 0 ? static_cast<long long>(seen_vn) + n + 1 : n;
           if (rn < 1 || rn > static_cast<long long>(total_vn)) {
-            fail(file, line_no, "face normal index " + std::to_string(n) +
-                                    " is out of range (the file has " +
-                                    plural(total_vn, "normal", "normals") + ")");
+            fail(file, line_no,
+                 "face normal index " + std::to_string(n) + " is out of range (the file has " +
+                     plural(total_vn, "normal", "normals") + ")");
           }
           facts.normal_given[static_cast<std::size_t>(resolved - 1)] = 1;
         }
@@ -808,7 +869,8 @@ OffHeader parse_off_keyword(std::string_view first_line, const std::string& file
   if (!k.empty() && (k[0] == '4' || k[0] == 'n')) {
     fail(file, 1, "OFF with 4D or n-dimensional vertices is not supported");
   }
-  if (k != "OFF") fail(file, 1, "not an OFF file (first line is '" + std::string(trim(first_line)) + "')");
+  if (k != "OFF")
+    fail(file, 1, "not an OFF file (first line is '" + std::string(trim(first_line)) + "')");
   if (tokens.size() == 2 && tokens[1] == "BINARY") {
     h.binary = true;
   } else if (tokens.size() > 1) {
@@ -823,7 +885,8 @@ FileFacts check_off_binary(const std::string& data, const OffHeader& h, const st
   std::size_t pos = data.find('\n');
   pos = pos == std::string::npos ? data.size() : pos + 1;
   auto u32 = [&](const char* what) {
-    if (data.size() - pos < 4) fail(file, 0, std::string("file ends inside ") + what + " (truncated?)");
+    if (data.size() - pos < 4)
+      fail(file, 0, std::string("file ends inside ") + what + " (truncated?)");
     std::uint32_t v;
     std::memcpy(&v, data.data() + pos, 4);
     pos += 4;
@@ -837,34 +900,50 @@ FileFacts check_off_binary(const std::string& data, const OffHeader& h, const st
   };
   const std::uint32_t nv = u32("the counts"), nf = u32("the counts");
   u32("the counts");
-  const std::size_t per_vertex = 4 * (3 + (h.normals ? 3 : 0) + (h.colors ? 3 : 0) + (h.texcoords ? 2 : 0));
+  const std::size_t per_vertex =
+      4 * (3 + (h.normals ? 3 : 0) + (h.colors ? 3 : 0) + (h.texcoords ? 2 : 0));
   if (nv > std::numeric_limits<std::int32_t>::max() || nv > (data.size() - pos) / per_vertex) {
-    fail(file, 0, "header declares " + std::to_string(nv) + " vertices but the file is too short to hold them (truncated?)");
+    fail(file, 0,
+         "header declares " + std::to_string(nv) +
+             " vertices but the file is too short to hold them (truncated?)");
   }
   for (std::uint32_t i = 0; i < nv; ++i) {
     for (int k = 0; k < 3; ++k) {
       float c = f32("a vertex");
-      if (!std::isfinite(c)) fail(file, 0, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+      if (!std::isfinite(c))
+        fail(file, 0, "vertex " + std::to_string(i) + " has a non-finite coordinate");
     }
-    if (h.normals) for (int k = 0; k < 3; ++k) f32("a vertex");
+    if (h.normals)
+      for (int k = 0; k < 3; ++k) f32("a vertex");
     if (h.colors) {
       for (int k = 0; k < 3; ++k) {
-        if (u32("a vertex") > 255) fail(file, 0, "vertex " + std::to_string(i) + ": colour component out of range 0..255");
+        if (u32("a vertex") > 255)
+          fail(file, 0, "vertex " + std::to_string(i) + ": colour component out of range 0..255");
       }
     }
-    if (h.texcoords) for (int k = 0; k < 2; ++k) f32("a vertex");
+    if (h.texcoords)
+      for (int k = 0; k < 2; ++k) f32("a vertex");
   }
   if (nf > (data.size() - pos) / 16) {
-    fail(file, 0, "header declares " + std::to_string(nf) + " faces but the file is too short to hold them (truncated?)");
+    fail(file, 0,
+         "header declares " + std::to_string(nf) +
+             " faces but the file is too short to hold them (truncated?)");
   }
   for (std::uint32_t i = 0; i < nf; ++i) {
     const std::uint32_t n = u32("a face");
-    if (n < 3) fail(file, 0, "face " + std::to_string(i) + " has " + plural(n, "vertex", "vertices") + " (a face needs at least 3)");
-    if (n > (data.size() - pos) / 4) fail(file, 0, "file ends inside face " + std::to_string(i) + " (truncated?)");
+    if (n < 3)
+      fail(file, 0,
+           "face " + std::to_string(i) + " has " + plural(n, "vertex", "vertices") +
+               " (a face needs at least 3)");
+    if (n > (data.size() - pos) / 4)
+      fail(file, 0, "file ends inside face " + std::to_string(i) + " (truncated?)");
     std::vector<std::uint32_t> idx(n);
     for (auto& x : idx) {
       x = u32("a face");
-      if (x >= nv) fail(file, 0, "face " + std::to_string(i) + ": vertex index " + std::to_string(x) + " is out of range (the file has " + plural(nv, "vertex", "vertices") + ")");
+      if (x >= nv)
+        fail(file, 0,
+             "face " + std::to_string(i) + ": vertex index " + std::to_string(x) +
+                 " is out of range (the file has " + plural(nv, "vertex", "vertices") + ")");
     }
     std::sort(idx.begin(), idx.end());
     if (std::adjacent_find(idx.begin(), idx.end()) != idx.end()) ++facts.repeated_faces;
@@ -887,7 +966,8 @@ FileFacts check_off(const std::string& data, const std::string& file) {
     while (li < lines.size()) {
       line = trim(lines[li++]);
       if (line.empty()) continue;
-      if (line[0] == '#') fail(file, li, "comment lines are not supported by OpenMesh's OFF reader");
+      if (line[0] == '#')
+        fail(file, li, "comment lines are not supported by OpenMesh's OFF reader");
       return true;
     }
     return false;
@@ -900,36 +980,47 @@ FileFacts check_off(const std::string& data, const std::string& file) {
       !parse_int(counts[2], ne) || nv < 0 || nf < 0 || ne < 0) {
     fail(file, li, "expected '<vertices> <faces> <edges>'");
   }
-  if (nv > std::numeric_limits<std::int32_t>::max() || nf > std::numeric_limits<std::int32_t>::max() ||
+  if (nv > std::numeric_limits<std::int32_t>::max() ||
+      nf > std::numeric_limits<std::int32_t>::max() ||
       static_cast<std::size_t>(nv + nf) > lines.size()) {
-    fail(file, li, "counts (" + std::to_string(nv) + " vertices, " + std::to_string(nf) +
-                       " faces) exceed the lines in the file (truncated?)");
+    fail(file, li,
+         "counts (" + std::to_string(nv) + " vertices, " + std::to_string(nf) +
+             " faces) exceed the lines in the file (truncated?)");
   }
   const std::size_t fixed = 3 + (h.normals ? 3 : 0);
   std::vector<glm::vec3> colors;
   std::size_t colored = 0;
   for (long long i = 0; i < nv; ++i) {
     if (!next_content_line(line)) {
-      fail(file, 0, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices (truncated?)");
+      fail(file, 0,
+           "file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
+               " vertices (truncated?)");
     }
     auto t = split_whitespace(line);
-    if (t.size() < fixed) fail(file, li, "vertex " + std::to_string(i) + " needs " + std::to_string(fixed) + " numbers");
+    if (t.size() < fixed)
+      fail(file, li,
+           "vertex " + std::to_string(i) + " needs " + std::to_string(fixed) + " numbers");
     for (std::size_t k = 0; k < fixed; ++k) {
       double v;
       if (!parse_double(t[k], v)) fail(file, li, "'" + std::string(t[k]) + "' is not a number");
       if (!fits_openmesh_float(v)) {
-        fail(file, li, "vertex " + std::to_string(i) + (k < 3 ? " has a non-finite coordinate" : " has a non-finite normal") +
-                           " ('" + std::string(t[k]) + "'; OpenMesh reads OFF numbers as float)");
+        fail(file, li,
+             "vertex " + std::to_string(i) +
+                 (k < 3 ? " has a non-finite coordinate" : " has a non-finite normal") + " ('" +
+                 std::string(t[k]) + "'; OpenMesh reads OFF numbers as float)");
       }
     }
     if (!h.colors) continue;
-    std::size_t items = t.size() - fixed - (h.texcoords ? 2 : 0);
-    if (h.texcoords && t.size() < fixed + 2) fail(file, li, "vertex " + std::to_string(i) + " lacks texture coordinates");
+    if (h.texcoords && t.size() < fixed + 2) {
+      fail(file, li, "vertex " + std::to_string(i) + " lacks texture coordinates");
+    }
+    const std::size_t items = t.size() - fixed - (h.texcoords ? 2 : 0);
     glm::vec3 c(0.0f);
     if (items == 3 || items == 4) {
       // OpenMesh counts items by single spaces; anything else changes its reading.
       std::string_view rest = line.substr(static_cast<std::size_t>(t[fixed].data() - line.data()));
-      if (h.texcoords) rest = rest.substr(0, static_cast<std::size_t>(t[t.size() - 2].data() - rest.data()));
+      if (h.texcoords)
+        rest = rest.substr(0, static_cast<std::size_t>(t[t.size() - 2].data() - rest.data()));
       rest = trim(rest);
       std::size_t spaces = static_cast<std::size_t>(std::count(rest.begin(), rest.end(), ' '));
       if (spaces + 1 != items || rest.find('\t') != std::string_view::npos) {
@@ -940,12 +1031,16 @@ FileFacts check_off(const std::string& data, const std::string& file) {
         const auto tok = t[fixed + k];
         if (is_float) {
           double v;
-          if (!parse_double(tok, v) || !fits_openmesh_float(v)) fail(file, li, "colour '" + std::string(tok) + "' is not a finite number");
+          if (!parse_double(tok, v) || !fits_openmesh_float(v))
+            fail(file, li, "colour '" + std::string(tok) + "' is not a finite number");
           c[static_cast<int>(k)] = static_cast<float>(v);
         } else {
           long long v;
           if (!parse_int(tok, v) || v < 0 || v > 255) {
-            fail(file, li, "colour '" + std::string(tok) + "' is not an integer in 0..255 (write all components with a '.' for float colours)");
+            fail(file, li,
+                 "colour '" + std::string(tok) +
+                     "' is not an integer in 0..255 (write all components with a '.' for float "
+                     "colours)");
           }
           c[static_cast<int>(k)] = static_cast<float>(v) / 255.0f;
         }
@@ -958,24 +1053,39 @@ FileFacts check_off(const std::string& data, const std::string& file) {
   }
   for (long long i = 0; i < nf; ++i) {
     if (!next_content_line(line)) {
-      fail(file, 0, "file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces (truncated?)");
+      fail(file, 0,
+           "file ends after " + std::to_string(i) + " of " + std::to_string(nf) +
+               " faces (truncated?)");
     }
     auto t = split_whitespace(line);
     long long n = 0;
-    if (!parse_int(t[0], n) || n < 0) fail(file, li, "face " + std::to_string(i) + ": '" + std::string(t[0]) + "' is not a vertex count");
-    if (n < 3) fail(file, li, "face " + std::to_string(i) + " has " + plural(static_cast<std::size_t>(n), "vertex", "vertices") + " (a face needs at least 3)");
-    if (t.size() < static_cast<std::size_t>(n) + 1) fail(file, li, "face " + std::to_string(i) + " lists fewer than " + std::to_string(n) + " vertices");
+    if (!parse_int(t[0], n) || n < 0)
+      fail(file, li,
+           "face " + std::to_string(i) + ": '" + std::string(t[0]) + "' is not a vertex count");
+    if (n < 3)
+      fail(file, li,
+           "face " + std::to_string(i) + " has " +
+               plural(static_cast<std::size_t>(n), "vertex", "vertices") +
+               " (a face needs at least 3)");
+    if (t.size() < static_cast<std::size_t>(n) + 1)
+      fail(file, li,
+           "face " + std::to_string(i) + " lists fewer than " + std::to_string(n) + " vertices");
     // A plain OFF face is read token by token: extra values would be taken as the next face.
     if (!h.colors && t.size() > static_cast<std::size_t>(n) + 1) {
-      fail(file, li, "face " + std::to_string(i) + " has values after its " + std::to_string(n) + " indices");
+      fail(file, li,
+           "face " + std::to_string(i) + " has values after its " + std::to_string(n) + " indices");
     }
     std::vector<long long> idx;
     for (long long k = 1; k <= n; ++k) {
       long long x;
-      if (!parse_int(t[static_cast<std::size_t>(k)], x)) fail(file, li, "'" + std::string(t[static_cast<std::size_t>(k)]) + "' is not a vertex index");
+      if (!parse_int(t[static_cast<std::size_t>(k)], x))
+        fail(file, li,
+             "'" + std::string(t[static_cast<std::size_t>(k)]) + "' is not a vertex index");
       if (x < 0 || x >= nv) {
-        fail(file, li, "face " + std::to_string(i) + ": vertex index " + std::to_string(x) +
-                           " is out of range (the file has " + plural(static_cast<std::size_t>(nv), "vertex", "vertices") + ")");
+        fail(file, li,
+             "face " + std::to_string(i) + ": vertex index " + std::to_string(x) +
+                 " is out of range (the file has " +
+                 plural(static_cast<std::size_t>(nv), "vertex", "vertices") + ")");
       }
       idx.push_back(x);
     }
@@ -1008,7 +1118,8 @@ void check_stl(const std::string& data, const std::string& file) {
         float xyz[9];
         std::memcpy(xyz, data.data() + 84 + 50 * static_cast<std::size_t>(t) + 12, sizeof xyz);
         for (float c : xyz) {
-          if (!std::isfinite(c)) fail(file, 0, "triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
+          if (!std::isfinite(c))
+            fail(file, 0, "triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
         }
       }
       return;
@@ -1022,7 +1133,7 @@ void check_stl(const std::string& data, const std::string& file) {
       std::memcpy(&n, data.data() + 80, 4);
       what += " (its header declares " + std::to_string(n) + " triangles, which need " +
               std::to_string(84 + 50 * static_cast<std::size_t>(n)) + " bytes; the file has " +
-              std::to_string(data.size()) + ": truncated?)";
+              std::to_string(data.size()) + ": truncated or corrupt?)";
     }
     fail(file, 0, what);
   }
@@ -1034,7 +1145,8 @@ void check_stl(const std::string& data, const std::string& file) {
     for (int k = 1; k <= 3; ++k) {
       double v;
       if (!parse_double(t[static_cast<std::size_t>(k)], v) || !fits_openmesh_float(v)) {
-        fail(file, li + 1, "'" + std::string(t[static_cast<std::size_t>(k)]) + "' is not a finite number");
+        fail(file, li + 1,
+             "'" + std::string(t[static_cast<std::size_t>(k)]) + "' is not a finite number");
       }
     }
   }
@@ -1042,46 +1154,211 @@ void check_stl(const std::string& data, const std::string& file) {
 
 // =============================================================================================
 // OM: OpenMesh's own binary format, whose chunks describe the halfedge structure directly.
-// Corrupt files trip asserts compiled into libOpenMeshCore (abort) or make it loop, and checking
-// the structure ourselves would mean re-implementing the format. So the reader first runs in a
-// child process: only if that child finishes is the file read here.
+// Corrupt files make its reader abort (asserts compiled into libOpenMeshCore, double frees),
+// segfault, allocate without end, or quietly write outside its arrays and leave a halfedge
+// structure whose circulators crash later. Checking the format ourselves would mean
+// re-implementing it, so the reader runs in a child process, which walks the faces with every
+// handle checked and sends back plain arrays; this process never runs the OM reader.
 
-void probe_in_child_process(const fs::path& path, const std::string& file) {
+RawMesh faces_of_om_mesh(const PolyMesh& raw, const Options& options, const std::string& file) {
+  RawMesh out;
+  out.binary = options.is_binary();
+  const std::size_t nv = raw.n_vertices(), nh = raw.n_halfedges();
+  for (auto vh : raw.vertices()) {
+    const auto& p = raw.point(vh);
+    out.positions.emplace_back(p[0], p[1], p[2]);
+    if (options.vertex_has_normal()) out.normals.push_back(to_glm(raw.normal(vh)));
+    if (options.vertex_has_color()) {
+      const auto& c = raw.color(vh);
+      out.colors.emplace_back(c[0], c[1], c[2]);
+    }
+  }
+  auto corrupt = [&](std::size_t f) {
+    fail(file, 0, "face " + std::to_string(f) + " has a broken halfedge loop (corrupt OM file)");
+  };
+  for (std::size_t f = 0; f < raw.n_faces(); ++f) {
+    const auto start = raw.halfedge_handle(OpenMesh::FaceHandle(static_cast<int>(f)));
+    if (start.idx() < 0 || static_cast<std::size_t>(start.idx()) >= nh) corrupt(f);
+    auto h = start;
+    std::size_t steps = 0;
+    do {
+      const auto v = raw.to_vertex_handle(h);
+      if (v.idx() < 0 || static_cast<std::size_t>(v.idx()) >= nv) corrupt(f);
+      out.face_indices.push_back(static_cast<std::uint32_t>(v.idx()));
+      h = raw.next_halfedge_handle(h);
+      if (h.idx() < 0 || static_cast<std::size_t>(h.idx()) >= nh || ++steps > nh) corrupt(f);
+    } while (h != start);
+    if (steps < 3) corrupt(f);
+    out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_indices.size()));
+  }
+  return out;
+}
+
+// RawMesh over the pipe: counts, then the arrays as they are in memory (same process image).
+std::string serialize(const RawMesh& m) {
+  std::string out;
+  auto put = [&out](const void* p, std::size_t n) {
+    if (n) out.append(static_cast<const char*>(p), n);
+  };
+  const std::uint64_t counts[5] = {m.positions.size(), m.normals.size(), m.colors.size(),
+                                   m.face_offsets.size(), m.face_indices.size()};
+  put(counts, sizeof counts);
+  const char binary = m.binary ? 1 : 0;
+  put(&binary, 1);
+  put(m.positions.data(), m.positions.size() * sizeof(glm::dvec3));
+  put(m.normals.data(), m.normals.size() * sizeof(glm::dvec3));
+  put(m.colors.data(), m.colors.size() * sizeof(glm::vec3));
+  put(m.face_offsets.data(), m.face_offsets.size() * sizeof(std::uint32_t));
+  put(m.face_indices.data(), m.face_indices.size() * sizeof(std::uint32_t));
+  return out;
+}
+
+// Checks sizes and indices: the child's memory may have been damaged by the file it read.
+RawMesh deserialize(const std::string& data, const std::string& file) {
+  auto broken = [&]() {
+    fail(file, 0, "OpenMesh's OM reader returned an inconsistent mesh (corrupt file?)");
+  };
+  std::uint64_t counts[5];
+  if (data.size() < sizeof counts + 1) broken();
+  std::memcpy(counts, data.data(), sizeof counts);
+  const auto [nv, nn, nc, no, ni] = counts;
+  if (nv > (1u << 31) || (nn != 0 && nn != nv) || (nc != 0 && nc != nv) || no < 1 ||
+      no > (1u << 31) || ni > (1ull << 34))
+    broken();
+  const std::size_t expected = sizeof counts + 1 + (nv + nn) * sizeof(glm::dvec3) +
+                               nc * sizeof(glm::vec3) + (no + ni) * sizeof(std::uint32_t);
+  if (data.size() != expected) broken();
+  RawMesh m;
+  std::size_t pos = sizeof counts;
+  m.binary = data[pos++] != 0;
+  auto get = [&](auto& vec, std::size_t n) {
+    vec.resize(n);
+    if (n) std::memcpy(vec.data(), data.data() + pos, n * sizeof(vec[0]));
+    pos += n * sizeof(vec[0]);
+  };
+  get(m.positions, nv);
+  get(m.normals, nn);
+  get(m.colors, nc);
+  get(m.face_offsets, no);
+  get(m.face_indices, ni);
+  if (m.face_offsets.front() != 0 || m.face_offsets.back() != ni) broken();
+  for (std::size_t f = 0; f + 1 < no; ++f) {
+    if (m.face_offsets[f + 1] < m.face_offsets[f] + 3) broken();
+  }
+  for (auto i : m.face_indices) {
+    if (i >= nv) broken();
+  }
+  return m;
+}
+
+bool write_all(int fd, const std::string& data) {
+  std::size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+RawMesh read_om_in_child(const fs::path& path, const std::string& file,
+                         OpenMeshLogCapture& capture) {
+  std::error_code ec;
+  const std::uintmax_t file_size = fs::file_size(path, ec);
+  const std::size_t size = ec ? 0 : static_cast<std::size_t>(file_size);
+  // OM reads at well over 100 MB/s; 2 s per MB is a generous bound before calling it a hang.
+  const auto limit = std::chrono::seconds(10 + static_cast<long long>(size >> 19));
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) fail(file, 0, "cannot read OM files: pipe() failed");
   std::cout.flush();
   std::cerr.flush();
   const pid_t pid = ::fork();
-  if (pid < 0) return;  // cannot isolate: fall through to the normal read
+  if (pid < 0) {
+    ::close(pipe_fds[0]);
+    ::close(pipe_fds[1]);
+    fail(file, 0, "cannot read OM files: fork() failed");
+  }
   if (pid == 0) {
+    ::close(pipe_fds[0]);
     const int devnull = ::open("/dev/null", O_WRONLY);
     if (devnull >= 0) {
       ::dup2(devnull, 1);
       ::dup2(devnull, 2);
     }
-    PolyMesh probe;
-    Options options = requested_options();
-    const bool ok = OpenMesh::IO::read_mesh(probe, path.string(), options);
-    ::_exit(ok ? 0 : 3);
-  }
-  std::error_code ec;
-  const auto size = fs::file_size(path, ec);
-  const auto limit = std::chrono::seconds(30 + (ec ? 0 : static_cast<long long>(size >> 20)));
-  const auto start = std::chrono::steady_clock::now();
-  int status = 0;
-  for (;;) {
-    const pid_t r = ::waitpid(pid, &status, WNOHANG);
-    if (r == pid) break;
-    if (r < 0 && errno != EINTR) return;
-    if (std::chrono::steady_clock::now() - start > limit) {
-      ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
-      fail(file, 0, "OpenMesh's OM reader did not finish reading this file (corrupt?)");
+    // Cap the address space above what the child already maps (inherited from us, GL
+    // included) and its CPU time, so that a runaway file ends in a failed allocation or
+    // SIGXCPU, not with the OOM killer.
+    const std::size_t budget = (std::size_t{512} << 20) + 64 * size;
+    char statm[128] = {};
+    const int fd = ::open("/proc/self/statm", O_RDONLY);
+    if (fd >= 0) {
+      const auto got = ::read(fd, statm, sizeof statm - 1);
+      ::close(fd);
+      if (got > 0) {
+        const std::size_t mapped =
+            std::strtoull(statm, nullptr, 10) * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+        const rlimit as{mapped + budget, mapped + budget};
+        ::setrlimit(RLIMIT_AS, &as);
+      }
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    const rlimit cpu{static_cast<rlim_t>(limit.count()), static_cast<rlim_t>(limit.count())};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+    int code = 0;
+    std::string payload;
+    try {
+      PolyMesh raw;
+      Options options = requested_options();
+      // The log streams still point into the parent's capture buffer, copied by fork.
+      read_with_openmesh(raw, file, options, capture);
+      payload = serialize(faces_of_om_mesh(raw, options, file));
+    } catch (const InputError& e) {
+      code = 3;
+      payload = e.what_only();
+    } catch (const std::exception& e) {
+      code = 3;
+      payload = std::string("OpenMesh could not read it: ") + e.what();
+    }
+    write_all(pipe_fds[1], payload);
+    ::_exit(code);
+  }
+  ::close(pipe_fds[1]);
+  // Drain the pipe while the child works (it blocks once the pipe buffer is full).
+  const auto start = std::chrono::steady_clock::now();
+  auto timed_out = [&]() {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, nullptr, 0);
+    ::close(pipe_fds[0]);
+    fail(file, 0, "OpenMesh's OM reader did not finish reading this file (corrupt?)");
+  };
+  std::string data;
+  char buf[1 << 16];
+  for (;;) {
+    const auto left = limit - (std::chrono::steady_clock::now() - start);
+    if (left <= std::chrono::steady_clock::duration::zero()) timed_out();
+    pollfd pfd{pipe_fds[0], POLLIN, 0};
+    const int ready = ::poll(
+        &pfd, 1,
+        static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(left).count()) + 1);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) continue;  // the deadline check above ends it
+    const ssize_t n = ::read(pipe_fds[0], buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // end of file: the child is done (or dead)
+    data.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(pipe_fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   if (WIFSIGNALED(status)) {
-    fail(file, 0, "OpenMesh's OM reader crashed on this file (signal " +
-                      std::to_string(WTERMSIG(status)) + "; corrupt or truncated?)");
+    fail(file, 0,
+         "OpenMesh's OM reader crashed on this file (signal " + std::to_string(WTERMSIG(status)) +
+             "; corrupt or truncated?)");
   }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    fail(file, 0, data.empty() ? "OpenMesh could not read it" : data);
+  return deserialize(data, file);
 }
 
 // =============================================================================================
@@ -1152,9 +1429,9 @@ std::size_t recompute_normals(PolyMesh& mesh, const std::vector<char>& keep) {
   std::size_t without = 0;
   for (auto vh : mesh.vertices()) {
     if (!keep.empty() && keep[static_cast<std::size_t>(vh.idx())]) continue;
+    // Area vectors of a 1e-6 mesh are ~1e-12 long; safe_normalize rescales before it
+    // normalises, so their sum keeps its direction.
     glm::dvec3 sum(0.0);
-    // Scale each face by its largest component first: area vectors of a 1e-6 mesh are ~1e-12
-    // and their sum must not lose its direction (safe_normalize handles the rest).
     for (auto fh : mesh.vf_range(vh)) sum += area[static_cast<std::size_t>(fh.idx())];
     const glm::dvec3 n = safe_normalize(sum);
     if (n == glm::dvec3(0.0)) ++without;
@@ -1187,7 +1464,8 @@ void finish(LoadedMesh& loaded, const std::string& file, FileFacts& facts) {
   if (facts.partial_colors || (facts.colors_checked && !facts.has_colors)) {
     loaded.read_options -= Options::VertexColor;
     loaded.read_options -= Options::ColorFloat;
-    if (facts.partial_colors) loaded.warnings.push_back("only some vertices have colours: colours ignored");
+    if (facts.partial_colors)
+      loaded.warnings.push_back("only some vertices have colours: colours ignored");
   } else if (facts.has_colors) {
     loaded.read_options += Options::VertexColor;
     for (auto vh : mesh.vertices()) {
@@ -1227,25 +1505,38 @@ void finish(LoadedMesh& loaded, const std::string& file, FileFacts& facts) {
       }
     }
   } else {
-    loaded.warnings.push_back("no vertex normals in the file: computed from the faces (area-weighted)");
+    loaded.warnings.push_back(
+        "no vertex normals in the file: computed from the faces (area-weighted)");
   }
   const std::size_t without = recompute_normals(mesh, keep);
-  if (zero) loaded.warnings.push_back(plural(zero, "zero-length normal", "zero-length normals") + " recomputed from the faces");
-  if (nonfinite) loaded.warnings.push_back(plural(nonfinite, "non-finite normal", "non-finite normals") + " recomputed from the faces");
-  if (missing) loaded.warnings.push_back(plural(missing, "vertex", "vertices") + " without a normal in the file: computed from the faces");
-  if (nonunit) loaded.warnings.push_back(plural(nonunit, "non-unit normal", "non-unit normals") + " normalised");
+  if (zero)
+    loaded.warnings.push_back(plural(zero, "zero-length normal", "zero-length normals") +
+                              " recomputed from the faces");
+  if (nonfinite)
+    loaded.warnings.push_back(plural(nonfinite, "non-finite normal", "non-finite normals") +
+                              " recomputed from the faces");
+  if (missing)
+    loaded.warnings.push_back(plural(missing, "vertex", "vertices") +
+                              " without a normal in the file: computed from the faces");
+  if (nonunit)
+    loaded.warnings.push_back(plural(nonunit, "non-unit normal", "non-unit normals") +
+                              " normalised");
   if (without) {
-    loaded.warnings.push_back(plural(without, "vertex has", "vertices have") +
-                              " no normal (isolated, or only degenerate faces around it): left zero");
+    loaded.warnings.push_back(
+        plural(without, "vertex has", "vertices have") +
+        " no normal (isolated, or only degenerate faces around it): left zero");
   }
 }
 
 // =============================================================================================
 // PLY writer: double positions (see write_mesh in mesh.h), float normals, float or 8-bit colours.
 
-void write_ply(const fs::path& tmp, const fs::path& target, const PolyMesh& mesh, const Options& options) {
+void write_ply(const fs::path& tmp, const fs::path& target, const PolyMesh& mesh,
+               const Options& options) {
   std::ofstream out(tmp, std::ios::binary);
-  if (!out) throw InputError(target.string(), "", "cannot write output: " + std::string(std::strerror(errno)));
+  if (!out)
+    throw InputError(target.string(), "",
+                     "cannot write output: " + std::string(std::strerror(errno)));
   const bool binary = options.is_binary();
   const bool normals = options.vertex_has_normal();
   const bool colors = options.vertex_has_color();
@@ -1272,11 +1563,10 @@ void write_ply(const fs::path& tmp, const fs::path& target, const PolyMesh& mesh
     return static_cast<unsigned char>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
   };
   if (binary) {
-    // Little-endian, like the machines we run on: values are copied as they are in memory.
+    // binary_little_endian: values are copied as they are in memory.
+    static_assert(std::endian::native == std::endian::little, "PLY I/O assumes little-endian");
     std::string buf;
-    auto put = [&buf](const auto& v) {
-      buf.append(reinterpret_cast<const char*>(&v), sizeof v);
-    };
+    auto put = [&buf](const auto& v) { buf.append(reinterpret_cast<const char*>(&v), sizeof v); };
     for (auto vh : mesh.vertices()) {
       const auto& p = mesh.point(vh);
       for (int k = 0; k < 3; ++k) put(p[k]);
@@ -1314,8 +1604,10 @@ void write_ply(const fs::path& tmp, const fs::path& target, const PolyMesh& mesh
       s = line;
       if (normals) {
         const auto& n = mesh.normal(vh);
-        std::snprintf(line, sizeof line, " %.9g %.9g %.9g", static_cast<double>(static_cast<float>(n[0])),
-                      static_cast<double>(static_cast<float>(n[1])), static_cast<double>(static_cast<float>(n[2])));
+        std::snprintf(line, sizeof line, " %.9g %.9g %.9g",
+                      static_cast<double>(static_cast<float>(n[0])),
+                      static_cast<double>(static_cast<float>(n[1])),
+                      static_cast<double>(static_cast<float>(n[2])));
         s += line;
       }
       if (colors) {
@@ -1337,7 +1629,9 @@ void write_ply(const fs::path& tmp, const fs::path& target, const PolyMesh& mesh
     }
   }
   out.flush();
-  if (!out) throw InputError(target.string(), "", "cannot write output: " + std::string(std::strerror(errno)));
+  if (!out)
+    throw InputError(target.string(), "",
+                     "cannot write output: " + std::string(std::strerror(errno)));
 }
 
 const char* const kReadable = ".ply, .obj, .off, .stl, .stla, .stlb, .om";
@@ -1360,33 +1654,28 @@ LoadedMesh read_mesh(const fs::path& path) {
   LoadedMesh loaded;
   FileFacts facts;
   if (ext == ".ply") {
-    const PlyContents ply = parse_ply(read_bytes(path), file);
+    const RawMesh ply = parse_ply(read_bytes(path), file);
     OpenMeshLogCapture capture;  // the importer reports through omerr
-    build_ply_mesh(ply, loaded, facts);
-  } else {
-    if (ext != ".om") {
-      const std::string data = read_bytes(path);
-      if (ext == ".obj") facts = check_obj(data, file);
-      if (ext == ".off") facts = check_off(data, file);
-      if (stl) check_stl(data, file);
-    }
+    build_mesh(ply, loaded, facts);
+  } else if (ext == ".om") {
     OpenMeshLogCapture capture;
-    if (ext == ".om") probe_in_child_process(path, file);
+    // Rebuilt from the face loops: whatever halfedges the file held, the mesh we hand on has
+    // the connectivity add_face makes.
+    build_mesh(read_om_in_child(path, file, capture), loaded, facts);
+  } else {
+    const std::string data = read_bytes(path);
+    if (ext == ".obj") facts = check_obj(data, file);
+    if (ext == ".off") facts = check_off(data, file);
+    if (stl) check_stl(data, file);
+    OpenMeshLogCapture capture;
     PolyMesh& mesh = loaded.mesh;
     // Vertex status lets the importer mark the copies it makes for non-manifold faces.
     mesh.request_vertex_status();
     Options options = requested_options();
-    bool ok = false;
-    try {
-      ok = OpenMesh::IO::read_mesh(mesh, file, options);
-    } catch (const std::exception& e) {
-      // e.g. std::bad_alloc from a reserve() sized by a corrupt count.
-      throw InputError(file, "", std::string("OpenMesh could not read it: ") + e.what());
-    }
-    if (!ok) {
-      std::string why = capture.last_line();
-      throw InputError(file, "", "OpenMesh could not read it" + (why.empty() ? std::string() : ": " + why));
-    }
+    read_with_openmesh(mesh, file, options, capture);
+    // STL has neither vertex normals nor colours, but its reader hands the request back as if
+    // the file had them (and leaves them uninitialised).
+    if (stl) options -= Options::VertexNormal | Options::VertexColor | Options::ColorFloat;
     loaded.read_options = options;
     const std::size_t split = repair_split_vertices(mesh, options, facts);
     if (split) {
@@ -1394,8 +1683,9 @@ LoadedMesh read_mesh(const fs::path& path) {
                                 " duplicated to split off non-manifold faces");
     }
     if (facts.vertices && mesh.n_vertices() != facts.vertices + split) {
-      throw InputError(file, "", "OpenMesh read " + plural(mesh.n_vertices() - split, "vertex", "vertices") +
-                                     " where the file has " + std::to_string(facts.vertices));
+      throw InputError(file, "",
+                       "OpenMesh read " + plural(mesh.n_vertices() - split, "vertex", "vertices") +
+                           " where the file has " + std::to_string(facts.vertices));
     }
     mesh.release_vertex_status();
   }
@@ -1432,7 +1722,9 @@ TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
   return out;
 }
 
-TriangleMesh load_triangle_mesh(const fs::path& path) { return to_triangle_mesh(read_mesh(path)); }
+TriangleMesh load_triangle_mesh(const fs::path& path) {
+  return to_triangle_mesh(read_mesh(path));
+}
 
 void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options) {
   const std::string ext = lower_extension(path);
@@ -1442,19 +1734,23 @@ void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options) {
   }
   static const char* const writable[] = {".obj", ".off", ".om", ".stl", ".stla", ".stlb", ".vtk"};
   if (std::find(std::begin(writable), std::end(writable), ext) == std::end(writable)) {
-    throw InputError(path.string(), "", "unknown mesh format '" + ext +
-                                            "' (writable: .ply, .obj, .off, .om, .stl, .vtk)");
+    throw InputError(
+        path.string(), "",
+        "unknown mesh format '" + ext + "' (writable: .ply, .obj, .off, .om, .stl, .vtk)");
   }
   write_atomically(path, [&](const fs::path& tmp) {
     OpenMeshLogCapture capture;
     // 17 significant digits: OpenMesh's default of 6 would move a vertex at 1e6 by up to 0.5.
     if (!OpenMesh::IO::write_mesh(mesh, tmp.string(), options, 17)) {
       const std::string why = capture.last_line();
-      throw InputError(path.string(), "", "OpenMesh could not write it" + (why.empty() ? std::string() : ": " + why));
+      throw InputError(path.string(), "",
+                       "OpenMesh could not write it" + (why.empty() ? std::string() : ": " + why));
     }
   });
 }
 
-std::size_t compute_normals(PolyMesh& mesh) { return recompute_normals(mesh, {}); }
+std::size_t compute_normals(PolyMesh& mesh) {
+  return recompute_normals(mesh, {});
+}
 
 }  // namespace lt

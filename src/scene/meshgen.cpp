@@ -3,8 +3,10 @@
 // once at the end.
 #include "scene/meshgen.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <utility>
@@ -27,7 +29,8 @@ struct Geometry {
   }
 };
 
-// Vertex normals as given; face normals (and nothing else) from the faces.
+// Vertex normals as given (compute_normals fills the face normals; its vertex normals are then
+// replaced), colours zero.
 PolyMesh to_mesh(const Geometry& g) {
   PolyMesh mesh;
   mesh.reserve(g.positions.size(), 3 * g.positions.size(), g.triangles.size());
@@ -57,14 +60,14 @@ void add_quad(Geometry& g, int a, int b, int c, int d) {
 Geometry icosphere_geometry(double radius, int subdivisions) {
   LT_CHECK(subdivisions >= 0 && subdivisions <= 8, "icosphere subdivisions out of range");
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  const glm::dvec3 corners[12] = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0},
-                                  {0, -1, t}, {0, 1, t},  {0, -1, -t}, {0, 1, -t},
-                                  {t, 0, -1}, {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  const glm::dvec3 corners[12] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                  {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                  {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
   // Counter-clockwise seen from outside.
   std::vector<std::array<int, 3>> faces = {
-      {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
       {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   std::vector<glm::dvec3> dirs;
   for (const auto& c : corners) dirs.push_back(glm::normalize(c));
   for (int s = 0; s < subdivisions; ++s) {
@@ -74,7 +77,8 @@ Geometry icosphere_geometry(double radius, int subdivisions) {
       auto key = std::minmax(a, b);
       auto it = midpoints.find(key);
       if (it != midpoints.end()) return it->second;
-      dirs.push_back(glm::normalize(dirs[static_cast<std::size_t>(a)] + dirs[static_cast<std::size_t>(b)]));
+      dirs.push_back(
+          glm::normalize(dirs[static_cast<std::size_t>(a)] + dirs[static_cast<std::size_t>(b)]));
       const int m = static_cast<int>(dirs.size()) - 1;
       midpoints.emplace(key, m);
       return m;
@@ -163,7 +167,8 @@ PolyMesh box(const glm::dvec3& half_extents, int n) {
       }
       auto at = [&](int i, int j) { return base + j * (n + 1) + i; };
       for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) add_quad(g, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+        for (int i = 0; i < n; ++i)
+          add_quad(g, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
       }
     }
   }
@@ -188,7 +193,8 @@ PolyMesh torus(double major_radius, double minor_radius, int major_segments, int
   };
   // Walking the tube (j) before the ring (i) makes the quads face outward.
   for (int i = 0; i < major_segments; ++i) {
-    for (int j = 0; j < minor_segments; ++j) add_quad(g, at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));
+    for (int j = 0; j < minor_segments; ++j)
+      add_quad(g, at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));
   }
   return to_mesh(g);
 }
@@ -212,9 +218,20 @@ PolyMesh blob(int subdivisions) {
   Geometry g = icosphere_geometry(1.0, subdivisions);
   // Radial displacement keeps the surface star-shaped around the origin, so it cannot fold or
   // intersect itself, and every triangle keeps its outward orientation (its tetrahedron with
-  // the origin only changes size). The squash makes the body thinner front to back.
+  // the origin only changes size; the squash, scale and shift below keep that). The squash
+  // makes the body thinner front to back.
   const glm::dvec3 squash(1.0, 0.9, 0.8);
   for (auto& p : g.positions) p = squash * (blob_radius(p) * p);
+  // The ears make it lopsided: centre its bounding box on the origin and make the largest
+  // half-extent 1.2, so that it frames like the unit-radius meshes.
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const auto& p : g.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::dvec3 centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  const double scale = 1.2 / std::max({half.x, half.y, half.z});
+  for (auto& p : g.positions) p = scale * (p - centre);
   PolyMesh mesh = to_mesh(g);
   compute_normals(mesh);  // smooth, from the displaced surface
   return mesh;
@@ -229,7 +246,8 @@ PolyMesh degenerate_sphere(int subdivisions, int count) {
   }
   std::vector<char> used(g.triangles.size(), 0);
   const std::size_t n_before = g.triangles.size();
-  const std::size_t step = std::max<std::size_t>(1, n_before / static_cast<std::size_t>(2 * count + 1));
+  const std::size_t step =
+      std::max<std::size_t>(1, n_before / static_cast<std::size_t>(2 * count + 1));
   int made = 0;
   for (std::size_t t = step / 2; t < n_before && made < count; t += step) {
     const auto tri = g.triangles[t];
@@ -250,6 +268,7 @@ PolyMesh degenerate_sphere(int subdivisions, int count) {
     g.triangles.push_back({a, b, m});
     ++made;
   }
+  LT_CHECK(made == count, "degenerate_sphere: too few edges to split on this sphere");
   return to_mesh(g);
 }
 
@@ -272,7 +291,8 @@ void translate(PolyMesh& mesh, const glm::dvec3& offset) {
 
 std::vector<NamedMesh> standard_set() {
   std::vector<NamedMesh> set;
-  for (int s = 1; s <= 5; ++s) set.push_back({"sphere_s" + std::to_string(s) + ".ply", icosphere(1.0, s)});
+  for (int s = 1; s <= 5; ++s)
+    set.push_back({"sphere_s" + std::to_string(s) + ".ply", icosphere(1.0, s)});
   set.push_back({"cube.ply", box({1.0, 1.0, 1.0}, 8)});
   set.push_back({"torus.ply", torus(0.7, 0.3, 96, 48)});
   set.push_back({"slab.ply", box({1.0, 1.0, 0.05}, 8)});

@@ -13,7 +13,9 @@ std::string define(const char* name, bool on) {
   return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
 }
 
-std::string light_prefix(size_t i) { return "u_light" + std::to_string(i) + "_"; }
+std::string light_prefix(size_t i) {
+  return "u_light" + std::to_string(i) + "_";
+}
 
 }  // namespace
 
@@ -46,18 +48,16 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
   const std::string defines =
       define("LT_TRANSLUCENCY", translucent) + define("LT_VERTEX_THICKNESS", vertex_thickness) +
       define("LT_NORMALIZE_H", translucent && tr.normalize_distorted_light) +
-      define("LT_POWER_ZERO", translucent && tr.power == 0) +
-      define("LT_POINT_LIGHTS", any_point) +
+      define("LT_POWER_ZERO", translucent && tr.power == 0) + define("LT_POINT_LIGHTS", any_point) +
       define("LT_AMBIENT_LIGHT", scene.ambient_light != glm::dvec3(0)) +
       define("LT_ORTHOGRAPHIC", scene.camera.projection == Camera::Projection::Orthographic);
   GlslSources s;
   s.vertex = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.vert"),
                                {{"DEFINES", defines}}, "translucency.vert");
-  s.fragment = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.frag"),
-                                 {{"DEFINES", defines},
-                                  {"LIGHT_UNIFORMS", uniforms.str()},
-                                  {"LIGHT_CALLS", calls.str()}},
-                                 "translucency.frag");
+  s.fragment = gl::fill_template(
+      gl::read_shader_source("legacy_shaders/glsl/translucency.frag"),
+      {{"DEFINES", defines}, {"LIGHT_UNIFORMS", uniforms.str()}, {"LIGHT_CALLS", calls.str()}},
+      "translucency.frag");
   return s;
 }
 

@@ -21,7 +21,8 @@ class ReferencePath final : public Path {
     ctx.gl.require_extension("GL_ARB_texture_float", "the reference G-buffer");
     ctx.gl.require_extension("GL_ARB_draw_buffers", "the reference G-buffer");
     // The CPU shades in the same camera-relative space the G-buffer holds.
-    for (Light& l : relative_scene_.lights) l.position = ctx.geometry.to_camera_relative(l.position);
+    for (Light& l : relative_scene_.lights)
+      l.position = ctx.geometry.to_camera_relative(l.position);
     relative_scene_.objects.clear();  // shading needs lights and materials, not meshes
   }
 
@@ -29,8 +30,7 @@ class ReferencePath final : public Path {
     rasterise();
     const auto t0 = std::chrono::steady_clock::now();
     shade();
-    shading_seconds_ =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    shading_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
   Image result() override { return image_; }

@@ -1,0 +1,53 @@
+// `ltrender budget`: every program a path generates for a scene, counted (program_counter.h) and
+// checked against a profile pair (profiles.h), plus the translucency term's own cost per light:
+// the program with the term minus the same program without it.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "budget/profiles.h"
+#include "scene/scene.h"
+
+namespace lt::budget {
+
+struct CountedProgram {
+  std::string name;  // e.g. "material marble: fragment program"
+  ProgramCounts counts;
+  std::string profile;  // the profile it was checked against
+  std::vector<Overrun> over;
+};
+
+// The term's cost in one material's fragment program: entry k is what light k adds (the first
+// includes the view vector, which only the term needs).
+struct TermCost {
+  std::string material;
+  struct Cost {
+    int alu = 0, tex = 0;
+  };
+  std::vector<Cost> per_light;
+  Cost total;
+};
+
+struct BudgetReport {
+  std::string scene, path, variant;
+  const Profile* fragment_profile = nullptr;
+  const Profile* vertex_profile = nullptr;
+  std::vector<CountedProgram> programs;
+  std::vector<TermCost> term_costs;
+
+  bool fits() const;
+  // "material marble: fragment program: 70 ALU instructions > 64 (ps_2_0)"; empty when it fits.
+  std::string first_overrun() const;
+};
+
+// Throws InputError for an unknown path/profile/variant, or a path with no budget yet.
+// `profile` may name either kind; its partner checks the other kind of program.
+BudgetReport run_budget(const Scene& scene, const std::string& path, const std::string& variant,
+                        const std::string& profile);
+
+std::string format_table(const BudgetReport& report);
+nlohmann::json to_json(const BudgetReport& report);
+
+}  // namespace lt::budget

@@ -1,0 +1,34 @@
+// Hardware profiles a program is checked against. Each limit says where it comes from; -1 means
+// the profile sets no limit of that kind.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "budget/program_counter.h"
+
+namespace lt::budget {
+
+struct Profile {
+  std::string name;
+  ProgramKind kind;
+  std::string partner;  // the profile for the other program kind (ps_2_0 <-> vs_2_0, ...)
+  int alu = -1, tex = -1;
+  int instructions = -1;  // ALU + TEX slots together
+  int temporaries = -1, parameters = -1, attributes = -1;
+  int indirections = -1;
+  std::string source;  // where the numbers come from
+};
+
+const std::vector<Profile>& all_profiles();
+// Throws InputError("--profile", name, ...) listing the valid names.
+const Profile& find_profile(const std::string& name);
+
+// One limit a program goes over, e.g. {"ALU instructions", 70, 64}.
+struct Overrun {
+  std::string limit;
+  int count, max;
+};
+std::vector<Overrun> check(const ProgramCounts& counts, const Profile& profile);
+
+}  // namespace lt::budget

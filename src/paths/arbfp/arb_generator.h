@@ -1,0 +1,53 @@
+// Generates the arbfp path's ARB vertex and fragment programs for one material of a scene, from
+// the templates in legacy_shaders/arb/. Pure CPU (no GL context), so `ltrender budget` and the
+// tests can count the programs without rendering.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/power_lut.h"
+#include "scene/scene.h"
+
+namespace lt::arbfp {
+
+// How the fragment program evaluates the lobe t^p (model.md "Where the paths lose accuracy").
+enum class PowMethod {
+  Exact,         // POW, with t = 0 selected to 0 by CMP (POW is EX2(p * LG2(t)): LG2(0) = -inf)
+  Lut,           // 1D texture of t^p per material (model::PowerLut), one MAD + one TEX
+  Sg,            // exp2(n' * (t - 1)), n' = 1.4427 p + 1.4427 (the spherical-Gaussian form)
+  SgSimplified,  // exp2(p * (t - 1)): a different curve, ~35-40 LSB off (model.md)
+  SgFitted,      // exp2(n' * (t - 1)) with n' fitted per material to the max error against t^p
+  Mul,           // t^p by repeated squaring for integer p; non-integer p falls back to Exact
+};
+
+struct PowVariant {
+  PowMethod method = PowMethod::Exact;
+  int lut_size = 256;                                  // Lut only
+  model::LutFormat lut_format = model::LutFormat::U8;  // Lut only
+
+  std::string name() const;  // as given to --variant, e.g. "pow=lut:256:u8"
+};
+
+// Parses a --variant name ("pow=exact", "pow=lut:N:u8|f16|f32", "pow=sg", "pow=sg-simplified",
+// "pow=sg-fitted", "pow=mul"). Throws InputError("--variant", name, ...) when malformed.
+PowVariant parse_variant(const std::string& name);
+
+// n' of exp2(n' (t - 1)) minimising max over t in [0, 1] of |exp2(n' (t - 1)) - t^p|, in double.
+double fit_sg_exponent(double p);
+// The spherical-Gaussian exponent of the seed: n' = p / ln 2 + 1 / ln 2 (1.4427 = 1 / ln 2).
+double sg_exponent(double p);
+
+struct ArbPrograms {
+  std::string vertex, fragment;
+  std::optional<model::PowerLut> lut;  // the texture the fragment program samples as texture[0]
+  std::vector<std::string> notes;      // what the variant did for this material (for `info`)
+};
+
+// `translucency_term = false` generates the same program without the translucency term (diffuse
+// only), so the budget can report the term's own cost as the difference.
+ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
+                         bool translucency_term = true);
+
+}  // namespace lt::arbfp

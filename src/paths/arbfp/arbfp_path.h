@@ -1,0 +1,8 @@
+#pragma once
+#include "paths/path.h"
+
+namespace lt {
+// Per-pixel ARB vertex + fragment programs (SM2 model), generated per material, with the pow
+// variants of arb_generator.h selected by --variant.
+PathInfo arbfp_path_info();
+}  // namespace lt

@@ -1,0 +1,130 @@
+#include "paths/combiners/combiner_budget.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.h"
+#include "paths/combiners/combiners_path.h"
+
+namespace lt {
+
+const std::vector<CombinerBudgetProfile>& combiner_budget_profiles() {
+  static const std::vector<CombinerBudgetProfile> profiles = {
+      // GeForce2 (NV15): 2 texture units, register combiners exposed as 2 env stages.
+      {"gl13-2units", "GeForce2-class: 2 texture units = 2 combiner stages", 2, 2, 2, 8, true,
+       false},
+      // Radeon 7500 (R100): 3 texture units.
+      {"gl13-3units", "Radeon 7500-class: 3 texture units = 3 combiner stages", 3, 3, 3, 8, true,
+       false},
+      // What Mesa (llvmpipe) exposes to fixed-function GL: GL_MAX_TEXTURE_UNITS = 8.
+      {"gl-8units", "Mesa llvmpipe fixed function: 8 texture units", 8, 8, 8, 8, true, false},
+      // Wii/GameCube GX: 16 TEV stages, 8 texture maps, 4 konst colours, 8 lights per channel.
+      {"wii-tev", "Wii TEV: 16 stages, 8 texture maps, 4 konst colours, 8 lights", 16, 8, 4, 8,
+       false, true},
+  };
+  return profiles;
+}
+
+CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& profile,
+                                     const std::string& variant) {
+  const auto& profiles = combiner_budget_profiles();
+  const auto it = std::find_if(profiles.begin(), profiles.end(),
+                               [&](const CombinerBudgetProfile& p) { return p.name == profile; });
+  if (it == profiles.end()) {
+    std::string names;
+    for (const auto& p : profiles) names += (names.empty() ? "" : ", ") + p.name;
+    throw InputError("--profile", profile, "unknown combiner profile (valid: " + names + ")");
+  }
+  CombinerBudgetReport r;
+  r.profile = *it;
+  r.variant = variant.empty() ? "t=vertex" : variant;
+  r.lights = static_cast<int>(scene.lights.size());
+  for (const CombinerMaterialPlan& plan : plan_combiners(scene, r.variant)) {
+    if (!plan.used) continue;
+    CombinerBudgetMaterial m;
+    m.material = scene.materials[plan.material].name;
+    // A pass is one program: the limits apply to the largest program the material uses.
+    for (const auto& [name, program] : plan.programs) {
+      m.program += (m.program.empty() ? "" : "+") + name;
+      const int program_stages = static_cast<int>(program.stages.size());
+      m.stages =
+          std::max(m.stages,
+                   program_stages + (program.color_sum && r.profile.color_sum_costs_stage ? 1 : 0));
+      m.texture_units =
+          std::max(m.texture_units,
+                   r.profile.stage_needs_unit ? program_stages : program.textures_sampled());
+      m.constant_colors = std::max(m.constant_colors, program.constant_colors());
+    }
+    m.passes = plan.passes();
+    r.stages = std::max(r.stages, m.stages);
+    r.texture_units = std::max(r.texture_units, m.texture_units);
+    r.constant_colors = std::max(r.constant_colors, m.constant_colors);
+    r.passes = std::max(r.passes, m.passes);
+    r.materials.push_back(m);
+  }
+  auto check = [&](const char* what, int used, int limit) {
+    if (used > limit) {
+      r.over.push_back(std::string(what) + ": " + std::to_string(used) + " > " +
+                       std::to_string(limit));
+    }
+  };
+  check("stages", r.stages, r.profile.stages);
+  check("texture units", r.texture_units, r.profile.texture_units);
+  check("constant colours", r.constant_colors, r.profile.constant_colors);
+  // Per-vertex lighting runs on the CPU here, but a port would hand it to the hardware lights.
+  check("lights", r.lights, r.profile.lights);
+  return r;
+}
+
+std::string to_text(const CombinerBudgetReport& r) {
+  std::ostringstream o;
+  o << "profile " << r.profile.name << " (" << r.profile.summary << "), path combiners, variant "
+    << r.variant << "\n";
+  for (const CombinerBudgetMaterial& m : r.materials) {
+    o << "  material " << m.material << ": combiners/" << m.program << ": " << m.stages
+      << " stages, " << m.texture_units << " texture units, " << m.constant_colors
+      << " constant colours, " << m.passes << " passes\n";
+  }
+  o << "  stages " << r.stages << "/" << r.profile.stages << ", texture units " << r.texture_units
+    << "/" << r.profile.texture_units << ", constant colours " << r.constant_colors << "/"
+    << r.profile.constant_colors << ", lights " << r.lights << "/" << r.profile.lights
+    << ", passes " << r.passes << " (multipass: no limit)\n";
+  if (r.fits()) {
+    o << "  fits\n";
+  } else {
+    for (const std::string& s : r.over) o << "  OVER " << s << "\n";
+  }
+  return o.str();
+}
+
+std::string to_json(const CombinerBudgetReport& r) {
+  nlohmann::json j;
+  j["profile"] = r.profile.name;
+  j["path"] = "combiners";
+  j["variant"] = r.variant;
+  j["fits"] = r.fits();
+  j["over"] = r.over;
+  j["used"] = {{"stages", r.stages},
+               {"texture_units", r.texture_units},
+               {"constant_colors", r.constant_colors},
+               {"passes", r.passes},
+               {"lights", r.lights}};
+  j["limits"] = {{"stages", r.profile.stages},
+                 {"texture_units", r.profile.texture_units},
+                 {"constant_colors", r.profile.constant_colors},
+                 {"lights", r.profile.lights}};
+  nlohmann::json mats = nlohmann::json::array();
+  for (const CombinerBudgetMaterial& m : r.materials) {
+    mats.push_back({{"material", m.material},
+                    {"program", m.program},
+                    {"stages", m.stages},
+                    {"texture_units", m.texture_units},
+                    {"constant_colors", m.constant_colors},
+                    {"passes", m.passes}});
+  }
+  j["materials"] = mats;
+  return j.dump();
+}
+
+}  // namespace lt

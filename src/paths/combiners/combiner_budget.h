@@ -1,0 +1,57 @@
+// Stage budgets for the combiners path (`ltrender budget SCENE --path combiners --profile P`):
+// what the programs the path builds for a scene use (combiner stages, texture units, passes,
+// constant colours, lights), against what a class of hardware has. No GL context needed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace lt {
+
+struct CombinerBudgetProfile {
+  std::string name;         // as given to --profile
+  std::string summary;      // the hardware it stands for
+  int stages = 0;           // combiner stages (texture environments / TEV stages)
+  int texture_units = 0;    // GL: texture units; Wii: texture maps
+  int constant_colors = 0;  // GL: one TEXTURE_ENV_COLOR per unit; Wii: 4 konst registers
+  int lights = 0;           // hardware lights per pass (GL_MAX_LIGHTS, GX channel lights)
+  // GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs a
+  // unit; the TEV decouples stages from texture maps.
+  bool stage_needs_unit = true;
+  // GL adds the secondary colour after the combiners (colour sum, free); the TEV reads the
+  // second rasterised colour in a stage of its own.
+  bool color_sum_costs_stage = false;
+};
+
+// gl13-2units, gl13-3units, gl-8units, wii-tev.
+const std::vector<CombinerBudgetProfile>& combiner_budget_profiles();
+
+struct CombinerBudgetMaterial {
+  std::string material, program;  // program: file(s) in combiners/, "+"-separated
+  int stages = 0, texture_units = 0, constant_colors = 0, passes = 0;
+};
+
+struct CombinerBudgetReport {
+  CombinerBudgetProfile profile;
+  std::string variant;
+  std::vector<CombinerBudgetMaterial> materials;  // only materials some object uses
+  // The worst material per figure (a pass is one program, so limits apply per material), and
+  // the passes of the whole frame (the most any material needs: passes run scene-wide).
+  int stages = 0, texture_units = 0, constant_colors = 0, passes = 0, lights = 0;
+  std::vector<std::string> over;  // one line per exceeded limit, empty when it fits
+
+  bool fits() const { return over.empty(); }
+};
+
+// Throws InputError("--profile", profile, ...) naming the valid profiles for an unknown one.
+// `variant` is a combiners variant ("" = the default).
+CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& profile,
+                                     const std::string& variant = "");
+
+// Human-readable table and one JSON object (for --json).
+std::string to_text(const CombinerBudgetReport& report);
+std::string to_json(const CombinerBudgetReport& report);
+
+}  // namespace lt

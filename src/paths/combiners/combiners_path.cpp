@@ -1,0 +1,534 @@
+#include "paths/combiners/combiners_path.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/context.h"
+#include "gl/program.h"
+#include "model/power_lut.h"
+#include "model/translucency.h"
+
+namespace lt {
+
+bool texgen_applicable(const Scene& scene, const Material& material) {
+  if (scene.camera.projection != Camera::Projection::Orthographic) return false;
+  if (material.translucency && material.translucency->normalize_distorted_light) return false;
+  return std::all_of(scene.lights.begin(), scene.lights.end(),
+                     [](const Light& l) { return l.type == Light::Type::Directional; });
+}
+
+std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant) {
+  std::vector<CombinerMaterialPlan> plans(scene.materials.size());
+  for (const SceneObject& o : scene.objects) plans[o.material].used = true;
+  for (size_t i = 0; i < plans.size(); ++i) {
+    CombinerMaterialPlan& p = plans[i];
+    const Material& m = scene.materials[i];
+    p.material = static_cast<int>(i);
+    if (!m.translucency || scene.lights.empty()) {
+      p.pass_programs = {"diffuse_only.comb"};
+    } else {
+      // One pass per light: the lobe needs att*T of its own light in the primary colour, and a
+      // vertex has one primary colour (see combiners/README.md, "Why one pass per light").
+      const bool texgen = variant == "t=texgen" && texgen_applicable(scene, m);
+      for (const Light& l : scene.lights) {
+        if (variant == "lobe=cube" && l.type == Light::Type::Directional) {
+          // Constant thickness: the whole term depends on N only and fits in the cube's rgb.
+          const bool constant = m.translucency->thickness_source == ThicknessSource::Constant;
+          p.pass_programs.push_back(constant ? "lobe_cube_full.comb" : "lobe_cube.comb");
+        } else {
+          p.pass_programs.push_back(texgen ? "lobe_texgen.comb" : "lobe_vertex.comb");
+        }
+      }
+    }
+    for (const std::string& name : p.pass_programs) {
+      if (!p.programs.count(name)) p.programs.emplace(name, combiners::load_combiner_program(name));
+    }
+  }
+  return plans;
+}
+
+namespace {
+
+GLuint make_buffer() {
+  GLuint b = 0;
+  glGenBuffers(1, &b);
+  return b;
+}
+
+void stream(GLuint buffer, const std::vector<float>& data) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STREAM_DRAW);
+}
+
+// Per-vertex inputs of one object for one frame, computed on the CPU in double.
+struct VertexTerms {
+  // Per light: the LUT coordinate of the unsaturated t (the texture's CLAMP_TO_EDGE saturates
+  // per pixel, after interpolation, as the per-pixel model does), att * T * fold (rgba), and the
+  // light's diffuse and ambient part albedo * color * att * (diffuse + a*T) (rgb; pass 0 also
+  // carries albedo * ambient_light).
+  std::vector<std::vector<float>> texcoord, primary, secondary;
+  std::vector<float> thickness;  // rgba: T, the primary colour of a lobe=cube pass
+  std::vector<float> diffuse;    // rgba: albedo * (ambient + sum of color * att * diffuse), the
+                                 // whole term of a material without translucency
+};
+
+// The direction of texel (i, j) of a cube face, from GL's face table (spec "Cube Map Texture
+// Selection": s = (sc/|ma| + 1)/2, t = (tc/|ma| + 1)/2), at the texel centre.
+glm::dvec3 cube_direction(int face, int i, int j, int size) {
+  const double sc = 2.0 * (i + 0.5) / size - 1, tc = 2.0 * (j + 0.5) / size - 1;
+  switch (face) {
+    case 0:
+      return {1, -tc, -sc};  // +X
+    case 1:
+      return {-1, -tc, sc};  // -X
+    case 2:
+      return {sc, 1, tc};  // +Y
+    case 3:
+      return {sc, -1, -tc};  // -Y
+    case 4:
+      return {sc, -tc, 1};  // +Z
+    default:
+      return {-sc, -tc, -1};  // -Z
+  }
+}
+
+bool is_cube(const std::string& program) {
+  return program == "lobe_cube.comb" || program == "lobe_cube_full.comb";
+}
+
+unsigned char to_unorm8(double v) {
+  return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+class CombinersPath final : public Path {
+ public:
+  CombinersPath(const PathContext& ctx, const std::string& variant)
+      : ctx_(ctx), variant_(variant), plans_(plan_combiners(ctx.scene, variant)) {
+    const Scene& s = ctx.scene;
+    // A 1x1 white texture: bound by stages that sample nothing, so GL runs their environment.
+    glGenTextures(1, &white_);
+    glBindTexture(GL_TEXTURE_2D, white_);
+    const unsigned char white[4] = {255, 255, 255, 255};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+
+    luts_.resize(s.materials.size());
+    lut_textures_.resize(s.materials.size(), 0);
+    cubes_.assign(s.materials.size(), std::vector<Cube>(s.lights.size()));
+    for (const CombinerMaterialPlan& p : plans_) {
+      const Material& m = s.materials[p.material];
+      if (!p.used || !m.translucency) continue;
+      // 8-bit texels: what a GL 1.3 (or Wii I8) texture holds. One row: this material's power.
+      luts_[p.material] =
+          model::PowerLut::build(kCombinerLutSize, model::LutFormat::U8, {m.translucency->power});
+      const model::PowerLut& lut = luts_[p.material];
+      GLuint tex = 0;
+      glGenTextures(1, &tex);
+      glBindTexture(GL_TEXTURE_1D, tex);
+      glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE8, lut.size, 0, GL_LUMINANCE, GL_FLOAT,
+                   lut.texels.data());
+      glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      // Saturates t per pixel: coordinates beyond the end texel centres read lobe(0) or lobe(1).
+      glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glBindTexture(GL_TEXTURE_1D, 0);
+      lut_textures_[p.material] = tex;
+      for (int pass = 0; pass < p.passes(); ++pass) {
+        if (!is_cube(p.pass_programs[static_cast<size_t>(pass)])) continue;
+        const auto t0 = std::chrono::steady_clock::now();
+        cubes_[p.material][static_cast<size_t>(pass)] = build_cube(p.material, pass);
+        cube_seconds_ +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      }
+    }
+    for (size_t i = 0; i < ctx.geometry.meshes().size(); ++i) {
+      buffers_.push_back({make_buffer(), make_buffer(), make_buffer()});
+    }
+    gl::check_error("building the combiners path");
+  }
+
+  ~CombinersPath() override {
+    for (const auto& b : buffers_) glDeleteBuffers(3, b.data());
+    for (GLuint t : lut_textures_) {
+      if (t) glDeleteTextures(1, &t);
+    }
+    for (const auto& per_light : cubes_) {
+      for (const Cube& c : per_light) {
+        if (c.texture) glDeleteTextures(1, &c.texture);
+      }
+    }
+    glDeleteTextures(1, &white_);
+  }
+
+  void frame() override {
+    const Scene& s = ctx_.scene;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto& meshes = ctx_.geometry.meshes();
+    std::vector<VertexTerms> terms(meshes.size());
+    for (size_t i = 0; i < meshes.size(); ++i) terms[i] = vertex_terms(i);
+    cpu_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    const glm::dvec3& bg = s.background;
+    glViewport(0, 0, ctx_.width, ctx_.height);
+    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_LIGHTING);
+    ctx_.geometry.load_matrices();
+
+    int max_passes = 0;
+    for (const gl::GpuMesh& m : meshes)
+      max_passes = std::max(max_passes, plans_[m.material].passes());
+    for (int pass = 0; pass < max_passes; ++pass) {
+      if (pass == 1) {
+        // Later passes add one light each onto the 8-bit framebuffer: the sum clamps at 1
+        // (lossless: every term is >= 0) but each pass is rounded to 8 bits before it is added.
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        // Same vertices, same fixed-function transform: the depths repeat exactly (GL's
+        // invariance rule), so EQUAL keeps the visible fragments of pass 0.
+        glDepthFunc(GL_EQUAL);
+        glDepthMask(GL_FALSE);
+        // The one known loss of EQUAL: where two faces meet at a vertex and their depths tie in
+        // 24 bits at a pixel, both pass and that pixel gets the light twice (the reference's
+        // single pass keeps one fragment). A stencil "first fragment only" would fix it; the
+        // OSMesa context has no stencil buffer. Seen on one corner pixel of thin_vs_thick.
+      }
+      for (size_t i = 0; i < meshes.size(); ++i) {
+        if (pass < plans_[meshes[i].material].passes()) draw_pass(i, pass, terms[i]);
+      }
+    }
+    passes_drawn_ = max_passes;
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    combiners::reset_texture_state(combiners::kMaxStages);
+    gl::check_error("combiners frame");
+  }
+
+  Image result() override { return read_framebuffer(ctx_.gl); }
+
+  std::vector<BuiltStage> stages() const override {
+    std::vector<BuiltStage> out;
+    for (const CombinerMaterialPlan& p : plans_) {
+      if (!p.used) continue;
+      const std::string material = "material " + ctx_.scene.materials[p.material].name;
+      for (int pass = 0; pass < p.passes(); ++pass) {
+        const std::string& name = p.pass_programs[static_cast<size_t>(pass)];
+        std::string note;
+        if (variant_ == "t=texgen" && name == "lobe_vertex.comb") {
+          note =
+              " (texgen not applicable: needs directional lights, an orthographic camera and "
+              "unnormalised H; t computed per vertex on the CPU)";
+        }
+        if (variant_ == "lobe=cube" && name == "lobe_vertex.comb") {
+          note = " (point light: no cube, t per vertex)";
+        }
+        if (is_cube(name)) {
+          const Cube& c = cubes_[p.material][static_cast<size_t>(pass)];
+          note = " (cube " + std::to_string(kCombinerCubeSize) + "^2 x 6, RGBA8" +
+                 (c.constant_clamped ? "; albedo*color*g > 4 clamped" : "") + ")";
+        }
+        out.push_back({material + ", pass " + std::to_string(pass) + ": combiners/" + name + ", " +
+                           std::to_string(p.program(pass).stages.size()) + " stages" + note,
+                       "combiners", gl::read_shader_source("combiners/" + name)});
+      }
+    }
+    out.push_back(
+        {"per-vertex terms on the CPU (t, att*T, diffuse), streamed each frame", "cpu", ""});
+    return out;
+  }
+
+  std::map<std::string, double> frame_stats() const override {
+    std::map<std::string, double> stats = {{"cpu_vertex_seconds", cpu_seconds_},
+                                           {"passes", static_cast<double>(passes_drawn_)}};
+    if (variant_ == "lobe=cube") stats["cube_rebuild_seconds"] = cube_seconds_;
+    return stats;
+  }
+
+ private:
+  struct Cube {
+    GLuint texture = 0;
+    glm::dvec3 lobe_color{0};  // albedo * color * g: the alpha channel holds (a + s lobe) / g
+    bool constant_clamped = false;
+  };
+
+  // The view vector the cube is built for: exact for an orthographic camera; under perspective
+  // the direction to the centre of the objects drawn with this material.
+  glm::dvec3 cube_view(int material) const {
+    const Scene& s = ctx_.scene;
+    if (s.camera.projection == Camera::Projection::Orthographic) return -s.camera.forward();
+    glm::dvec3 sum(0);
+    size_t n = 0;
+    for (const SceneObject& o : s.objects) {
+      if (o.material != material) continue;
+      for (const glm::dvec3& p : o.mesh.positions) sum += p - ctx_.geometry.origin();
+      n += o.mesh.positions.size();
+    }
+    return model::view_vector(s.camera, n ? sum / static_cast<double>(n) : glm::dvec3(0));
+  }
+
+  // The whole term of directional light `pass` for `material` as a function of the normal, in
+  // eye space (texgen NORMAL_MAP gives the eye-space normal). lobe_cube.comb: rgb = albedo *
+  // color * max(N.L, 0) (+ albedo * ambient_light in pass 0), alpha = (a + s * lobe) / g, T from
+  // the primary colour. lobe_cube_full.comb (constant T): rgb = the whole term, alpha 1.
+  Cube build_cube(int material, int pass) const {
+    const Scene& s = ctx_.scene;
+    const Material& mat = s.materials[static_cast<size_t>(material)];
+    const Translucency& tr = *mat.translucency;
+    const Light& light = s.lights[static_cast<size_t>(pass)];
+    const glm::dmat3 view(
+        glm::lookAt(glm::dvec3(0), s.camera.forward(), s.camera.up));  // world -> eye rotation
+    const glm::dmat3 to_world = glm::transpose(view);
+    const glm::dvec3 V = cube_view(material);
+    const glm::dvec3 L = -light.direction;
+    const int n = kCombinerCubeSize;
+    std::vector<glm::dvec3> rgb(6 * static_cast<size_t>(n) * n);
+    std::vector<double> g(rgb.size());
+    double g_max = 0;
+    const glm::dvec3 ambient = pass == 0 ? mat.albedo * s.ambient_light : glm::dvec3(0);
+    const bool full =
+        plans_[static_cast<size_t>(material)].pass_programs[static_cast<size_t>(pass)] ==
+        "lobe_cube_full.comb";
+    const glm::dvec3 T = model::thickness(tr, glm::dvec3(1));  // constant when `full`
+    for (int f = 0; f < 6; ++f) {
+      for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+          const size_t k = (static_cast<size_t>(f) * n + j) * n + i;
+          const glm::dvec3 N = glm::normalize(to_world * cube_direction(f, i, j, n));
+          g[k] = tr.ambient + light.translucency_scale *
+                                  model::lobe(model::translucency_dot(V, L, N, tr), tr.power);
+          const double diffuse = std::max(glm::dot(N, L), 0.0);
+          if (full) {
+            rgb[k] = mat.albedo * light.color * (diffuse + g[k] * T) + ambient;
+            g[k] = 1;  // alpha unused
+          } else {
+            rgb[k] = mat.albedo * light.color * diffuse + ambient;
+          }
+          g_max = std::max(g_max, g[k]);
+        }
+      }
+    }
+    // g_max = 0 (no lobe and no translucency ambient): alpha 0 and constant 0 either way.
+    const double scale = g_max > 0 ? g_max : 1.0;
+    Cube c;
+    c.lobe_color = mat.albedo * light.color * scale;
+    c.constant_clamped = !full && std::max({c.lobe_color.r, c.lobe_color.g, c.lobe_color.b}) > 4;
+    std::vector<unsigned char> texels(static_cast<size_t>(n) * n * 4);
+    glGenTextures(1, &c.texture);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, c.texture);
+    for (int f = 0; f < 6; ++f) {
+      for (size_t t = 0; t < static_cast<size_t>(n) * n; ++t) {
+        const size_t k = static_cast<size_t>(f) * n * n + t;
+        // rgb over 1 is lossless to clamp: the pixel saturates anyway (every other term >= 0).
+        for (int ch = 0; ch < 3; ++ch) texels[t * 4 + ch] = to_unorm8(rgb[k][ch]);
+        texels[t * 4 + 3] = to_unorm8(g[k] / scale);
+      }
+      glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, n, n, 0,
+                   GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return c;
+  }
+
+  VertexTerms vertex_terms(size_t object) const {
+    const Scene& s = ctx_.scene;
+    const TriangleMesh& mesh = s.objects[object].mesh;
+    const Material& mat = s.materials[static_cast<size_t>(s.objects[object].material)];
+    const size_t n = mesh.positions.size();
+    const size_t lights = s.lights.size();
+    VertexTerms vt;
+    vt.texcoord.assign(lights, std::vector<float>(n));
+    vt.primary.assign(lights, std::vector<float>(n * 4));
+    vt.secondary.assign(lights, std::vector<float>(n * 3));
+    vt.thickness.assign(n * 4, 1.0f);
+    vt.diffuse.assign(n * 4, 1.0f);
+    const model::PowerLut* lut =
+        mat.translucency ? &luts_[static_cast<size_t>(s.objects[object].material)] : nullptr;
+    const std::vector<double> fold = fold_factors(mat);
+    const glm::dvec3 ambient = mat.albedo * s.ambient_light;
+    for (size_t v = 0; v < n; ++v) {
+      const glm::dvec3& P = mesh.positions[v];
+      const glm::dvec3 N = mesh.normals[v];  // unit or zero (model.md "no normal")
+      const glm::dvec3 V = model::view_vector(s.camera, P - ctx_.geometry.origin());
+      const glm::dvec3 T =
+          mat.translucency ? model::thickness(*mat.translucency,
+                                              mesh.has_colors() ? mesh.colors[v] : glm::dvec3(1))
+                           : glm::dvec3(0);
+      glm::dvec3 diffuse_sum = ambient;
+      for (size_t l = 0; l < lights; ++l) {
+        const Light& light = s.lights[l];
+        const model::LightSample ls = model::sample_light(light, P, N);
+        const double diffuse = ls.attenuation * std::max(glm::dot(N, ls.L), 0.0);
+        diffuse_sum += mat.albedo * light.color * diffuse;
+        if (!mat.translucency) continue;
+        const Translucency& tr = *mat.translucency;
+        const glm::dvec3 own =
+            mat.albedo * light.color * (diffuse + ls.attenuation * tr.ambient * T) +
+            (l == 0 ? ambient : glm::dvec3(0));
+        // The unsaturated dot: interpolating the clamped value would move the lobe's edge.
+        glm::dvec3 H = ls.L + N * tr.distortion;
+        if (tr.normalize_distorted_light) {
+          const double len = glm::length(H);
+          H = len > 0 ? H / len : glm::dvec3(0);
+        }
+        vt.texcoord[l][v] = static_cast<float>(lut->coordinate(glm::dot(V, -H)));
+        const glm::dvec3 prim = ls.attenuation * T * fold[l];
+        for (int c = 0; c < 3; ++c) {
+          vt.primary[l][v * 4 + c] = static_cast<float>(prim[c]);
+          vt.secondary[l][v * 3 + c] = static_cast<float>(own[c]);
+        }
+        vt.primary[l][v * 4 + 3] = 1.0f;
+      }
+      for (int c = 0; c < 3; ++c) {
+        vt.thickness[v * 4 + c] = static_cast<float>(T[c]);
+        vt.diffuse[v * 4 + c] = static_cast<float>(diffuse_sum[c]);
+      }
+    }
+    return vt;
+  }
+
+  // K = albedo * color * s reaches the combiner as a constant (clamped to [0, 1]) times a scale
+  // of at most 4. Where K exceeds 4 the excess f = K/4 moves into the primary colour (att*T*f),
+  // which is exact while att*T*f <= 1.
+  std::vector<double> fold_factors(const Material& mat) const {
+    std::vector<double> out;
+    for (const Light& l : ctx_.scene.lights) {
+      const glm::dvec3 k = mat.albedo * l.color * l.translucency_scale;
+      const double m = std::max({k.r, k.g, k.b});
+      out.push_back(m > 4 ? m / 4 : 1.0);
+    }
+    return out;
+  }
+
+  void draw_pass(size_t object, int pass, const VertexTerms& vt) {
+    const Scene& s = ctx_.scene;
+    const gl::GpuMesh& mesh = ctx_.geometry.meshes()[object];
+    const CombinerMaterialPlan& plan = plans_[static_cast<size_t>(mesh.material)];
+    const std::string& name = plan.pass_programs[static_cast<size_t>(pass)];
+    const combiners::CombinerProgram& program = plan.program(pass);
+    const Material& mat = s.materials[static_cast<size_t>(mesh.material)];
+    const size_t l = static_cast<size_t>(pass);
+    const auto& buf = buffers_[object];
+    combiners::ProgramInputs in;
+    in.textures["white"] = {GL_TEXTURE_2D, white_};
+    bool secondary = false, texcoords = false;
+    if (is_cube(name)) {
+      const Cube& c = cubes_[static_cast<size_t>(mesh.material)][l];
+      in.textures["lobe_cube"] = {GL_TEXTURE_CUBE_MAP, c.texture};
+      in.constants["lobe_color"] = glm::dvec4(c.lobe_color, 1);
+      stream(buf[0], vt.thickness);
+    } else if (name == "diffuse_only.comb") {
+      stream(buf[0], vt.diffuse);
+    } else {
+      const Light& light = s.lights[l];
+      in.textures["power_lut"] = {GL_TEXTURE_1D, lut_textures_[static_cast<size_t>(mesh.material)]};
+      in.constants["lobe_color"] =
+          glm::dvec4(mat.albedo * light.color * light.translucency_scale / fold_factors(mat)[l], 1);
+      stream(buf[0], vt.primary[l]);
+      stream(buf[2], vt.secondary[l]);
+      secondary = true;
+      if (program.stages[0].texcoord == combiners::TexCoord::Array) {
+        stream(buf[1], vt.texcoord[l]);
+        texcoords = true;
+      }
+    }
+    combiners::apply(program, in);
+    glActiveTexture(GL_TEXTURE0);
+    glMatrixMode(GL_TEXTURE);
+    if (name == "lobe_texgen.comb") {
+      load_texgen_matrix(mat, s.lights[l], luts_[static_cast<size_t>(mesh.material)]);
+    } else {
+      glLoadIdentity();
+    }
+    glMatrixMode(GL_MODELVIEW);
+
+    ctx_.geometry.bind(mesh);
+    // Our colours replace the mesh's: thickness is already folded into them.
+    glEnableClientState(GL_COLOR_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, buf[0]);
+    glColorPointer(4, GL_FLOAT, 0, nullptr);
+    if (secondary) {
+      glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
+      glBindBuffer(GL_ARRAY_BUFFER, buf[2]);
+      glSecondaryColorPointer(3, GL_FLOAT, 0, nullptr);
+    }
+    glClientActiveTexture(GL_TEXTURE0);
+    if (texcoords) {
+      glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+      glBindBuffer(GL_ARRAY_BUFFER, buf[1]);
+      glTexCoordPointer(1, GL_FLOAT, 0, nullptr);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+    glDisableClientState(GL_SECONDARY_COLOR_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    ctx_.geometry.unbind();
+  }
+
+  // texgen NORMAL_MAP yields the eye-space normal n (q = 1 from the current texcoord). With V
+  // and L constant in eye space, t = -V.L - d (V.n) is one row of the texture matrix, followed by
+  // the LUT's texel-centre remap u = t (N-1)/N + 0.5/N (model/power_lut.h). Loaded into the
+  // current (GL_TEXTURE) matrix of unit 0.
+  void load_texgen_matrix(const Material& mat, const Light& light, const model::PowerLut& lut) {
+    const glm::dmat3 view(
+        glm::lookAt(glm::dvec3(0), ctx_.scene.camera.forward(), ctx_.scene.camera.up));
+    const glm::dvec3 V_eye = view * -ctx_.scene.camera.forward();  // (0, 0, 1)
+    const glm::dvec3 L_eye = view * -light.direction;
+    const double d = mat.translucency->distortion;
+    const double a = (lut.size - 1.0) / lut.size, b = 0.5 / lut.size;
+    glm::dmat4 m(0.0);  // column-major: m[col][row]
+    for (int c = 0; c < 3; ++c) m[c][0] = -d * V_eye[c] * a;
+    m[3][0] = -glm::dot(V_eye, L_eye) * a + b;
+    m[3][3] = 1;
+    const glm::mat4 mf(m);
+    glLoadMatrixf(glm::value_ptr(mf));
+  }
+
+  PathContext ctx_;
+  std::string variant_;
+  std::vector<CombinerMaterialPlan> plans_;
+  std::vector<model::PowerLut> luts_;
+  std::vector<GLuint> lut_textures_;
+  std::vector<std::vector<Cube>> cubes_;        // [material][light], lobe=cube passes only
+  std::vector<std::array<GLuint, 3>> buffers_;  // per object: primary, texcoord, secondary
+  GLuint white_ = 0;
+  double cpu_seconds_ = 0, cube_seconds_ = 0;
+  int passes_drawn_ = 0;
+};
+
+}  // namespace
+
+PathInfo combiners_path_info() {
+  return {"combiners",
+          "GL 1.3 texture combiners, no shaders: power LUT at a per-vertex t, vertex-colour "
+          "thickness and diffuse, one additive pass per light",
+          {{"t=vertex",
+            "t, attenuation, diffuse and thickness per vertex on the CPU; lobe from "
+            "an 8-bit LUT per pixel (error grows with triangle size)"},
+           {"t=texgen",
+            "t by texgen NORMAL_MAP and the texture matrix (directional lights, "
+            "orthographic camera; else as t=vertex)"},
+           {"lobe=cube",
+            "per pixel: a cube map by the normal holds each directional light's "
+            "whole term (exact view only for an orthographic camera); point "
+            "lights as t=vertex"}},
+          [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
+            return std::make_unique<CombinersPath>(ctx, variant);
+          }};
+}
+
+}  // namespace lt

@@ -1,0 +1,46 @@
+// The combiners path: no shaders at all, only GL 1.3 fixed-function state (texture combiner
+// stages from combiners/*.comb, vertex colours, colour sum, additive passes), the way the seed's
+// Wii version and DX7-class hardware would draw the translucency term. Per-vertex work is done on
+// the CPU each frame and streamed as vertex arrays, as a fixed-function engine would.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "paths/combiners/combiner_program.h"
+#include "paths/path.h"
+
+namespace lt {
+
+PathInfo combiners_path_info();
+
+// The plan for one scene: which program each pass of each material uses (shared by the path and
+// the budget checker, so both count the same thing). Pass l of a translucent material draws
+// light l and adds onto the passes before it; a material without translucency takes one pass.
+struct CombinerMaterialPlan {
+  int material = 0;
+  bool used = false;                                           // some object draws with it
+  std::vector<std::string> pass_programs;                      // file in combiners/ per pass
+  std::map<std::string, combiners::CombinerProgram> programs;  // by file name
+
+  int passes() const { return static_cast<int>(pass_programs.size()); }
+  const combiners::CombinerProgram& program(int pass) const {
+    return programs.at(pass_programs[static_cast<size_t>(pass)]);
+  }
+};
+// `variant` as registered ("t=vertex", "t=texgen", "lobe=cube"). t=texgen serves only scenes
+// texgen_applicable accepts (else t=vertex); lobe=cube serves directional lights (point lights
+// get t=vertex passes).
+std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant);
+
+// t = dot(V, -(L + N d)) is affine in the eye-space normal only when L and V are constant: every
+// light directional, the camera orthographic and H not normalised.
+bool texgen_applicable(const Scene& scene, const Material& material);
+
+// The power LUT size and format the path samples (8-bit texels, as GL 1.3 hardware stores them).
+inline constexpr int kCombinerLutSize = 256;
+// Texels per cube face edge of the lobe=cube variant (8-bit RGBA).
+inline constexpr int kCombinerCubeSize = 256;
+
+}  // namespace lt

@@ -1,0 +1,79 @@
+// Scene loading for the arbfp and budget tests. The demo and hard scenes name meshes under
+// meshes/, which are generated files (`ltrender meshgen meshes`); when a checkout lacks them the
+// scenes are loaded from a per-process copy with freshly generated meshes, so these tests check
+// the path rather than the state of the checkout.
+#pragma once
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "scene/scene.h"
+#include "test_util.h"
+
+namespace lt::test {
+
+inline fs::path generated_scene_root() {
+  static const fs::path root = [] {
+    const fs::path dir =
+        fs::temp_directory_path() / ("lt_arb_scenes_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy(source_dir() / "scenes", dir / "scenes", fs::copy_options::recursive);
+    const RunResult r = run_ltrender("meshgen " + (dir / "meshes").string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return dir;
+  }();
+  // Removed when the test process exits.
+  static const struct Cleanup {
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(root, ec);
+    }
+  } cleanup;
+  return root;
+}
+
+// `relative` like "scenes/backlit_sphere.json".
+inline Scene load_test_scene(const std::string& relative) {
+  try {
+    return load_scene(source_dir() / relative);
+  } catch (const InputError&) {
+    return load_scene(generated_scene_root() / relative);
+  }
+}
+
+inline std::vector<std::string> json_files(const std::string& sub) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(source_dir() / sub)) {
+    if (e.path().extension() == ".json") {
+      out.push_back((fs::path(sub) / e.path().filename()).string());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+inline std::string test_param_name(const std::string& s) {
+  std::string r = s;
+  for (char& c : r) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return r;
+}
+
+}  // namespace lt::test
+
+namespace lt::test {
+// The file to hand to the CLI for `relative`: the checkout's, or the generated copy's.
+inline fs::path test_scene_path(const std::string& relative) {
+  try {
+    load_scene(source_dir() / relative);
+    return source_dir() / relative;
+  } catch (const InputError&) {
+    return generated_scene_root() / relative;
+  }
+}
+}  // namespace lt::test

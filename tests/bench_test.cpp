@@ -1,0 +1,73 @@
+// The bench's plumbing (not its speed: timing lives in `ltrender bench`): every path and variant
+// gets a row, flat is the baseline of its own ratio, the reference agrees with itself, and every
+// report file is written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "report/bench.h"
+#include "render/session.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+TEST(Bench, SummarizeFramesTakesMedianAndMin) {
+  const FrameTiming odd = summarize_frames({5, 1, 3});
+  EXPECT_EQ(odd.median_ms, 3);
+  EXPECT_EQ(odd.min_ms, 1);
+  const FrameTiming even = summarize_frames({4, 1, 3, 10});
+  EXPECT_EQ(even.median_ms, 3.5);
+}
+
+TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
+  test::TempDir dir;
+  test::write_file(dir / "quad.obj", test::quad_obj());
+  test::write_file(dir / "quad.json", R"({
+    "image": {"width": 48, "height": 32},
+    "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "fov_y_deg": 40},
+    "materials": {"m": {"albedo": [0.8, 0.8, 0.8],
+                        "translucency": {"power": 4, "distortion": 0.2, "thickness": 0.5}}},
+    "lights": [{"type": "directional", "direction": [0.3, 0, 1], "translucency_scale": 2}],
+    "objects": [{"mesh": "quad.obj", "material": "m"}]})");
+  BenchOptions o;
+  o.scenes = {dir / "quad.json"};
+  o.out_dir = dir / "out";
+  o.frames = 10;
+  o.warmup = 1;
+  o.wide_width = 64;
+  o.wide_height = 36;
+  o.quiet = true;
+  const auto rows = run_bench(o);
+  size_t expected = 0;
+  for (const PathInfo& p : all_paths()) expected += p.variants.size();
+  ASSERT_EQ(rows.size(), expected);
+  for (const BenchRow& r : rows) {
+    EXPECT_GT(r.at_scene_size.median_ms, 0) << r.path;
+    EXPECT_LE(r.at_scene_size.min_ms, r.at_scene_size.median_ms);
+    EXPECT_GT(r.ratio_to_flat, 0);
+    if (r.path == "flat") {
+      EXPECT_EQ(r.ratio_to_flat, 1.0);
+      EXPECT_FALSE(r.error);
+    } else {
+      ASSERT_TRUE(r.error) << r.path;
+    }
+    if (r.path == "reference") {
+      EXPECT_EQ(r.error->max_lsb, 0.0);  // float against itself, unquantised
+      EXPECT_GT(r.stats.at("shading_mpixels_per_s"), 0);
+    }
+    EXPECT_TRUE(fs::exists(o.out_dir / r.image)) << r.image;
+  }
+  write_bench_reports(o, rows);
+  for (const char* f : {"report.md", "report.csv", "report.json", "chart.svg", "contact.png",
+                        "index.html"}) {
+    EXPECT_TRUE(fs::exists(o.out_dir / f)) << f;
+  }
+  std::ifstream in(o.out_dir / "report.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["rows"].size(), expected);
+}
+
+}  // namespace
+}  // namespace lt
