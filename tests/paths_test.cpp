@@ -35,75 +35,94 @@ size_t non_finite(const Image& img) {
   return n;
 }
 
-// glsl vs reference on the demo scenes: the bar. Both rasterise the same float G-buffer
-// inputs; glsl shades in float with exact pow and rounds once to 8 bits, so the error is the
-// 0.5 LSB quantisation plus float-vs-double shading (~1e-6 relative): max <= 1, mean <= 0.1.
+// glsl against the reference. Both rasterise the same float G-buffer inputs (same transform,
+// same interpolation); glsl shades in float with exact pow. Measured: the float target is within
+// 5e-4 LSB of the reference on every scene (`ltrender bench scenes/*.json scenes/hard/*.json
+// --paths glsl`), so its bar (0.01 max, 0.001 mean) is 100x looser than measured and 100x
+// tighter than the 1 LSB / 0.1 LSB. The 8-bit default adds one rounding: every pixel
+// must round to the nearest 8-bit value of the reference, max 0.5 LSB plus that float error.
+// (Its mean is the rounding's own, ~0.25 LSB on gradients, anything in [0, 0.5] on flat areas:
+// no 8-bit output can have a mean of 0.1 against a float reference, so the mean bar is checked
+// on the float target.)
+constexpr double kGlslF32MaxLsb = 0.01, kGlslF32MeanLsb = 0.001;
+constexpr double kGlslU8MaxLsb = 0.5 + kGlslF32MaxLsb;
+
+void expect_glsl_matches(const Scene& scene, const Image& ref) {
+  const Image u8 = render_scene(scene, "glsl", "pow=exact");
+  const Comparison c8 = compare_images(u8, ref, TestEncoding::kUnorm8);
+  EXPECT_EQ(c8.test_non_finite, 0u);
+  EXPECT_LE(c8.covered.max_lsb, kGlslU8MaxLsb)
+      << "8-bit at " << c8.covered.max_x << "," << c8.covered.max_y;
+  // Background and coverage agree too: the same rasteriser drew both.
+  EXPECT_LE(c8.image.max_lsb, kGlslU8MaxLsb);
+  const Image f32 = render_scene(scene, "glsl", "pow=exact:f32");
+  const Comparison cf = compare_images(f32, ref, TestEncoding::kFloat);
+  EXPECT_EQ(cf.test_non_finite, 0u);
+  EXPECT_LE(cf.covered.max_lsb, kGlslF32MaxLsb)
+      << "f32 at " << cf.covered.max_x << "," << cf.covered.max_y;
+  EXPECT_LE(cf.covered.mean_lsb, kGlslF32MeanLsb);
+}
+
 class DemoScene : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(DemoScene, GlslMatchesReferenceWithinOneLsb) {
+TEST_P(DemoScene, GlslMatchesReference) {
   const Scene scene = load_scene(test::source_dir() / GetParam());
   const Image ref = render_scene(scene, "reference", "");
-  const Image glsl = render_scene(scene, "glsl", "");
   ASSERT_EQ(non_finite(ref), 0u);
-  const Comparison c = compare_images(glsl, ref, TestEncoding::kUnorm8);
-  EXPECT_GT(c.covered.pixels, scene.width * scene.height / 50) << "the scene shows too little";
-  EXPECT_LE(c.covered.max_lsb, 1.0) << "at " << c.covered.max_x << "," << c.covered.max_y;
-  EXPECT_LE(c.covered.mean_lsb, 0.1);
-  // The background and the coverage agree exactly: the same rasteriser drew both.
-  EXPECT_LE(c.image.max_lsb, 1.0);
+  size_t covered = 0;
+  for (size_t i = 0; i < ref.pixel_count(); ++i) covered += ref.rgba[i * 4 + 3] > 0.5f;
+  EXPECT_GT(covered, ref.pixel_count() / 50) << "the scene shows too little";
+  expect_glsl_matches(scene, ref);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DemoScene, ::testing::ValuesIn(scene_files("scenes")),
                          [](const auto& info) { return test_name(info.param); });
 
-// Hard cases (model.md): every path renders with no NaN/Inf anywhere, and agrees with the
-// reference's intent. The bar is the demo one except where the case itself is ill-conditioned;
-// each exception says why.
+class HardSceneGlsl : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(HardSceneGlsl, GlslMatchesReference) {
+  const Scene scene = load_scene(test::source_dir() / GetParam());
+  expect_glsl_matches(scene, render_scene(scene, "reference", ""));
+}
+
+INSTANTIATE_TEST_SUITE_P(Hard, HardSceneGlsl, ::testing::ValuesIn(scene_files("scenes/hard")),
+                         [](const auto& info) { return test_name(info.param); });
+
+// Every hard case of model.md on every path and every variant: no NaN or Inf reaches an image,
+// and the case shows something. Accuracy is bounded per path where its error is explained
+// (above for glsl, arbfp_test.cpp, combiners_test.cpp).
 struct HardCase {
-  std::string scene, path;
+  std::string scene, path, variant;
 };
 
 std::vector<HardCase> hard_cases() {
   std::vector<HardCase> out;
   for (const auto& s : scene_files("scenes/hard")) {
-    for (const PathInfo& p : all_paths()) out.push_back({s, p.name});
+    for (const PathInfo& p : all_paths()) {
+      for (const VariantInfo& v : p.variants) out.push_back({s, p.name, v.name});
+    }
   }
   return out;
 }
 
 class HardScene : public ::testing::TestWithParam<HardCase> {};
 
-TEST_P(HardScene, RendersFiniteAndMatchesTheReferenceIntent) {
+TEST_P(HardScene, NoNanOrInfReachesTheImage) {
   const HardCase& hc = GetParam();
   const Scene scene = load_scene(test::source_dir() / hc.scene);
-  const Image ref = render_scene(scene, "reference", "");
-  const Image img = hc.path == "reference" ? ref : render_scene(scene, hc.path, "");
-  ASSERT_EQ(non_finite(img), 0u) << "NaN/Inf in " << hc.path;
-  ASSERT_EQ(non_finite(ref), 0u);
+  const Image img = render_scene(scene, hc.path, hc.variant);
+  EXPECT_EQ(non_finite(img), 0u) << hc.path << " " << hc.variant;
   size_t covered = 0;
-  for (size_t i = 0; i < ref.pixel_count(); ++i) covered += ref.rgba[i * 4 + 3] > 0.5f;
+  for (size_t i = 0; i < img.pixel_count(); ++i) covered += img.rgba[i * 4 + 3] > 0.5f;
   EXPECT_GT(covered, 0u) << "the hard case shows nothing";
-  if (hc.path == "flat" || hc.path == "reference") return;  // flat is a timing baseline
-  // combiners evaluates per vertex (Gouraud), which no per-pixel bar fits: its hard-case error
-  // is bounded per case in combiners_test.cpp (CombinersHard); here only finiteness counts.
-  if (hc.path == "combiners") return;
-  const Comparison c = compare_images(img, ref, TestEncoding::kUnorm8);
-  EXPECT_EQ(c.test_non_finite, 0u);
-  double max_lsb = 1.0, mean_lsb = 0.1;
-  const std::string name = test_name(hc.scene);
-  if (name == "point_light_at_vertex") {
-    // Around the light the attenuation reaches 1e6 and every channel saturates, except along
-    // the line where N.L crosses 0 at the light itself: there float and double disagree on
-    // which side of 0 a 1e6-scaled term lands. A few pixels, bounded.
-    max_lsb = 255;
-    mean_lsb = 0.5;
-  }
-  EXPECT_LE(c.covered.max_lsb, max_lsb) << "at " << c.covered.max_x << "," << c.covered.max_y;
-  EXPECT_LE(c.covered.mean_lsb, mean_lsb);
 }
 
 INSTANTIATE_TEST_SUITE_P(Hard, HardScene, ::testing::ValuesIn(hard_cases()), [](const auto& info) {
-  return test_name(info.param.scene) + "__" + info.param.path;
+  std::string v = info.param.variant;
+  for (char& c : v) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return test_name(info.param.scene) + "__" + info.param.path + "__" + v;
 });
 
 }  // namespace

@@ -71,9 +71,17 @@ void set1(const gl::GlslProgram& p, const std::string& name, double v) {
   glUniform1f(p.uniform(name.c_str()), static_cast<float>(v));
 }
 
+// The default draws into the 8-bit OSMesa framebuffer, as a port would. The `:f32` variant draws
+// into an RGBA32F target instead, so the shader's own float arithmetic is measured without the
+// output quantisation (whose floor alone is 0.5 LSB max and ~0.25 LSB mean against the float
+// reference).
 class GlslPath final : public Path {
  public:
-  explicit GlslPath(const PathContext& ctx) : ctx_(ctx) {
+  GlslPath(const PathContext& ctx, bool float_target) : ctx_(ctx) {
+    if (float_target) {
+      ctx.gl.require_extension("GL_ARB_texture_float", "the glsl f32 target");
+      target_ = std::make_unique<gl::FloatTarget>(ctx.width, ctx.height, 1);
+    }
     // Only the materials some object uses get a program.
     programs_.resize(ctx.scene.materials.size());
     for (const gl::GpuMesh& m : ctx.geometry.meshes()) {
@@ -88,6 +96,7 @@ class GlslPath final : public Path {
   }
 
   void frame() override {
+    if (target_) target_->bind();
     const glm::dvec3& bg = ctx_.scene.background;
     glViewport(0, 0, ctx_.width, ctx_.height);
     glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
@@ -99,9 +108,18 @@ class GlslPath final : public Path {
       ctx_.geometry.draw(m);
     }
     glUseProgram(0);
+    if (target_) target_->unbind();
   }
 
-  Image result() override { return read_framebuffer(ctx_.gl); }
+  Image result() override {
+    if (!target_) return read_framebuffer(ctx_.gl);
+    Image img(ctx_.width, ctx_.height);
+    target_->read(0, img.rgba);
+    flip_vertically(img);
+    return img;
+  }
+
+  bool float_output() const override { return target_ != nullptr; }
 
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;
@@ -143,6 +161,7 @@ class GlslPath final : public Path {
   }
 
   PathContext ctx_;
+  std::unique_ptr<gl::FloatTarget> target_;
   std::vector<std::unique_ptr<gl::GlslProgram>> programs_;
 };
 
@@ -151,9 +170,10 @@ class GlslPath final : public Path {
 PathInfo glsl_path_info() {
   return {"glsl",
           "per-pixel GLSL 1.10 shaders, exact pow, float arithmetic, 8-bit framebuffer",
-          {{"pow=exact", "pow() with 0^0 guarded; the only variant"}},
-          [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
-            return std::make_unique<GlslPath>(ctx);
+          {{"pow=exact", "pow() with 0^0 guarded, 8-bit framebuffer"},
+           {"pow=exact:f32", "the same shaders into an RGBA32F target: shader precision alone"}},
+          [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
+            return std::make_unique<GlslPath>(ctx, variant == "pow=exact:f32");
           }};
 }
 
