@@ -8,8 +8,8 @@
 //   occlusion     = fraction of the rays that hit within D            (1 = thin, 0 = thick)
 //   translucency  = lerp(min, max, occlusion) * tint                  (thin parts are bright)
 //
-// This is the addendum's 3ds Max recipe with Dark and Bright swapped: an occluded ray
-// (Max's "Dark") gets the maximum translucency (`max`, white by default) and an unoccluded one
+// This is the addendum's 3ds Max recipe, Dark and Bright swapped from Max's defaults: an occluded
+// ray (Max's "Dark") gets the maximum translucency (`max`, white by default) and an unoccluded one
 // (Max's "Bright") the minimum (`min`; the addendum used 50% grey, i.e. `min = 0.5`).
 //
 // The core works on plain arrays (bake_occlusion) so that it can be tested without files; the
@@ -40,9 +40,9 @@ enum class Estimator {
   Distance,   // 1 - mean(min(hit distance, D)) / D, escaped rays counting as D (Meshmixer, Maya)
 };
 
-// How the N (u1, u2) points of one vertex are chosen. Both give every ray a uniformly
-// distributed direction (so both are unbiased); they differ in how evenly the N rays of one
-// vertex cover the hemisphere.
+// How the N (u1, u2) points of one vertex are chosen. With both, each single ray follows the
+// chosen Distribution exactly (so both are unbiased); they differ in how evenly the N rays of
+// one vertex cover the hemisphere.
 enum class Sampler {
   // Hammersley points ((i + 0.5) / N, radical inverse of i) shifted by a per-vertex random
   // offset modulo 1 (Cranley-Patterson rotation): noise falls faster than 1/sqrt(N).
