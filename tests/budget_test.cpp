@@ -262,10 +262,27 @@ TEST(BudgetCli, BadInputExitsTwo) {
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << r.err;
   }
-  // The hook for the combiners path: a plain "not available yet", not a crash.
-  const test::RunResult c = test::run_ltrender("budget " + path + " --path combiners");
-  EXPECT_EQ(c.exit_code, 2);
-  EXPECT_NE(c.err.find("not available"), std::string::npos) << c.err;
+  const test::RunResult c =
+      test::run_ltrender("budget " + path + " --path combiners --profile ps_2_0");
+  EXPECT_EQ(c.exit_code, 2) << "an arbfp profile is not a combiner profile";
+  EXPECT_NE(c.err.find("unknown combiner profile"), std::string::npos) << c.err;
+}
+
+// The combiners path counts stages, units and passes: the seed's Wii setup fits the TEV, and a
+// per-pixel cube-map lobe with vertex thickness needs 3 stages, one more than a GeForce2 has.
+TEST(BudgetCli, CombinersStagesAgainstProfiles) {
+  const auto blob = test::test_scene_path("scenes/baked_blob.json").string();
+  const test::RunResult tev = test::run_ltrender("budget " + blob + " --path combiners");
+  EXPECT_EQ(tev.exit_code, 0) << tev.err;
+  EXPECT_NE(tev.out.find("wii-tev"), std::string::npos) << tev.out;
+  const test::RunResult gf2 = test::run_ltrender(
+      "budget " + blob + " --path combiners --variant lobe=cube --profile gl13-2units");
+  EXPECT_EQ(gf2.exit_code, 1) << gf2.err;
+  EXPECT_NE(gf2.err.find("stages: 3 > 2"), std::string::npos) << gf2.err;
+  const test::RunResult j = test::run_ltrender(
+      "budget " + blob + " --path combiners --profile gl-8units --json");
+  EXPECT_EQ(j.exit_code, 0) << j.err;
+  EXPECT_EQ(j.out.front(), '{') << j.out;
 }
 
 }  // namespace

@@ -85,16 +85,14 @@ BudgetReport run_budget(const Scene& scene, const std::string& path, const std::
   const Profile& partner = find_profile(chosen.partner);
   r.fragment_profile = chosen.kind == ProgramKind::Fragment ? &chosen : &partner;
   r.vertex_profile = chosen.kind == ProgramKind::Vertex ? &chosen : &partner;
-  // One entry per path with a budget. The combiners path (issue 5) adds its stage counter here.
-  if (info.name == "arbfp") {
-    r.variant = resolve_variant(info, variant);
-    add_arbfp(scene, r.variant, r);
-  } else if (info.name == "combiners") {
+  // Programs with instructions: arbfp. (combiners counts stages: paths/combiners/combiner_budget.h,
+  // dispatched by the budget command.)
+  if (info.name != "arbfp") {
     throw InputError("--path", path,
-                     "budget for combiners is not available yet (hook: src/budget/budget.cpp)");
-  } else {
-    throw InputError("--path", path, "path " + info.name + " has no program budget (arbfp)");
+                     "path " + info.name + " has no budget (arbfp: programs, combiners: stages)");
   }
+  r.variant = resolve_variant(info, variant);
+  add_arbfp(scene, r.variant, r);
   for (CountedProgram& p : r.programs) {
     const Profile& prof =
         p.counts.kind == ProgramKind::Fragment ? *r.fragment_profile : *r.vertex_profile;

@@ -3,6 +3,7 @@
 #include "budget/budget.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "paths/combiners/combiner_budget.h"
 
 namespace lt::cli {
 
@@ -14,18 +15,28 @@ Action add_budget(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
   auto path = std::make_shared<std::string>("arbfp");
   auto variant = std::make_shared<std::string>();
-  auto profile = std::make_shared<std::string>("ps_2_0");
+  auto profile = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   sub->add_option("SCENE", *scene, "Scene file")->required();
-  sub->add_option("--path", *path, "Path whose programs to count (arbfp; combiners later)");
+  sub->add_option("--path", *path, "arbfp (programs) or combiners (stages, units, passes)");
   sub->add_option("--variant", *variant, "Path variant (default: the path's default)");
   sub->add_option("--profile", *profile,
-                  "ps_2_0 (default), ps_2_x, arbfp1-min, vs_2_0, arbvp1-min; the partner profile "
-                  "checks the other program kind");
+                  "arbfp: ps_2_0 (default), ps_2_x, arbfp1-min, vs_2_0, arbvp1-min (the partner "
+                  "profile checks the other program kind); combiners: wii-tev (default), "
+                  "gl13-2units, gl13-3units, gl-8units");
   sub->add_flag("--json", *json, "Print the counts as one JSON object");
   return [=]() -> int {
     const Scene s = load_scene(*scene);
-    const budget::BudgetReport r = budget::run_budget(s, *path, *variant, *profile);
+    if (*path == "combiners") {
+      // Fixed-function hardware has stages and units, not instructions: its own counter.
+      const CombinerBudgetReport r =
+          combiner_budget(s, profile->empty() ? "wii-tev" : *profile, *variant);
+      std::cout << (*json ? to_json(r) + "\n" : to_text(r));
+      std::cout.flush();
+      if (!r.fits()) throw CheckFailed("budget: " + r.over.front());
+      return 0;
+    }
+    const budget::BudgetReport r = budget::run_budget(s, *path, *variant, profile->empty() ? "ps_2_0" : *profile);
     if (*json) {
       std::cout << budget::to_json(r).dump(2) << "\n";
     } else {
