@@ -108,7 +108,9 @@ TEST(ArbfpGenerator, EmitsOnlyWhatTheSceneUses) {
     EXPECT_TRUE(has(p.fragment, "RCP att0.x"));
     EXPECT_TRUE(has(p.fragment, "ambient_light"));
     EXPECT_TRUE(has(p.fragment, "RSQ H.w"));
-    EXPECT_TRUE(has(p.vertex, "MOV result.texcoord[2], vertex.color"));
+    // The tint is applied per vertex, so the fragment program reads T straight from texcoord[2].
+    EXPECT_TRUE(has(p.vertex, "MUL result.texcoord[2], vertex.color, tint"));
+    EXPECT_FALSE(has(p.fragment, "tint"));
   }
   {
     // Without the term: no view vector, no lobe.

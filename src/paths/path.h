@@ -42,6 +42,9 @@ class Path {
   virtual std::vector<BuiltStage> stages() const = 0;
   // True when the output is float (the reference); false for 8-bit framebuffer paths.
   virtual bool float_output() const { return false; }
+  // One line of what the built programs cost, for the bench table ("fragment 24 ALU + 2 TEX",
+  // "3 stages, 1 unit, 2 passes"); empty where there is nothing to count.
+  virtual std::string cost() const { return ""; }
   // Figures of the last frame a path can report (e.g. the reference's CPU shading time).
   virtual std::map<std::string, double> frame_stats() const { return {}; }
 };
@@ -65,6 +68,10 @@ const PathInfo& find_path(const std::string& name);
 // The variant to use: `requested` if the path has it, its default if empty; throws InputError
 // listing the valid variants otherwise.
 std::string resolve_variant(const PathInfo& path, const std::string& requested);
+
+// The start every GL path shares: viewport, clear to the scene's background with alpha 0 (alpha
+// is coverage), depth test on, the shared matrices loaded.
+void begin_frame(const PathContext& ctx);
 
 // Reads the 8-bit OSMesa colour buffer as the path result (flips to top row first, A = coverage).
 Image read_framebuffer(const gl::Context& gl);

@@ -114,6 +114,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           row.variant = v.name;
           auto path = session.build(*p, v.name);
           row.at_scene_size = time_frames(*path, o);
+          row.cost = path->cost();
           const Image img = path->result();
           const std::string base = sname + "__" + safe(p->name + "_" + v.name);
           row.image = "images/" + base + ".png";
@@ -180,8 +181,8 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
     << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
     << o.wide_height
     << ") median / min | ratio to flat | max LSB | mean LSB | p99 LSB | "
-       "% > 1 LSB | notes |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "% > 1 LSB | cost | notes |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
     std::string notes;
     if (r.stats.count("shading_mpixels_per_s")) {
@@ -193,7 +194,8 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
       << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
       << " | " << error_cell(r, true) << " | " << error_cell(r, false) << " | "
       << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
-      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << notes << " |\n";
+      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | "
+      << notes << " |\n";
   }
   s << "\n![speed against error](chart.svg)\n\nContact sheet: `contact.png` (one row per scene: "
        "the reference, then each path's render followed by its error heatmap, in the table's "
@@ -206,7 +208,7 @@ std::string csv(const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
        "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
-       "shading_mpixels_per_s\n";
+       "shading_mpixels_per_s,cost\n";
   for (const BenchRow& r : rows) {
     s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
       << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
@@ -220,7 +222,7 @@ std::string csv(const std::vector<BenchRow>& rows) {
       s << ",,,,,,,";
     }
     if (r.stats.count("shading_mpixels_per_s")) s << r.stats.at("shading_mpixels_per_s");
-    s << "\n";
+    s << ",\"" << r.cost << "\"\n";
   }
   return s.str();
 }
@@ -245,7 +247,8 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                         {"ratio_to_flat", r.ratio_to_flat},
                         {"image", r.image},
                         {"heatmap", r.heatmap},
-                        {"stats", r.stats}};
+                        {"stats", r.stats},
+                        {"cost", r.cost}};
     if (r.error) {
       x["error"] = {{"max_lsb", r.error->max_lsb},
                     {"mean_lsb", r.error->mean_lsb},

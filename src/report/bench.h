@@ -34,6 +34,7 @@ struct BenchRow {
   double ratio_to_flat = 0;             // at 1280x720, flat measured in the same session
   std::optional<ErrorStats> error;      // covered pixels against the reference (none for flat)
   std::map<std::string, double> stats;  // path's own figures (reference: shading Mpixels/s)
+  std::string cost;                     // Path::cost(): instructions or stages
   std::string image, heatmap;           // relative to out_dir
 };
 

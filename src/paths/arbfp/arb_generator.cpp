@@ -186,8 +186,10 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
     params << "# material = (distortion d, power p, lt ambient a, 0)\n"
            << "PARAM material = " << vec4(tr.distortion, tr.power, tr.ambient, 0) << ";\n";
     if (vertex_thickness) {
-      temps.push_back("T");
-      params << "PARAM tint = " << vec4(tr.tint, 0) << ";\n";
+      // T = vertex colour * tint is multiplied in the vertex program: the tint is constant, so
+      // interpolating the product equals the product of the interpolation, and the fragment
+      // program saves one MUL per pixel.
+      params << "# T = fragment.texcoord[2]: vertex colour * tint\n";
     } else {
       params << "# constant thickness * tint\n"
              << "PARAM T = " << vec4(tr.thickness * tr.tint, 0) << ";\n";
@@ -204,7 +206,6 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
              << "MUL V.xyz, -fragment.texcoord[0], V.w;\n";
       }
     }
-    if (vertex_thickness) view << "MUL T.xyz, fragment.texcoord[2], tint;\n";
   }
   if (ambient) params << "PARAM ambient_light = " << vec4(scene.ambient_light, 0) << ";\n";
 
@@ -380,7 +381,8 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
         acc << (tr.ambient != 0 ? "MAD " : "MUL ") << lr << ", " << lr << ", scale" << sl.g << "."
             << sl.c << (tr.ambient != 0 ? ", material.z;\n" : ";  # a = 0\n");
       }
-      acc << "MAD acc.xyz, " << lobe_reg[i] << ", T, diffuse" << sl.g << "." << sl.c << ";\n";
+      acc << "MAD acc.xyz, " << lobe_reg[i] << ", "
+          << (vertex_thickness ? "fragment.texcoord[2]" : "T") << ", diffuse" << sl.g << "." << sl.c << ";\n";
       if (point) acc << "MUL acc.xyz, acc, att" << sl.g << "." << sl.c << ";\n";
       x = "acc";
     } else {
@@ -417,9 +419,11 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
                         "translucency.fp");
   out.vertex = gl::fill_template(
       gl::read_shader_source("legacy_shaders/arb/translucency.vp"),
-      {{"THICKNESS", vertex_thickness ? "# Vertex thickness: the mesh colour.\n"
-                                        "MOV result.texcoord[2], vertex.color;"
-                                      : "# (constant thickness: nothing more to pass)"}},
+      {{"THICKNESS", vertex_thickness
+                         ? "# Vertex thickness: the mesh colour times the material's tint.\n"
+                           "PARAM tint = " + vec4(tr.tint, 0) + ";\n" +
+                           "MUL result.texcoord[2], vertex.color, tint;"
+                         : "# (constant thickness: nothing more to pass)"}},
       "translucency.vp");
   return out;
 }

@@ -1,5 +1,7 @@
 #include "paths/arbfp/arbfp_path.h"
 
+#include "budget/program_counter.h"
+
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_program.h"
@@ -74,12 +76,7 @@ class ArbfpPath final : public Path {
   }
 
   void frame() override {
-    const glm::dvec3& bg = ctx_.scene.background;
-    glViewport(0, 0, ctx_.width, ctx_.height);
-    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    ctx_.geometry.load_matrices();
+    begin_frame(ctx_);
     glEnable(GL_VERTEX_PROGRAM_ARB);
     glEnable(GL_FRAGMENT_PROGRAM_ARB);
     glActiveTexture(GL_TEXTURE0);
@@ -96,6 +93,20 @@ class ArbfpPath final : public Path {
   }
 
   Image result() override { return read_framebuffer(ctx_.gl); }
+
+  // The largest program of the scene: a budget is met or missed by its worst program.
+  std::string cost() const override {
+    budget::ProgramCounts frag, vert;
+    for (const auto& m : materials_) {
+      if (!m) continue;
+      const budget::ProgramCounts f = budget::count_program(m->source.fragment);
+      const budget::ProgramCounts v = budget::count_program(m->source.vertex);
+      if (f.instructions() > frag.instructions()) frag = f;
+      if (v.instructions() > vert.instructions()) vert = v;
+    }
+    return "fragment " + std::to_string(frag.alu) + " ALU + " + std::to_string(frag.tex) +
+           " TEX, vertex " + std::to_string(vert.alu) + " ALU";
+  }
 
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;

@@ -167,23 +167,17 @@ class CombinersPath final : public Path {
   }
 
   void frame() override {
-    const Scene& s = ctx_.scene;
     const auto t0 = std::chrono::steady_clock::now();
     const auto& meshes = ctx_.geometry.meshes();
     std::vector<VertexTerms> terms(meshes.size());
     for (size_t i = 0; i < meshes.size(); ++i) terms[i] = vertex_terms(i);
     cpu_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    const glm::dvec3& bg = s.background;
-    glViewport(0, 0, ctx_.width, ctx_.height);
-    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
+    begin_frame(ctx_);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glDisable(GL_LIGHTING);
-    ctx_.geometry.load_matrices();
 
     int max_passes = 0;
     for (const gl::GpuMesh& m : meshes)
@@ -216,6 +210,19 @@ class CombinersPath final : public Path {
   }
 
   Image result() override { return read_framebuffer(ctx_.gl); }
+
+  std::string cost() const override {
+    size_t stages = 0;
+    int passes = 0;
+    for (const CombinerMaterialPlan& p : plans_) {
+      if (!p.used) continue;
+      passes = std::max(passes, p.passes());
+      for (int pass = 0; pass < p.passes(); ++pass) {
+        stages = std::max(stages, p.program(pass).stages.size());
+      }
+    }
+    return std::to_string(stages) + " stages a pass, " + std::to_string(passes) + " passes";
+  }
 
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;

@@ -9,14 +9,9 @@ class FlatPath final : public Path {
   explicit FlatPath(const PathContext& ctx) : ctx_(ctx) {}
 
   void frame() override {
-    const glm::dvec3& bg = ctx_.scene.background;
-    glViewport(0, 0, ctx_.width, ctx_.height);
-    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
+    begin_frame(ctx_);
     glDisable(GL_LIGHTING);
     glDisable(GL_TEXTURE_2D);
-    ctx_.geometry.load_matrices();
     for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
       const glm::dvec3 a = ctx_.scene.materials[m.material].albedo;
       ctx_.geometry.bind(m);

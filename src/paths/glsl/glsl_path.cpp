@@ -97,12 +97,7 @@ class GlslPath final : public Path {
 
   void frame() override {
     if (target_) target_->bind();
-    const glm::dvec3& bg = ctx_.scene.background;
-    glViewport(0, 0, ctx_.width, ctx_.height);
-    glClearColor(static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    ctx_.geometry.load_matrices();
+    begin_frame(ctx_);
     for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
       glUseProgram(programs_[m.material]->id());
       ctx_.geometry.draw(m);
