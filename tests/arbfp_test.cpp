@@ -181,6 +181,10 @@ struct VariantCase {
   std::string scene, variant;
 };
 
+void PrintTo(const VariantCase& c, std::ostream* os) {
+  *os << c.scene << " " << c.variant;
+}
+
 std::vector<VariantCase> demo_cases() {
   std::vector<VariantCase> out;
   for (const std::string& s : test::json_files("scenes")) {

@@ -1,12 +1,13 @@
 // The bench's plumbing (not its speed: timing lives in `ltrender bench`): every path and variant
 // gets a row, flat is the baseline of its own ratio, the reference agrees with itself, and every
 // report file is written.
+#include "report/bench.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "report/bench.h"
 #include "render/session.h"
 #include "test_util.h"
 
@@ -60,8 +61,8 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     EXPECT_TRUE(fs::exists(o.out_dir / r.image)) << r.image;
   }
   write_bench_reports(o, rows);
-  for (const char* f : {"report.md", "report.csv", "report.json", "chart.svg", "contact.png",
-                        "index.html"}) {
+  for (const char* f :
+       {"report.md", "report.csv", "report.json", "chart.svg", "contact.png", "index.html"}) {
     EXPECT_TRUE(fs::exists(o.out_dir / f)) << f;
   }
   std::ifstream in(o.out_dir / "report.json");

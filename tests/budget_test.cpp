@@ -279,8 +279,8 @@ TEST(BudgetCli, CombinersStagesAgainstProfiles) {
       "budget " + blob + " --path combiners --variant lobe=cube --profile gl13-2units");
   EXPECT_EQ(gf2.exit_code, 1) << gf2.err;
   EXPECT_NE(gf2.err.find("stages: 3 > 2"), std::string::npos) << gf2.err;
-  const test::RunResult j = test::run_ltrender(
-      "budget " + blob + " --path combiners --profile gl-8units --json");
+  const test::RunResult j =
+      test::run_ltrender("budget " + blob + " --path combiners --profile gl-8units --json");
   EXPECT_EQ(j.exit_code, 0) << j.err;
   EXPECT_EQ(j.out.front(), '{') << j.out;
 }

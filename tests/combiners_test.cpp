@@ -283,6 +283,10 @@ struct DemoBound {
   const char* why;
 };
 
+void PrintTo(const DemoBound& c, std::ostream* os) {
+  *os << c.scene;
+}
+
 const DemoBound kDemo[] = {
     // measured max 81.8 (a lobe tip's silhouette), mean 0.53, p99 4.8: the blob's thin lobes
     // turn the normal fast within a triangle, and thickness is per vertex here anyway.

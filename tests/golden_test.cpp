@@ -23,6 +23,10 @@ struct GoldenCase {
   std::string scene, path;
 };
 
+void PrintTo(const GoldenCase& c, std::ostream* os) {
+  *os << c.scene << " " << c.path;
+}
+
 std::vector<GoldenCase> golden_cases() {
   std::vector<GoldenCase> out;
   std::vector<fs::path> scenes;

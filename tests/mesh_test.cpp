@@ -773,5 +773,20 @@ TEST(MeshgenCli, WritesTheStandardSet) {
   }
 }
 
+// --sphere S writes one icosphere only (the bake-rate mesh of issue 3 is --sphere 7); at S = 3 it
+// is the same file as the standard set's sphere_s3.ply.
+TEST(MeshgenCli, SphereOptionWritesOneIcosphere) {
+  TempDir dir;
+  const RunResult r =
+      run_ltrender("meshgen " + (dir / "out").string() + " --sphere 3", dir / "err.txt");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(slurp(dir / "out" / "sphere_s3.ply") ==
+              slurp(fs::path(LT_SOURCE_DIR) / "meshes" / "sphere_s3.ply"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "cube.ply"));
+  EXPECT_EQ(
+      run_ltrender("meshgen " + (dir / "x").string() + " --sphere 9", dir / "err.txt").exit_code,
+      2);
+}
+
 }  // namespace
 }  // namespace lt

@@ -95,6 +95,11 @@ struct HardCase {
   std::string scene, path, variant;
 };
 
+// gtest prints parameters; a name reads better in ctest than the struct's bytes.
+void PrintTo(const HardCase& c, std::ostream* os) {
+  *os << c.scene << " " << c.path << " " << c.variant;
+}
+
 std::vector<HardCase> hard_cases() {
   std::vector<HardCase> out;
   for (const auto& s : scene_files("scenes/hard")) {

@@ -21,6 +21,10 @@ struct QuadCase {
   glm::dvec3 expected;  // worked out by hand in the comment of each case
 };
 
+void PrintTo(const QuadCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
 std::string quad_scene(const QuadCase& c) {
   auto v3 = [](const glm::dvec3& v) {
     char b[128];

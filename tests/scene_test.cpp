@@ -92,6 +92,10 @@ struct BadCase {
   const char* expect_in_message;
 };
 
+void PrintTo(const BadCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
 const BadCase kBad[] = {
     {"unknown_top_key", "\"ambient_light\"", "\"ambient_lihgt\"", "ambient_lihgt: unknown key"},
     {"unknown_material_key", "\"albedo\": [0.9", "\"albedoo\": [0.9",

@@ -36,7 +36,8 @@ Action add_budget(CLI::App& app) {
       if (!r.fits()) throw CheckFailed("budget: " + r.over.front());
       return 0;
     }
-    const budget::BudgetReport r = budget::run_budget(s, *path, *variant, profile->empty() ? "ps_2_0" : *profile);
+    const budget::BudgetReport r =
+        budget::run_budget(s, *path, *variant, profile->empty() ? "ps_2_0" : *profile);
     if (*json) {
       std::cout << budget::to_json(r).dump(2) << "\n";
     } else {

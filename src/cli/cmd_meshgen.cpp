@@ -41,13 +41,25 @@ Action add_meshgen(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "meshgen", "Write the procedural test meshes (binary PLY with normals) into OUTDIR");
   sub->add_option("OUTDIR", *out_dir, "Output directory (created if missing)")->required();
-  return [out_dir]() -> int {
+  auto sphere = std::make_shared<int>(-1);
+  sub->add_option("--sphere", *sphere,
+                  "Write only sphere_sS.ply, an icosphere of S subdivisions (7: 163842 vertices, "
+                  "the bake-rate case of issue 3)")
+      ->check(CLI::Range(0, 8));
+  return [out_dir, sphere]() -> int {
     const std::filesystem::path root(*out_dir);
     ensure_directory(root);
     const auto options =
         OpenMesh::IO::Options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::VertexNormal);
     std::uintmax_t total = 0;
-    for (const auto& named : meshgen::standard_set()) {
+    std::vector<meshgen::NamedMesh> set;
+    if (*sphere >= 0) {
+      set.push_back(
+          {"sphere_s" + std::to_string(*sphere) + ".ply", meshgen::icosphere(1.0, *sphere)});
+    } else {
+      set = meshgen::standard_set();
+    }
+    for (const auto& named : set) {
       const std::filesystem::path path = root / named.path;
       ensure_directory(path.parent_path());
       write_mesh(path, named.mesh, options);

@@ -17,8 +17,13 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
     throw InputError(target.string(), "", "output directory does not exist");
   }
   // Same directory as the target so the final rename is atomic (no cross-device copy).
-  fs::path tmp = dir / ("." + target.stem().string() + ".tmp." + std::to_string(::getpid()) +
-                        target.extension().string());
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a chained operator+ starting "." +.
+  std::string name = ".";
+  name.append(target.stem().string())
+      .append(".tmp.")
+      .append(std::to_string(::getpid()))
+      .append(target.extension().string());
+  const fs::path tmp = dir / name;
   try {
     write(tmp);
   } catch (...) {

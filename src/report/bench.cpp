@@ -194,8 +194,8 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
       << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
       << " | " << error_cell(r, true) << " | " << error_cell(r, false) << " | "
       << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
-      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | "
-      << notes << " |\n";
+      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | " << notes
+      << " |\n";
   }
   s << "\n![speed against error](chart.svg)\n\nContact sheet: `contact.png` (one row per scene: "
        "the reference, then each path's render followed by its error heatmap, in the table's "

@@ -382,7 +382,8 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
             << sl.c << (tr.ambient != 0 ? ", material.z;\n" : ";  # a = 0\n");
       }
       acc << "MAD acc.xyz, " << lobe_reg[i] << ", "
-          << (vertex_thickness ? "fragment.texcoord[2]" : "T") << ", diffuse" << sl.g << "." << sl.c << ";\n";
+          << (vertex_thickness ? "fragment.texcoord[2]" : "T") << ", diffuse" << sl.g << "." << sl.c
+          << ";\n";
       if (point) acc << "MUL acc.xyz, acc, att" << sl.g << "." << sl.c << ";\n";
       x = "acc";
     } else {
@@ -421,8 +422,9 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
       gl::read_shader_source("legacy_shaders/arb/translucency.vp"),
       {{"THICKNESS", vertex_thickness
                          ? "# Vertex thickness: the mesh colour times the material's tint.\n"
-                           "PARAM tint = " + vec4(tr.tint, 0) + ";\n" +
-                           "MUL result.texcoord[2], vertex.color, tint;"
+                           "PARAM tint = " +
+                               vec4(tr.tint, 0) + ";\n" +
+                               "MUL result.texcoord[2], vertex.color, tint;"
                          : "# (constant thickness: nothing more to pass)"}},
       "translucency.vp");
   return out;

@@ -1,7 +1,6 @@
 #include "paths/arbfp/arbfp_path.h"
 
 #include "budget/program_counter.h"
-
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_program.h"
