@@ -131,23 +131,33 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         }
       }
     }
-    // Pass 2, at 1280x720: timing only, flat first so every ratio is from this session.
+    // Pass 2, at 1280x720: timing only, with flat in the same session so every ratio is too.
     {
       RenderSession session(scene, o.wide_width, o.wide_height);
+      // flat is timed before and after the paths and the faster median is the baseline: the
+      // first timing of a fresh session also pays llvmpipe's warm-up (thread start, shader
+      // JIT for the fixed-function state), which would flatter every ratio.
       auto base = session.build(flat, flat.variants.front().name);
-      const FrameTiming flat_t = time_frames(*base, o);
+      FrameTiming flat_t = time_frames(*base, o);
       for (BenchRow& row : scene_rows) {
         const PathInfo& p = find_path(row.path);
         auto path = session.build(p, row.variant);
         std::map<std::string, std::vector<double>> stats;
         row.at_wide = row.path == flat.name ? flat_t : time_frames(*path, o, &stats);
-        row.ratio_to_flat = flat_t.median_ms > 0 ? row.at_wide.median_ms / flat_t.median_ms : 0;
-        if (stats.count("shading_seconds") && stats.count("covered_pixels")) {
-          const double secs = median(stats["shading_seconds"]);
-          const double px = median(stats["covered_pixels"]);
-          row.stats["shading_mpixels_per_s"] = secs > 0 ? px / secs / 1e6 : 0;
-          row.stats["threads"] = median(stats["threads"]);
+        row.ratio_to_flat = row.at_wide.median_ms;  // divided by the baseline below
+        // Every figure a path reports, as the median over the timed frames.
+        for (const auto& [key, values] : stats) row.stats[key] = median(values);
+        if (row.stats.count("shading_seconds") && row.stats.count("covered_pixels")) {
+          const double secs = row.stats["shading_seconds"];
+          row.stats["shading_mpixels_per_s"] =
+              secs > 0 ? row.stats["covered_pixels"] / secs / 1e6 : 0;
         }
+      }
+      const FrameTiming again = time_frames(*base, o);
+      if (again.median_ms < flat_t.median_ms) flat_t = again;
+      for (BenchRow& row : scene_rows) {
+        if (row.path == flat.name) row.at_wide = flat_t;
+        row.ratio_to_flat = flat_t.median_ms > 0 ? row.at_wide.median_ms / flat_t.median_ms : 0;
       }
     }
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
@@ -170,6 +180,25 @@ std::string error_cell(const BenchRow& r, bool max) {
   return fmt(max ? r.error->max_lsb : r.error->mean_lsb, max ? 2 : 3);
 }
 
+// The figures paths report through Path::frame_stats, in words, for the notes column.
+std::string stats_note(const BenchRow& r) {
+  std::string n;
+  auto add = [&](const std::string& s) { n += (n.empty() ? "" : "; ") + s; };
+  const auto& st = r.stats;
+  if (st.count("shading_mpixels_per_s")) {
+    add("CPU shading " + fmt(st.at("shading_mpixels_per_s")) + " Mpixels/s on " +
+        fmt(st.count("threads") ? st.at("threads") : 1, 0) + " threads");
+  }
+  if (st.count("cpu_vertex_seconds")) {
+    add("per-vertex CPU " + fmt(st.at("cpu_vertex_seconds") * 1e3) + " ms a frame");
+  }
+  if (st.count("cube_rebuild_seconds")) {
+    add("cube-map build " + fmt(st.at("cube_rebuild_seconds") * 1e3) +
+        " ms (once per light/view/material change)");
+  }
+  return n;
+}
+
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
@@ -184,11 +213,7 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
        "% > 1 LSB | cost | notes |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
-    std::string notes;
-    if (r.stats.count("shading_mpixels_per_s")) {
-      notes = "CPU shading " + fmt(r.stats.at("shading_mpixels_per_s")) + " Mpixels/s on " +
-              fmt(r.stats.at("threads"), 0) + " threads";
-    }
+    const std::string notes = stats_note(r);
     s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
       << fmt(r.at_scene_size.median_ms) << " / " << fmt(r.at_scene_size.min_ms) << " | "
       << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
@@ -335,13 +360,14 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
 
 void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   const int tw = 160, th = 120, pad = 4;
-  // Group by scene, in row order.
+  // One row per scene: the reference, then each path's default variant and its heatmap (every
+  // variant is in index.html; all of them here would make a sheet too wide to look at).
   std::vector<std::pair<std::string, std::vector<std::string>>> grid;
   for (const BenchRow& r : rows) {
     if (grid.empty() || grid.back().first != r.scene) {
       grid.push_back({r.scene, {"images/" + r.scene + "__reference.exr"}});
     }
-    if (r.path == "reference") continue;
+    if (r.path == "reference" || find_path(r.path).variants.front().name != r.variant) continue;
     grid.back().second.push_back(r.image);
     if (!r.heatmap.empty()) grid.back().second.push_back(r.heatmap);
   }

@@ -221,7 +221,8 @@ class CombinersPath final : public Path {
         stages = std::max(stages, p.program(pass).stages.size());
       }
     }
-    return std::to_string(stages) + " stages a pass, " + std::to_string(passes) + " passes";
+    return std::to_string(stages) + (stages == 1 ? " stage" : " stages") + " a pass, " +
+           std::to_string(passes) + (passes == 1 ? " pass" : " passes");
   }
 
   std::vector<BuiltStage> stages() const override {
