@@ -1,7 +1,7 @@
 // Offscreen regression renders against goldens (Filament's rule: compared by default, updated
 // only by one deliberate command: scripts/update_goldens.sh, which runs these tests with
-// LT_UPDATE_GOLDENS=1). Goldens are 8-bit PNGs at 320x240 of every demo scene, for the paths
-// whose default variant is the porting reference (reference, glsl).
+// LT_UPDATE_GOLDENS=1). Goldens are 8-bit PNGs at 320x240 of every demo scene through the
+// default variant of every path but flat: a change to any path's output shows up here.
 //
 // Tolerance (piglit's rule: it follows from the framebuffer's bits): a pixel may differ by 1 LSB
 // (rounding of a value that sits on a half-LSB boundary after a Mesa or compiler change) on at
@@ -35,7 +35,10 @@ std::vector<GoldenCase> golden_cases() {
   }
   std::sort(scenes.begin(), scenes.end());
   for (const auto& s : scenes) {
-    for (const char* p : {"reference", "glsl"}) out.push_back({s.stem().string(), p});
+    for (const PathInfo& p : all_paths()) {
+      if (p.name == "flat") continue;  // a timing baseline, not a rendering to keep
+      out.push_back({s.stem().string(), p.name});
+    }
   }
   return out;
 }
