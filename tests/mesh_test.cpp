@@ -20,6 +20,7 @@
 
 #include "core/error.h"
 #include "scene/meshgen.h"
+#include "test_util.h"
 
 namespace lt {
 namespace {
@@ -29,26 +30,7 @@ using OpenMesh::IO::Options;
 
 const fs::path kData = fs::path(LT_SOURCE_DIR) / "tests" / "data" / "meshes";
 
-// A scratch directory per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("lt_mesh_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;  // a scratch directory per test, removed afterwards
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
