@@ -34,8 +34,9 @@ TEST(ArbfpVariants, EveryListedNameParsesAndRoundTrips) {
 }
 
 TEST(ArbfpVariants, MalformedNamesAreInputErrors) {
-  for (const char* bad : {"exact", "pow=", "pow=lut", "pow=lut:1:u8", "pow=lut:64:u16",
-                          "pow=lut:64:u8x", "pow=lut:064:u8", "pow=cubic"}) {
+  for (const char* bad :
+       {"exact", "pow=", "pow=lut", "pow=lut:1:u8", "pow=lut:64:u16", "pow=lut:64:u8x",
+        "pow=lut:064:u8", "pow=cubic", "pow=mul:", "pow=exact:vertex", "pow=mul:vertexx"}) {
     EXPECT_THROW(arbfp::parse_variant(bad), InputError) << bad;
   }
 }
@@ -142,6 +143,72 @@ TEST(ArbfpGenerator, MulFallsBackToExactForNonIntegerPowerAndSaysSo) {
   EXPECT_FALSE(has(q.fragment, "POW"));
 }
 
+// pow=mul:vertex: the lobe is the vertex program's; the fragment program only reads it.
+TEST(ArbfpGenerator, PerVertexLobeIsInTheVertexProgramOnly) {
+  const arbfp::PowVariant pv = arbfp::parse_variant("pow=mul:vertex");
+  EXPECT_TRUE(pv.per_vertex);
+  EXPECT_EQ(pv.method, PowMethod::Mul);
+  for (bool point : {false, true}) {
+    for (double power : {4.0, 2.5}) {
+      Scene s = small_scene(point, false);
+      s.materials[0].translucency->power = power;
+      s.materials[0].translucency->normalize_distorted_light = point;
+      const auto p = arbfp::generate_arb(s, s.materials[0], pv);
+      const std::string what =
+          std::string(point ? "point" : "directional") + " p " + std::to_string(power);
+      // The term in the vertex program: H = L + N*d, t = dot(V, -H) saturated by MAX/MIN (no
+      // _SAT in ARB_vertex_program), the lobe, and its hand-over to the fragment program.
+      EXPECT_TRUE(has(p.vertex, "MAD H.xyz, N, material.x")) << what;
+      EXPECT_TRUE(has(p.vertex, "DP3 tv0.x, V, -H")) << what;
+      EXPECT_TRUE(has(p.vertex, "MAX tv0.x, tv0, material.w")) << what;
+      EXPECT_TRUE(has(p.vertex, "MIN tv0.x, tv0, guard.z")) << what;
+      EXPECT_TRUE(has(p.vertex, "result.texcoord[3].x, lobe0")) << what;
+      EXPECT_FALSE(has(p.vertex, "_SAT") || has(p.vertex, "CMP")) << what << ": not in ARBvp1.0";
+      if (power == 4) {
+        EXPECT_TRUE(has(p.vertex, "MUL lobe0.x, tv0, tv0")) << what;
+        EXPECT_FALSE(has(p.vertex, "POW")) << what;
+      } else {
+        // Non-integer p: POW per vertex of t floored at 2^-126, masked by (t > 0) for 0^p = 0.
+        EXPECT_TRUE(has(p.vertex, "POW lobe0.x, r.x, material.y")) << what;
+        EXPECT_TRUE(has(p.vertex, "SLT r.x, material.w, tv0")) << what;
+        ASSERT_FALSE(p.notes.empty());
+        EXPECT_TRUE(has(p.notes.front(), "not an integer")) << what;
+      }
+      if (point) {
+        // L = N at distance 0, selected by a mask (no CMP in vertex programs).
+        EXPECT_TRUE(has(p.vertex, "SGE r.y, -L.w, material.w")) << what;
+        EXPECT_TRUE(has(p.vertex, "RSQ H.w")) << what;
+        // Diffuse and attenuation stay per pixel.
+        EXPECT_TRUE(has(p.fragment, "RCP att0.x")) << what;
+      }
+      // The fragment program: no t, no V, no H, no lobe math; only lobe * T + diffuse.
+      for (const char* gone :
+           {"POW", "EX2", "LG2", "TEX", "tv0", "lobe0", "H.xyz", "V.xyz", "material"}) {
+        EXPECT_FALSE(has(p.fragment, gone)) << what << ": " << gone;
+      }
+      EXPECT_TRUE(has(p.fragment, "MAD acc.xyz, fragment.texcoord[3].x, T, diffuse0.x")) << what;
+    }
+  }
+  // Without the term (the budget's baseline) the vertex program has no lobe either.
+  const Scene s = small_scene(false, false);
+  const auto p = arbfp::generate_arb(s, s.materials[0], pv, false);
+  EXPECT_FALSE(has(p.vertex, "texcoord[3]"));
+  EXPECT_FALSE(has(p.fragment, "texcoord[3]"));
+}
+
+// Lights 0-3 in texcoord[3], 4-7 in texcoord[4] ...; ps_2_0's 8 texcoords end at 20 lights.
+TEST(ArbfpGenerator, PerVertexLobePacksFourLightsPerTexcoord) {
+  const arbfp::PowVariant pv = arbfp::parse_variant("pow=mul:vertex");
+  Scene s = small_scene(false, false);
+  while (s.lights.size() < 6) s.lights.push_back(s.lights.front());
+  const auto p = arbfp::generate_arb(s, s.materials[0], pv);
+  EXPECT_TRUE(has(p.vertex, "result.texcoord[3].xyzw, lobe0"));
+  EXPECT_TRUE(has(p.vertex, "result.texcoord[4].xy, lobe1"));
+  EXPECT_TRUE(has(p.fragment, "fragment.texcoord[4].y"));
+  while (s.lights.size() < arbfp::kMaxVertexLobeLights + 1) s.lights.push_back(s.lights.front());
+  EXPECT_THROW(arbfp::generate_arb(s, s.materials[0], pv), InputError);
+}
+
 size_t non_finite(const Image& img) {
   size_t n = 0;
   for (float v : img.rgba) n += !std::isfinite(v);
@@ -152,6 +219,8 @@ size_t non_finite(const Image& img) {
 // variant's documented error. "Weight" below is what multiplies the lobe in the image: s * T *
 // light colour * albedo, up to ~5 on the demo scenes (coloured_cubes: s 3, colour 2, T 0.8).
 double max_lsb_for(const std::string& v) {
+  // pow=mul:vertex: per scene, see per_vertex_max_lsb.
+  if (v == "pow=mul:vertex") return 0;
   // Float shading of the exact equation, rounded once to 8 bits: 0.5 LSB plus float noise.
   if (v == "pow=exact" || v == "pow=mul") return 1.0;
   // Half texels (2^-11 relative) and linear interpolation (h^2/8 p(p-1) <= 1e-4 at N = 256,
@@ -181,6 +250,34 @@ struct VariantCase {
   std::string scene, variant;
 };
 
+// pow=mul:vertex computes t and the lobe at the vertices and interpolates (lobe * s + a) linearly
+// across each triangle, so its error is the lobe's curvature over a triangle: it grows with
+// triangle size and with how fast N (and, for point lights, L) turns across it, and it peaks
+// where the lobe's narrow maximum falls between the vertices: on back-lit silhouettes. Its bound
+// is therefore per scene: measured (`ltrender bench scenes/*.json --paths arbfp`) on llvmpipe,
+// which is deterministic, plus ~30% so a change of mesh generator or rasteriser rounding does not
+// trip it while a real regression (e.g. a wrong group or component) still does. The mean stays
+// small everywhere (<= 1.12 LSB measured): the error is local to the rims, not a wrong curve.
+double per_vertex_max_lsb(const std::string& scene) {
+  const std::string s = fs::path(scene).stem().string();
+  // Flat slab and block faces, directional lights: N and L are constant per face, only V turns,
+  // and slowly. Measured 0.74.
+  if (s == "thin_vs_thick") return 1.5;
+  // sphere_s4: small triangles, smooth normals, but p = 8 (a narrow lobe). Measured 3.98.
+  if (s == "backlit_sphere") return 6.0;
+  // Cubes, two triangles per face, point lights 1.6 units away: each face's lobe is the
+  // interpolation of four corner values, L turning by up to ~30 degrees over a face. Measured
+  // 17.91 (mean 1.11).
+  if (s == "coloured_cubes") return 25.0;
+  // The blob's back-lit rims (the ears), where N turns by tens of degrees over one triangle and
+  // the lobe (p 3-4, s up to 3) peaks between vertices. Measured 33.90 (three_point_blob, point
+  // lights) and 45.76 (baked_blob), at the silhouette only: p99 <= 3.7 LSB.
+  if (s == "three_point_blob") return 45.0;
+  if (s == "baked_blob") return 60.0;
+  ADD_FAILURE() << "no pow=mul:vertex threshold for " << s << ": measure it first (bench)";
+  return 0;
+}
+
 void PrintTo(const VariantCase& c, std::ostream* os) {
   *os << c.scene << " " << c.variant;
 }
@@ -203,8 +300,10 @@ TEST_P(ArbfpDemo, VariantWithinItsDocumentedError) {
   ASSERT_EQ(non_finite(img), 0u);
   const Comparison cmp = compare_images(img, ref, TestEncoding::kUnorm8);
   EXPECT_GT(cmp.covered.pixels, scene.width * scene.height / 50);
-  EXPECT_LE(cmp.covered.max_lsb, max_lsb_for(c.variant))
+  const bool per_vertex = c.variant == "pow=mul:vertex";
+  EXPECT_LE(cmp.covered.max_lsb, per_vertex ? per_vertex_max_lsb(c.scene) : max_lsb_for(c.variant))
       << "at " << cmp.covered.max_x << "," << cmp.covered.max_y;
+  if (per_vertex) EXPECT_LE(cmp.covered.mean_lsb, 1.5);
   if (c.variant == "pow=sg-simplified") {
     // ... and it really is the other curve: far off on average, not just at a few pixels.
     EXPECT_GT(cmp.covered.mean_lsb, 5.0);

@@ -130,9 +130,11 @@ void expect_agrees_with_mesa(const std::string& source, const std::string& what)
   const MesaCounts m = mesa_counts(target, source);
   if (c.position_invariant) {
     // Mesa inserts the transform of ARB_position_invariant into the program it counts: 4 DP4
-    // (the budget adds the same 4 to the vertex slots) and the temporary they write.
+    // (the budget adds the same 4 to the vertex slots) and a temporary of its own for them, on
+    // top of the program's (measured with pow=mul:vertex, whose vertex program has 6-7 temps:
+    // Mesa reports 7-8).
     c.alu += 4;
-    c.temporaries = std::max(c.temporaries, 1);
+    c.temporaries += 1;
   }
   EXPECT_EQ(c.alu, m.alu) << what;
   EXPECT_EQ(c.tex, m.tex) << what;

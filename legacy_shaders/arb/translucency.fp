@@ -10,6 +10,8 @@
 #   fragment.texcoord[0]  camera-relative position P (the eye is the origin)
 #   fragment.texcoord[1]  interpolated normal (not unit)
 #   fragment.texcoord[2]  vertex thickness (only when the material reads it)
+#   fragment.texcoord[3+g] pow=mul:vertex only: (lobe * s + a) of light group g, per vertex
+#                          (then the fragment program has no t, V, H or lobe of its own)
 #
 # Variant: {{VARIANT}}
 {{NOTES}}

@@ -51,7 +51,7 @@ std::string PowVariant::name() const {
     case PowMethod::SgFitted:
       return "pow=sg-fitted";
     case PowMethod::Mul:
-      return "pow=mul";
+      return per_vertex ? "pow=mul:vertex" : "pow=mul";
   }
   return "?";
 }
@@ -68,6 +68,11 @@ PowVariant parse_variant(const std::string& name) {
   if (m == "sg-simplified") return {PowMethod::SgSimplified};
   if (m == "sg-fitted") return {PowMethod::SgFitted};
   if (m == "mul") return {PowMethod::Mul};
+  if (m == "mul:vertex") {
+    v.method = PowMethod::Mul;
+    v.per_vertex = true;
+    return v;
+  }
   // lut:N:FORMAT
   int size = 0;
   char format[8] = {};
@@ -87,7 +92,7 @@ PowVariant parse_variant(const std::string& name) {
   }
   throw InputError("--variant", name,
                    "unknown arbfp variant (pow=exact, pow=lut:N:u8|f16|f32 with 2 <= N <= 4096, "
-                   "pow=sg, pow=sg-simplified, pow=sg-fitted, pow=mul)");
+                   "pow=sg, pow=sg-simplified, pow=sg-fitted, pow=mul, pow=mul:vertex)");
 }
 
 double sg_exponent(double p) {
@@ -144,6 +149,164 @@ std::string group_mask(size_t g, size_t lights) {
   return mask;
 }
 
+// t^k from tv<g> into lobe<g> for every group, by left-to-right binary exponentiation: one MUL per
+// bit after the leading one, plus one per set bit; no extra register (t stays in tv<g>). Both
+// program kinds have MUL and MOV, so the fragment program and pow=mul:vertex's vertex program
+// share it.
+void emit_mul_chain(std::ostream& out, unsigned long k, size_t groups, size_t n_lights) {
+  int top = 0;
+  while ((k >> (top + 1)) != 0) ++top;
+  for (size_t g = 0; g < groups; ++g) {
+    const std::string lg = "lobe" + std::to_string(g), tg = "tv" + std::to_string(g);
+    const std::string m = group_mask(g, n_lights);
+    std::string cur = tg;
+    for (int b = top - 1; b >= 0; --b) {
+      out << "MUL " << lg << m << ", " << cur << ", " << cur << ";\n";
+      cur = lg;
+      if ((k >> b) & 1) out << "MUL " << lg << m << ", " << lg << ", " << tg << ";\n";
+    }
+    if (cur == tg) out << "MOV " << lg << m << ", " << tg << ";  # p = 1\n";
+  }
+}
+
+// The group's light scales s, packed like the lights.
+std::string scale_param(const Scene& scene, size_t g) {
+  double s[4] = {0, 0, 0, 0};
+  for (size_t i = g * 4; i < std::min(scene.lights.size(), g * 4 + 4); ++i) {
+    s[i % 4] = scene.lights[i].translucency_scale;
+  }
+  return "PARAM scale" + std::to_string(g) + " = " + vec4(s[0], s[1], s[2], s[3]) +
+         ";  # s per light\n";
+}
+
+// pow=mul:vertex, the vertex program's part: N, V, L, H, t = saturate(dot(V, -H)), the lobe t^p
+// and (lobe * s + a) per vertex, into texcoord[kVertexLobeTexcoord + g] (lobe * s + a is linear
+// in the lobe, so interpolating it equals applying it to the interpolated lobe). Written with
+// ARB_vertex_program's instructions only: no CMP and no _SAT there, so the hard cases select with
+// SGE/SLT masks and saturate is MAX/MIN. Every hard-case convention of src/model/translucency.h
+// holds at the vertices; between them the lobe is Gouraud-interpolated (also for point lights,
+// whose L is taken at the vertex here, like the combiners path), which is this variant's error.
+std::string vertex_lobe_block(const Scene& scene, const Translucency& tr, PowMethod method) {
+  const size_t n_lights = scene.lights.size();
+  const size_t groups = (n_lights + 3) / 4;
+  const bool ortho = scene.camera.projection == Camera::Projection::Orthographic;
+  bool any_point = false;
+  for (const Light& l : scene.lights) any_point |= l.type == Light::Type::Point;
+  std::ostringstream params, code;
+  std::string temps = "r, N, H";
+  if (!ortho) temps += ", V";
+  if (any_point) temps += ", L";
+  for (size_t g = 0; g < groups; ++g)
+    temps += ", tv" + std::to_string(g) + ", lobe" + std::to_string(g);
+
+  params << "# The translucency lobe per vertex (pow=mul:vertex): the fragment program only adds\n"
+         << "# lobe * T to the diffuse term of each light.\n"
+         << "# material = (distortion d, power p, lt ambient a, 0)\n"
+         << "PARAM material = " << vec4(tr.distortion, tr.power, tr.ambient, 0) << ";\n"
+         << "# guard = the fragment program's (x, y: zero normal; w: 1/|v| clamp so 0 * 1e30 = 0\n"
+         << "# where IEEE would give 0 * inf = NaN); z = 1, the upper bound of saturate.\n"
+         << "PARAM guard = {1e6, 1e-12, 1, 1e30};\n";
+  if (ortho) {
+    params << "# orthographic: every view ray is parallel, V = -forward\n"
+           << "PARAM V = " << vec4(-scene.camera.forward(), 0) << ";\n";
+  }
+  for (size_t i = 0; i < n_lights; ++i) {
+    const Light& l = scene.lights[i];
+    const std::string li = "light" + std::to_string(i) + "_";
+    if (l.type == Light::Type::Directional) {
+      params << "PARAM " << li << "L = " << vec4(-l.direction, 0) << ";  # -direction\n";
+    } else {
+      params << "PARAM " << li << "position = " << vec4(l.position - scene.camera.eye, 0)
+             << ";  # camera-relative\n";
+    }
+  }
+  for (size_t g = 0; g < groups; ++g) params << scale_param(scene, g);
+
+  code << "# N = n / |n|, or 0 when |n| < 1e-6 (then H = L, as the reference).\n"
+       << "DP3 r.x, vertex.normal, vertex.normal;\n"
+       << "RSQ r.y, r.x;\n"
+       << "MIN r.y, r.y, guard.x;\n"
+       << "SGE r.z, r.x, guard.y;\n"
+       << "MUL r.y, r.y, r.z;\n"
+       << "MUL N.xyz, vertex.normal, r.y;\n";
+  if (!ortho) {
+    // No rasterised point is at the eye (near > 0), but a clipped triangle's vertex can be: there
+    // V = 0 (t = 0) instead of 0 * inf.
+    code << "# V = normalize(-P), 0 for a vertex at the eye (1/|P| clamped to 1e30).\n"
+         << "DP3 V.w, vertex.position, vertex.position;\n"
+         << "RSQ V.w, V.w;\n"
+         << "MIN V.w, V.w, guard.w;\n"
+         << "MUL V.xyz, -vertex.position, V.w;\n";
+  }
+  for (size_t i = 0; i < n_lights; ++i) {
+    const Light& l = scene.lights[i];
+    const std::string li = "light" + std::to_string(i) + "_";
+    const Slot sl = slot(i);
+    std::string L = "L";
+    if (l.type == Light::Type::Directional) {
+      L = li + "L";
+      code << "# light " << i << ": directional\n";
+    } else {
+      code << "# light " << i << ": point, L at the vertex. L = (position - P) / dist, and L = N "
+           << "at distance 0:\n# there 0 * min(RSQ(0), 1e30) = 0, and the SGE mask adds N.\n"
+           << "SUB L.xyz, " << li << "position, vertex.position;\n"
+           << "DP3 L.w, L, L;\n"
+           << "RSQ r.x, L.w;\n"
+           << "MIN r.x, r.x, guard.w;\n"
+           << "MUL L.xyz, L, r.x;\n"
+           << "SGE r.y, -L.w, material.w;\n"
+           << "MAD L.xyz, N, r.y, L;\n";
+    }
+    code << "MAD H.xyz, N, material.x, " << L << ";\n";
+    if (tr.normalize_distorted_light) {
+      code << "# normalised H on request: normalize(0) := 0 (1/|H| clamped to 1e30).\n"
+           << "DP3 H.w, H, H;\n"
+           << "RSQ H.w, H.w;\n"
+           << "MIN H.w, H.w, guard.w;\n"
+           << "MUL H.xyz, H, H.w;\n";
+    }
+    code << "DP3 tv" << sl.g << "." << sl.c << ", V, -H;\n";
+  }
+  code << "# t = saturate(dot(V, -H)) for a whole group at once (no _SAT in vertex programs).\n";
+  for (size_t g = 0; g < groups; ++g) {
+    const std::string m = group_mask(g, n_lights);
+    code << "MAX tv" << g << m << ", tv" << g << ", material.w;\n"
+         << "MIN tv" << g << m << ", tv" << g << ", guard.z;\n";
+  }
+  if (method == PowMethod::Mul) {
+    const auto k = static_cast<unsigned long>(tr.power);
+    code << "# t^" << k << " by repeated squaring (exact up to float rounding).\n";
+    emit_mul_chain(code, k, groups, n_lights);
+  } else {
+    // POW is EX2(p * LG2(t)) and LG2(0) = -inf: POW reads t clamped to the smallest normal float
+    // (finite everywhere), and the (t > 0) mask makes the model's 0 for t = 0 (0^p, p > 0; p = 0
+    // never gets here: flat lobe).
+    params << "PARAM pow_floor = " << vec4(std::ldexp(1.0, -126), 0, 0, 0) << ";  # 2^-126\n";
+    code << "# non-integer p: POW of max(t, 2^-126), times (t > 0) for the model's 0^p = 0.\n";
+    for (size_t i = 0; i < n_lights; ++i) {
+      const Slot sl = slot(i);
+      code << "MAX r.x, tv" << sl.g << "." << sl.c << ", pow_floor.x;\n"
+           << "POW lobe" << sl.g << "." << sl.c << ", r.x, material.y;\n";
+    }
+    for (size_t g = 0; g < groups; ++g) {
+      const std::string m = group_mask(g, n_lights);
+      code << "SLT r" << m << ", material.w, tv" << g << ";\n"
+           << "MUL lobe" << g << m << ", lobe" << g << ", r;\n";
+    }
+  }
+  code << "# lobe * s + a, to the fragment program.\n";
+  for (size_t g = 0; g < groups; ++g) {
+    const std::string m = group_mask(g, n_lights);
+    const std::string out = "result.texcoord[" + std::to_string(kVertexLobeTexcoord + g) + "]";
+    if (tr.ambient != 0) {
+      code << "MAD " << out << m << ", lobe" << g << ", scale" << g << ", material.z;\n";
+    } else {
+      code << "MUL " << out << m << ", lobe" << g << ", scale" << g << ";  # a = 0\n";
+    }
+  }
+  return params.str() + "TEMP " + temps + ";\n" + code.str();
+}
+
 }  // namespace
 
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
@@ -160,31 +323,51 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
   const bool flat_lobe = term && tr.power == 0;
   bool any_point = false;
   for (const Light& l : scene.lights) any_point |= l.type == Light::Type::Point;
+  // pow=mul:vertex: the vertex program computes the lobe; the fragment program reads it.
+  const bool vertex_lobe = term && !flat_lobe && variant.per_vertex;
+  // The fragment program's own t and lobe.
+  const bool fragment_lobe = term && !flat_lobe && !vertex_lobe;
+  if (vertex_lobe && n_lights > kMaxVertexLobeLights) {
+    throw InputError("--variant", variant.name(),
+                     "the per-vertex lobe takes at most " + std::to_string(kMaxVertexLobeLights) +
+                         " lights (four per texcoord, texcoord[3..7]); the scene has " +
+                         std::to_string(n_lights));
+  }
 
   PowMethod method = variant.method;
   if (term && !flat_lobe && method == PowMethod::Mul && !is_integer_power(tr.power)) {
-    out.notes.push_back("pow=mul: power " + num(tr.power) +
-                        " is not an integer, exact POW used instead");
+    out.notes.push_back(variant.name() + ": power " + num(tr.power) +
+                        " is not an integer, exact POW used instead" +
+                        (variant.per_vertex ? " (per vertex)" : ""));
     method = PowMethod::Exact;
   }
   if (flat_lobe) out.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
+  if (vertex_lobe) {
+    out.notes.push_back(std::string("pow=mul:vertex: t and the lobe per vertex, Gouraud-") +
+                        "interpolated" + (any_point ? " (point lights: L at the vertex too)" : ""));
+  }
 
   std::ostringstream params, view, lights, lobe, acc;
   std::vector<std::string> temps = {"r", "N", "sum"};
-  if (term && !flat_lobe) temps.push_back("H");
+  if (fragment_lobe) temps.push_back("H");
   if (any_point) temps.push_back("L");
   for (size_t g = 0; g < groups; ++g) {
     const std::string s = std::to_string(g);
     temps.push_back("diffuse" + s);
-    if (term && !flat_lobe) temps.push_back("tv" + s), temps.push_back("lobe" + s);
+    if (fragment_lobe) temps.push_back("tv" + s), temps.push_back("lobe" + s);
     if (any_point) temps.push_back("att" + s);
   }
   if (term) temps.push_back("acc");
 
   // Constants: material, view, thickness, lobe parameters.
   if (term) {
-    params << "# material = (distortion d, power p, lt ambient a, 0)\n"
-           << "PARAM material = " << vec4(tr.distortion, tr.power, tr.ambient, 0) << ";\n";
+    if (vertex_lobe) {
+      params << "# pow=mul:vertex: (lobe * s + a) of light group g comes in fragment.texcoord["
+             << kVertexLobeTexcoord << " + g]\n";
+    } else {
+      params << "# material = (distortion d, power p, lt ambient a, 0)\n"
+             << "PARAM material = " << vec4(tr.distortion, tr.power, tr.ambient, 0) << ";\n";
+    }
     if (vertex_thickness) {
       // T = vertex colour * tint is multiplied in the vertex program: the tint is constant, so
       // interpolating the product equals the product of the interpolation, and the fragment
@@ -194,7 +377,7 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
       params << "# constant thickness * tint\n"
              << "PARAM T = " << vec4(tr.thickness * tr.tint, 0) << ";\n";
     }
-    if (!flat_lobe) {
+    if (fragment_lobe) {
       if (ortho) {
         params << "# orthographic: every view ray is parallel, V = -forward\n"
                << "PARAM V = " << vec4(-scene.camera.forward(), 0) << ";\n";
@@ -240,7 +423,7 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
              << "RCP att" << sl.g << "." << sl.c << ", r.z;\n";
     }
     lights << "DP3_SAT diffuse" << sl.g << "." << sl.c << ", N, " << L << ";\n";
-    if (term && !flat_lobe) {
+    if (fragment_lobe) {
       lights << "MAD H.xyz, N, material.x, " << L << ";\n";
       if (tr.normalize_distorted_light) {
         lights << "# normalised H on request: normalize(0) := 0 (1/|H| clamped to 1e30).\n"
@@ -257,9 +440,16 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
   // where light i's lobe is (the LUT variants keep one register per light, see there).
   std::vector<std::string> lobe_reg(n_lights);
   for (size_t i = 0; i < n_lights; ++i) {
-    lobe_reg[i].append("lobe").append(slot(i).g).append(".").append(slot(i).c);
+    if (vertex_lobe) {
+      lobe_reg[i] =
+          "fragment.texcoord[" + std::to_string(kVertexLobeTexcoord + i / 4) + "]." + slot(i).c;
+    } else {
+      lobe_reg[i].append("lobe").append(slot(i).g).append(".").append(slot(i).c);
+    }
   }
-  if (term) {
+  if (vertex_lobe) {
+    lobe << "# pow=mul:vertex: the lobe, times s plus a, was computed per vertex.\n";
+  } else if (term) {
     // The LUT's coordinate remaps of every group come before every TEX: a TEX reading a
     // register an ALU instruction wrote starts a new texture indirection (ARB_fragment_program
     // issue 24), so this order keeps the program at 2 indirections for any light count.
@@ -314,23 +504,9 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
       }
     }
     if (!flat_lobe && method == PowMethod::Mul) {
-      // Left-to-right binary exponentiation: one MUL per bit after the leading one, plus one per
-      // set bit; no extra register (t stays in tv<g>).
       const auto k = static_cast<unsigned long>(tr.power);
-      int top = 0;
-      while ((k >> (top + 1)) != 0) ++top;
       lobe << "# pow=mul: t^" << k << " by repeated squaring (exact up to float rounding).\n";
-      for (size_t g = 0; g < groups; ++g) {
-        const std::string lg = "lobe" + std::to_string(g), tg = "tv" + std::to_string(g);
-        const std::string m = group_mask(g, n_lights);
-        std::string cur = tg;
-        for (int b = top - 1; b >= 0; --b) {
-          lobe << "MUL " << lg << m << ", " << cur << ", " << cur << ";\n";
-          cur = lg;
-          if ((k >> b) & 1) lobe << "MUL " << lg << m << ", " << lg << ", " << tg << ";\n";
-        }
-        if (cur == tg) lobe << "MOV " << lg << m << ", " << tg << ";  # p = 1\n";
-      }
+      emit_mul_chain(lobe, k, groups, n_lights);
     }
     if (!flat_lobe && method == PowMethod::Exact) {
       lobe << "# pow=exact: POW is EX2(p * LG2(t)) and LG2(0) = -inf, so t = 0 is selected to the\n"
@@ -358,7 +534,7 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
                << ";  # 1 * s + a (flat lobe)\n";
         continue;
       }
-      params << "PARAM scale" << g << " = " << vec4(s[0], s[1], s[2], s[3]) << ";  # s per light\n";
+      params << scale_param(scene, g);
       if (method == PowMethod::Lut) continue;  // per light, in the accumulation below
       if (tr.ambient != 0) {
         lobe << "MAD lobe" << g << m << ", lobe" << g << ", scale" << g << ", material.z;\n";
@@ -376,7 +552,7 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
     const bool point = l.type == Light::Type::Point;
     std::string x;
     if (term) {
-      if (!flat_lobe && method == PowMethod::Lut) {
+      if (fragment_lobe && method == PowMethod::Lut) {
         const std::string& lr = lobe_reg[i];
         acc << (tr.ambient != 0 ? "MAD " : "MUL ") << lr << ", " << lr << ", scale" << sl.g << "."
             << sl.c << (tr.ambient != 0 ? ", material.z;\n" : ";  # a = 0\n");
@@ -420,7 +596,9 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
                         "translucency.fp");
   out.vertex = gl::fill_template(
       gl::read_shader_source("legacy_shaders/arb/translucency.vp"),
-      {{"THICKNESS", vertex_thickness
+      {{"LOBE", vertex_lobe ? vertex_lobe_block(scene, tr, method)
+                            : std::string("# (the lobe is computed per pixel)")},
+       {"THICKNESS", vertex_thickness
                          ? "# Vertex thickness: the mesh colour times the material's tint.\n"
                            "PARAM tint = " +
                                vec4(tr.tint, 0) + ";\n" +

@@ -26,12 +26,17 @@ struct PowVariant {
   PowMethod method = PowMethod::Exact;
   int lut_size = 256;                                  // Lut only
   model::LutFormat lut_format = model::LutFormat::U8;  // Lut only
+  // Mul only ("pow=mul:vertex"): t, the lobe and (lobe * s + a) in the vertex program, which
+  // passes them four lights to a texcoord; the fragment program keeps diffuse and attenuation
+  // per pixel. The cheapest fragment program, at the price of Gouraud-interpolating the lobe.
+  bool per_vertex = false;
 
   std::string name() const;  // as given to --variant, e.g. "pow=lut:256:u8"
 };
 
 // Parses a --variant name ("pow=exact", "pow=lut:N:u8|f16|f32", "pow=sg", "pow=sg-simplified",
-// "pow=sg-fitted", "pow=mul"). Throws InputError("--variant", name, ...) when malformed.
+// "pow=sg-fitted", "pow=mul", "pow=mul:vertex"). Throws InputError("--variant", name, ...) when
+// malformed.
 PowVariant parse_variant(const std::string& name);
 
 // n' of exp2(n' (t - 1)) minimising max over t in [0, 1] of |exp2(n' (t - 1)) - t^p|, in double.
@@ -44,6 +49,11 @@ struct ArbPrograms {
   std::optional<model::PowerLut> lut;  // the texture the fragment program samples as texture[0]
   std::vector<std::string> notes;      // what the variant did for this material (for `info`)
 };
+
+// The per-vertex variant passes light group g's lobe in texcoord[kVertexLobeTexcoord + g]; ps_2_0
+// has 8 texcoords, so it takes at most 4 * (8 - kVertexLobeTexcoord) lights.
+inline constexpr int kVertexLobeTexcoord = 3;
+inline constexpr size_t kMaxVertexLobeLights = 4 * (8 - kVertexLobeTexcoord);
 
 // `translucency_term = false` generates the same program without the translucency term (diffuse
 // only), so the budget can report the term's own cost as the difference.

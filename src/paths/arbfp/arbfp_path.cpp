@@ -141,6 +141,11 @@ PathInfo arbfp_path_info() {
           // The default: the cheapest variant (fewest ALU + TEX on every demo scene, no texture)
           // whose max error is <= 2 LSB on every demo scene (bench, see the closing note).
           {"pow=mul", "t^p by repeated squaring (integer p; non-integer p uses exact POW)"},
+          // The cheapest fragment program (t and the lobe in the vertex program), not the default:
+          // its error is the lobe's Gouraud interpolation, which grows with triangle size.
+          {"pow=mul:vertex",
+           "t^p by repeated squaring per vertex, lobe interpolated: fewest fragment ALU, error "
+           "grows with triangle size"},
           {"pow=exact", "POW with 0^0 guarded by CMP: float error only"},
           {"pow=lut:256:u8",
            "256-texel 8-bit LUT: 1 MAD + 1 TEX, u8 rounding (0.5/255 of the lobe)"},
