@@ -123,6 +123,13 @@ const BadCase kBad[] = {
     {"up_parallel", "\"up\": [0, 1, 0]", "\"up\": [0, 0, 1]", "camera.up"},
     {"vertex_thickness_without_colours", "\"thickness\": [0.5, 0.4, 0.3]",
      "\"thickness\": \"vertex\"", "has no vertex colours"},
+    // Magnitude limits keep every product of the equation finite in float (scene.cpp).
+    {"albedo_beyond_float_safe", "\"albedo\": [0.9, 0.88, 0.85]", "\"albedo\": [1e300, 0.88, 0.85]",
+     "materials.marble.albedo: component out of range"},
+    {"number_overflow", "\"power\": 8", "\"power\": 1e400",
+     "s.json: invalid JSON: number overflow"},
+    {"eye_too_far", "\"eye\": [0, 0, 4]", "\"eye\": [0, 0, 4e12]",
+     "camera.eye: component out of range"},
     {"syntax_error_line", "\"lights\": [", "\"lights\": [,", "s.json:13: invalid JSON"},
 };
 

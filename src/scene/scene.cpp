@@ -145,6 +145,18 @@ int line_of_offset(const std::string& text, size_t offset) {
 
 constexpr double kMaxImageSide = 16384;
 
+// Magnitude limits. They keep every product of the equation finite in float, the precision of
+// the GL paths (albedo * color * intensity * (lobe * scale + ambient) * attenuation * thickness
+// * tint stays below 1e30 < FLT_MAX = 3.4e38), so no Inf or NaN can reach an image, and they are
+// far beyond anything a scene means: HDR colours up to 1e4, coordinates up to 1e9 (the 1e6 hard
+// case is inside), powers up to 1e6 (t^p underflows to 0 long before).
+constexpr double kMaxColour = 1e4;  // albedo, colour, intensity, scale, ambient, thickness, tint
+constexpr double kMaxCoordinate = 1e9;  // positions, eye, target, translate
+constexpr double kMaxPower = 1e6;
+constexpr double kMaxDistortion = 1e3;
+constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
+constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
+
 }  // namespace
 
 glm::dmat4 Transform::matrix() const {
@@ -169,6 +181,12 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     const auto pos = msg.find("parse error");
     throw InputError(file, std::to_string(line_of_offset(text, e.byte)),
                      "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos)));
+  } catch (const json::exception& e) {
+    // e.g. "[json.exception.out_of_range.406] number overflow parsing '1e400'": no position.
+    std::string msg = e.what();
+    const auto pos = msg.find("] ");
+    throw InputError(file, "",
+                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos + 2)));
   }
 
   Scene scene;
@@ -179,28 +197,28 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     ObjectReader img = top.object("image");
     scene.width = img.integer("width", 640, 1, static_cast<int>(kMaxImageSide));
     scene.height = img.integer("height", 480, 1, static_cast<int>(kMaxImageSide));
-    scene.background = img.vec3("background", glm::dvec3(0), 0, INFINITY);
+    scene.background = img.vec3("background", glm::dvec3(0), 0, kMaxColour);
     img.finish();
   }
   {
     ObjectReader cam = top.object("camera");
     Camera& c = scene.camera;
-    c.eye = cam.vec3("eye");
-    c.target = cam.vec3("target");
-    c.up = cam.vec3("up", glm::dvec3(0, 1, 0));
+    c.eye = cam.vec3("eye", {}, -kMaxCoordinate, kMaxCoordinate);
+    c.target = cam.vec3("target", {}, -kMaxCoordinate, kMaxCoordinate);
+    c.up = cam.vec3("up", glm::dvec3(0, 1, 0), -kMaxCoordinate, kMaxCoordinate);
     const std::string proj = cam.string("projection", std::string("perspective"));
     if (proj == "perspective") {
       c.projection = Camera::Projection::Perspective;
       c.fov_y_deg = cam.number("fov_y_deg", 40.0, 1e-3, 179.0);
     } else if (proj == "orthographic") {
       c.projection = Camera::Projection::Orthographic;
-      c.height = cam.number("height");
+      c.height = cam.number("height", {}, 0, kMaxCoordinate);
       if (!(c.height > 0)) cam.fail(cam.key_path("height"), "must be > 0");
     } else {
       cam.fail(cam.key_path("projection"), "must be \"perspective\" or \"orthographic\"");
     }
-    c.near = cam.number("near", 0.1);
-    c.far = cam.number("far", 100.0);
+    c.near = cam.number("near", 0.1, -kMaxCoordinate, kMaxCoordinate);
+    c.far = cam.number("far", 100.0, -kMaxCoordinate, kMaxCoordinate);
     if (c.projection == Camera::Projection::Perspective && !(c.near > 0)) {
       cam.fail(cam.key_path("near"), "must be > 0 for a perspective camera");
     }
@@ -212,7 +230,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     }
     cam.finish();
   }
-  scene.ambient_light = top.vec3("ambient_light", glm::dvec3(0), 0, INFINITY);
+  scene.ambient_light = top.vec3("ambient_light", glm::dvec3(0), 0, kMaxColour);
 
   // Materials: an object of named materials.
   std::vector<std::string> material_names;
@@ -225,14 +243,14 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       ObjectReader m(it.value(), "materials." + it.key(), file);
       Material mat;
       mat.name = it.key();
-      mat.albedo = m.vec3("albedo", glm::dvec3(1), 0, INFINITY);
+      mat.albedo = m.vec3("albedo", glm::dvec3(1), 0, kMaxColour);
       if (m.has("translucency")) {
         ObjectReader t = m.object("translucency");
         Translucency tr;
-        tr.power = t.number("power", 1.0, 0, INFINITY);
-        tr.distortion = t.number("distortion", 0.0);
-        tr.ambient = t.number("ambient", 0.0, 0, INFINITY);
-        tr.tint = t.vec3("tint", glm::dvec3(1), 0, INFINITY);
+        tr.power = t.number("power", 1.0, 0, kMaxPower);
+        tr.distortion = t.number("distortion", 0.0, -kMaxDistortion, kMaxDistortion);
+        tr.ambient = t.number("ambient", 0.0, 0, kMaxColour);
+        tr.tint = t.vec3("tint", glm::dvec3(1), 0, kMaxColour);
         tr.normalize_distorted_light = t.boolean("normalize_distorted_light", false);
         if (t.has("thickness")) {
           const json& th = t.get("thickness");
@@ -247,7 +265,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
             if (!std::isfinite(v) || v < 0) t.fail(kp, "must be a finite number >= 0");
             tr.thickness = glm::dvec3(v);
           } else {
-            tr.thickness = t.vec3_value(th, kp, 0, INFINITY);
+            tr.thickness = t.vec3_value(th, kp, 0, kMaxColour);
           }
         }
         t.finish();
@@ -266,22 +284,22 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       ObjectReader l(lights[i], "lights[" + std::to_string(i) + "]", file);
       Light light;
       const std::string type = l.string("type");
-      const double intensity = l.number("intensity", 1.0, 0, INFINITY);
-      light.color = l.vec3("color", glm::dvec3(1), 0, INFINITY) * intensity;
-      light.translucency_scale = l.number("translucency_scale", 1.0, 0, INFINITY);
+      const double intensity = l.number("intensity", 1.0, 0, kMaxColour);
+      light.color = l.vec3("color", glm::dvec3(1), 0, kMaxColour) * intensity;
+      light.translucency_scale = l.number("translucency_scale", 1.0, 0, kMaxColour);
       if (type == "directional") {
         light.type = Light::Type::Directional;
-        const glm::dvec3 d = l.vec3("direction");
+        const glm::dvec3 d = l.vec3("direction", {}, -kMaxCoordinate, kMaxCoordinate);
         if (!(glm::length(d) > 0)) l.fail(l.key_path("direction"), "must not be zero");
         light.direction = glm::normalize(d);
       } else if (type == "point") {
         light.type = Light::Type::Point;
-        light.position = l.vec3("position");
+        light.position = l.vec3("position", {}, -kMaxCoordinate, kMaxCoordinate);
         if (l.has("attenuation")) {
           ObjectReader a = l.object("attenuation");
-          light.kc = a.number("constant", 1.0, 0, INFINITY);
-          light.kl = a.number("linear", 0.0, 0, INFINITY);
-          light.kq = a.number("quadratic", 0.0, 0, INFINITY);
+          light.kc = a.number("constant", 1.0, 0, kMaxAttenuation);
+          light.kl = a.number("linear", 0.0, 0, kMaxAttenuation);
+          light.kq = a.number("quadratic", 0.0, 0, kMaxAttenuation);
           a.finish();
           if (!(light.kc + light.kl + light.kq > 0)) {
             l.fail(l.key_path("attenuation"), "constant, linear and quadratic are all 0");
@@ -317,15 +335,17 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       obj.material = static_cast<int>(found - material_names.begin());
       if (o.has("transform")) {
         ObjectReader t = o.object("transform");
-        obj.transform.translate = t.vec3("translate", glm::dvec3(0));
-        obj.transform.rotate_deg = t.vec3("rotate_deg", glm::dvec3(0));
+        obj.transform.translate =
+            t.vec3("translate", glm::dvec3(0), -kMaxCoordinate, kMaxCoordinate);
+        obj.transform.rotate_deg = t.vec3("rotate_deg", glm::dvec3(0), -360000, 360000);
         if (t.has("scale") && t.get("scale").is_number()) {
-          const double s = t.number("scale");
+          const double s = t.number("scale", {}, 0, kMaxScaleFactor);
           if (!(s > 0)) t.fail(t.key_path("scale"), "must be > 0");
           obj.transform.scale = glm::dvec3(s);
         } else {
           // Extension: a per-axis scale [sx, sy, sz] (normals use the inverse transpose).
-          obj.transform.scale = t.vec3("scale", glm::dvec3(1), 1e-300, INFINITY);
+          obj.transform.scale =
+              t.vec3("scale", glm::dvec3(1), 1 / kMaxScaleFactor, kMaxScaleFactor);
         }
         t.finish();
       }
