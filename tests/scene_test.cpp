@@ -175,6 +175,11 @@ TEST_F(SceneFile, CliRejectsUnknownPathAndVariantAndMissingScene) {
   EXPECT_EQ(r.exit_code, 2);
   r = test::run_ltrender("render " + scene + " --path glsl --width -5 -o " + out.string());
   EXPECT_EQ(r.exit_code, 2);
+  // Within each side's range but too many pixels in all: refused before any allocation.
+  r = test::run_ltrender("render " + scene + " --path reference --width 16384 --height 16384 -o " +
+                         out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("at most 4096 x 4096 pixels"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -10,10 +10,16 @@
 
 namespace lt {
 
+// At most 4096 x 4096 pixels: the reference's float G-buffer and readbacks take ~100 bytes a
+// pixel, so this keeps a render under 2 GB instead of letting a typo exhaust memory.
+inline constexpr long long kMaxPixels = 4096LL * 4096LL;
+
 class RenderSession {
  public:
   RenderSession(const Scene& scene, int width, int height)
-      : scene_(scene), gl_(width, height), geometry_(scene, width, height) {}
+      : scene_(scene),
+        gl_(checked(scene, width, height), height),
+        geometry_(scene, width, height) {}
 
   // Builds a path for this scene (variant already resolved).
   std::unique_ptr<Path> build(const PathInfo& path, const std::string& variant) {
@@ -25,6 +31,8 @@ class RenderSession {
   gl::SceneGeometry& geometry() { return geometry_; }
 
  private:
+  static int checked(const Scene& scene, int width, int height);
+
   const Scene& scene_;
   gl::Context gl_;
   gl::SceneGeometry geometry_;
