@@ -10,6 +10,7 @@ packages=(
   libglm-dev                                 # vector maths
   libopenmesh-dev                            # mesh I/O and processing
   libopenimageio-dev                         # image I/O
+  libimath-dev                               # half (binary16) for the fp16 path
   libembree-dev                              # ray casting for the thickness baker
   nlohmann-json3-dev libcli11-dev            # scene files, command line
   libgtest-dev libbenchmark-dev              # tests, micro-benchmarks

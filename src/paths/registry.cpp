@@ -5,6 +5,7 @@
 #include "paths/combiners/combiners_path.h"
 #include "paths/flat/flat_path.h"
 #include "paths/glsl/glsl_path.h"
+#include "paths/half/half_path.h"
 #include "paths/path.h"
 #include "paths/reference/reference_path.h"
 
@@ -13,7 +14,7 @@ namespace lt {
 const std::vector<PathInfo>& all_paths() {
   static const std::vector<PathInfo> paths = {
       reference_path_info(), glsl_path_info(),      flat_path_info(),
-      arbfp_path_info(),     combiners_path_info(),
+      arbfp_path_info(),     combiners_path_info(), half_path_info(),
   };
   return paths;
 }

@@ -192,6 +192,9 @@ std::string stats_note(const BenchRow& r) {
   if (st.count("cpu_vertex_seconds")) {
     add("per-vertex CPU " + fmt(st.at("cpu_vertex_seconds") * 1e3) + " ms a frame");
   }
+  if (st.count("nonfinite_pixels") && st.at("nonfinite_pixels") > 0) {
+    add(fmt(st.at("nonfinite_pixels"), 0) + " NaN/Inf pixels (drawn as the path's marker colour)");
+  }
   if (st.count("cube_rebuild_seconds")) {
     add("cube-map build " + fmt(st.at("cube_rebuild_seconds") * 1e3) +
         " ms (once per light/view/material change)");

@@ -1,0 +1,130 @@
+#include "paths/half/half_path.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "paths/half/half_shading.h"
+#include "paths/reference/gbuffer.h"
+
+namespace lt {
+
+namespace {
+
+// What a pixel the unguarded mode made NaN or Inf is written as: magenta, covered. "No NaN or
+// Inf ever reaches an image" (model.md), yet the failure must stay visible, not blend in: no
+// lit translucent surface is pure (1, 0, 1). The pixels are also counted in frame_stats.
+constexpr float kNonFiniteMarker[3] = {1, 0, 1};
+
+fp16::PowMode pow_mode(const std::string& variant) {
+  if (variant == "pow=sg") return fp16::PowMode::Sg;
+  if (variant == "pow=unguarded") return fp16::PowMode::Unguarded;
+  return fp16::PowMode::Exact;
+}
+
+class HalfPath final : public Path {
+ public:
+  HalfPath(const PathContext& ctx, const std::string& variant)
+      : ctx_(ctx), gbuffer_(ctx, "the half path's G-buffer"), mode_(pow_mode(variant)) {
+    // The shader sees the G-buffer's camera-relative space, so its light positions are too.
+    Scene relative = ctx.scene;
+    for (Light& l : relative.lights) l.position = ctx.geometry.to_camera_relative(l.position);
+    scene_ = fp16::prepare_scene(relative, mode_);
+    background_ = relative.background;
+  }
+
+  void frame() override {
+    gbuffer_.rasterise();
+    const auto t0 = std::chrono::steady_clock::now();
+    shade();
+    shading_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  // Float output: the half values widened exactly, so the report measures fp16 alone.
+  Image result() override { return image_; }
+  bool float_output() const override { return true; }
+
+  std::vector<BuiltStage> stages() const override {
+    std::vector<BuiltStage> out = gbuffer_.stages();
+    out.push_back(
+        {"shading: fp16 emulation (Imath half) on " + std::to_string(threads()) + " threads", "cpu",
+         ""});
+    return out;
+  }
+
+  std::map<std::string, double> frame_stats() const override {
+    return {{"shading_seconds", shading_seconds_},
+            {"covered_pixels", static_cast<double>(covered_)},
+            {"threads", static_cast<double>(threads())},
+            {"nonfinite_pixels", static_cast<double>(nonfinite_)}};
+  }
+
+ private:
+  static unsigned threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+  void shade() {
+    const int w = ctx_.width, h = ctx_.height;
+    image_ = Image(w, h);
+    std::vector<size_t> covered(threads(), 0), nonfinite(threads(), 0);
+    auto work = [&](unsigned worker) {
+      // Interleaved rows balance the load, as in the reference.
+      for (int gy = static_cast<int>(worker); gy < h; gy += static_cast<int>(threads())) {
+        for (int x = 0; x < w; ++x) {
+          const size_t g = gbuffer_.index(x, gy);  // G-buffer row gy, bottom-up
+          float* out = image_.at(x, h - 1 - gy);
+          if (!gbuffer_.covered(g)) {
+            out[0] = static_cast<float>(background_.r);
+            out[1] = static_cast<float>(background_.g);
+            out[2] = static_cast<float>(background_.b);
+            out[3] = 0;
+            continue;
+          }
+          ++covered[worker];
+          const glm::vec3 c =
+              fp16::shade_pixel(scene_, scene_.materials[gbuffer_.material(g)], mode_,
+                                gbuffer_.position(g), gbuffer_.normal(g), gbuffer_.thickness(g));
+          const bool finite = std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+          nonfinite[worker] += !finite;
+          for (int ch = 0; ch < 3; ++ch) out[ch] = finite ? c[ch] : kNonFiniteMarker[ch];
+          out[3] = 1;
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads(); ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& t : pool) t.join();
+    covered_ = nonfinite_ = 0;
+    for (unsigned t = 0; t < threads(); ++t) {
+      covered_ += covered[t];
+      nonfinite_ += nonfinite[t];
+    }
+  }
+
+  PathContext ctx_;
+  GBuffer gbuffer_;
+  fp16::PowMode mode_;
+  fp16::SceneH scene_;
+  glm::dvec3 background_{0};
+  Image image_;
+  double shading_seconds_ = 0;
+  size_t covered_ = 0, nonfinite_ = 0;
+};
+
+}  // namespace
+
+PathInfo half_path_info() {
+  return {"half",
+          "the seed's half3 arithmetic emulated on the CPU (IEEE binary16 after every operation)",
+          {{"pow=exact", "exp2(p * log2(t)) in half, the way fp16 POW does it, hard cases guarded"},
+           {"pow=sg", "spherical-Gaussian exp2(t * n' - n') in half, hard cases guarded"},
+           {"pow=unguarded",
+            "exp2(p * log2(t)) with no guards: NaN/Inf pixels counted (nonfinite_pixels) and "
+            "drawn magenta"}},
+          [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
+            return std::make_unique<HalfPath>(ctx, variant);
+          }};
+}
+
+}  // namespace lt

@@ -1,0 +1,202 @@
+// fp16 evaluation of model.md. Conventions (each one the fp16 form of a rule in
+// src/model/translucency.h; the why is at the code):
+//
+// - Rounding: every operation is done in float and rounded once to half. float has 24 bits >=
+//   2 * 11 + 2, so for + - * / sqrt this double rounding equals one correct half rounding.
+//   A real fp16 ALU may fuse a multiply-add or a dot product; rounding each step is the
+//   conservative (worst-case) emulation. exp2/log2 are correctly rounded here; hardware's are
+//   within a few half ulps of that.
+// - Overflow: in the guarded modes a result beyond +-65504 saturates to +-65504 (the largest
+//   finite half) instead of becoming Inf: an HDR sum over 65504 stays "very bright", as in the
+//   reference, and never turns into Inf * 0 = NaN further on. Unguarded rounding is plain IEEE.
+// - Normalising: a vector whose squared length is below the smallest normal half (6.1e-5, i.e.
+//   length < 0.0078) cannot be normalised in fp16: its squared length is 0 or a subnormal with
+//   fewer than 10 bits, so v * rsqrt(dot(v, v)) is Inf or far from unit. Such a vector takes the
+//   model's zero-vector convention. This moves the reference's "no normal" threshold (length
+//   1e-6, itself below half's resolution) up to 0.0078: a normal that short is "no normal".
+//     N -> 0 (diffuse 0, H = L); L of a point light -> N (the light is "at" the point);
+//     normalised H -> 0 (t = 0); perspective V -> -forward (the point is "at" the eye).
+// - Attenuation: the reference floors the denominator at 1e-6, but 1e-6 is a half subnormal and
+//   1/1e-6 overflows half. The fp16 form clamps att at 65504 instead (the denominator is
+//   floored at 1/65504): a light at distance 0 stays the brightest value half can hold.
+// - 0^0 := 1 and t = 0 -> 0 exactly as the reference (log2(0) = -Inf, and 0 * -Inf is NaN).
+// - saturate() and max(x, 0) return 0 for NaN, as D3D10+ and GLSL hardware do; only the
+//   unguarded mode can produce a NaN for them to see.
+#include "paths/half/half_shading.h"
+
+#include <cmath>
+
+#include "model/translucency.h"
+
+namespace lt::fp16 {
+
+namespace {
+
+// The arithmetic of one mode: IEEE half (unguarded) or saturating half (guarded).
+class Fp16 {
+ public:
+  explicit Fp16(bool guarded) : guarded_(guarded) {}
+  bool guarded() const { return guarded_; }
+
+  half r(float x) const {
+    if (guarded_ && x > kHalfMax) return half(kHalfMax);
+    if (guarded_ && x < -kHalfMax) return half(-kHalfMax);
+    return half(x);
+  }
+  half add(half a, half b) const { return r(float(a) + float(b)); }
+  half sub(half a, half b) const { return r(float(a) - float(b)); }
+  half mul(half a, half b) const { return r(float(a) * float(b)); }
+  half div(half a, half b) const { return r(float(a) / float(b)); }
+  half sqrt(half a) const { return r(std::sqrt(float(a))); }
+  half rsqrt(half a) const { return r(1.0f / std::sqrt(float(a))); }
+  half exp2(half a) const { return r(std::exp2(float(a))); }
+  half log2(half a) const { return r(std::log2(float(a))); }
+  // NaN compares false, so NaN -> 0 (D3D10+ saturate/max rule).
+  static half max0(half a) { return float(a) > 0 ? a : half(0.0f); }
+  static half saturate(half a) { return float(a) > 1 ? half(1.0f) : max0(a); }
+
+  Vec3h add(const Vec3h& a, const Vec3h& b) const {
+    return {add(a.x, b.x), add(a.y, b.y), add(a.z, b.z)};
+  }
+  Vec3h sub(const Vec3h& a, const Vec3h& b) const {
+    return {sub(a.x, b.x), sub(a.y, b.y), sub(a.z, b.z)};
+  }
+  Vec3h mul(const Vec3h& a, const Vec3h& b) const {
+    return {mul(a.x, b.x), mul(a.y, b.y), mul(a.z, b.z)};
+  }
+  Vec3h mul(const Vec3h& a, half s) const { return {mul(a.x, s), mul(a.y, s), mul(a.z, s)}; }
+  // DP3 as three rounded products and two rounded sums.
+  half dot(const Vec3h& a, const Vec3h& b) const {
+    return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
+  }
+  static Vec3h neg(const Vec3h& a) { return {-a.x, -a.y, -a.z}; }
+
+  // v / |v| as v * rsqrt(dot(v, v)); `fallback` when the squared length is not a normal half
+  // (guarded) -- see the file comment. Unguarded: 0 * rsqrt(0) = 0 * Inf = NaN.
+  Vec3h normalize(const Vec3h& v, const Vec3h& fallback) const {
+    const half len2 = dot(v, v);
+    if (guarded_ && !(float(len2) >= kHalfMinNormal)) return fallback;
+    return mul(v, rsqrt(len2));
+  }
+
+ private:
+  bool guarded_;
+};
+
+Vec3h to_half(const glm::dvec3& v) {
+  return {half(static_cast<float>(v.x)), half(static_cast<float>(v.y)),
+          half(static_cast<float>(v.z))};
+}
+Vec3h to_half(const float* v) {
+  return {half(v[0]), half(v[1]), half(v[2])};
+}
+half to_half(double v) {
+  return half(static_cast<float>(v));
+}
+
+// t^p per mode (the seed's pow(saturate(...), iLTPower)).
+half lobe(const Fp16& f, const MaterialH& m, PowMode mode, half t) {
+  if (mode == PowMode::Unguarded) return f.exp2(f.mul(m.power, f.log2(t)));  // 0^0 = NaN here
+  if (float(m.power) == 0) return half(1.0f);  // 0^0 := 1: the lobe is flat, t plays no part
+  if (mode == PowMode::Sg) {
+    // exp2(t * n' - n') as MUL then SUB (t <= 1, so the argument is <= 0: exp2 cannot overflow
+    // half's 16; for large n' it underflows to 0 like pow).
+    return f.exp2(f.sub(f.mul(t, m.sg_exponent), m.sg_exponent));
+  }
+  // POW = EX2(p * LG2(t)); LG2(0) = -Inf, so t = 0 takes the model's 0. p * log2(t) <= 0, and
+  // underflows (0.5^1024) round to 0 through half's subnormals.
+  if (!(float(t) > 0)) return half(0.0f);
+  return f.exp2(f.mul(m.power, f.log2(t)));
+}
+
+}  // namespace
+
+SceneH prepare_scene(const Scene& scene, PowMode mode) {
+  const Fp16 f(mode != PowMode::Unguarded);
+  SceneH out;
+  out.ambient_light = to_half(scene.ambient_light);
+  out.orthographic = scene.camera.projection == Camera::Projection::Orthographic;
+  out.view_dir = to_half(-scene.camera.forward());
+  for (const Light& l : scene.lights) {
+    LightH h;
+    h.point = l.type == Light::Type::Point;
+    h.to_light = to_half(-l.direction);
+    h.position = to_half(l.position);
+    h.color = to_half(l.color);
+    h.scale = to_half(l.translucency_scale);
+    h.kc = to_half(l.kc);
+    h.kl = to_half(l.kl);
+    h.kq = to_half(l.kq);
+    out.lights.push_back(h);
+  }
+  for (const Material& m : scene.materials) {
+    MaterialH h;
+    h.albedo = to_half(m.albedo);
+    if (m.translucency) {
+      const Translucency& tr = *m.translucency;
+      h.translucent = true;
+      h.vertex_thickness = tr.thickness_source == ThicknessSource::Vertex;
+      h.normalize_h = tr.normalize_distorted_light;
+      h.power = to_half(tr.power);
+      h.distortion = to_half(tr.distortion);
+      h.ambient = to_half(tr.ambient);
+      // The blog's n = n * 1.4427f + 1.4427f, in half like the rest of the shader.
+      const half k = to_half(1.4427);
+      h.sg_exponent = f.add(f.mul(h.power, k), k);
+      h.thickness = h.vertex_thickness ? to_half(tr.tint) : to_half(tr.thickness * tr.tint);
+    }
+    out.materials.push_back(h);
+  }
+  return out;
+}
+
+glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, const float* position,
+                      const float* normal, const float* vertex_thickness) {
+  const Fp16 f(mode != PowMode::Unguarded);
+  const Vec3h zero{half(0.0f), half(0.0f), half(0.0f)};
+  // A half-precision pipeline sees its G-buffer in half: round the inputs first. Positions are
+  // camera-relative, so a scene at 1e6 still has small numbers here.
+  const Vec3h P = to_half(position);
+  const Vec3h N = f.normalize(to_half(normal), zero);
+  const Vec3h V = scene.orthographic ? scene.view_dir : f.normalize(Fp16::neg(P), scene.view_dir);
+  Vec3h T = zero;
+  if (m.translucent)
+    T = m.vertex_thickness ? f.mul(to_half(vertex_thickness), m.thickness) : m.thickness;
+
+  Vec3h sum = zero;
+  for (const LightH& l : scene.lights) {
+    Vec3h L = l.to_light;
+    half att(1.0f);
+    if (l.point) {
+      const Vec3h d = f.sub(l.position, P);
+      const half dist = f.sqrt(f.dot(d, d));
+      L = f.normalize(d, N);  // guarded: a light "at" the point lights it head-on (L = N)
+      // kc + kl*dist + kq*dist^2, step by step.
+      const half den = f.add(f.add(l.kc, f.mul(l.kl, dist)), f.mul(f.mul(l.kq, dist), dist));
+      // Guarded: att <= 65504 (denominator floored at 1/65504, see the file comment).
+      // Unguarded: 1/0 = Inf, and anything below 1/65504 overflows to Inf too.
+      att =
+          f.guarded() && !(float(den) > 1.0f / kHalfMax) ? half(kHalfMax) : f.div(half(1.0f), den);
+    }
+    const half diffuse = f.mul(att, Fp16::max0(f.dot(N, L)));
+    Vec3h term{diffuse, diffuse, diffuse};
+    if (m.translucent) {
+      // half3 vLTLight = vLight + vNormal * fLTDistortion;
+      Vec3h H = f.add(L, f.mul(N, m.distortion));
+      if (m.normalize_h) H = f.normalize(H, zero);
+      // half fLTDot = pow(saturate(dot(vEye, -vLTLight)), iLTPower) * fLTScale;
+      const half t = Fp16::saturate(f.dot(V, Fp16::neg(H)));
+      const half lt_dot = f.mul(lobe(f, m, mode, t), l.scale);
+      // half3 fLT = fLightAttenuation * (fLTDot + fLTAmbient) * fLTThickness;
+      const Vec3h lt = f.mul(T, f.mul(att, f.add(lt_dot, m.ambient)));
+      term = f.add(term, lt);
+    }
+    // outColor.rgb += cDiffuseAlbedo * cLightDiffuse * fLT; (albedo applied once, below, in the
+    // model's order: c = albedo * (ambient_light + sum of color * (diffuse + trans)).)
+    sum = f.add(sum, f.mul(l.color, term));
+  }
+  const Vec3h c = f.mul(m.albedo, f.add(scene.ambient_light, sum));
+  return {float(c.x), float(c.y), float(c.z)};
+}
+
+}  // namespace lt::fp16

@@ -1,0 +1,72 @@
+// The equation of model.md evaluated the way an fp16 pixel shader evaluates it (the seed's
+// `half3` code, PS3 RSX, mobile GPUs): every input rounded to IEEE binary16 and every intermediate
+// rounded again, using Imath's half. One function shades one G-buffer pixel.
+#pragma once
+
+#include <Imath/half.h>
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace lt::fp16 {
+
+using Imath::half;
+
+// How the lobe t^p is evaluated, and whether the hard-case guards are on.
+enum class PowMode {
+  Exact,      // exp2(p * log2(t)) in half (what fp16 POW does), with the guards
+  Sg,         // the spherical-Gaussian exp2(t * n' - n'), n' = 1.4427 p + 1.4427, with the guards
+  Unguarded,  // exp2(p * log2(t)) with no guard at all: IEEE half, NaN and Inf included
+};
+
+// Largest finite half (65504) and smallest normal half (2^-14 = 6.1e-5).
+inline constexpr float kHalfMax = 65504.0f;
+inline constexpr float kHalfMinNormal = 6.103515625e-05f;
+
+struct Vec3h {
+  half x, y, z;
+};
+
+// A light as its fp16 shader would receive it: every constant already rounded to half.
+struct LightH {
+  bool point = false;
+  Vec3h to_light;  // directional: -direction (already unit in the scene)
+  Vec3h position;  // point: camera-relative
+  Vec3h color;
+  half scale;
+  half kc, kl, kq;
+};
+
+// A material's constants in half. `thickness` is constant * tint, or the tint alone when the
+// thickness comes from the vertex colour (it is multiplied in per pixel, like the glsl path).
+struct MaterialH {
+  Vec3h albedo;
+  bool translucent = false;
+  bool vertex_thickness = false;
+  bool normalize_h = false;
+  half power, distortion, ambient;
+  half sg_exponent;  // n' = 1.4427 p + 1.4427, itself computed in half
+  Vec3h thickness;
+};
+
+// The whole scene's fp16 constants, built once per path from the camera-relative scene.
+struct SceneH {
+  Vec3h ambient_light;
+  bool orthographic = false;
+  Vec3h view_dir;  // -forward: orthographic V, and the fallback for a V that cannot be normalised
+  std::vector<LightH> lights;
+  std::vector<MaterialH> materials;
+};
+
+// `scene` must already hold camera-relative light positions (the G-buffer's space).
+SceneH prepare_scene(const Scene& scene, PowMode mode);
+
+// One covered pixel from its float G-buffer values (position, normal and vertex thickness: xyz).
+// Returns the half result widened to float. With PowMode::Unguarded it may be NaN or Inf; the
+// guarded modes are finite by construction.
+glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& material, PowMode mode,
+                      const float* position, const float* normal, const float* vertex_thickness);
+
+}  // namespace lt::fp16

@@ -1,0 +1,39 @@
+#include "paths/reference/gbuffer.h"
+
+namespace lt {
+
+GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
+    : ctx_(ctx),
+      program_(gl::read_shader_source("legacy_shaders/glsl/gbuffer.vert"),
+               gl::read_shader_source("legacy_shaders/glsl/gbuffer.frag"), "gbuffer"),
+      target_(ctx.width, ctx.height, 3) {
+  ctx.gl.require_extension("GL_ARB_texture_float", user);
+  ctx.gl.require_extension("GL_ARB_draw_buffers", user);
+}
+
+void GBuffer::rasterise() {
+  target_.bind();
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glUseProgram(program_.id());
+  ctx_.geometry.load_matrices();
+  for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
+    glUniform1f(program_.uniform("u_material"), static_cast<float>(m.material));
+    ctx_.geometry.draw(m);
+  }
+  glUseProgram(0);
+  target_.unbind();
+  target_.read(0, position_);
+  target_.read(1, normal_);
+  target_.read(2, thickness_);
+  gl::check_error("reference G-buffer");
+}
+
+std::vector<BuiltStage> GBuffer::stages() const {
+  return {{"G-buffer: 3 x RGBA32F (position, normal + material, thickness)", "glsl-vertex",
+           program_.vertex_source()},
+          {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
+}
+
+}  // namespace lt
