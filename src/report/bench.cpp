@@ -195,7 +195,7 @@ std::string stats_note(const BenchRow& r) {
   if (st.count("nonfinite_pixels") && st.at("nonfinite_pixels") > 0) {
     add(fmt(st.at("nonfinite_pixels"), 0) + " NaN/Inf pixels (drawn as the path's marker colour)");
   }
-  if (st.count("cube_rebuild_seconds")) {
+  if (st.count("cube_rebuild_seconds") && st.at("cube_rebuild_seconds") > 0) {
     add("cube-map build " + fmt(st.at("cube_rebuild_seconds") * 1e3) +
         " ms (once per light/view/material change)");
   }
