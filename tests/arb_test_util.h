@@ -45,25 +45,6 @@ inline Scene load_test_scene(const std::string& relative) {
   }
 }
 
-inline std::vector<std::string> json_files(const std::string& sub) {
-  std::vector<std::string> out;
-  for (const auto& e : fs::directory_iterator(source_dir() / sub)) {
-    if (e.path().extension() == ".json") {
-      out.push_back((fs::path(sub) / e.path().filename()).string());
-    }
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-inline std::string test_param_name(const std::string& s) {
-  std::string r = s;
-  for (char& c : r) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return r;
-}
-
 }  // namespace lt::test
 
 namespace lt::test {

@@ -139,22 +139,12 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
 INSTANTIATE_TEST_SUITE_P(Analytic, HalfQuad, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// Scene lists and parameter names come from test_util.h.
 std::vector<std::string> scene_files(const std::string& sub) {
-  std::vector<std::string> out;
-  for (const auto& e : fs::directory_iterator(test::source_dir() / sub)) {
-    if (e.path().extension() == ".json")
-      out.push_back((fs::path(sub) / e.path().filename()).string());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return test::json_files(sub);
 }
-
 std::string test_name(const std::string& s) {
-  std::string r = fs::path(s).stem().string();
-  for (char& c : r) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return r;
+  return test::test_param_name(fs::path(s).stem().string());
 }
 
 // Demo scenes against the reference (float output, compared unquantised).

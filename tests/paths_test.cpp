@@ -11,22 +11,12 @@
 namespace lt {
 namespace {
 
+// Scene lists and parameter names come from test_util.h.
 std::vector<std::string> scene_files(const std::string& sub) {
-  std::vector<std::string> out;
-  for (const auto& e : fs::directory_iterator(test::source_dir() / sub)) {
-    if (e.path().extension() == ".json")
-      out.push_back((fs::path(sub) / e.path().filename()).string());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return test::json_files(sub);
 }
-
 std::string test_name(const std::string& s) {
-  std::string r = fs::path(s).stem().string();
-  for (char& c : r) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return r;
+  return test::test_param_name(fs::path(s).stem().string());
 }
 
 size_t non_finite(const Image& img) {

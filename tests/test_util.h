@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace lt {
 namespace fs = std::filesystem;  // the same alias as core/fs.h
@@ -76,6 +78,28 @@ inline std::string quad_obj() {
 
 inline const fs::path source_dir() {
   return fs::path(LT_SOURCE_DIR);
+}
+
+// The .json files of a folder of the source tree (e.g. "scenes/hard"), as "folder/name.json",
+// sorted, so parameterised tests pick up every scene without a list to keep in step.
+inline std::vector<std::string> json_files(const std::string& sub) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(source_dir() / sub)) {
+    if (e.path().extension() == ".json") {
+      out.push_back((fs::path(sub) / e.path().filename()).string());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// A gtest parameter name: anything but letters and digits becomes _.
+inline std::string test_param_name(const std::string& s) {
+  std::string r = s;
+  for (char& c : r) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return r;
 }
 
 }  // namespace lt::test

@@ -61,45 +61,20 @@ class HalfPath final : public Path {
   }
 
  private:
-  static unsigned threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+  static unsigned threads() { return GBuffer::threads(); }
 
   void shade() {
-    const int w = ctx_.width, h = ctx_.height;
-    image_ = Image(w, h);
-    std::vector<size_t> covered(threads(), 0), nonfinite(threads(), 0);
-    auto work = [&](unsigned worker) {
-      // Interleaved rows balance the load, as in the reference.
-      for (int gy = static_cast<int>(worker); gy < h; gy += static_cast<int>(threads())) {
-        for (int x = 0; x < w; ++x) {
-          const size_t g = gbuffer_.index(x, gy);  // G-buffer row gy, bottom-up
-          float* out = image_.at(x, h - 1 - gy);
-          if (!gbuffer_.covered(g)) {
-            out[0] = static_cast<float>(background_.r);
-            out[1] = static_cast<float>(background_.g);
-            out[2] = static_cast<float>(background_.b);
-            out[3] = 0;
-            continue;
-          }
-          ++covered[worker];
-          const glm::vec3 c =
-              fp16::shade_pixel(scene_, scene_.materials[gbuffer_.material(g)], mode_,
-                                gbuffer_.position(g), gbuffer_.normal(g), gbuffer_.thickness(g));
-          const bool finite = std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-          nonfinite[worker] += !finite;
-          for (int ch = 0; ch < 3; ++ch) out[ch] = finite ? c[ch] : kNonFiniteMarker[ch];
-          out[3] = 1;
-        }
-      }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads(); ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& t : pool) t.join();
-    covered_ = nonfinite_ = 0;
-    for (unsigned t = 0; t < threads(); ++t) {
-      covered_ += covered[t];
-      nonfinite_ += nonfinite[t];
-    }
+    std::vector<size_t> nonfinite(threads(), 0);
+    covered_ = gbuffer_.shade_covered(image_, background_, [&](size_t g, float* out, unsigned w) {
+      const glm::vec3 c =
+          fp16::shade_pixel(scene_, scene_.materials[gbuffer_.material(g)], mode_,
+                            gbuffer_.position(g), gbuffer_.normal(g), gbuffer_.thickness(g));
+      const bool finite = std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+      nonfinite[w] += !finite;
+      for (int ch = 0; ch < 3; ++ch) out[ch] = finite ? c[ch] : kNonFiniteMarker[ch];
+    });
+    nonfinite_ = 0;
+    for (size_t n : nonfinite) nonfinite_ += n;
   }
 
   PathContext ctx_;

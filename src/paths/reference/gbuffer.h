@@ -2,7 +2,9 @@
 // rasterised once through OSMesa into three RGBA32F targets, read back as plain arrays.
 #pragma once
 
+#include <algorithm>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "gl/program.h"
@@ -30,6 +32,44 @@ class GBuffer {
   const float* position(size_t g) const { return &position_[g]; }
   const float* normal(size_t g) const { return &normal_[g]; }
   const float* thickness(size_t g) const { return &thickness_[g]; }
+
+  // Threads the CPU paths shade on: every core.
+  static unsigned threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+  // Fills `image` (top row first): background with alpha 0 where nothing is covered, and
+  // `shade(g, rgb, worker)` with alpha 1 where something is; `worker` < threads() lets the caller
+  // keep per-thread counters without locks. Returns the number of covered pixels.
+  template <class ShadePixel>
+  size_t shade_covered(Image& image, const glm::dvec3& background, ShadePixel&& shade) const {
+    const int w = ctx_.width, h = ctx_.height;
+    image = Image(w, h);
+    const unsigned n = threads();
+    std::vector<size_t> covered(n, 0);
+    auto work = [&](unsigned worker) {
+      // Interleaved rows balance the load: geometry is rarely spread evenly down the image.
+      for (int gy = static_cast<int>(worker); gy < h; gy += static_cast<int>(n)) {
+        for (int x = 0; x < w; ++x) {
+          const size_t g = index(x, gy);         // G-buffer row gy, bottom-up
+          float* out = image.at(x, h - 1 - gy);  // image rows top-down
+          if (!this->covered(g)) {
+            for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
+            out[3] = 0;
+            continue;
+          }
+          ++covered[worker];
+          shade(g, out, worker);
+          out[3] = 1;
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < n; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& t : pool) t.join();
+    size_t total = 0;
+    for (size_t c : covered) total += c;
+    return total;
+  }
 
   const gl::GlslProgram& program() const { return program_; }
   // What `stages()` lists for the G-buffer pass (both CPU paths use the same description).

@@ -44,50 +44,22 @@ class ReferencePath final : public Path {
   }
 
  private:
-  static unsigned threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+  static unsigned threads() { return GBuffer::threads(); }
 
   void shade() {
-    const int w = ctx_.width, h = ctx_.height;
-    image_ = Image(w, h);
     const Scene& s = relative_scene_;
-    std::vector<size_t> covered(threads(), 0);
-    auto work = [&](unsigned worker) {
-      // Interleaved rows balance the load: geometry is rarely spread evenly down the image.
-      for (int gy = static_cast<int>(worker); gy < h; gy += static_cast<int>(threads())) {
-        for (int x = 0; x < w; ++x) {
-          const size_t g = gbuffer_.index(x, gy);  // G-buffer row gy, bottom-up
-          float* out = image_.at(x, h - 1 - gy);
-          if (!gbuffer_.covered(g)) {
-            out[0] = static_cast<float>(s.background.r);
-            out[1] = static_cast<float>(s.background.g);
-            out[2] = static_cast<float>(s.background.b);
-            out[3] = 0;
-            continue;
-          }
-          ++covered[worker];
-          const float* pos = gbuffer_.position(g);
-          const float* nrm = gbuffer_.normal(g);
-          const float* thk = gbuffer_.thickness(g);
-          const glm::dvec3 P(pos[0], pos[1], pos[2]);
-          model::SurfacePoint sp;
-          sp.P = P;
-          sp.N = glm::dvec3(nrm[0], nrm[1], nrm[2]);
-          sp.V = model::view_vector(s.camera, P);
-          sp.vertex_thickness = glm::dvec3(thk[0], thk[1], thk[2]);
-          const glm::dvec3 c = model::shade(s, s.materials[gbuffer_.material(g)], sp);
-          out[0] = static_cast<float>(c.r);
-          out[1] = static_cast<float>(c.g);
-          out[2] = static_cast<float>(c.b);
-          out[3] = 1;
-        }
-      }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads(); ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& t : pool) t.join();
-    covered_ = 0;
-    for (size_t c : covered) covered_ += c;
+    covered_ = gbuffer_.shade_covered(image_, s.background, [&](size_t g, float* out, unsigned) {
+      const float* pos = gbuffer_.position(g);
+      const float* nrm = gbuffer_.normal(g);
+      const float* thk = gbuffer_.thickness(g);
+      model::SurfacePoint sp;
+      sp.P = glm::dvec3(pos[0], pos[1], pos[2]);
+      sp.N = glm::dvec3(nrm[0], nrm[1], nrm[2]);
+      sp.V = model::view_vector(s.camera, sp.P);
+      sp.vertex_thickness = glm::dvec3(thk[0], thk[1], thk[2]);
+      const glm::dvec3 c = model::shade(s, s.materials[gbuffer_.material(g)], sp);
+      for (int ch = 0; ch < 3; ++ch) out[ch] = static_cast<float>(c[ch]);
+    });
   }
 
   PathContext ctx_;
