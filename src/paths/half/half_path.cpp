@@ -28,8 +28,7 @@ class HalfPath final : public Path {
   HalfPath(const PathContext& ctx, const std::string& variant)
       : ctx_(ctx), gbuffer_(ctx, "the half path's G-buffer"), mode_(pow_mode(variant)) {
     // The shader sees the G-buffer's camera-relative space, so its light positions are too.
-    Scene relative = ctx.scene;
-    for (Light& l : relative.lights) l.position = ctx.geometry.to_camera_relative(l.position);
+    const Scene relative = camera_relative_lights(ctx);
     scene_ = fp16::prepare_scene(relative, mode_);
     background_ = relative.background;
   }

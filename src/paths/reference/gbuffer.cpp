@@ -2,6 +2,20 @@
 
 namespace lt {
 
+Scene camera_relative_lights(const PathContext& ctx) {
+  Scene s;
+  s.file = ctx.scene.file;
+  s.width = ctx.scene.width;
+  s.height = ctx.scene.height;
+  s.background = ctx.scene.background;
+  s.camera = ctx.scene.camera;
+  s.ambient_light = ctx.scene.ambient_light;
+  s.materials = ctx.scene.materials;
+  s.lights = ctx.scene.lights;
+  for (Light& l : s.lights) l.position = ctx.geometry.to_camera_relative(l.position);
+  return s;
+}
+
 GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
     : ctx_(ctx),
       program_(gl::read_shader_source("legacy_shaders/glsl/gbuffer.vert"),

@@ -12,6 +12,11 @@
 
 namespace lt {
 
+// The scene as the G-buffer's shading sees it: lights moved into camera-relative space (the
+// space the G-buffer positions are in), and no meshes (shading needs lights and materials only;
+// copying every mesh per path would cost a full scene's memory for nothing).
+Scene camera_relative_lights(const PathContext& ctx);
+
 class GBuffer {
  public:
   // Builds the G-buffer program and targets; `user` names the path in extension errors.

@@ -13,12 +13,9 @@ namespace {
 class ReferencePath final : public Path {
  public:
   explicit ReferencePath(const PathContext& ctx)
-      : ctx_(ctx), gbuffer_(ctx, "the reference G-buffer"), relative_scene_(ctx.scene) {
-    // The CPU shades in the same camera-relative space the G-buffer holds.
-    for (Light& l : relative_scene_.lights)
-      l.position = ctx.geometry.to_camera_relative(l.position);
-    relative_scene_.objects.clear();  // shading needs lights and materials, not meshes
-  }
+      : ctx_(ctx),
+        gbuffer_(ctx, "the reference G-buffer"),
+        relative_scene_(camera_relative_lights(ctx)) {}
 
   void frame() override {
     gbuffer_.rasterise();
