@@ -72,3 +72,22 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
 
 }  // namespace
 }  // namespace lt
+
+namespace lt {
+namespace {
+
+// A bad scene anywhere in the list is reported (exit 2, one line) before anything is written.
+TEST(BenchCli, BadSceneWritesNothing) {
+  test::TempDir dir;
+  test::write_file(dir / "bad.json", "{\"image\": {\"width\": 0}}");
+  const auto out = dir / "out";
+  const auto r = test::run_ltrender(
+      "bench " + (test::source_dir() / "scenes" / "backlit_sphere.json").string() + " " +
+      (dir / "bad.json").string() + " -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.json:image.width"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace lt

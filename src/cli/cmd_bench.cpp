@@ -37,9 +37,6 @@ Action add_bench(CLI::App& app) {
       }
       std::sort(o->scenes.begin(), o->scenes.end());
     }
-    std::error_code ec;
-    fs::create_directories(o->out_dir, ec);
-    if (ec) throw InputError(o->out_dir.string(), "", "cannot create output directory");
     const auto rows = run_bench(*o);
     write_bench_reports(*o, rows);
     std::cout << "bench: " << rows.size() << " rows -> " << (o->out_dir / "report.md").string()

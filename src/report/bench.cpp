@@ -90,10 +90,17 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
   const PathInfo& flat = find_path("flat");
   const PathInfo& reference = find_path("reference");
 
-  fs::create_directories(o.out_dir / "images");
+  // Every scene is read before anything is written: a bad one is reported with nothing created.
+  std::vector<Scene> scenes;
+  for (const fs::path& scene_path : o.scenes) scenes.push_back(load_scene(scene_path));
+  std::error_code ec;
+  fs::create_directories(o.out_dir / "images", ec);
+  if (ec)
+    throw InputError(o.out_dir.string(), "", "cannot create output directory: " + ec.message());
   std::vector<BenchRow> rows;
-  for (const fs::path& scene_path : o.scenes) {
-    const Scene scene = load_scene(scene_path);
+  for (size_t si = 0; si < scenes.size(); ++si) {
+    const fs::path& scene_path = o.scenes[si];
+    const Scene& scene = scenes[si];
     const std::string sname = scene_name(scene_path);
     if (!o.quiet) std::fprintf(stderr, "bench: %s\n", sname.c_str());
 
