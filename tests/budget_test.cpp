@@ -276,7 +276,7 @@ TEST(BudgetCli, CombinersStagesAgainstProfiles) {
   const auto blob = test::test_scene_path("scenes/baked_blob.json").string();
   const test::RunResult tev = test::run_ltrender("budget " + blob + " --path combiners");
   EXPECT_EQ(tev.exit_code, 0) << tev.err;
-  EXPECT_NE(tev.out.find("wii-tev"), std::string::npos) << tev.out;
+  EXPECT_NE(tev.out.find("gl13-2units"), std::string::npos) << tev.out;
   const test::RunResult gf2 = test::run_ltrender(
       "budget " + blob + " --path combiners --variant lobe=cube --profile gl13-2units");
   EXPECT_EQ(gf2.exit_code, 1) << gf2.err;

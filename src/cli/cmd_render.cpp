@@ -10,7 +10,7 @@ namespace lt::cli {
 
 namespace {
 struct RenderArgs {
-  std::string scene, path, variant, output;
+  std::string scene, path, variant, output, program;
   int width = 0, height = 0;
 };
 
@@ -36,17 +36,29 @@ Action add_render(CLI::App& app) {
       ->check(CLI::Range(1, 16384));
   sub->add_option("-o,--output", a->output, "OUT.png (8-bit) or OUT.exr (float, A = coverage)")
       ->required();
+  sub->add_option("--program", a->program,
+                  "gx: a program file of libogc calls that replaces the generated programs "
+                  "(e.g. one written by `ltrender export gx`)");
   sub->footer(path_help());
   return [a]() -> int {
     // Validate everything cheap before the scene's meshes are read.
     const PathInfo& info = find_path(a->path);
     const std::string variant = resolve_variant(info, a->variant);
     check_output_extension(a->output);
+    if (!a->program.empty() && !info.takes_program_file)
+      throw InputError("--program", a->program,
+                       "path " + info.name + " takes no program file (the gx path does)");
     const Scene scene = load_scene(a->scene);
     std::vector<fs::path> inputs = {a->scene};
+    if (!a->program.empty()) inputs.push_back(a->program);
     for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);
     ensure_not_an_input(a->output, inputs);
-    const Image img = render_scene(scene, info.name, variant, a->width, a->height);
+    if (info.refusal) {
+      const std::string why = info.refusal(scene, variant);
+      if (!why.empty()) throw InputError("--variant", variant, info.name + ": " + why);
+    }
+    const Image img =
+        render_scene(scene, info.name, variant, a->width, a->height, PathOptions{a->program});
     write_image(a->output, img);
     return 0;
   };

@@ -17,5 +17,6 @@ Action add_budget(CLI::App& app);
 Action add_bench(CLI::App& app);
 Action add_info(CLI::App& app);
 Action add_meshgen(CLI::App& app);
+Action add_export(CLI::App& app);
 
 }  // namespace lt::cli

@@ -20,14 +20,19 @@ LightSample sample_light(const Light& light, const glm::dvec3& P, const glm::dve
   return {L, 1.0 / std::max(den, kMinAttenuationDenominator)};
 }
 
-double translucency_dot(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
-                        const Translucency& tr) {
+double translucency_dot_unsaturated(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
+                                    const Translucency& tr) {
   glm::dvec3 H = L + N * tr.distortion;
   if (tr.normalize_distorted_light) {
     const double len = glm::length(H);
     H = len > 0 ? H / len : glm::dvec3(0);
   }
-  return std::clamp(glm::dot(V, -H), 0.0, 1.0);
+  return glm::dot(V, -H);
+}
+
+double translucency_dot(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
+                        const Translucency& tr) {
+  return std::clamp(translucency_dot_unsaturated(V, L, N, tr), 0.0, 1.0);
 }
 
 glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness) {

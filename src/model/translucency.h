@@ -35,6 +35,11 @@ LightSample sample_light(const Light& light, const glm::dvec3& P, const glm::dve
 // (normalize(0) := 0, so a cancelled H gives t = 0 like the unnormalised form).
 double translucency_dot(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
                         const Translucency& tr);
+// dot(V, -H) before the saturate: what per-vertex paths interpolate, so the saturate happens per
+// pixel (in the LUT's clamp) as in the per-pixel model; interpolating the clamped value would
+// move the lobe's edge.
+double translucency_dot_unsaturated(const glm::dvec3& V, const glm::dvec3& L, const glm::dvec3& N,
+                                    const Translucency& tr);
 
 // Inputs at a shaded point. N need not be unit (it is renormalised here), V must be unit.
 struct SurfacePoint {

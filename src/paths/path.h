@@ -15,6 +15,11 @@
 
 namespace lt {
 
+// What the user gave beyond the scene and the variant (validated by the path that takes it).
+struct PathOptions {
+  std::string program_file;  // gx: a program file that replaces the generated programs
+};
+
 // What a path renders with: the scene, a current context at the output size, the uploaded
 // geometry (matrices loaded), and the variant string the user picked (already validated).
 struct PathContext {
@@ -22,6 +27,7 @@ struct PathContext {
   gl::Context& gl;
   gl::SceneGeometry& geometry;
   int width, height;
+  PathOptions options = {};
 };
 
 // One built stage or program, for `ltrender info` and the budget checker.
@@ -57,8 +63,17 @@ struct VariantInfo {
 struct PathInfo {
   std::string name;
   std::string summary;
-  std::vector<VariantInfo> variants;  // the first is the default
+  std::vector<VariantInfo> variants;  // the first is the default; bench runs each of them
   std::function<std::unique_ptr<Path>(const PathContext&, const std::string& variant)> create;
+  // A path whose variants are a grammar (gx: any LUT width) parses them here and returns the
+  // canonical name, throwing InputError naming the valid values; without it only the listed
+  // names are accepted.
+  std::function<std::string(const std::string& variant)> parse_variant = {};
+  // Why `variant` cannot be exact for this scene (empty when it can): `render` refuses it with
+  // this message, bench and the tests skip it and say why.
+  std::function<std::string(const Scene& scene, const std::string& variant)> refusal = {};
+  // Whether the path takes PathOptions::program_file.
+  bool takes_program_file = false;
 };
 
 // Every path, in the order the report lists them.

@@ -5,6 +5,7 @@
 #include "paths/combiners/combiners_path.h"
 #include "paths/flat/flat_path.h"
 #include "paths/glsl/glsl_path.h"
+#include "paths/gx/gx_path.h"
 #include "paths/half/half_path.h"
 #include "paths/path.h"
 #include "paths/reference/reference_path.h"
@@ -14,7 +15,7 @@ namespace lt {
 const std::vector<PathInfo>& all_paths() {
   static const std::vector<PathInfo> paths = {
       reference_path_info(), glsl_path_info(),      flat_path_info(),
-      arbfp_path_info(),     combiners_path_info(), half_path_info(),
+      arbfp_path_info(),     combiners_path_info(), half_path_info(),   gx_path_info(),
   };
   return paths;
 }
@@ -30,6 +31,7 @@ const PathInfo& find_path(const std::string& name) {
 
 std::string resolve_variant(const PathInfo& path, const std::string& requested) {
   if (requested.empty()) return path.variants.front().name;
+  if (path.parse_variant) return path.parse_variant(requested);
   std::string names;
   for (const VariantInfo& v : path.variants) {
     if (v.name == requested) return requested;

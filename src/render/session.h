@@ -22,8 +22,10 @@ class RenderSession {
         geometry_(scene, width, height) {}
 
   // Builds a path for this scene (variant already resolved).
-  std::unique_ptr<Path> build(const PathInfo& path, const std::string& variant) {
-    return path.create(PathContext{scene_, gl_, geometry_, gl_.width(), gl_.height()}, variant);
+  std::unique_ptr<Path> build(const PathInfo& path, const std::string& variant,
+                              const PathOptions& options = {}) {
+    return path.create(PathContext{scene_, gl_, geometry_, gl_.width(), gl_.height(), options},
+                       variant);
   }
 
   const Scene& scene() const { return scene_; }
@@ -41,6 +43,6 @@ class RenderSession {
 // Renders one frame of `path_name` (with `variant`, empty for the default) at the scene's size
 // unless width/height > 0 are given.
 Image render_scene(const Scene& scene, const std::string& path_name, const std::string& variant,
-                   int width = 0, int height = 0);
+                   int width = 0, int height = 0, const PathOptions& options = {});
 
 }  // namespace lt

@@ -115,6 +115,15 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       write_image(o.out_dir / "images" / (sname + "__reference.exr"), ref_image);
       for (const PathInfo* p : paths) {
         for (const VariantInfo& v : p->variants) {
+          // A variant that cannot be exact for this scene (gx t=texgen under perspective) is
+          // no row: render would refuse it too.
+          const std::string why = p->refusal ? p->refusal(scene, v.name) : "";
+          if (!why.empty()) {
+            if (!o.quiet)
+              std::fprintf(stderr, "bench: %s: %s %s skipped: %s\n", sname.c_str(),
+                           p->name.c_str(), v.name.c_str(), why.c_str());
+            continue;
+          }
           BenchRow row;
           row.scene = sname;
           row.path = p->name;
@@ -198,6 +207,12 @@ std::string stats_note(const BenchRow& r) {
   }
   if (st.count("cpu_vertex_seconds")) {
     add("per-vertex CPU " + fmt(st.at("cpu_vertex_seconds") * 1e3) + " ms a frame");
+  }
+  if (st.count("tev_stage_pixels")) {
+    add("TEV " + fmt(st.at("tev_stage_pixels") / 1e6) + " M stage-pixels, XF " +
+        fmt(st.count("xf_light_vertices") ? st.at("xf_light_vertices") / 1e3 : 0, 1) +
+        " k light-vertices, CPU pixel stage " +
+        fmt(st.count("tev_seconds") ? st.at("tev_seconds") * 1e3 : 0) + " ms a frame");
   }
   if (st.count("nonfinite_pixels") && st.at("nonfinite_pixels") > 0) {
     add(fmt(st.at("nonfinite_pixels"), 0) + " NaN/Inf pixels (drawn as the path's marker colour)");

@@ -12,16 +12,11 @@ namespace lt {
 const std::vector<CombinerBudgetProfile>& combiner_budget_profiles() {
   static const std::vector<CombinerBudgetProfile> profiles = {
       // GeForce2 (NV15): 2 texture units, register combiners exposed as 2 env stages.
-      {"gl13-2units", "GeForce2-class: 2 texture units = 2 combiner stages", 2, 2, 2, 8, true,
-       false},
+      {"gl13-2units", "GeForce2-class: 2 texture units = 2 combiner stages", 2, 2, 2, 8},
       // Radeon 7500 (R100): 3 texture units.
-      {"gl13-3units", "Radeon 7500-class: 3 texture units = 3 combiner stages", 3, 3, 3, 8, true,
-       false},
+      {"gl13-3units", "Radeon 7500-class: 3 texture units = 3 combiner stages", 3, 3, 3, 8},
       // What Mesa (llvmpipe) exposes to fixed-function GL: GL_MAX_TEXTURE_UNITS = 8.
-      {"gl-8units", "Mesa llvmpipe fixed function: 8 texture units", 8, 8, 8, 8, true, false},
-      // Wii/GameCube GX: 16 TEV stages, 8 texture maps, 4 konst colours, 8 lights per channel.
-      {"wii-tev", "Wii TEV: 16 stages, 8 texture maps, 4 konst colours, 8 lights", 16, 8, 4, 8,
-       false, true},
+      {"gl-8units", "Mesa llvmpipe fixed function: 8 texture units", 8, 8, 8, 8},
   };
   return profiles;
 }
@@ -34,7 +29,10 @@ CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& prof
   if (it == profiles.end()) {
     std::string names;
     for (const auto& p : profiles) names += (names.empty() ? "" : ", ") + p.name;
-    throw InputError("--profile", profile, "unknown combiner profile (valid: " + names + ")");
+    // The Wii is not GL 1.3 state: its profile belongs to the gx path, which counts a real TEV.
+    const std::string hint = profile == "wii-tev" ? "; wii-tev is the gx path's (--path gx)" : "";
+    throw InputError("--profile", profile,
+                     "unknown combiner profile (valid: " + names + ")" + hint);
   }
   CombinerBudgetReport r;
   r.profile = *it;
@@ -47,13 +45,11 @@ CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& prof
     // A pass is one program: the limits apply to the largest program the material uses.
     for (const auto& [name, program] : plan.programs) {
       m.program += (m.program.empty() ? "" : "+") + name;
+      // GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs
+      // a unit; the colour sum after the combiners is free.
       const int program_stages = static_cast<int>(program.stages.size());
-      m.stages =
-          std::max(m.stages,
-                   program_stages + (program.color_sum && r.profile.color_sum_costs_stage ? 1 : 0));
-      m.texture_units =
-          std::max(m.texture_units,
-                   r.profile.stage_needs_unit ? program_stages : program.textures_sampled());
+      m.stages = std::max(m.stages, program_stages);
+      m.texture_units = std::max(m.texture_units, program_stages);
       m.constant_colors = std::max(m.constant_colors, program.constant_colors());
     }
     m.passes = plan.passes();

@@ -14,18 +14,12 @@ struct CombinerBudgetProfile {
   std::string name;         // as given to --profile
   std::string summary;      // the hardware it stands for
   int stages = 0;           // combiner stages (texture environments / TEV stages)
-  int texture_units = 0;    // GL: texture units; Wii: texture maps
-  int constant_colors = 0;  // GL: one TEXTURE_ENV_COLOR per unit; Wii: 4 konst registers
-  int lights = 0;           // hardware lights per pass (GL_MAX_LIGHTS, GX channel lights)
-  // GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs a
-  // unit; the TEV decouples stages from texture maps.
-  bool stage_needs_unit = true;
-  // GL adds the secondary colour after the combiners (colour sum, free); the TEV reads the
-  // second rasterised colour in a stage of its own.
-  bool color_sum_costs_stage = false;
+  int texture_units = 0;    // texture units
+  int constant_colors = 0;  // one TEXTURE_ENV_COLOR per unit
+  int lights = 0;           // hardware lights per pass (GL_MAX_LIGHTS)
 };
 
-// gl13-2units, gl13-3units, gl-8units, wii-tev.
+// gl13-2units, gl13-3units, gl-8units (the Wii's wii-tev is the gx path's, gx_budget.h).
 const std::vector<CombinerBudgetProfile>& combiner_budget_profiles();
 
 struct CombinerBudgetMaterial {

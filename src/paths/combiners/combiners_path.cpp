@@ -387,13 +387,8 @@ class CombinersPath final : public Path {
         const glm::dvec3 own =
             mat.albedo * light.color * (diffuse + ls.attenuation * tr.ambient * T) +
             (l == 0 ? ambient : glm::dvec3(0));
-        // The unsaturated dot: interpolating the clamped value would move the lobe's edge.
-        glm::dvec3 H = ls.L + N * tr.distortion;
-        if (tr.normalize_distorted_light) {
-          const double len = glm::length(H);
-          H = len > 0 ? H / len : glm::dvec3(0);
-        }
-        vt.texcoord[l][v] = static_cast<float>(lut->coordinate(glm::dot(V, -H)));
+        vt.texcoord[l][v] = static_cast<float>(
+            lut->coordinate(model::translucency_dot_unsaturated(V, ls.L, N, tr)));
         const glm::dvec3 prim = ls.attenuation * T * fold[l];
         for (int c = 0; c < 3; ++c) {
           vt.primary[l][v * 4 + c] = static_cast<float>(prim[c]);

@@ -1,0 +1,61 @@
+#include <fstream>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "paths/gx/c_exporter.h"
+#include "paths/gx/gx_budget.h"
+#include "render/session.h"
+
+namespace lt::cli {
+
+// `ltrender export gx SCENE [--variant V] -o FILE.c` (gx.md §2): the generated GX programs as C,
+// with the error of exactly that program measured against the reference at the scene's size.
+Action add_export(CLI::App& app) {
+  auto target = std::make_shared<std::string>();
+  auto scene_path = std::make_shared<std::string>();
+  auto variant = std::make_shared<std::string>();
+  auto output = std::make_shared<std::string>();
+  auto* sub =
+      app.add_subcommand("export", "Write a path's generated programs as code for the target");
+  sub->add_option("TARGET", *target, "gx (libogc C for the Wii / GameCube)")->required();
+  sub->add_option("SCENE", *scene_path, "Scene file (JSON)")->required();
+  sub->add_option("--variant", *variant, "The gx variant (default t=vertex)");
+  sub->add_option("-o,--output", *output, "FILE.c")->required();
+  return [=]() -> int {
+    if (*target != "gx") throw InputError("export", *target, "unknown export target (valid: gx)");
+    if (fs::path(*output).extension() != ".c")
+      throw InputError(*output, "", "the exported file must end in .c");
+    const PathInfo& info = find_path("gx");
+    const std::string v = resolve_variant(info, *variant);
+    const Scene scene = load_scene(*scene_path);
+    std::vector<fs::path> inputs = {*scene_path};
+    for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);
+    ensure_not_an_input(*output, inputs);
+    const gx::GxVariant gv = gx::parse_gx_variant(v);
+    const gx::ScenePrograms programs = gx::scene_programs_for(scene, gv, "");
+    gx::ExportFigures f;
+    f.scene = *scene_path;
+    f.variant = v;
+    f.width = scene.width;
+    f.height = scene.height;
+    {
+      RenderSession session(scene, scene.width, scene.height);
+      auto ref = session.build(find_path("reference"), "");
+      ref->frame();
+      auto gxp = session.build(info, v);
+      gxp->frame();
+      f.error = compare_images(gxp->result(), ref->result(), TestEncoding::kUnorm8).covered;
+    }
+    f.budget = gx::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
+    const std::string text = gx::export_c(programs, f);
+    write_atomically(*output, [&](const fs::path& tmp) {
+      std::ofstream out(tmp, std::ios::binary);
+      out << text;
+      if (!out) throw InputError(*output, "", "cannot write");
+    });
+    return 0;
+  };
+}
+
+}  // namespace lt::cli

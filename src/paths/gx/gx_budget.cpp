@@ -1,0 +1,244 @@
+#include "paths/gx/gx_budget.h"
+
+#include <bitset>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "paths/gx/gx_path.h"
+#include "paths/gx/program/parser.h"
+
+namespace lt::gx {
+
+namespace {
+
+// A colour operand that reads a TEV register (CPREV/APREV/C0/A0/..: 0..7) names register
+// sel / 2; the alpha operands APREV/A0/A1/A2 (0..3) name register sel.
+void count_registers(const TevStage& s, std::set<int>& regs) {
+  for (u8 sel : {s.color.a, s.color.b, s.color.c, s.color.d}) {
+    if (sel < 8) regs.insert(sel / 2);
+  }
+  for (u8 sel : {s.alpha.a, s.alpha.b, s.alpha.c, s.alpha.d}) {
+    if (sel < 4) regs.insert(sel);
+  }
+  regs.insert(s.color.dest);
+  regs.insert(s.alpha.dest);
+}
+
+// A konst selector 12..31 reads K0..K3 (the low two bits); 0..7 are fixed fractions
+// [HWT gxtest/tev.cpp KonstTest].
+void count_konst(const TevStage& s, std::set<int>& konst) {
+  const bool colour_reads =
+      s.color.a == 14 || s.color.b == 14 || s.color.c == 14 || s.color.d == 14;
+  const bool alpha_reads = s.alpha.a == 6 || s.alpha.b == 6 || s.alpha.c == 6 || s.alpha.d == 6;
+  if (colour_reads && s.konst_color_sel >= 12) konst.insert(s.konst_color_sel & 3);
+  if (alpha_reads && s.konst_alpha_sel >= 12) konst.insert(s.konst_alpha_sel & 3);
+}
+
+std::string over_line(const char* what, int used, int limit) {
+  return std::string(what) + ": " + std::to_string(used) + " > " + std::to_string(limit);
+}
+
+void check(GxBudgetProgram& p, const GxCounts& lim) {
+  const GxCounts& c = p.counts;
+  auto test = [&](const char* what, int used, int limit) {
+    if (limit >= 0 && used > limit) p.over.push_back(over_line(what, used, limit));
+  };
+  test("TEV stages", c.tev_stages, lim.tev_stages);
+  test("texgens", c.texgens, lim.texgens);
+  test("texture maps", c.texture_maps, lim.texture_maps);
+  test("colour channels", c.channels, lim.channels);
+  test("lights per channel", c.lights_per_channel, lim.lights_per_channel);
+  test("konst colours", c.konst_colors, lim.konst_colors);
+  test("TEV registers", c.tev_registers, lim.tev_registers);
+  test("vertex attributes", c.vertex_attributes, lim.vertex_attributes);
+}
+
+GxBudgetReport report_of(const std::vector<std::vector<PassProgram>>& by_material,
+                         const std::vector<std::string>& material_names,
+                         const std::string& profile) {
+  GxBudgetReport r;
+  r.profile = find_gx_profile(profile);
+  for (size_t m = 0; m < by_material.size(); ++m) {
+    r.passes = std::max(r.passes, static_cast<int>(by_material[m].size()));
+    for (const PassProgram& p : by_material[m]) {
+      GxBudgetProgram b;
+      b.name = p.name;
+      b.material = m < material_names.size() ? material_names[m] : p.material;
+      b.pass = p.pass;
+      b.counts = count_program(p.state);
+      check(b, r.profile.limits);
+      r.programs.push_back(std::move(b));
+    }
+  }
+  return r;
+}
+
+nlohmann::json counts_json(const GxCounts& c) {
+  return {{"tev_stages", c.tev_stages},
+          {"texgens", c.texgens},
+          {"texture_maps", c.texture_maps},
+          {"channels", c.channels},
+          {"lights_per_channel", c.lights_per_channel},
+          {"konst_colors", c.konst_colors},
+          {"tev_registers", c.tev_registers},
+          {"vertex_attributes", c.vertex_attributes}};
+}
+
+}  // namespace
+
+GxCounts count_program(const GxState& st) {
+  GxCounts c;
+  c.tev_stages = st.tev.num_stages;
+  c.texgens = st.texgen.num_texgens;
+  c.channels = st.lighting.num_channels;
+  std::set<int> maps, regs, konst;
+  // Counts beyond the hardware's are reported as they are; only the 16 stages that exist and
+  // the 2 channels hold state to look at.
+  for (int i = 0; i < std::min(st.tev.num_stages, kMaxTevStages); ++i) {
+    const TevStage& s = st.tev.stages[static_cast<size_t>(i)];
+    if (s.texmap != kTexMapNull) maps.insert(s.texmap);
+    count_registers(s, regs);
+    count_konst(s, konst);
+  }
+  c.texture_maps = static_cast<int>(maps.size());
+  c.tev_registers = static_cast<int>(regs.size());
+  c.konst_colors = static_cast<int>(konst.size());
+  for (int ch = 0; ch < std::min(st.lighting.num_channels, kMaxChannels); ++ch) {
+    for (int part : {ch, ch + 2}) {
+      const ChannelControl& ctl = st.lighting.control[static_cast<size_t>(part)];
+      if (ctl.lighting)
+        c.lights_per_channel = std::max(c.lights_per_channel,
+                                        static_cast<int>(std::bitset<8>(ctl.light_mask).count()));
+    }
+  }
+  c.vertex_attributes = st.vertex.count();
+  return c;
+}
+
+const std::vector<GxProfile>& gx_profiles() {
+  GxCounts wii;
+  wii.tev_stages = 16;         // [OGC gx.h L569, L3070]
+  wii.texgens = 8;             // [OGC gx.h L279, L2692]
+  wii.texture_maps = 8;        // [OGC gx.h L673]
+  wii.channels = 2;            // COLOR0A0, COLOR1A1 [OGC gx.h L3003-3011]
+  wii.lights_per_channel = 8;  // GX_LIGHT0..7 [OGC gx.h L178-187]
+  wii.konst_colors = 4;        // GX_KCOLOR0..3 [OGC gx.h L692-696]
+  wii.tev_registers = 4;       // PREV, REG0..2 [OGC gx.h L637-641]
+  wii.vertex_attributes = 12;  // GX_VA_POS .. GX_VA_TEX7 that carry data per vertex
+  static const std::vector<GxProfile> profiles = {
+      {"wii-tev",
+       "Wii / GameCube GX: 16 TEV stages, 8 texgens, 8 texture maps, 2 colour "
+       "channels, 8 lights, 4 konst colours, PREV + 3 TEV registers",
+       wii, "devkitPro/libogc gc/ogc/gx.h; ../shared/spec/gx-hardware.md section 4"}};
+  return profiles;
+}
+
+const GxProfile& find_gx_profile(const std::string& name) {
+  std::string names;
+  for (const GxProfile& p : gx_profiles()) {
+    if (p.name == name) return p;
+    names += (names.empty() ? "" : ", ") + p.name;
+  }
+  throw InputError("--profile", name, "unknown gx profile (valid: " + names + ")");
+}
+
+bool GxBudgetReport::fits() const {
+  for (const GxBudgetProgram& p : programs) {
+    if (!p.over.empty()) return false;
+  }
+  return true;
+}
+
+std::string GxBudgetReport::first_overrun() const {
+  for (const GxBudgetProgram& p : programs) {
+    if (!p.over.empty())
+      return (p.material.empty()
+                  ? ""
+                  : "material " + p.material + " pass " + std::to_string(p.pass) + " ") +
+             "(" + p.name + "): " + p.over.front() + " (" + profile.name + ")";
+  }
+  return "";
+}
+
+GxBudgetReport gx_budget_scene(const Scene& scene, const std::string& variant,
+                               const std::string& profile) {
+  const GxVariant v = parse_gx_variant(variant.empty() ? "t=vertex" : variant);
+  const ScenePrograms programs = scene_programs_for(scene, v, "");
+  std::vector<std::string> names;
+  for (const Material& m : scene.materials) names.push_back(m.name);
+  GxBudgetReport r = report_of(programs.by_material, names, profile);
+  r.source = scene.file.string();
+  r.variant = to_string(v);
+  return r;
+}
+
+GxBudgetReport gx_budget_file(const std::string& program_file, const std::string& profile) {
+  const ProgramFile file = load_program(program_file);
+  std::vector<std::vector<PassProgram>> groups;
+  std::map<std::string, size_t> index;
+  for (PassProgram& p : file_programs(file)) {
+    if (!index.count(p.material)) {
+      index[p.material] = groups.size();
+      groups.emplace_back();
+    }
+    groups[index[p.material]].push_back(std::move(p));
+  }
+  GxBudgetReport r = report_of(groups, {}, profile);
+  r.source = program_file;
+  return r;
+}
+
+std::string to_text(const GxBudgetReport& r) {
+  std::ostringstream o;
+  o << "profile " << r.profile.name << " (" << r.profile.summary << ")\n"
+    << "path gx, " << r.source << (r.variant.empty() ? "" : ", variant " + r.variant) << "\n";
+  o << "| program | material | pass | TEV stages | texgens | texture maps | channels | lights/"
+       "channel | konst | TEV registers | vertex attributes |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const GxBudgetProgram& p : r.programs) {
+    const GxCounts& c = p.counts;
+    o << "| " << p.name << " | " << (p.material.empty() ? "-" : p.material) << " | " << p.pass
+      << " | " << c.tev_stages << " | " << c.texgens << " | " << c.texture_maps << " | "
+      << c.channels << " | " << c.lights_per_channel << " | " << c.konst_colors << " | "
+      << c.tev_registers << " | " << c.vertex_attributes << " |\n";
+  }
+  const GxCounts& l = r.profile.limits;
+  o << "| limit (" << r.profile.name << ") | | | " << l.tev_stages << " | " << l.texgens << " | "
+    << l.texture_maps << " | " << l.channels << " | " << l.lights_per_channel << " | "
+    << l.konst_colors << " | " << l.tev_registers << " | " << l.vertex_attributes << " |\n";
+  o << "passes per frame: " << r.passes << " (additive EFB blending: no hardware limit)\n";
+  if (r.fits()) {
+    o << "fits\n";
+  } else {
+    for (const GxBudgetProgram& p : r.programs) {
+      for (const std::string& s : p.over) o << "OVER " << p.name << ": " << s << "\n";
+    }
+  }
+  return o.str();
+}
+
+nlohmann::json to_json(const GxBudgetReport& r) {
+  nlohmann::json j;
+  j["path"] = "gx";
+  j["source"] = r.source;
+  j["variant"] = r.variant;
+  j["profile"] = r.profile.name;
+  j["fits"] = r.fits();
+  nlohmann::json over = nlohmann::json::array(), programs = nlohmann::json::array();
+  for (const GxBudgetProgram& p : r.programs) {
+    for (const std::string& s : p.over) over.push_back(p.name + ": " + s);
+    programs.push_back({{"name", p.name},
+                        {"material", p.material},
+                        {"pass", p.pass},
+                        {"counts", counts_json(p.counts)},
+                        {"over", p.over}});
+  }
+  j["over"] = over;
+  j["passes"] = r.passes;
+  j["limits"] = counts_json(r.profile.limits);
+  j["programs"] = programs;
+  return j;
+}
+
+}  // namespace lt::gx

@@ -1,0 +1,271 @@
+#include "paths/gx/gx_path.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "model/power_lut.h"
+#include "paths/gx/attribute_rasteriser.h"
+#include "paths/gx/generator.h"
+#include "paths/gx/pixel_stage.h"
+#include "paths/gx/program/parser.h"
+#include "paths/gx/program/printer.h"
+#include "paths/gx/program_check.h"
+#include "paths/gx/vertex_stage.h"
+
+namespace lt::gx {
+
+int ScenePrograms::passes() const {
+  size_t n = 0;
+  for (const auto& m : by_material) n = std::max(n, m.size());
+  return static_cast<int>(n);
+}
+
+ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
+                                 const std::string& program_file) {
+  ScenePrograms out;
+  if (program_file.empty()) {
+    GeneratedPrograms g = generate_programs(scene, variant);
+    out.file = std::move(g.file);
+    out.file.file = "generated gx program";
+    out.notes = std::move(g.notes);
+    out.source = "generated";
+  } else {
+    out.file = load_program(program_file);
+    out.source = program_file;
+  }
+  out.by_material = scene_programs(out.file, scene);
+  for (const auto& passes : out.by_material) {
+    for (const PassProgram& p : passes) check_renderable(p, out.file.file, true);
+  }
+  return out;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// GX_TEXMAP0's texture where a program loads none (gx.md §1): the material's power LUT as I8
+// of the variant's width; a material without translucency gets the flat lobe of power 0.
+TextureObject lut_texture(const Material& m, int width) {
+  const double power = m.translucency ? m.translucency->power : 0.0;
+  const model::PowerLut lut = model::PowerLut::build(width, model::LutFormat::U8, {power});
+  std::vector<u8> row(static_cast<size_t>(width));
+  for (int i = 0; i < width; ++i)
+    row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
+  TextureObject t;
+  t.width = width;
+  t.height = 1;
+  t.format = 1;  // GX_TF_I8
+  t.data = to_tiles(1, width, 1, row);
+  return t;
+}
+
+// The printed C of one pass function, for `info --source`.
+std::string pass_source(const ProgramFile& file, const std::string& function) {
+  ProgramFile one;
+  for (const Function& f : file.functions) {
+    if (f.name == function) one.functions.push_back(f);
+  }
+  if (file.functions.empty()) one.top_level = file.top_level;
+  return print_program(one);
+}
+
+class GxPath final : public Path {
+ public:
+  GxPath(const PathContext& ctx, const std::string& variant)
+      : ctx_(ctx),
+        variant_(parse_gx_variant(variant)),
+        programs_(scene_programs_for(ctx.scene, variant_, ctx.options.program_file)),
+        view_(SceneView::of(ctx.scene)) {
+    const Scene& s = ctx.scene;
+    int texgens = 0;
+    for (const auto& passes : programs_.by_material) {
+      for (const PassProgram& p : passes) texgens = std::max(texgens, p.state.texgen.num_texgens);
+    }
+    rasteriser_ = std::make_unique<AttributeRasteriser>(ctx, texgens);
+    for (const Material& m : s.materials) luts_.push_back(lut_texture(m, variant_.lut_size));
+    for (const SceneObject& o : s.objects) streams_.push_back(make_vertex_stream(s, o, view_));
+    // Per pass and material, the state and its textures (resolved once: the scene is static).
+    pixel_programs_.resize(static_cast<size_t>(programs_.passes()));
+    for (size_t pass = 0; pass < pixel_programs_.size(); ++pass) {
+      pixel_programs_[pass].resize(s.materials.size());
+      for (size_t m = 0; m < s.materials.size(); ++m) {
+        const auto& passes = programs_.by_material[m];
+        if (pass >= passes.size()) continue;
+        PixelProgram& pp = pixel_programs_[pass][m];
+        pp.state = &passes[pass].state;
+        for (size_t map = 0; map < kMaxTexMaps; ++map) {
+          const auto& t = pp.state->textures[map];
+          pp.textures[map] = t ? &*t : (map == 0 ? &luts_[m] : nullptr);
+        }
+      }
+    }
+    const glm::dvec3 bg = s.background;
+    background_ = {static_cast<u8>(to_u8(bg.r)), static_cast<u8>(to_u8(bg.g)),
+                   static_cast<u8>(to_u8(bg.b)), 255};
+  }
+
+  void frame() override {
+    const Scene& s = ctx_.scene;
+    efb_.assign(static_cast<size_t>(ctx_.width) * ctx_.height, background_);
+    vertex_seconds_ = pixel_seconds_ = 0;
+    stage_pixels_ = 0;
+    light_vertices_ = 0;
+    std::vector<VertexOutputs> outputs(s.objects.size());
+    std::vector<const VertexOutputs*> drawn(s.objects.size());
+    for (size_t pass = 0; pass < pixel_programs_.size(); ++pass) {
+      auto t0 = Clock::now();
+      for (size_t i = 0; i < s.objects.size(); ++i) {
+        const PixelProgram& pp = pixel_programs_[pass][static_cast<size_t>(s.objects[i].material)];
+        drawn[i] = nullptr;
+        if (!pp.state) continue;
+        // GX_VA_TEX0 carries the t of light `pass` (a plain one-pass program gets light 0's).
+        run_vertex_stage(*pp.state, streams_[i], pass, LightRounding::SumThenTruncate, outputs[i]);
+        drawn[i] = &outputs[i];
+        light_vertices_ += streams_[i].position.size() * lights_in(*pp.state);
+      }
+      vertex_seconds_ += seconds_since(t0);
+      rasteriser_->rasterise(drawn);
+      t0 = Clock::now();
+      stage_pixels_ += shade_pass(*rasteriser_, pixel_programs_[pass], efb_);
+      pixel_seconds_ += seconds_since(t0);
+    }
+    // No material draws anything: still rasterise once, for the coverage of result().
+    if (pixel_programs_.empty()) rasteriser_->rasterise(drawn);
+  }
+
+  // The EFB as the console shows it (RGB8), alpha = coverage, top row first.
+  Image result() override {
+    Image img(ctx_.width, ctx_.height);
+    for (int gy = 0; gy < ctx_.height; ++gy) {
+      for (int x = 0; x < ctx_.width; ++x) {
+        const Color8& c = efb_[static_cast<size_t>(gy) * ctx_.width + x];
+        float* out = img.at(x, ctx_.height - 1 - gy);
+        for (int ch = 0; ch < 3; ++ch) out[ch] = c[ch] / 255.0f;
+        out[3] = rasteriser_->covered(rasteriser_->index(x, gy)) ? 1.0f : 0.0f;
+      }
+    }
+    return img;
+  }
+
+  std::vector<BuiltStage> stages() const override {
+    std::vector<BuiltStage> out;
+    const Scene& s = ctx_.scene;
+    for (size_t m = 0; m < s.materials.size(); ++m) {
+      for (size_t pass = 0; pass < programs_.by_material[m].size(); ++pass) {
+        const PassProgram& p = programs_.by_material[m][pass];
+        std::string name = "material " + s.materials[m].name + ", pass " + std::to_string(pass) +
+                           ": " + p.name + ", " + std::to_string(p.state.tev.num_stages) +
+                           " TEV stages";
+        for (const std::string& note : programs_.notes) {
+          if (note.rfind("material " + s.materials[m].name + ", pass " + std::to_string(pass) + ":",
+                         0) == 0)
+            name += " (" + note.substr(note.find(": ") + 2) + ")";
+        }
+        out.push_back({name, "gx-program", pass_source(programs_.file, p.name)});
+      }
+    }
+    out.push_back(
+        {"XF lighting and texgen per vertex on the CPU (float), streamed each pass", "cpu", ""});
+    out.push_back({rasteriser_->texgens() == 0
+                       ? "rasteriser: OSMesa, 3 x RGBA32F (channel colours, coverage)"
+                       : "rasteriser: OSMesa, " + std::to_string(3 + rasteriser_->texgens()) +
+                             " x RGBA32F (channel colours, coverage, texcoords)",
+                   "glsl-vertex", rasteriser_->program().vertex_source()});
+    out.push_back({"texture unit, TEV and EFB per pixel on the CPU (integer)", "cpu", ""});
+    return out;
+  }
+
+  std::string cost() const override {
+    int stages = 0, maps = 0;
+    for (const auto& passes : programs_.by_material) {
+      for (const PassProgram& p : passes) {
+        stages = std::max(stages, p.state.tev.num_stages);
+        int used = 0;
+        for (int st = 0; st < p.state.tev.num_stages; ++st)
+          used += p.state.tev.stages[static_cast<size_t>(st)].texmap != kTexMapNull;
+        maps = std::max(maps, used);
+      }
+    }
+    const int passes = programs_.passes();
+    return std::to_string(stages) + " TEV stages a pass, " + std::to_string(maps) +
+           (maps == 1 ? " texture, " : " textures, ") + std::to_string(passes) +
+           (passes == 1 ? " pass" : " passes");
+  }
+
+  std::map<std::string, double> frame_stats() const override {
+    return {{"cpu_vertex_seconds", vertex_seconds_},
+            {"tev_seconds", pixel_seconds_},
+            {"tev_stage_pixels", static_cast<double>(stage_pixels_)},
+            {"xf_light_vertices", static_cast<double>(light_vertices_)},
+            {"passes", static_cast<double>(pixel_programs_.size())}};
+  }
+
+ private:
+  static size_t lights_in(const GxState& st) {
+    size_t n = 0;
+    for (int c = 0; c < st.lighting.num_channels; ++c) {
+      const ChannelControl& ctl = st.lighting.control[static_cast<size_t>(c)];
+      if (ctl.lighting) n += static_cast<size_t>(__builtin_popcount(ctl.light_mask));
+    }
+    return n;
+  }
+
+  PathContext ctx_;
+  GxVariant variant_;
+  ScenePrograms programs_;
+  SceneView view_;
+  std::unique_ptr<AttributeRasteriser> rasteriser_;
+  std::vector<TextureObject> luts_;
+  std::vector<VertexStream> streams_;
+  std::vector<std::vector<PixelProgram>> pixel_programs_;  // [pass][material]
+  std::vector<Color8> efb_;
+  Color8 background_;
+  double vertex_seconds_ = 0, pixel_seconds_ = 0;
+  size_t stage_pixels_ = 0, light_vertices_ = 0;
+};
+
+}  // namespace
+
+}  // namespace lt::gx
+
+namespace lt {
+
+PathInfo gx_path_info() {
+  PathInfo info;
+  info.name = "gx";
+  info.summary =
+      "the Wii's GX pipeline emulated in its own integer arithmetic: XF lighting per vertex, "
+      "8-bit channels, the power LUT as an I8 texture with 7-bit filtering, TEV stages, EFB "
+      "blending; programs are libogc calls (`ltrender export gx`)";
+  info.variants = {
+      {"t=vertex",
+       "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "
+       "light, any camera)"},
+      {"t=vertex:lut=64", "the same with a 64-texel LUT"},
+      {"t=vertex:lut=16", "the same with a 16-texel LUT"},
+      {"t=texgen",
+       "t from the raw normal through a 2x4 texture matrix: no CPU per-vertex work "
+       "(directional lights and an orthographic camera only)"},
+      {"lobe=xf-spec",
+       "no texture: the lobe as the XF specular attenuation, a rational fitted per material, "
+       "per vertex, 2 TEV stages (directional lights and an orthographic camera only)"},
+  };
+  info.create = [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
+    return std::make_unique<gx::GxPath>(ctx, variant);
+  };
+  info.parse_variant = [](const std::string& v) { return gx::to_string(gx::parse_gx_variant(v)); };
+  info.refusal = [](const Scene& scene, const std::string& v) {
+    return gx::refusal(scene, gx::parse_gx_variant(v));
+  };
+  info.takes_program_file = true;
+  return info;
+}
+
+}  // namespace lt

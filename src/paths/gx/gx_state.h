@@ -1,0 +1,55 @@
+// The whole GX state one pass draws with: what libogc's calls leave in the XF, TEV, texture and
+// pixel-engine registers. It starts as GX_Init leaves it (each member's defaults cite
+// libogc's __GX_InitGX [OGC gx.c]); a program file's calls change it (program/interpreter.h).
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "paths/gx/efb.h"
+#include "paths/gx/tev.h"
+#include "paths/gx/texture_unit.h"
+#include "paths/gx/xf_lighting.h"
+#include "paths/gx/xf_texgen.h"
+
+namespace lt::gx {
+
+// Vertex attributes GX_VA_POS (9) .. GX_VA_TEX7 (20), as GX_SetVtxDesc declares them: GX_NONE 0
+// or GX_DIRECT 1 (indexed data is refused: the scene's vertices are sent directly). GX_Init
+// clears the descriptor [OGC gx.c __GX_InitGX: GX_ClearVtxDesc].
+inline constexpr int kVaPos = 9, kVaNrm = 10, kVaClr0 = 11, kVaClr1 = 12, kVaTex0 = 13;
+inline constexpr int kVertexAttributes = 21;
+struct VertexDescriptor {
+  std::array<u8, kVertexAttributes> type{};
+  bool has(int attribute) const { return type[static_cast<size_t>(attribute)] != 0; }
+  int count() const {
+    int n = 0;
+    for (u8 t : type) n += t != 0;
+    return n;
+  }
+  bool operator==(const VertexDescriptor&) const = default;
+};
+
+// GX_SetZMode(enable, func, update) [OGC gx.h L2810]. GX_Init: GX_ENABLE, GX_LEQUAL, GX_TRUE.
+struct ZMode {
+  bool enable = true;
+  u8 func = 3;
+  bool update = true;
+  bool operator==(const ZMode&) const = default;
+};
+
+struct GxState {
+  XfLightingState lighting;
+  XfTexGenState texgen;
+  TevState tev;
+  // GX_LoadTexObj: what each texture map holds; empty where nothing was loaded.
+  std::array<std::optional<TextureObject>, kMaxTexMaps> textures;
+  AlphaCompare alpha_compare;
+  BlendMode blend;
+  ZMode z;
+  VertexDescriptor vertex;
+
+  GxState();  // GX_Init's state
+};
+
+}  // namespace lt::gx

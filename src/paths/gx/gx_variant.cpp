@@ -1,0 +1,89 @@
+#include "paths/gx/gx_variant.h"
+
+#include <algorithm>
+#include <charconv>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace lt::gx {
+
+namespace {
+
+const char* kValid =
+    "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec";
+
+}  // namespace
+
+GxVariant parse_gx_variant(const std::string& text) {
+  GxVariant v;
+  bool seen_t = false, seen_lut = false, seen_lobe = false;
+  auto bad = [&](const std::string& why) {
+    throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
+  };
+  std::istringstream parts(text);
+  for (std::string part; std::getline(parts, part, ':');) {
+    const auto eq = part.find('=');
+    if (eq == std::string::npos) bad("'" + part + "' is not key=value");
+    const std::string key = part.substr(0, eq), value = part.substr(eq + 1);
+    if (key == "t" && !seen_t) {
+      seen_t = true;
+      if (value == "vertex") {
+        v.t = GxVariant::TexCoord::Vertex;
+      } else if (value == "texgen") {
+        v.t = GxVariant::TexCoord::Texgen;
+      } else {
+        bad("t=" + value + " is not a texture-coordinate source");
+      }
+    } else if (key == "lut" && !seen_lut) {
+      seen_lut = true;
+      int n = 0;
+      const auto r = std::from_chars(value.data(), value.data() + value.size(), n);
+      // 1024 is the hardware's largest texture side [OGC gx.h L4263]; the texel-centre remap
+      // needs two texels.
+      if (r.ec != std::errc() || r.ptr != value.data() + value.size() || n < 2 || n > 1024)
+        bad("lut=" + value + " is not a LUT width of 2..1024 texels");
+      v.lut_size = n;
+    } else if (key == "lobe" && !seen_lobe) {
+      seen_lobe = true;
+      if (value == "xf-spec") {
+        v.lobe = GxVariant::Lobe::XfSpec;
+      } else if (value == "lut") {
+        v.lobe = GxVariant::Lobe::Lut;
+      } else {
+        bad("lobe=" + value + " is not a lobe method");
+      }
+    } else {
+      bad("'" + key + "' is not a gx variant axis, or is given twice");
+    }
+  }
+  if (text.empty()) bad("empty variant");
+  if (v.lobe == GxVariant::Lobe::XfSpec && (seen_t || seen_lut))
+    bad("lobe=xf-spec uses no texture, so it takes no t= or lut=");
+  return v;
+}
+
+std::string to_string(const GxVariant& v) {
+  if (v.lobe == GxVariant::Lobe::XfSpec) return "lobe=xf-spec";
+  std::string s = v.t == GxVariant::TexCoord::Vertex ? "t=vertex" : "t=texgen";
+  if (v.lut_size != kDefaultLutSize) s += ":lut=" + std::to_string(v.lut_size);
+  return s;
+}
+
+std::string refusal(const Scene& scene, const GxVariant& v) {
+  if (v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex) return "";
+  const std::string what = to_string(v) + " needs t affine in the normal";
+  if (scene.camera.projection != Camera::Projection::Orthographic)
+    return what + ": the camera is perspective (V varies over the mesh); use t=vertex";
+  for (const Light& l : scene.lights) {
+    if (l.type != Light::Type::Directional)
+      return what + ": a point light (L varies over the mesh); use t=vertex";
+  }
+  for (const Material& m : scene.materials) {
+    if (m.translucency && m.translucency->normalize_distorted_light)
+      return what + ": material " + m.name + " normalises H; use t=vertex";
+  }
+  return "";
+}
+
+}  // namespace lt::gx

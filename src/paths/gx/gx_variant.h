@@ -1,0 +1,37 @@
+// The gx path's variants as a typed key (Filament's Variant: named, orthogonal axes, one parser):
+//   t=vertex      t per vertex on the CPU, sent as GX_VA_TEX0 (any light, any camera): default
+//   t=texgen      t from the raw normal through a 2x4 texture matrix (directional lights and an
+//                 orthographic camera only: where t is affine in the normal)
+//   lobe=xf-spec  no texture: the lobe from the XF specular attenuation, fitted per material
+// and for the LUT variants `:lut=N` (2..1024 texels, default 256), e.g. `t=vertex:lut=64`.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace lt::gx {
+
+struct GxVariant {
+  enum class Lobe { Lut, XfSpec };
+  enum class TexCoord { Vertex, Texgen };
+  Lobe lobe = Lobe::Lut;
+  TexCoord t = TexCoord::Vertex;
+  int lut_size = 256;
+
+  bool operator==(const GxVariant&) const = default;
+};
+
+inline constexpr int kDefaultLutSize = 256;
+
+// Throws InputError("--variant", text, ...) naming the valid axes and values.
+GxVariant parse_gx_variant(const std::string& text);
+// The canonical spelling ("t=vertex", "t=vertex:lut=64", "lobe=xf-spec").
+std::string to_string(const GxVariant& v);
+
+// Why the variant cannot be exact for this scene (empty when it can): t=texgen and lobe=xf-spec
+// need t affine in the normal, so every light directional, an orthographic camera and H not
+// normalised (gx-hardware.md §3.1).
+std::string refusal(const Scene& scene, const GxVariant& v);
+
+}  // namespace lt::gx

@@ -1,0 +1,428 @@
+#include "paths/gx/program/parser.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "paths/gx/program/gx_names.h"
+
+namespace lt::gx {
+
+namespace {
+
+struct Token {
+  enum class Kind { Identifier, Integer, Float, Punct, End };
+  Kind kind = Kind::End;
+  std::string text;
+  SourcePos pos;
+};
+
+// Splits the text into tokens. Comments (// and /* */) and preprocessor lines (#include, which
+// an exported file carries for the compiler) are skipped, as a C compiler's front end would.
+class Lexer {
+ public:
+  Lexer(const std::string& text, const std::string& file) : s_(text), file_(file) {}
+
+  std::vector<Token> run() {
+    std::vector<Token> out;
+    bool line_start = true;
+    while (i_ < s_.size()) {
+      const char c = s_[i_];
+      if (c == '\n') {
+        advance();
+        line_start = true;
+        continue;
+      }
+      if (std::isspace(static_cast<unsigned char>(c))) {
+        advance();
+        continue;
+      }
+      if (c == '#' && line_start) {
+        while (i_ < s_.size() && s_[i_] != '\n') advance();
+        continue;
+      }
+      line_start = false;
+      if (c == '/' && peek(1) == '/') {
+        while (i_ < s_.size() && s_[i_] != '\n') advance();
+        continue;
+      }
+      if (c == '/' && peek(1) == '*') {
+        const SourcePos at = pos_;
+        advance();
+        advance();
+        while (i_ < s_.size() && !(s_[i_] == '*' && peek(1) == '/')) advance();
+        if (i_ >= s_.size()) fail(at, "unterminated comment");
+        advance();
+        advance();
+        continue;
+      }
+      Token t;
+      t.pos = pos_;
+      if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+        while (i_ < s_.size() &&
+               (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_'))
+          t.text += take();
+        t.kind = Token::Kind::Identifier;
+      } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+                 (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1))))) {
+        t = number();
+      } else if (std::string("(){}[],;&|=-+").find(c) != std::string::npos) {
+        t.text = std::string(1, take());
+        t.kind = Token::Kind::Punct;
+      } else {
+        fail(pos_, std::string("unexpected character '") + c + "'");
+      }
+      out.push_back(std::move(t));
+    }
+    Token end;
+    end.pos = pos_;
+    out.push_back(end);
+    return out;
+  }
+
+ private:
+  char peek(size_t k) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
+  void advance() { take(); }
+  char take() {
+    const char c = s_[i_++];
+    if (c == '\n') {
+      ++pos_.line;
+      pos_.column = 1;
+    } else {
+      ++pos_.column;
+    }
+    return c;
+  }
+  [[noreturn]] void fail(const SourcePos& p, const std::string& what) const {
+    throw InputError(file_, std::to_string(p.line) + ":" + std::to_string(p.column), what);
+  }
+
+  // C literals: decimal and hex integers (u/U/l/L suffixes), floats with an optional f suffix.
+  Token number() {
+    Token t;
+    t.pos = pos_;
+    bool is_float = false;
+    if (s_[i_] == '0' && (peek(1) == 'x' || peek(1) == 'X')) {
+      t.text += take();
+      t.text += take();
+      while (std::isxdigit(static_cast<unsigned char>(peek(0)))) t.text += take();
+    } else {
+      while (i_ < s_.size()) {
+        const char c = s_[i_];
+        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+          is_float |= c == '.';
+          t.text += take();
+        } else if ((c == 'e' || c == 'E') && !t.text.empty()) {
+          is_float = true;
+          t.text += take();
+          if (peek(0) == '-' || peek(0) == '+') t.text += take();
+        } else {
+          break;
+        }
+      }
+    }
+    if (peek(0) == 'f' || peek(0) == 'F') {
+      is_float = true;
+      advance();
+    }
+    while (peek(0) == 'u' || peek(0) == 'U' || peek(0) == 'l' || peek(0) == 'L') advance();
+    if (std::isalnum(static_cast<unsigned char>(peek(0))) || peek(0) == '_')
+      fail(pos_, "malformed number '" + t.text + peek(0) + "'");
+    t.kind = is_float ? Token::Kind::Float : Token::Kind::Integer;
+    return t;
+  }
+
+  const std::string& s_;
+  const std::string& file_;
+  size_t i_ = 0;
+  SourcePos pos_{1, 1};
+};
+
+class Parser {
+ public:
+  Parser(std::vector<Token> tokens, const std::string& file) : t_(std::move(tokens)), file_(file) {}
+
+  ProgramFile run() {
+    ProgramFile out;
+    out.file = file_;
+    while (cur().kind != Token::Kind::End) {
+      if (is_function_start()) {
+        out.functions.push_back(function());
+      } else {
+        out.top_level.push_back(statement());
+      }
+    }
+    return out;
+  }
+
+ private:
+  const Token& cur() const { return t_[k_]; }
+  const Token& ahead(size_t n) const { return t_[std::min(k_ + n, t_.size() - 1)]; }
+  bool is(const char* text) const { return cur().kind != Token::Kind::End && cur().text == text; }
+  Token take() { return t_[k_ < t_.size() - 1 ? k_++ : k_]; }
+
+  [[noreturn]] void fail(const SourcePos& p, const std::string& what) const {
+    throw InputError(file_, std::to_string(p.line) + ":" + std::to_string(p.column), what);
+  }
+  [[noreturn]] void expected(const std::string& what) const {
+    const std::string got = cur().kind == Token::Kind::End ? "end of file" : "'" + cur().text + "'";
+    fail(cur().pos, "expected " + what + ", found " + got);
+  }
+  void expect(const char* punct) {
+    if (!is(punct)) expected(std::string("'") + punct + "'");
+    take();
+  }
+  std::string identifier(const std::string& what) {
+    if (cur().kind != Token::Kind::Identifier) expected(what);
+    return take().text;
+  }
+
+  bool is_function_start() const {
+    return is("void") && ahead(1).kind == Token::Kind::Identifier && ahead(2).text == "(";
+  }
+
+  Function function() {
+    Function f;
+    f.pos = cur().pos;
+    take();  // void
+    f.name = identifier("a function name");
+    expect("(");
+    if (is("void")) take();
+    expect(")");
+    expect("{");
+    while (!is("}")) {
+      if (cur().kind == Token::Kind::End) expected("'}' closing function " + f.name);
+      f.body.push_back(statement());
+    }
+    take();
+    return f;
+  }
+
+  Statement statement() {
+    Statement s;
+    size_t save = k_;
+    while (is("static") || is("const")) take();
+    if (is("GXLightObj") || is("GXTexObj") || is("Mtx") || is("u8")) {
+      s.kind = Statement::Kind::Declaration;
+      s.declaration = declaration();
+      return s;
+    }
+    k_ = save;
+    s.kind = Statement::Kind::Call;
+    s.call = call();
+    expect(";");
+    return s;
+  }
+
+  Declaration declaration() {
+    Declaration d;
+    d.pos = cur().pos;
+    const std::string type = take().text;
+    d.name = identifier("a variable name");
+    if (type == "GXLightObj" || type == "GXTexObj") {
+      d.type = type == "GXLightObj" ? Declaration::Type::LightObj : Declaration::Type::TexObj;
+      expect(";");
+      return d;
+    }
+    if (type == "Mtx") {
+      d.type = Declaration::Type::Mtx;
+      expect("=");
+      expect("{");
+      for (int row = 0; row < 3; ++row) {
+        expect("{");
+        for (int col = 0; col < 4; ++col) {
+          d.values.push_back(number_value());
+          if (col < 3) expect(",");
+        }
+        expect("}");
+        if (row < 2) expect(",");
+      }
+      if (is(",")) take();
+      expect("}");
+      expect(";");
+      return d;
+    }
+    // u8 name[N] ATTRIBUTE_ALIGNED(32) = { ... };
+    d.type = Declaration::Type::ByteArray;
+    expect("[");
+    long long declared = -1;
+    if (cur().kind == Token::Kind::Integer) declared = integer_literal(take());
+    expect("]");
+    alignment();
+    expect("=");
+    expect("{");
+    while (!is("}")) {
+      const SourcePos p = cur().pos;
+      if (cur().kind != Token::Kind::Integer) expected("a byte value (0..255)");
+      const long long v = integer_literal(take());
+      if (v < 0 || v > 255) fail(p, "byte value out of range: " + std::to_string(v) + " (0..255)");
+      d.values.push_back(static_cast<double>(v));
+      if (!is("}")) expect(",");
+    }
+    take();
+    alignment();
+    expect(";");
+    // As in C: fewer initialisers than the declared size leave the rest zero, more are an error.
+    if (declared >= 0 && declared < static_cast<long long>(d.values.size()))
+      fail(d.pos, "array " + d.name + " declares " + std::to_string(declared) +
+                      " bytes but lists " + std::to_string(d.values.size()));
+    if (declared >= 0) d.values.resize(static_cast<size_t>(declared), 0.0);
+    return d;
+  }
+
+  // ATTRIBUTE_ALIGNED(32) (libogc's macro) or __attribute__((aligned(32))).
+  void alignment() {
+    if (is("ATTRIBUTE_ALIGNED")) {
+      take();
+      expect("(");
+      if (cur().kind != Token::Kind::Integer) expected("an alignment");
+      take();
+      expect(")");
+    } else if (is("__attribute__")) {
+      take();
+      expect("(");
+      expect("(");
+      if (!is("aligned")) expected("'aligned'");
+      take();
+      expect("(");
+      if (cur().kind != Token::Kind::Integer) expected("an alignment");
+      take();
+      expect(")");
+      expect(")");
+      expect(")");
+    }
+  }
+
+  Call call() {
+    Call c;
+    c.pos = cur().pos;
+    c.function = identifier("a libogc call or a declaration");
+    expect("(");
+    while (!is(")")) {
+      c.args.push_back(argument());
+      if (!is(")")) expect(",");
+    }
+    take();
+    return c;
+  }
+
+  Arg argument() {
+    const SourcePos p = cur().pos;
+    Arg a;
+    if (is("&")) {
+      take();
+      a = Arg::address_of(identifier("a variable after '&'"));
+    } else if (is("(") && (ahead(1).text == "GXColor" || ahead(1).text == "GXColorS10")) {
+      take();
+      const bool s10 = take().text == "GXColorS10";
+      expect(")");
+      expect("{");
+      std::array<long long, 4> c{};
+      for (int i = 0; i < 4; ++i) {
+        c[static_cast<size_t>(i)] = signed_integer("a colour component");
+        if (i < 3) expect(",");
+      }
+      expect("}");
+      a = Arg::rgba(c, s10);
+    } else {
+      a = expression();
+    }
+    a.pos = p;
+    return a;
+  }
+
+  // An integer or float expression: literals and GX_* names joined by `|`, with a unary sign.
+  Arg expression() {
+    Arg a = term();
+    while (is("|")) {
+      take();
+      const Arg b = term();
+      if (a.kind != Arg::Kind::Integer || b.kind != Arg::Kind::Integer)
+        fail(b.pos, "'|' joins integers and GX_* names only");
+      a.value |= b.value;
+      a.number = static_cast<double>(a.value);
+      a.text += " | " + b.text;
+    }
+    return a;
+  }
+
+  Arg term() {
+    const SourcePos p = cur().pos;
+    bool negative = false;
+    while (is("-") || is("+")) negative ^= take().text == "-";
+    Arg a;
+    if (cur().kind == Token::Kind::Integer) {
+      const long long v = integer_literal(take());
+      a = Arg::literal(negative ? -v : v);
+    } else if (cur().kind == Token::Kind::Float) {
+      const Token t = take();
+      const double v = std::strtod(t.text.c_str(), nullptr);
+      if (!std::isfinite(v)) fail(t.pos, "number out of range: " + t.text);
+      a.kind = Arg::Kind::Number;
+      a.number = negative ? -v : v;
+      a.text = (negative ? "-" : "") + t.text;
+    } else if (cur().kind == Token::Kind::Identifier) {
+      const Token t = take();
+      if (const GxName* n = find_gx_name(t.text)) {
+        a = Arg::integer(n->name, negative ? -n->value : n->value);
+      } else if (t.text.rfind("GX_", 0) == 0) {
+        fail(t.pos, "unknown name " + t.text + " (not a GX constant of libogc's gx.h)");
+      } else {
+        if (negative) fail(p, "a sign before " + t.text);
+        a = Arg::identifier(t.text);
+      }
+    } else {
+      expected("an argument");
+    }
+    a.pos = p;
+    return a;
+  }
+
+  long long signed_integer(const std::string& what) {
+    bool negative = false;
+    while (is("-") || is("+")) negative ^= take().text == "-";
+    if (cur().kind != Token::Kind::Integer) expected(what);
+    const long long v = integer_literal(take());
+    return negative ? -v : v;
+  }
+
+  double number_value() {
+    bool negative = false;
+    while (is("-") || is("+")) negative ^= take().text == "-";
+    if (cur().kind != Token::Kind::Integer && cur().kind != Token::Kind::Float)
+      expected("a number");
+    const Token t = take();
+    const double v = t.kind == Token::Kind::Integer ? static_cast<double>(integer_literal(t))
+                                                    : std::strtod(t.text.c_str(), nullptr);
+    if (!std::isfinite(v)) fail(t.pos, "number out of range: " + t.text);
+    return negative ? -v : v;
+  }
+
+  long long integer_literal(const Token& t) const {
+    long long v = 0;
+    const bool hex = t.text.size() > 2 && (t.text[1] == 'x' || t.text[1] == 'X');
+    const char* b = t.text.data() + (hex ? 2 : 0);
+    const auto r = std::from_chars(b, t.text.data() + t.text.size(), v, hex ? 16 : 10);
+    if (r.ec != std::errc() || v > (1LL << 40)) fail(t.pos, "integer out of range: " + t.text);
+    return v;
+  }
+
+  std::vector<Token> t_;
+  const std::string& file_;
+  size_t k_ = 0;
+};
+
+}  // namespace
+
+ProgramFile parse_program(const std::string& text, const std::string& file_for_errors) {
+  return Parser(Lexer(text, file_for_errors).run(), file_for_errors).run();
+}
+
+ProgramFile load_program(const std::filesystem::path& path) {
+  return parse_program(read_text_file(path), path.string());
+}
+
+}  // namespace lt::gx

@@ -1,0 +1,65 @@
+#include "paths/gx/program_check.h"
+
+#include "core/error.h"
+#include "paths/gx/attribute_rasteriser.h"
+
+namespace lt::gx {
+
+void check_renderable(const PassProgram& p, const std::string& file, bool has_lut_fallback) {
+  const GxState& st = p.state;
+  auto fail = [&](const std::string& what) { throw InputError(file, p.name, what); };
+  // A program that declares no vertex format gets the whole stream (gx.md §1's example has
+  // none); one that declares it must declare what it reads.
+  const bool declared = st.vertex.count() > 0;
+  auto sent = [&](int attribute) { return !declared || st.vertex.has(attribute); };
+  if (declared && !st.vertex.has(kVaPos)) fail("the vertex format has no GX_VA_POS");
+  // Over the hardware's counts the console would wrap the register field; `ltrender budget`
+  // reports these as over the wii-tev profile.
+  if (st.tev.num_stages > kMaxTevStages)
+    fail(std::to_string(st.tev.num_stages) + " TEV stages: the hardware has 16");
+  if (st.lighting.num_channels > kMaxChannels)
+    fail(std::to_string(st.lighting.num_channels) + " colour channels: the hardware has 2");
+  if (st.texgen.num_texgens > kMaxTexGens)
+    fail(std::to_string(st.texgen.num_texgens) + " texgens: the hardware has 8");
+  if (st.texgen.num_texgens > kRasterisedTexGens)
+    fail("GX_SetNumTexGens(" + std::to_string(st.texgen.num_texgens) +
+         "): the emulator rasterises at most " + std::to_string(kRasterisedTexGens) +
+         " texture coordinates");
+  for (int g = 0; g < st.texgen.num_texgens; ++g) {
+    const TexGen& t = st.texgen.texgens[static_cast<size_t>(g)];
+    const std::string which = "texgen GX_TEXCOORD" + std::to_string(g);
+    if (t.source == 1 && !sent(kVaNrm))
+      fail(which + " reads the normal, but the vertex format has no GX_VA_NRM");
+    if (t.source == 4 && !sent(kVaTex0))
+      fail(which + " reads GX_TG_TEX0, but the vertex format has no GX_VA_TEX0");
+    if (t.source > 4)
+      fail(which + " reads a texture coordinate the scene does not send (only GX_VA_TEX0)");
+  }
+  for (int c = 0; c < st.lighting.num_channels; ++c) {
+    for (int part : {c, c + 2}) {  // colour and alpha control of channel c
+      const ChannelControl& ctl = st.lighting.control[static_cast<size_t>(part)];
+      const bool reads_vertex =
+          ctl.material_source == 1 || (ctl.lighting && ctl.ambient_source == 1);
+      if (!reads_vertex) continue;
+      if (c == 1)
+        fail(
+            "channel GX_COLOR1A1 reads a vertex colour, but the scene sends one (GX_VA_CLR0, "
+            "routed to GX_COLOR0A0)");
+      if (!sent(kVaClr0))
+        fail("channel GX_COLOR0A0 reads a vertex colour, but the vertex format has no GX_VA_CLR0");
+    }
+    const ChannelControl& ctl = st.lighting.control[static_cast<size_t>(c)];
+    if (ctl.lighting && ctl.light_mask && !sent(kVaNrm) &&
+        (ctl.diffuse_fn != 0 || ctl.attenuation_fn == 0))
+      fail("lighting needs the normal, but the vertex format has no GX_VA_NRM");
+  }
+  for (int s = 0; s < st.tev.num_stages; ++s) {
+    const u8 map = st.tev.stages[static_cast<size_t>(s)].texmap;
+    if (map == kTexMapNull || st.textures[map] || (map == 0 && has_lut_fallback)) continue;
+    fail("TEV stage " + std::to_string(s) + " fetches GX_TEXMAP" + std::to_string(map) +
+         ", which holds no texture (GX_TEXMAP0 holds the material's LUT unless the program loads "
+         "one)");
+  }
+}
+
+}  // namespace lt::gx

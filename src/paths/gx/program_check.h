@@ -1,0 +1,17 @@
+// What a program must satisfy before the emulator runs it with the scene's vertex stream: every
+// texgen reads an attribute the stream has, every vertex-colour source exists, every fetched
+// texture map holds a texture, and the rasteriser has room for its texgens. A program that
+// fails gets one InputError naming the file and the pass function, never a silent fallback.
+#pragma once
+
+#include <string>
+
+#include "paths/gx/program/pass_programs.h"
+
+namespace lt::gx {
+
+// `has_lut_fallback`: GX_TEXMAP0 holds the material's LUT where the program loaded none
+// (gx.md §1).
+void check_renderable(const PassProgram& program, const std::string& file, bool has_lut_fallback);
+
+}  // namespace lt::gx

@@ -1,0 +1,40 @@
+// What the vertex stage of the GX pipeline produces for one object in one pass: the XF's two
+// channel colours and its generated texture coordinates, per vertex. The inputs are what the
+// scene sends as the vertex stream (gx.md §2: the scene supplies geometry, normals, vertex
+// colours and matrices): camera-relative positions and world-space normals as GX_F32, the
+// mesh's colour as GX_RGBA8 CLR0, and in GX_VA_TEX0 the pass's t.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "paths/gx/generator.h"
+#include "paths/gx/gx_state.h"
+#include "scene/scene.h"
+
+namespace lt::gx {
+
+// The vertex stream of one object, fixed for the scene (built once).
+struct VertexStream {
+  std::vector<glm::vec3> position;                  // camera-relative (what GX_VA_POS sends)
+  std::vector<glm::vec3> normal;                    // world space, as the mesh has it (GX_VA_NRM)
+  std::vector<glm::vec3> eye_position, eye_normal;  // after the position / normal matrix
+  std::vector<Color8> color;  // GX_VA_CLR0: the mesh colour, white where it has none
+  // GX_VA_TEX0 per light: t = dot(V, -H) unsaturated, computed on the CPU in double (the part
+  // of the term that stays on the CPU in a port; the sampler's clamp saturates it per pixel).
+  std::vector<std::vector<float>> t_per_light;
+};
+VertexStream make_vertex_stream(const Scene& scene, const SceneObject& object,
+                                const SceneView& view);
+
+struct VertexOutputs {
+  std::vector<std::array<Color8, kMaxChannels>> colors;
+  std::vector<std::array<glm::vec3, kMaxTexGens>> texcoords;  // (s, t, q)
+  int num_texgens = 0;
+};
+
+// Runs the XF (lighting and texgen) of `state` on every vertex; `light` picks GX_VA_TEX0's t.
+void run_vertex_stage(const GxState& state, const VertexStream& stream, size_t light,
+                      LightRounding rounding, VertexOutputs& out);
+
+}  // namespace lt::gx

@@ -1,0 +1,252 @@
+// GX program files (gx.md §1): the parser, the interpreter that turns libogc calls into GX state
+// (checked against libogc's own encodings), the printer's round trip, and every kind of bad
+// file, each refused with file:line:column.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "paths/gx/generator.h"
+#include "paths/gx/gx_budget.h"
+#include "paths/gx/program/interpreter.h"
+#include "paths/gx/program/parser.h"
+#include "paths/gx/program/pass_programs.h"
+#include "paths/gx/program/printer.h"
+#include "scene/scene.h"
+#include "test_util.h"
+
+namespace lt::gx {
+namespace {
+
+// gx.md §1's example, as a porter writes it.
+const char* kExample = R"(// a flat-coloured stage
+GX_SetNumChans(1);
+GX_SetChanCtrl(GX_COLOR0A0, GX_DISABLE, GX_SRC_REG, GX_SRC_REG, GX_LIGHTNULL, GX_DF_NONE, GX_AF_NONE);
+GX_SetChanMatColor(GX_COLOR0A0, (GXColor){200, 120, 40, 255});
+GX_SetNumTevStages(1);
+GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLOR0A0);
+GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_ZERO, GX_CC_RASC, GX_CC_KONST, GX_CC_ZERO);
+GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_TRUE, GX_TEVPREV);
+GX_SetTevKColor(GX_KCOLOR0, (GXColor){128, 64, 255, 255});
+GX_SetTevKColorSel(GX_TEVSTAGE0, GX_TEV_KCSEL_K0);
+)";
+
+GxState run(const std::string& text) {
+  const ProgramFile f = parse_program(text, "test.c");
+  return run_program(f.file, {&f.top_level});
+}
+
+TEST(GxProgram, ExampleSetsTheStateLibogcWould) {
+  const GxState st = run(kExample);
+  EXPECT_EQ(st.lighting.num_channels, 1);
+  EXPECT_FALSE(st.lighting.control[0].lighting);
+  EXPECT_FALSE(st.lighting.control[2].lighting) << "GX_COLOR0A0 sets the alpha control too";
+  EXPECT_EQ(st.lighting.material[0], (Color8{200, 120, 40, 255}));
+  const TevStage& s = st.tev.stages[0];
+  EXPECT_EQ(s.texmap, kTexMapNull);
+  EXPECT_EQ(s.channel, 4);
+  EXPECT_EQ(s.color.a, 15);  // GX_CC_ZERO
+  EXPECT_EQ(s.color.b, 10);  // GX_CC_RASC
+  EXPECT_EQ(s.color.c, 14);  // GX_CC_KONST
+  EXPECT_EQ(s.konst_color_sel, 0x0C);
+  EXPECT_EQ(st.tev.konst[0], (Color8{128, 64, 255, 255}));
+  EXPECT_TRUE(s.color.clamp);
+}
+
+TEST(GxProgram, StartsFromGxInit) {
+  const GxState st = run("");
+  // GX_Init [OGC gx.c __GX_InitGX]: 1 stage, REPLACE, KCSEL 1/4 everywhere, 1 texgen, no
+  // channels, blending off, stage 0 reading TEXCOORD0/TEXMAP0/COLOR0A0.
+  EXPECT_EQ(st.tev.num_stages, 1);
+  EXPECT_EQ(st.tev.stages[0].color.d, 8);                                   // GX_CC_TEXC
+  for (const TevStage& s : st.tev.stages) EXPECT_EQ(s.konst_color_sel, 6);  // GX_TEV_KCSEL_1_4
+  EXPECT_EQ(st.texgen.num_texgens, 1);
+  EXPECT_EQ(st.lighting.num_channels, 0);
+  EXPECT_EQ(st.blend.type, 0);
+  EXPECT_EQ(st.tev.stages[0].texmap, 0);
+  EXPECT_EQ(st.tev.stages[9].texmap, kTexMapNull);
+}
+
+TEST(GxProgram, CompareOpsAreEncodedAsLibogcDoes) {
+  // GX_SetTevColorOp with GX_TEV_COMP_GR16_EQ (11): bias 3, scale (11 >> 1) & 3 = 1, op 1; the
+  // bias and scale arguments are ignored [OGC gx.c GX_SetTevColorOp].
+  const GxState st = run(
+      "GX_SetTevColorOp(GX_TEVSTAGE2, GX_TEV_COMP_GR16_EQ, GX_TB_ADDHALF, GX_CS_SCALE_4, GX_FALSE, "
+      "GX_TEVREG1);");
+  const TevCombiner& c = st.tev.stages[2].color;
+  EXPECT_EQ(c.bias, 3);
+  EXPECT_EQ(c.scale, 1);
+  EXPECT_EQ(c.op, 1);
+  EXPECT_FALSE(c.clamp);
+  EXPECT_EQ(c.dest, 2);
+}
+
+TEST(GxProgram, LightObjectsFollowLibogcHelpers) {
+  const GxState st = run(R"(GXLightObj l;
+GX_InitLightPos(&l, 1.0f, 2, -3.5);
+GX_InitLightDir(&l, 0.0f, 0.0f, 1.0f);
+GX_InitLightSpot(&l, 90.0f, GX_SP_OFF);
+GX_InitLightDistAttn(&l, 2.0f, 0.5f, GX_DA_STEEP);
+GX_InitLightColor(&l, (GXColor){10, 20, 30, 40});
+GX_LoadLightObj(&l, GX_LIGHT3);
+GX_InitLightPos(&l, 9, 9, 9);
+)");
+  const XfLight& x = st.lighting.lights[3];
+  EXPECT_EQ(x.position, glm::vec3(1, 2, -3.5f)) << "loaded before the later GX_InitLightPos";
+  EXPECT_EQ(x.direction, glm::vec3(0, 0, -1)) << "GX_InitLightDir stores the negated direction";
+  EXPECT_EQ(x.a, (std::array<float, 3>{1, 0, 0}));
+  // STEEP: k = (1, 0, (1 - b) / (b r^2)) = (1, 0, 0.25) [OGC gx.c L4695-4730].
+  EXPECT_EQ(x.k, (std::array<float, 3>{1, 0, 0.25f}));
+  EXPECT_EQ(x.color, (Color8{10, 20, 30, 40}));
+}
+
+TEST(GxProgram, TexturesComeFromNamedArraysInTileOrder) {
+  const GxState st = run(R"(static u8 lut[32] ATTRIBUTE_ALIGNED(32) = {
+  0, 36, 73, 109, 146, 182, 219, 255, 0, 0, 0, 0, 0, 0, 0, 0,
+  0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+GXTexObj t;
+GX_InitTexObj(&t, lut, 8, 1, GX_TF_I8, GX_CLAMP, GX_REPEAT, GX_FALSE);
+GX_LoadTexObj(&t, GX_TEXMAP2);
+)");
+  ASSERT_TRUE(st.textures[2].has_value());
+  EXPECT_EQ(st.textures[2]->width, 8);
+  EXPECT_EQ(st.textures[2]->wrap_t, 1);
+  EXPECT_EQ(st.textures[2]->data.size(), 32u);
+  EXPECT_EQ(st.textures[2]->data[7], 255);
+  EXPECT_FALSE(st.textures[0].has_value());
+}
+
+// Every kind of bad file: one InputError naming file:line:column and what is wrong.
+struct BadCase {
+  const char* what;
+  const char* text;
+  const char* where;    // "line:column"
+  const char* message;  // a part of the message
+};
+
+class GxBadProgram : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(GxBadProgram, IsRefusedWithFileLineAndColumn) {
+  const BadCase& c = GetParam();
+  try {
+    const ProgramFile f = parse_program(c.text, "bad.c");
+    file_programs(f);
+    FAIL() << c.what << ": accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "bad.c");
+    EXPECT_EQ(e.where(), c.where) << e.what();
+    EXPECT_NE(e.what_only().find(c.message), std::string::npos) << e.what();
+  }
+}
+
+const BadCase kBad[] = {
+    {"unknown_call", "GX_SetNumChans(1);\nGX_Frobnicate(1);\n", "2:1", "not modelled"},
+    {"not_gx_call", "foo(1);\n", "1:1", "unknown call foo"},
+    {"wrong_argument_count", "GX_SetNumChans(1, 2);\n", "1:1", "expected 1 arguments, found 2"},
+    {"unknown_name", "GX_SetNumChans(GX_THREE);\n", "1:16", "unknown name GX_THREE"},
+    {"name_of_wrong_group",
+     "GX_SetTevColorIn(GX_TEVSTAGE0, GX_CA_TEXA, GX_CC_ZERO, GX_CC_ZERO, GX_CC_ZERO);\n", "1:32",
+     "an alpha input (GX_CA_*), expected a colour input"},
+    {"value_out_of_range", "GX_SetTevColorIn(GX_TEVSTAGE0, 16, 15, 15, 15);\n", "1:32",
+     "out of range: 16"},
+    {"colour_out_of_range", "GX_SetTevKColor(GX_KCOLOR0, (GXColor){256, 0, 0, 0});\n", "1:29",
+     "colour component out of range: 256"},
+    {"unmodelled_call", "GX_LoadPosMtxImm(m, GX_PNMTX0);\n", "1:1", "matrices come from the scene"},
+    {"unmodelled_texgen_source",
+     "GX_SetTexCoordGen(GX_TEXCOORD0, GX_TG_MTX2x4, GX_TG_BINRM, GX_IDENTITY);\n", "1:47",
+     "not modelled"},
+    {"missing_semicolon", "GX_SetNumChans(1)\nGX_SetNumTevStages(1);\n", "2:1", "expected ';'"},
+    {"undeclared_light", "GX_InitLightPos(&nolight, 0, 0, 0);\n", "1:17",
+     "&name of a declared GXLightObj"},
+    {"float_for_a_name", "GX_SetNumTevStages(1.5);\n", "1:20", "expected a number"},
+    {"bad_character", "GX_SetNumChans(1); @\n", "1:20", "unexpected character"},
+    {"unterminated_comment", "/* no end\nGX_SetNumChans(1);\n", "1:1", "unterminated comment"},
+    {"badly_named_function", "void setup(void) {\n  GX_SetNumChans(1);\n}\n", "1:1",
+     "ltrender_<material>_pass<N>"},
+    {"array_length_mismatch", "u8 a[3] = {1, 2};\n", "1:1", "declares 3 bytes but lists 2"},
+    {"too_many_bytes", "u8 a[2] = {1, 2, 3};\n", "1:1", "declares 2 bytes but lists 3"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cases, GxBadProgram, ::testing::ValuesIn(kBad),
+                         [](const auto& info) { return std::string(info.param.what); });
+
+TEST(GxProgram, MipmappedTexturesAreRefusedAtTheirArgument) {
+  try {
+    run("u8 a[32] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 8, 1, GX_TF_I8, GX_CLAMP, GX_CLAMP, "
+        "GX_TRUE);\n");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.what_only().find("mipmapping is not modelled"), std::string::npos) << e.what();
+  }
+}
+
+// The printer's C reads back to the same calls: every generated program of every demo scene,
+// printed and parsed, gives the same GX state.
+TEST(GxProgram, PrintedProgramsParseBackToTheSameState) {
+  for (const std::string& s : test::json_files("scenes")) {
+    const Scene scene = load_scene(test::source_dir() / s);
+    const GeneratedPrograms g = generate_programs(scene, GxVariant{});
+    const std::string text = print_program(g.file);
+    const ProgramFile back = parse_program(text, "printed.c");
+    const auto a = file_programs(g.file), b = file_programs(back);
+    ASSERT_EQ(a.size(), b.size()) << s;
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].name, b[i].name);
+      EXPECT_TRUE(a[i].state.tev == b[i].state.tev) << s << " " << a[i].name;
+      EXPECT_TRUE(a[i].state.lighting == b[i].state.lighting) << s << " " << a[i].name;
+      EXPECT_TRUE(a[i].state.texgen == b[i].state.texgen) << s << " " << a[i].name;
+      EXPECT_TRUE(a[i].state.textures == b[i].state.textures) << s << " " << a[i].name;
+    }
+  }
+}
+
+// The bar of the issue: one light's term (diffuse + translucency) in at most 3 TEV stages in one
+// pass, and no texture beyond the LUT, on every demo scene and every variant that applies.
+TEST(GxProgram, OneLightTakesAtMostThreeStagesInOnePass) {
+  for (const std::string& s : test::json_files("scenes")) {
+    const Scene scene = load_scene(test::source_dir() / s);
+    const GxBudgetReport r = gx_budget_scene(scene, "", "wii-tev");
+    EXPECT_TRUE(r.fits()) << s;
+    EXPECT_EQ(r.passes, static_cast<int>(std::max<size_t>(1, scene.lights.size()))) << s;
+    for (const GxBudgetProgram& p : r.programs) {
+      EXPECT_LE(p.counts.tev_stages, 3) << s << " " << p.name;
+      EXPECT_LE(p.counts.texture_maps, 1) << s << " " << p.name;
+      EXPECT_LE(p.counts.lights_per_channel, 1) << s << " " << p.name;
+    }
+  }
+}
+
+TEST(GxProgram, BudgetCountsAFileAndFindsOverruns) {
+  test::TempDir dir;
+  test::write_file(dir / "over.c", "GX_SetNumTevStages(17);\nGX_SetNumChans(2);\n");
+  const GxBudgetReport r = gx_budget_file((dir / "over.c").string(), "wii-tev");
+  EXPECT_FALSE(r.fits());
+  EXPECT_NE(r.first_overrun().find("TEV stages: 17 > 16"), std::string::npos) << r.first_overrun();
+  const auto j = to_json(r);
+  EXPECT_EQ(j["programs"][0]["counts"]["tev_stages"], 17);
+  EXPECT_EQ(j["fits"], false);
+}
+
+TEST(GxVariantParse, AcceptsTheGrammarAndRefusesTheRest) {
+  EXPECT_EQ(to_string(parse_gx_variant("t=vertex")), "t=vertex");
+  EXPECT_EQ(parse_gx_variant("t=vertex:lut=37").lut_size, 37);
+  EXPECT_EQ(to_string(parse_gx_variant("lut=64:t=texgen")), "t=texgen:lut=64");
+  EXPECT_EQ(to_string(parse_gx_variant("lobe=xf-spec")), "lobe=xf-spec");
+  for (const char* bad : {"", "t=pixel", "lut=1", "lut=1025", "t=vertex:t=vertex",
+                          "lobe=xf-spec:lut=64", "pow=exact", "t=vertex:lut=64x"}) {
+    EXPECT_THROW(parse_gx_variant(bad), InputError) << bad;
+  }
+}
+
+TEST(GxVariantParse, TexgenAndXfNeedAnAffineT) {
+  const Scene persp = load_scene(test::source_dir() / "scenes/backlit_sphere.json");
+  const Scene ortho = load_scene(test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json");
+  EXPECT_NE(refusal(persp, parse_gx_variant("t=texgen")).find("perspective"), std::string::npos);
+  EXPECT_NE(refusal(persp, parse_gx_variant("lobe=xf-spec")).find("perspective"),
+            std::string::npos);
+  EXPECT_EQ(refusal(ortho, parse_gx_variant("t=texgen")), "");
+  EXPECT_EQ(refusal(persp, parse_gx_variant("t=vertex:lut=16")), "");
+  const Scene point = load_scene(test::source_dir() / "scenes/three_point_blob.json");
+  EXPECT_NE(refusal(point, parse_gx_variant("t=texgen")), "");
+}
+
+}  // namespace
+}  // namespace lt::gx
