@@ -161,7 +161,6 @@ const BadCase kBad[] = {
     {"unterminated_comment", "/* no end\nGX_SetNumChans(1);\n", "1:1", "unterminated comment"},
     {"badly_named_function", "void setup(void) {\n  GX_SetNumChans(1);\n}\n", "1:1",
      "ltrender_<material>_pass<N>"},
-    {"array_length_mismatch", "u8 a[3] = {1, 2};\n", "1:1", "declares 3 bytes but lists 2"},
     {"too_many_bytes", "u8 a[2] = {1, 2, 3};\n", "1:1", "declares 2 bytes but lists 3"},
 };
 

@@ -35,6 +35,9 @@ namespace {
 // stays finite in float.
 constexpr double kFarAway = 1.0e18;
 
+// How far past the silhouette (N.V < 0) a vertex still counts as possibly seen.
+constexpr double kBackFacing = 0.2;
+
 // The TEV and XF scales: x1, x2, x4 (GX_CS_SCALE_*). Magnitudes up to 4 are exact.
 constexpr double kMaxScale = 4;
 
@@ -102,6 +105,11 @@ LightStats light_stats(const Scene& scene, int material, const Light& light) {
     if (o.material != material) continue;
     for (size_t v = 0; v < o.mesh.positions.size(); ++v) {
       const glm::dvec3& N = o.mesh.normals[v];
+      // Only vertices that can be seen choose the scale: a vertex facing away from the eye lies
+      // on a back face, hidden behind the front of the mesh, and a scale chosen for it would
+      // halve the precision of what is seen (the slack keeps silhouette vertices).
+      const glm::dvec3 V = model::view_vector(scene.camera, o.mesh.positions[v] - scene.camera.eye);
+      if (glm::dot(N, V) < -kBackFacing) continue;
       const model::LightSample ls = model::sample_light(light, o.mesh.positions[v], N);
       st.max_attenuation = std::max(st.max_attenuation, ls.attenuation);
       st.max_diffuse = std::max(st.max_diffuse, ls.attenuation * std::max(glm::dot(N, ls.L), 0.0));

@@ -126,14 +126,17 @@ class GxPath final : public Path {
         drawn[i] = nullptr;
         if (!pp.state) continue;
         // GX_VA_TEX0 carries the t of light `pass` (a plain one-pass program gets light 0's).
-        run_vertex_stage(*pp.state, streams_[i], pass, LightRounding::SumThenTruncate, outputs[i]);
+        run_vertex_stage(*pp.state, streams_[i], pass,
+                         variant_.round_each_light ? LightRounding::RoundEachLight
+                                                   : LightRounding::SumThenTruncate,
+                         outputs[i]);
         drawn[i] = &outputs[i];
         light_vertices_ += streams_[i].position.size() * lights_in(*pp.state);
       }
       vertex_seconds_ += seconds_since(t0);
       rasteriser_->rasterise(drawn);
       t0 = Clock::now();
-      stage_pixels_ += shade_pass(*rasteriser_, pixel_programs_[pass], efb_);
+      stage_pixels_ += shade_pass(*rasteriser_, pixel_programs_[pass], efb_, variant_.round_colors);
       pixel_seconds_ += seconds_since(t0);
     }
     // No material draws anything: still rasterise once, for the coverage of result().
@@ -250,6 +253,12 @@ PathInfo gx_path_info() {
        "light, any camera)"},
       {"t=vertex:lut=64", "the same with a 64-texel LUT"},
       {"t=vertex:lut=16", "the same with a 16-texel LUT"},
+      {"t=vertex:colors=round",
+       "the interpolated channel colours rounded, as Dolphin's shader backends do (the default "
+       "truncates, as its software rasteriser does): how far that choice moves the image"},
+      {"t=vertex:lights=round-each",
+       "each light's XF contribution rounded before the sum (shader backends) instead of one "
+       "truncation of the float sum (software renderer)"},
       {"t=texgen",
        "t from the raw normal through a 2x4 texture matrix: no CPU per-vertex work "
        "(directional lights and an orthographic camera only)"},

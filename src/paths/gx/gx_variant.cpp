@@ -11,13 +11,15 @@ namespace lt::gx {
 namespace {
 
 const char* kValid =
-    "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec";
+    "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
+    "any of them with :colors=round and :lights=round-each";
 
 }  // namespace
 
 GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
-  bool seen_t = false, seen_lut = false, seen_lobe = false;
+  bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
+       seen_lights = false;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -53,6 +55,15 @@ GxVariant parse_gx_variant(const std::string& text) {
       } else {
         bad("lobe=" + value + " is not a lobe method");
       }
+    } else if (key == "colors" && !seen_colors) {
+      seen_colors = true;
+      if (value != "round" && value != "trunc") bad("colors=" + value + " is not round or trunc");
+      v.round_colors = value == "round";
+    } else if (key == "lights" && !seen_lights) {
+      seen_lights = true;
+      if (value != "round-each" && value != "sum")
+        bad("lights=" + value + " is not round-each or sum");
+      v.round_each_light = value == "round-each";
     } else {
       bad("'" + key + "' is not a gx variant axis, or is given twice");
     }
@@ -64,9 +75,15 @@ GxVariant parse_gx_variant(const std::string& text) {
 }
 
 std::string to_string(const GxVariant& v) {
-  if (v.lobe == GxVariant::Lobe::XfSpec) return "lobe=xf-spec";
-  std::string s = v.t == GxVariant::TexCoord::Vertex ? "t=vertex" : "t=texgen";
-  if (v.lut_size != kDefaultLutSize) s += ":lut=" + std::to_string(v.lut_size);
+  std::string s;
+  if (v.lobe == GxVariant::Lobe::XfSpec) {
+    s = "lobe=xf-spec";
+  } else {
+    s = v.t == GxVariant::TexCoord::Vertex ? "t=vertex" : "t=texgen";
+    if (v.lut_size != kDefaultLutSize) s += ":lut=" + std::to_string(v.lut_size);
+  }
+  if (v.round_colors) s += ":colors=round";
+  if (v.round_each_light) s += ":lights=round-each";
   return s;
 }
 

@@ -4,6 +4,13 @@
 //                 orthographic camera only: where t is affine in the normal)
 //   lobe=xf-spec  no texture: the lobe from the XF specular attenuation, fitted per material
 // and for the LUT variants `:lut=N` (2..1024 texels, default 256), e.g. `t=vertex:lut=64`.
+// Two axes pick the other side where the sources disagree on the hardware (gx-hardware.md §2.4,
+// §2.5), so the README can say how far each choice moves the image:
+//   :colors=round       interpolated channel colours rounded, as Dolphin's shader backends do
+//                       (default: truncated, as its software rasteriser does)
+//   :lights=round-each  each light's XF contribution rounded before the sum, as the shader
+//                       backends do (default: summed in float and truncated once, the software
+//                       renderer)
 #pragma once
 
 #include <string>
@@ -18,6 +25,8 @@ struct GxVariant {
   Lobe lobe = Lobe::Lut;
   TexCoord t = TexCoord::Vertex;
   int lut_size = 256;
+  bool round_colors = false;
+  bool round_each_light = false;
 
   bool operator==(const GxVariant&) const = default;
 };

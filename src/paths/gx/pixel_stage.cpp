@@ -6,8 +6,9 @@
 
 namespace lt::gx {
 
-u8 interpolated_color(float v) {
+u8 interpolated_color(float v, bool round) {
   if (!(v > 0)) return 0;  // also NaN
+  if (round) return static_cast<u8>(std::min(255.0, std::floor(static_cast<double>(v) + 0.5)));
   const double fixed = std::floor(static_cast<double>(v) * 256.0 + 0.5);
   return static_cast<u8>(std::min(255.0, std::floor(fixed / 256.0)));
 }
@@ -39,7 +40,7 @@ Color8 fetch(const PixelProgram& p, const TevStage& stage, const AttributeRaster
 }  // namespace
 
 size_t shade_pass(const AttributeRasteriser& raster, const std::vector<PixelProgram>& by_material,
-                  std::vector<Color8>& efb) {
+                  std::vector<Color8>& efb, bool round_colors) {
   const int width = raster.width(), height = raster.height();
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   std::vector<size_t> stage_pixels(threads, 0);
@@ -58,7 +59,7 @@ size_t shade_pass(const AttributeRasteriser& raster, const std::vector<PixelProg
         for (int ch = 0; ch < kMaxChannels; ++ch) {
           const float* c = raster.color(ch, g);
           for (int k = 0; k < 4; ++k)
-            in.channels[static_cast<size_t>(ch)][k] = interpolated_color(c[k]);
+            in.channels[static_cast<size_t>(ch)][k] = interpolated_color(c[k], round_colors);
         }
         for (int s = 0; s < st.tev.num_stages; ++s) {
           const TevStage& stage = st.tev.stages[static_cast<size_t>(s)];
