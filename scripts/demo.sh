@@ -12,12 +12,17 @@ scripts/bake_demo_meshes.sh "$bin"
 # Every demo scene through every path and variant (the orthographic one is where the combiners'
 # cube-map lobe is exact).
 "$bin" bench scenes/*.json scenes/ortho/*.json -o out "$@"
-# Per-vertex error against tessellation (issue 5): the backlit sphere at 42 to 10242 vertices.
-"$bin" bench scenes/tessellation/*.json --paths combiners -o out/tessellation --quiet "$@"
+# Per-vertex error against tessellation (issues 5 and 9): the backlit sphere at 42 to 10242
+# vertices, through the GL 1.3 combiners and the Wii's GX.
+"$bin" bench scenes/tessellation/*.json --paths combiners,gx -o out/tessellation --quiet "$@"
 echo
 cat out/report.md
 echo
-echo "combiners error against tessellation (out/tessellation/report.md):"
-grep -E '^\| backlit_sphere_s[0-9] \| combiners \| t=vertex' out/tessellation/report.md || true
+echo "combiners and gx error against tessellation (out/tessellation/report.md):"
+grep -E '^\| backlit_sphere_s[0-9] \| (combiners|gx) \| t=vertex \|' out/tessellation/report.md || true
+# The Wii port of one demo scene, as the libogc C a porter pastes into the game (README,
+# "Porting to the Wii").
+"$bin" export gx scenes/backlit_sphere.json -o out/backlit_sphere_gx.c
+"$bin" budget out/backlit_sphere_gx.c
 echo
 echo "demo: images and heatmaps in out/images/, chart in out/chart.svg, contact sheet out/contact.png"
