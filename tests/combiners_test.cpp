@@ -54,7 +54,6 @@ TEST(CombinerFormat, LobeProgramIsTwoStagesAndColourSum) {
   // Alpha defaults to REPLACE previous.alpha when a stage does not say.
   EXPECT_EQ(s1.alpha.function, Function::Replace);
   EXPECT_EQ(s1.alpha.args[0].source, Source::Previous);
-  EXPECT_EQ(p.textures_sampled(), 1);
   EXPECT_EQ(p.constant_colors(), 1);
 }
 
@@ -92,7 +91,6 @@ TEST(CombinerFormat, EveryFunctionSourceAndOperandParses) {
   EXPECT_EQ(p.stages[1].rgb.args[1].unit, 1);
   EXPECT_EQ(p.stages[1].rgb.args[1].operand, Operand::OneMinusAlpha);
   EXPECT_EQ(p.stages[2].rgb.args[1].operand, Operand::Color);
-  EXPECT_EQ(p.textures_sampled(), 2);
 }
 
 struct BadProgram {

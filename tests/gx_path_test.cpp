@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "gx_test_programs.h"
 #include "metrics/compare.h"
 #include "paths/gx/c_exporter.h"
 #include "render/session.h"
@@ -60,17 +61,7 @@ void expect_every_covered_pixel(const Image& img, std::array<int, 3> rgb) {
   EXPECT_EQ(wrong, 0u) << "of " << covered << " covered pixels";
 }
 
-const char* kFlatProgram = R"(GX_SetNumChans(1);
-GX_SetChanCtrl(GX_COLOR0A0, GX_DISABLE, GX_SRC_REG, GX_SRC_REG, GX_LIGHTNULL, GX_DF_NONE, GX_AF_NONE);
-GX_SetChanMatColor(GX_COLOR0A0, (GXColor){200, 120, 40, 255});
-GX_SetNumTexGens(0);
-GX_SetNumTevStages(1);
-GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLOR0A0);
-GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_ZERO, GX_CC_RASC, GX_CC_KONST, GX_CC_ZERO);
-GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_TRUE, GX_TEVPREV);
-GX_SetTevKColor(GX_KCOLOR0, (GXColor){128, 64, 255, 255});
-GX_SetTevKColorSel(GX_TEVSTAGE0, GX_TEV_KCSEL_K0);
-)";
+const char* const kFlatProgram = gx::test_programs::kFlatColour;
 
 // gx.md §1's example: lighting off, so every covered pixel is RASC * K in TEV arithmetic:
 // (200 * (128 + 1) + 128) >> 8 = 101, (120 * 64 + 128) >> 8 = 30, (40 * 256 + 128) >> 8 = 40.

@@ -359,14 +359,6 @@ void disable_unit(int unit) {
 
 }  // namespace
 
-int CombinerProgram::textures_sampled() const {
-  std::set<std::string> names;
-  for (const Stage& s : stages) {
-    if (s.texture != "none" && s.texture != "white") names.insert(s.texture);
-  }
-  return static_cast<int>(names.size());
-}
-
 int CombinerProgram::constant_colors() const {
   std::set<std::string> names;
   int literals = 0;

@@ -53,8 +53,6 @@ struct CombinerProgram {
   bool color_sum = false;  // add the secondary colour after the last stage (GL 1.4 colour sum)
   std::vector<Stage> stages;
 
-  // Distinct textures sampled (not counting `white`, which only keeps a stage enabled).
-  int textures_sampled() const;
   // Distinct named constants plus literal constants that are not zero.
   int constant_colors() const;
 };

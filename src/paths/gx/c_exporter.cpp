@@ -31,7 +31,10 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
     << "Budget (ltrender budget --path gx):\n"
     << f.budget << "\n"
     << "Per pass:\n";
-  for (const std::string& n : programs.notes) h << "  " << n << "\n";
+  for (const Function& fn : programs.file.functions) {
+    const auto note = programs.notes.find(fn.name);
+    if (note != programs.notes.end()) h << "  " << fn.name << ": " << note->second << "\n";
+  }
   h << "\n"
     << "How to draw with it, per object and pass (each pass function sets all the state it uses,\n"
     << "starting from GX_Init's; it assumes GX_Init's swap tables and direct TEV stages):\n"

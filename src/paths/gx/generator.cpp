@@ -59,6 +59,12 @@ Arg rgb(const glm::dvec3& c, double alpha = 1.0) {
   return Arg::rgba({to_u8(c.r), to_u8(c.g), to_u8(c.b), to_u8(alpha)});
 }
 
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 double max3(const glm::dvec3& v) {
   return std::max({v.r, v.g, v.b});
 }
@@ -144,7 +150,8 @@ void light_object(Writer& w, const std::string& name, const glm::dvec3& pos_eye,
   w.call("GX_InitLightDir", {Arg::address_of(name), num(0), num(0), num(-1)});
   w.call("GX_InitLightSpot", {Arg::address_of(name), num(90), gx("GX_SP_OFF")});
   w.call("GX_InitLightAttnK", {Arg::address_of(name), num(kc / g), num(kl / g), num(kq / g)},
-         "att = " + std::to_string(g) + " / (kc + kl d + kq d^2): the light's magnitude");
+         "k = (kc, kl, kq) / " + fmt(g) + ": XF attenuation = " + fmt(g) +
+             " x att, the light's magnitude");
   w.call("GX_LoadLightObj", {Arg::address_of(name), gx(slot)});
 }
 
@@ -229,9 +236,8 @@ class Generator {
         f.name = pass_function_name(mat.name, static_cast<int>(p));
         f.comment = "Material " + mat.name + ", pass " + std::to_string(p) + ": " + passes[p].note;
         f.body = std::move(passes[p].body);
+        out.notes[f.name] = passes[p].note;
         out.file.functions.push_back(std::move(f));
-        out.notes.push_back("material " + mat.name + ", pass " + std::to_string(p) + ": " +
-                            passes[p].note);
       }
     }
     return out;
@@ -275,12 +281,6 @@ class Generator {
                " texels I8 in GX tile order (8x4 tiles, 32 bytes;\n"
                "row 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."));
     return d.name;
-  }
-
-  static std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
   }
 
   PassPlan diffuse_pass(int m, int pass, size_t first_light) {

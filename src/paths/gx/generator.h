@@ -17,6 +17,7 @@
 // passes through the EFB blend (ONE, ONE).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,8 +39,8 @@ struct SceneView {
 
 struct GeneratedPrograms {
   ProgramFile file;  // top level: the LUT arrays; one function per material and pass
-  // One line per function (same order): its stages and scales, and what saturates.
-  std::vector<std::string> notes;
+  // By function name: its light, stages and scales, and what saturates.
+  std::map<std::string, std::string> notes;
 };
 
 // Throws InputError("--variant", ...) where refusal() says the variant cannot be exact.

@@ -1,6 +1,7 @@
 #include "paths/gx/gx_path.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -166,11 +167,8 @@ class GxPath final : public Path {
         std::string name = "material " + s.materials[m].name + ", pass " + std::to_string(pass) +
                            ": " + p.name + ", " + std::to_string(p.state.tev.num_stages) +
                            " TEV stages";
-        for (const std::string& note : programs_.notes) {
-          if (note.rfind("material " + s.materials[m].name + ", pass " + std::to_string(pass) + ":",
-                         0) == 0)
-            name += " (" + note.substr(note.find(": ") + 2) + ")";
-        }
+        const auto note = programs_.notes.find(p.name);
+        if (note != programs_.notes.end()) name += " (" + note->second + ")";
         out.push_back({name, "gx-program", pass_source(programs_.file, p.name)});
       }
     }
@@ -215,7 +213,7 @@ class GxPath final : public Path {
     size_t n = 0;
     for (int c = 0; c < st.lighting.num_channels; ++c) {
       const ChannelControl& ctl = st.lighting.control[static_cast<size_t>(c)];
-      if (ctl.lighting) n += static_cast<size_t>(__builtin_popcount(ctl.light_mask));
+      if (ctl.lighting) n += static_cast<size_t>(std::popcount(ctl.light_mask));
     }
     return n;
   }

@@ -5,6 +5,7 @@
 // pass (generator), or read from a file with `--program` (program/).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,7 @@ namespace lt::gx {
 // is not empty; checked against what the emulator models (program_check.h).
 struct ScenePrograms {
   ProgramFile file;
-  std::vector<std::string> notes;  // generated programs: one line per pass function
+  std::map<std::string, std::string> notes;  // generated programs: per pass function
   std::vector<std::vector<PassProgram>> by_material;
   std::string source;  // where the programs come from, for messages ("generated", the file)
 

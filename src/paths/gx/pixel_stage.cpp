@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
+
+#include "core/parallel_rows.h"
 
 namespace lt::gx {
 
@@ -42,42 +43,34 @@ Color8 fetch(const PixelProgram& p, const TevStage& stage, const AttributeRaster
 size_t shade_pass(const AttributeRasteriser& raster, const std::vector<PixelProgram>& by_material,
                   std::vector<Color8>& efb, bool round_colors) {
   const int width = raster.width(), height = raster.height();
-  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<size_t> stage_pixels(threads, 0);
-  auto work = [&](unsigned worker) {
+  std::vector<size_t> stage_pixels(worker_threads(), 0);
+  for_each_row_interleaved(height, [&](int gy, unsigned worker) {
     TevPixelInputs in;
-    // Interleaved rows balance the load: geometry is rarely spread evenly down the image.
-    for (int gy = static_cast<int>(worker); gy < height; gy += static_cast<int>(threads)) {
-      for (int x = 0; x < width; ++x) {
-        const size_t g = raster.index(x, gy);
-        if (!raster.covered(g)) continue;
-        const int m = raster.material(g);
-        if (m < 0 || static_cast<size_t>(m) >= by_material.size()) continue;
-        const PixelProgram& p = by_material[static_cast<size_t>(m)];
-        if (!p.state) continue;
-        const GxState& st = *p.state;
-        for (int ch = 0; ch < kMaxChannels; ++ch) {
-          const float* c = raster.color(ch, g);
-          for (int k = 0; k < 4; ++k)
-            in.channels[static_cast<size_t>(ch)][k] = interpolated_color(c[k], round_colors);
-        }
-        for (int s = 0; s < st.tev.num_stages; ++s) {
-          const TevStage& stage = st.tev.stages[static_cast<size_t>(s)];
-          in.texels[static_cast<size_t>(s)] =
-              stage.texmap == kTexMapNull ? Color8{} : fetch(p, stage, raster, g);
-        }
-        stage_pixels[worker] += static_cast<size_t>(st.tev.num_stages);
-        const Color8 src = tev_to_efb(run_tev(st.tev, in));
-        if (!alpha_test(st.alpha_compare, src.a)) continue;
-        Color8& dst = efb[static_cast<size_t>(gy) * width + x];
-        dst = blend(st.blend, src, dst);
+    for (int x = 0; x < width; ++x) {
+      const size_t g = raster.index(x, gy);
+      if (!raster.covered(g)) continue;
+      const int m = raster.material(g);
+      if (m < 0 || static_cast<size_t>(m) >= by_material.size()) continue;
+      const PixelProgram& p = by_material[static_cast<size_t>(m)];
+      if (!p.state) continue;
+      const GxState& st = *p.state;
+      for (int ch = 0; ch < kMaxChannels; ++ch) {
+        const float* c = raster.color(ch, g);
+        for (int k = 0; k < 4; ++k)
+          in.channels[static_cast<size_t>(ch)][k] = interpolated_color(c[k], round_colors);
       }
+      for (int s = 0; s < st.tev.num_stages; ++s) {
+        const TevStage& stage = st.tev.stages[static_cast<size_t>(s)];
+        in.texels[static_cast<size_t>(s)] =
+            stage.texmap == kTexMapNull ? Color8{} : fetch(p, stage, raster, g);
+      }
+      stage_pixels[worker] += static_cast<size_t>(st.tev.num_stages);
+      const Color8 src = tev_to_efb(run_tev(st.tev, in));
+      if (!alpha_test(st.alpha_compare, src.a)) continue;
+      Color8& dst = efb[static_cast<size_t>(gy) * width + x];
+      dst = blend(st.blend, src, dst);
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (auto& t : pool) t.join();
+  });
   size_t total = 0;
   for (size_t n : stage_pixels) total += n;
   return total;

@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/parallel_rows.h"
 #include "gl/program.h"
 #include "paths/path.h"
 
@@ -39,7 +40,7 @@ class GBuffer {
   const float* thickness(size_t g) const { return &thickness_[g]; }
 
   // Threads the CPU paths shade on: every core.
-  static unsigned threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+  static unsigned threads() { return worker_threads(); }
 
   // Fills `image` (top row first): background with alpha 0 where nothing is covered, and
   // `shade(g, rgb, worker)` with alpha 1 where something is; `worker` < threads() lets the caller
@@ -48,29 +49,21 @@ class GBuffer {
   size_t shade_covered(Image& image, const glm::dvec3& background, ShadePixel&& shade) const {
     const int w = ctx_.width, h = ctx_.height;
     image = Image(w, h);
-    const unsigned n = threads();
-    std::vector<size_t> covered(n, 0);
-    auto work = [&](unsigned worker) {
-      // Interleaved rows balance the load: geometry is rarely spread evenly down the image.
-      for (int gy = static_cast<int>(worker); gy < h; gy += static_cast<int>(n)) {
-        for (int x = 0; x < w; ++x) {
-          const size_t g = index(x, gy);         // G-buffer row gy, bottom-up
-          float* out = image.at(x, h - 1 - gy);  // image rows top-down
-          if (!this->covered(g)) {
-            for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
-            out[3] = 0;
-            continue;
-          }
-          ++covered[worker];
-          shade(g, out, worker);
-          out[3] = 1;
+    std::vector<size_t> covered(threads(), 0);
+    for_each_row_interleaved(h, [&](int gy, unsigned worker) {
+      for (int x = 0; x < w; ++x) {
+        const size_t g = index(x, gy);         // G-buffer row gy, bottom-up
+        float* out = image.at(x, h - 1 - gy);  // image rows top-down
+        if (!this->covered(g)) {
+          for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
+          out[3] = 0;
+          continue;
         }
+        ++covered[worker];
+        shade(g, out, worker);
+        out[3] = 1;
       }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < n; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& t : pool) t.join();
+    });
     size_t total = 0;
     for (size_t c : covered) total += c;
     return total;
