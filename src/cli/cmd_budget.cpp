@@ -1,82 +1,69 @@
 #include <iostream>
 
-#include "budget/budget.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
-#include "paths/combiners/combiner_budget.h"
-#include "paths/gx/gx_budget.h"
+#include "paths/path.h"
 
 namespace lt::cli {
 
 namespace {
 
-bool is_gx_program_file(const std::string& path) {
-  const std::string ext = fs::path(path).extension().string();
-  return ext == ".c" || ext == ".gx";
-}
-
-int print_gx(const gx::GxBudgetReport& r, bool json) {
-  if (json) {
-    std::cout << gx::to_json(r).dump(2) << "\n";
-  } else {
-    std::cout << gx::to_text(r);
+// The path whose program files end in `file`'s extension, or nullptr.
+const PathInfo* path_of_program_file(const std::string& file) {
+  const std::string ext = fs::path(file).extension().string();
+  for (const PathInfo& p : all_paths()) {
+    for (const std::string& e : p.program_extensions) {
+      if (e == ext) return &p;
+    }
   }
-  std::cout.flush();
-  if (!r.fits()) throw CheckFailed("budget: " + r.first_overrun());
-  return 0;
+  return nullptr;
 }
 
 }  // namespace
 
-// `ltrender budget SCENE [--path arbfp|combiners|gx] [--variant V] [--profile P] [--json]`:
-// counts every program the path generates for the scene and checks it against the profile
-// (and its partner for the other program kind). `ltrender budget FILE.c` counts a GX program
-// file (gx.md §2). Exit 1 when a program is over, naming the limit.
+// `ltrender budget SCENE [--path P] [--variant V] [--profile NAME] [--json]`: what path P builds
+// for the scene, counted against the profile; `ltrender budget FILE` counts a program file of
+// the path whose files end that way. Each path owns its counter and profiles (PathInfo::budget).
+// Exit 1 when something is over, naming the limit.
 Action add_budget(CLI::App& app) {
   auto* sub = app.add_subcommand("budget", "Check program/stage budgets against hardware profiles");
   auto scene = std::make_shared<std::string>();
   auto path = std::make_shared<std::string>("arbfp");
-  auto variant = std::make_shared<std::string>();
-  auto profile = std::make_shared<std::string>();
-  auto json = std::make_shared<bool>(false);
-  sub->add_option("SCENE", *scene, "Scene file, or a GX program file (.c, .gx)")->required();
+  auto request = std::make_shared<BudgetRequest>();
+  sub->add_option("SCENE", *scene, "Scene file, or a program file (.c, .gx: a GX program)")
+      ->required();
   sub->add_option("--path", *path,
                   "arbfp (programs), combiners (GL stages, units, passes) or gx (TEV stages, "
                   "texgens, channels, lights, passes)");
-  sub->add_option("--variant", *variant, "Path variant (default: the path's default)");
-  sub->add_option("--profile", *profile,
+  sub->add_option("--variant", request->variant, "Path variant (default: the path's default)");
+  sub->add_option("--profile", request->profile,
                   "arbfp: ps_2_0 (default), ps_2_x, arbfp1-min, vs_2_0, arbvp1-min (the partner "
                   "profile checks the other program kind); combiners: gl13-2units (default), "
                   "gl13-3units, gl-8units; gx: wii-tev (default)");
-  sub->add_flag("--json", *json, "Print the counts as one JSON object");
+  sub->add_flag("--json", request->json, "Print the counts as one JSON object");
   return [=]() -> int {
-    if (is_gx_program_file(*scene)) {
-      return print_gx(gx::gx_budget_file(*scene, profile->empty() ? "wii-tev" : *profile), *json);
-    }
-    const Scene s = load_scene(*scene);
-    if (*path == "gx") {
-      return print_gx(gx::gx_budget_scene(s, *variant, profile->empty() ? "wii-tev" : *profile),
-                      *json);
-    }
-    if (*path == "combiners") {
-      // Fixed-function hardware has stages and units, not instructions: its own counter.
-      const CombinerBudgetReport r =
-          combiner_budget(s, profile->empty() ? "gl13-2units" : *profile, *variant);
-      std::cout << (*json ? to_json(r) + "\n" : to_text(r));
-      std::cout.flush();
-      if (!r.fits()) throw CheckFailed("budget: " + r.over.front());
-      return 0;
-    }
-    const budget::BudgetReport r =
-        budget::run_budget(s, *path, *variant, profile->empty() ? "ps_2_0" : *profile);
-    if (*json) {
-      std::cout << budget::to_json(r).dump(2) << "\n";
+    std::string over;
+    BudgetRequest r = *request;
+    r.out = &std::cout;
+    r.first_overrun = &over;
+    bool fits = false;
+    if (const PathInfo* owner = path_of_program_file(*scene)) {
+      fits = owner->budget_file(*scene, r);
     } else {
-      std::cout << budget::format_table(r);
+      const PathInfo& info = find_path(*path);
+      if (!info.budget) {
+        std::string with;
+        for (const PathInfo& p : all_paths()) {
+          if (p.budget) with += (with.empty() ? "" : ", ") + p.name;
+        }
+        throw InputError("--path", *path,
+                         "path " + info.name + " has no budget (paths with one: " + with + ")");
+      }
+      fits = info.budget(load_scene(*scene), r);
     }
     std::cout.flush();
-    if (!r.fits()) throw CheckFailed("budget: " + r.first_overrun());
+    if (!fits) throw CheckFailed("budget: " + over);
     return 0;
   };
 }

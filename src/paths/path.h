@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,15 @@ class Path {
   virtual std::map<std::string, double> frame_stats() const { return {}; }
 };
 
+// What `ltrender budget` asks of a path's budget: print to `out`, as JSON when `json`; the
+// first line over a limit goes to `first_overrun` (exit 1 names it).
+struct BudgetRequest {
+  std::string variant, profile;
+  bool json = false;
+  std::ostream* out = nullptr;
+  std::string* first_overrun = nullptr;
+};
+
 struct VariantInfo {
   std::string name;     // as given to --variant, e.g. "pow=exact"
   std::string summary;  // one line: what it trades
@@ -74,6 +84,13 @@ struct PathInfo {
   std::function<std::string(const Scene& scene, const std::string& variant)> refusal = {};
   // Whether the path takes PathOptions::program_file.
   bool takes_program_file = false;
+  // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene against a
+  // profile (empty: the path's default), prints a table or JSON, and returns true when it fits.
+  // The path owns its counter and profiles; the command names no path.
+  std::function<bool(const Scene& scene, const BudgetRequest& request)> budget = {};
+  // `ltrender budget FILE`: a program file of this path's kind, recognised by its extension.
+  std::vector<std::string> program_extensions = {};
+  std::function<bool(const std::string& file, const BudgetRequest& request)> budget_file = {};
 };
 
 // Every path, in the order the report lists them.

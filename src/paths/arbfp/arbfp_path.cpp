@@ -1,5 +1,6 @@
 #include "paths/arbfp/arbfp_path.h"
 
+#include "budget/budget.h"
 #include "budget/program_counter.h"
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
@@ -134,7 +135,7 @@ class ArbfpPath final : public Path {
 }  // namespace
 
 PathInfo arbfp_path_info() {
-  return {
+  PathInfo info{
       "arbfp",
       "per-pixel ARB vertex/fragment programs (SM2), generated per material; pow variants",
       {
@@ -161,6 +162,15 @@ PathInfo arbfp_path_info() {
       [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
         return std::make_unique<ArbfpPath>(ctx, variant);
       }};
+  // Instructions, temporaries, parameters and indirections against ps_2_0 and friends.
+  info.budget = [](const Scene& scene, const BudgetRequest& rq) {
+    const budget::BudgetReport r =
+        budget::run_budget(scene, "arbfp", rq.variant, rq.profile.empty() ? "ps_2_0" : rq.profile);
+    *rq.out << (rq.json ? budget::to_json(r).dump(2) + "\n" : budget::format_table(r));
+    *rq.first_overrun = r.first_overrun();
+    return r.fits();
+  };
+  return info;
 }
 
 }  // namespace lt

@@ -10,6 +10,7 @@
 #include "gl/program.h"
 #include "model/power_lut.h"
 #include "model/translucency.h"
+#include "paths/combiners/combiner_budget.h"
 
 namespace lt {
 
@@ -516,22 +517,31 @@ class CombinersPath final : public Path {
 }  // namespace
 
 PathInfo combiners_path_info() {
-  return {"combiners",
-          "GL 1.3 texture combiners, no shaders: power LUT at a per-vertex t, vertex-colour "
-          "thickness and diffuse, one additive pass per light",
-          {{"t=vertex",
-            "t, attenuation, diffuse and thickness per vertex on the CPU; lobe from "
-            "an 8-bit LUT per pixel (error grows with triangle size)"},
-           {"t=texgen",
-            "t by texgen NORMAL_MAP and the texture matrix (directional lights, "
-            "orthographic camera; else as t=vertex)"},
-           {"lobe=cube",
-            "per pixel: a cube map by the normal holds each directional light's "
-            "whole term (exact view only for an orthographic camera); point "
-            "lights as t=vertex"}},
-          [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
-            return std::make_unique<CombinersPath>(ctx, variant);
-          }};
+  PathInfo info{"combiners",
+                "GL 1.3 texture combiners, no shaders: power LUT at a per-vertex t, vertex-colour "
+                "thickness and diffuse, one additive pass per light",
+                {{"t=vertex",
+                  "t, attenuation, diffuse and thickness per vertex on the CPU; lobe from "
+                  "an 8-bit LUT per pixel (error grows with triangle size)"},
+                 {"t=texgen",
+                  "t by texgen NORMAL_MAP and the texture matrix (directional lights, "
+                  "orthographic camera; else as t=vertex)"},
+                 {"lobe=cube",
+                  "per pixel: a cube map by the normal holds each directional light's "
+                  "whole term (exact view only for an orthographic camera); point "
+                  "lights as t=vertex"}},
+                [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
+                  return std::make_unique<CombinersPath>(ctx, variant);
+                }};
+  // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
+  info.budget = [](const Scene& scene, const BudgetRequest& rq) {
+    const CombinerBudgetReport r =
+        combiner_budget(scene, rq.profile.empty() ? "gl13-2units" : rq.profile, rq.variant);
+    *rq.out << (rq.json ? to_json(r) + "\n" : to_text(r));
+    if (!r.fits()) *rq.first_overrun = r.over.front();
+    return r.fits();
+  };
+  return info;
 }
 
 }  // namespace lt

@@ -9,6 +9,7 @@
 #include "model/power_lut.h"
 #include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/generator.h"
+#include "paths/gx/gx_budget.h"
 #include "paths/gx/pixel_stage.h"
 #include "paths/gx/program/parser.h"
 #include "paths/gx/program/printer.h"
@@ -164,11 +165,12 @@ class GxPath final : public Path {
     for (size_t m = 0; m < s.materials.size(); ++m) {
       for (size_t pass = 0; pass < programs_.by_material[m].size(); ++pass) {
         const PassProgram& p = programs_.by_material[m][pass];
-        std::string name = "material " + s.materials[m].name + ", pass " + std::to_string(pass) +
-                           ": " + p.name + ", " + std::to_string(p.state.tev.num_stages) +
-                           " TEV stages";
+        std::string name =
+            "material " + s.materials[m].name + ", pass " + std::to_string(pass) + ": " + p.name;
         const auto note = programs_.notes.find(p.name);
-        if (note != programs_.notes.end()) name += " (" + note->second + ")";
+        name += note != programs_.notes.end()
+                    ? " (" + note->second + ")"
+                    : ", " + std::to_string(p.state.tev.num_stages) + " TEV stages";
         out.push_back({name, "gx-program", pass_source(programs_.file, p.name)});
       }
     }
@@ -244,7 +246,9 @@ PathInfo gx_path_info() {
   info.summary =
       "the Wii's GX pipeline emulated in its own integer arithmetic: XF lighting per vertex, "
       "8-bit channels, the power LUT as an I8 texture with 7-bit filtering, TEV stages, EFB "
-      "blending; programs are libogc calls (`ltrender export gx`)";
+      "blending; programs are libogc calls (`ltrender export gx`). Variants are a grammar: "
+      "t=vertex | t=texgen with :lut=N (2..1024), or lobe=xf-spec; any with :colors=round, "
+      ":lights=round-each";
   info.variants = {
       {"t=vertex",
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "
@@ -272,6 +276,21 @@ PathInfo gx_path_info() {
     return gx::refusal(scene, gx::parse_gx_variant(v));
   };
   info.takes_program_file = true;
+  // TEV stages, texgens, texture maps, channels, lights, konst colours, registers and passes
+  // against the Wii's GX, for generated programs and for program files alike.
+  auto print = [](const gx::GxBudgetReport& r, const BudgetRequest& rq) {
+    *rq.out << (rq.json ? gx::to_json(r).dump(2) + "\n" : gx::to_text(r));
+    *rq.first_overrun = r.first_overrun();
+    return r.fits();
+  };
+  info.budget = [print](const Scene& scene, const BudgetRequest& rq) {
+    return print(
+        gx::gx_budget_scene(scene, rq.variant, rq.profile.empty() ? "wii-tev" : rq.profile), rq);
+  };
+  info.program_extensions = {".c", ".gx"};
+  info.budget_file = [print](const std::string& file, const BudgetRequest& rq) {
+    return print(gx::gx_budget_file(file, rq.profile.empty() ? "wii-tev" : rq.profile), rq);
+  };
   return info;
 }
 
