@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/error.h"
 #include "metrics/compare.h"
 #include "render/session.h"
 #include "test_util.h"
@@ -123,6 +124,25 @@ INSTANTIATE_TEST_SUITE_P(Hard, HardScene, ::testing::ValuesIn(hard_cases()), [](
   }
   return test_name(info.param.scene) + "__" + info.param.path + "__" + v;
 });
+
+}  // namespace
+}  // namespace lt
+
+namespace lt {
+namespace {
+
+// Variants that are a grammar reach the command line whole: any LUT the generator builds, in
+// its canonical spelling, and nothing else.
+TEST(VariantGrammar, PathsWithAGrammarAcceptEveryValidCombination) {
+  EXPECT_EQ(resolve_variant(find_path("arbfp"), "pow=lut:128:f16"), "pow=lut:128:f16");
+  EXPECT_EQ(resolve_variant(find_path("gx"), "lut=64:t=vertex"), "t=vertex:lut=64");
+  EXPECT_EQ(resolve_variant(find_path("gx"), ""), "t=vertex");
+  for (const auto& [path, bad] : std::vector<std::pair<std::string, std::string>>{
+           {"arbfp", "pow=lut:1:f16"}, {"arbfp", "pow=lut:64:f8"}, {"gx", "t=vertex:lut=0"},
+           {"glsl", "pow=lut:64:u8"}, {"half", "pow=mul"}}) {
+    EXPECT_THROW(resolve_variant(find_path(path), bad), InputError) << path << " " << bad;
+  }
+}
 
 }  // namespace
 }  // namespace lt

@@ -162,6 +162,9 @@ PathInfo arbfp_path_info() {
       [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
         return std::make_unique<ArbfpPath>(ctx, variant);
       }};
+  // The variant grammar: any LUT width and format the generator builds, not just the rows the
+  // bench runs ("pow=lut:128:f16").
+  info.parse_variant = [](const std::string& v) { return arbfp::parse_variant(v).name(); };
   // Instructions, temporaries, parameters and indirections against ps_2_0 and friends.
   info.budget = [](const Scene& scene, const BudgetRequest& rq) {
     const budget::BudgetReport r =

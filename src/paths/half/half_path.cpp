@@ -5,6 +5,7 @@
 #include <cmath>
 #include <thread>
 
+#include "core/error.h"
 #include "paths/half/half_shading.h"
 #include "paths/reference/gbuffer.h"
 
@@ -17,10 +18,13 @@ namespace {
 // lit translucent surface is pure (1, 0, 1). The pixels are also counted in frame_stats.
 constexpr float kNonFiniteMarker[3] = {1, 0, 1};
 
+// One table for the names and the modes, so no name falls back to a default silently.
 fp16::PowMode pow_mode(const std::string& variant) {
+  if (variant == "pow=exact") return fp16::PowMode::Exact;
   if (variant == "pow=sg") return fp16::PowMode::Sg;
   if (variant == "pow=unguarded") return fp16::PowMode::Unguarded;
-  return fp16::PowMode::Exact;
+  throw InputError("--variant", variant,
+                   "half: unknown variant (pow=exact, pow=sg, pow=unguarded)");
 }
 
 class HalfPath final : public Path {
