@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -65,7 +66,7 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     }
     if (r.path == "reference") {
       EXPECT_EQ(r.error->max_lsb, 0.0);  // float against itself, unquantised
-      EXPECT_GT(r.stats.at("shading_mpixels_per_s"), 0);
+      EXPECT_GT(r.shading_mpixels_per_s.value(), 0);
     }
     EXPECT_TRUE(fs::exists(o.out_dir / r.image)) << r.image;
   }
@@ -76,7 +77,30 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
   }
   std::ifstream in(o.out_dir / "report.json");
   const auto j = nlohmann::json::parse(in);
-  EXPECT_EQ(j["rows"].size(), expected);
+  ASSERT_EQ(j["rows"].size(), expected);
+  // The writers say what was measured: every row in the table, the CSV and the JSON, and each
+  // path's own figures under their names.
+  const auto slurp = [&](const char* f) {
+    std::ifstream s(o.out_dir / f);
+    return std::string(std::istreambuf_iterator<char>(s), {});
+  };
+  const std::string md = slurp("report.md"), csv = slurp("report.csv");
+  EXPECT_EQ(static_cast<size_t>(std::count(csv.begin(), csv.end(), '\n')), expected + 1);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const BenchRow& r = rows[i];
+    EXPECT_NE(md.find("| quad | " + r.path + " | " + r.variant + " | "), std::string::npos)
+        << r.path << " " << r.variant;
+    EXPECT_NE(csv.find("quad," + r.path + "," + r.variant + ","), std::string::npos);
+    EXPECT_EQ(j["rows"][i]["path"], r.path);
+    for (const auto& [name, value] : r.stats.set_fields()) {
+      EXPECT_DOUBLE_EQ(j["rows"][i]["stats"][name].get<double>(), value) << r.path << " " << name;
+    }
+    if (r.path == "gx") {
+      EXPECT_GT(r.stats.tev_stage_pixels.value(), 0);
+      EXPECT_NE(md.find("M stage-pixels"), std::string::npos);
+    }
+    if (r.path == "reference") EXPECT_GT(j["rows"][i]["stats"]["shading_mpixels_per_s"], 0);
+  }
 }
 
 }  // namespace

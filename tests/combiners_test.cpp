@@ -482,7 +482,7 @@ TEST(CombinersCube, PerspectiveIsFiniteAndPointLightsFallBack) {
   }
   EXPECT_EQ(cube, 2u);
   EXPECT_EQ(vertex, 4u);
-  EXPECT_GT(path->frame_stats().at("cube_rebuild_seconds"), 0.0);
+  EXPECT_GT(path->frame_stats().cube_rebuild_seconds.value(), 0.0);
 }
 
 // Vertex thickness takes the 3-stage program (T from the primary colour, interpolated exactly as

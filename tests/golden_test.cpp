@@ -36,7 +36,7 @@ std::vector<GoldenCase> golden_cases() {
   std::sort(scenes.begin(), scenes.end());
   for (const auto& s : scenes) {
     for (const PathInfo& p : all_paths()) {
-      if (p.name == "flat") continue;  // a timing baseline, not a rendering to keep
+      if (p.role == PathRole::Baseline) continue;  // a timing baseline, not a rendering to keep
       out.push_back({s.stem().string(), p.name});
     }
   }

@@ -15,7 +15,7 @@ namespace {
 
 struct Rendered {
   Image image;
-  std::map<std::string, double> stats;
+  FrameStats stats;
 };
 
 // render_scene, keeping the path's frame_stats (nonfinite_pixels).
@@ -115,7 +115,7 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
   const Scene scene = parse_scene(quad_scene(c), dir / "quad.json", dir.path());
   const Rendered r = render_half(scene, c.variant);
   const bool marker = std::isnan(c.expected);
-  EXPECT_EQ(r.stats.at("nonfinite_pixels"), marker ? 32.0 * 32.0 : 0.0);
+  EXPECT_EQ(r.stats.nonfinite_pixels.value(), marker ? 32.0 * 32.0 : 0.0);
   EXPECT_EQ(non_finite(r.image), 0u) << "no NaN or Inf ever reaches an image";
   for (int y = 0; y < r.image.height; ++y) {
     for (int x = 0; x < r.image.width; ++x) {
@@ -170,7 +170,7 @@ TEST_P(HalfDemoScene, MatchesReferenceWithinHalfPrecision) {
   const Image ref = render_scene(scene, "reference", "");
   for (const Bar& bar : kBars) {
     const Rendered r = render_half(scene, bar.variant);
-    EXPECT_EQ(r.stats.at("nonfinite_pixels"), 0.0) << bar.variant;
+    EXPECT_EQ(r.stats.nonfinite_pixels.value(), 0.0) << bar.variant;
     const Comparison c = compare_images(r.image, ref, TestEncoding::kFloat);
     EXPECT_EQ(c.test_non_finite, 0u);
     EXPECT_LE(c.covered.max_lsb, bar.max_lsb)
@@ -189,7 +189,7 @@ class HalfHardScene : public ::testing::TestWithParam<std::string> {};
 TEST_P(HalfHardScene, GuardedVariantsProduceNoNonFinitePixel) {
   const Scene scene = load_scene(test::source_dir() / GetParam());
   for (const char* v : {"pow=exact", "pow=sg"}) {
-    EXPECT_EQ(render_half(scene, v).stats.at("nonfinite_pixels"), 0.0) << v;
+    EXPECT_EQ(render_half(scene, v).stats.nonfinite_pixels.value(), 0.0) << v;
   }
 }
 
@@ -210,8 +210,8 @@ TEST(HalfUnguarded, ZeroPowZeroIsCountedAndMarked) {
   const Scene scene = load_scene(test::source_dir() / "scenes/hard/zero_pow_zero.json");
   const Rendered r = render_half(scene, "pow=unguarded");
   EXPECT_EQ(non_finite(r.image), 0u);
-  EXPECT_GT(r.stats.at("nonfinite_pixels"), 0.0);
-  EXPECT_EQ(static_cast<double>(count_marker(r.image)), r.stats.at("nonfinite_pixels"));
+  EXPECT_GT(r.stats.nonfinite_pixels.value(), 0.0);
+  EXPECT_EQ(static_cast<double>(count_marker(r.image)), r.stats.nonfinite_pixels.value());
 }
 
 // A point light at the quad's centre vertex with kc = kl = 0: att = 1 / (dist^2) overflows half
@@ -223,9 +223,9 @@ TEST(HalfUnguarded, PointLightAtVertexOverflowsAttenuation) {
   const Scene scene = load_scene(test::source_dir() / "scenes/hard/point_light_at_vertex.json");
   const Rendered r = render_half(scene, "pow=unguarded", 1280, 720);
   EXPECT_EQ(non_finite(r.image), 0u);
-  EXPECT_EQ(r.stats.at("nonfinite_pixels"), 4.0);
+  EXPECT_EQ(r.stats.nonfinite_pixels.value(), 4.0);
   EXPECT_EQ(count_marker(r.image), 4u);
-  EXPECT_EQ(render_half(scene, "pow=exact", 1280, 720).stats.at("nonfinite_pixels"), 0.0);
+  EXPECT_EQ(render_half(scene, "pow=exact", 1280, 720).stats.nonfinite_pixels.value(), 0.0);
 }
 
 }  // namespace

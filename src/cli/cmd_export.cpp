@@ -41,7 +41,7 @@ Action add_export(CLI::App& app) {
     f.height = scene.height;
     {
       RenderSession session(scene, scene.width, scene.height);
-      auto ref = session.build(find_path("reference"), "");
+      auto ref = session.build(path_with_role(PathRole::GroundTruth), "");
       ref->frame();
       auto gxp = session.build(info, v);
       gxp->frame();

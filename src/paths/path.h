@@ -12,6 +12,7 @@
 #include "gl/context.h"
 #include "gl/scene_geometry.h"
 #include "image/image.h"
+#include "paths/frame_stats.h"
 #include "scene/scene.h"
 
 namespace lt {
@@ -53,7 +54,7 @@ class Path {
   // "3 stages, 1 unit, 2 passes"); empty where there is nothing to count.
   virtual std::string cost() const { return ""; }
   // Figures of the last frame a path can report (e.g. the reference's CPU shading time).
-  virtual std::map<std::string, double> frame_stats() const { return {}; }
+  virtual FrameStats frame_stats() const { return {}; }
 };
 
 // What `ltrender budget` asks of a path's budget: print to `out`, as JSON when `json`; the
@@ -70,6 +71,10 @@ struct VariantInfo {
   std::string summary;  // one line: what it trades
 };
 
+// What a path is to the bench and the goldens: the ground truth every error is against, the
+// timing baseline every ratio is against, or a port being judged.
+enum class PathRole { GroundTruth, Baseline, Port };
+
 struct PathInfo {
   std::string name;
   std::string summary;
@@ -84,6 +89,7 @@ struct PathInfo {
   std::function<std::string(const Scene& scene, const std::string& variant)> refusal = {};
   // Whether the path takes PathOptions::program_file.
   bool takes_program_file = false;
+  PathRole role = PathRole::Port;
   // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene against a
   // profile (empty: the path's default), prints a table or JSON, and returns true when it fits.
   // The path owns its counter and profiles; the command names no path.
@@ -97,6 +103,8 @@ struct PathInfo {
 const std::vector<PathInfo>& all_paths();
 // Throws InputError(file_for_errors, "--path", ...) listing the valid names.
 const PathInfo& find_path(const std::string& name);
+// The one path of a role that has exactly one (GroundTruth, Baseline).
+const PathInfo& path_with_role(PathRole role);
 // The variant to use: `requested` if the path has it, its default if empty; throws InputError
 // listing the valid variants otherwise.
 std::string resolve_variant(const PathInfo& path, const std::string& requested);

@@ -14,8 +14,8 @@ namespace lt {
 
 const std::vector<PathInfo>& all_paths() {
   static const std::vector<PathInfo> paths = {
-      reference_path_info(), glsl_path_info(),      flat_path_info(),
-      arbfp_path_info(),     combiners_path_info(), half_path_info(),   gx_path_info(),
+      reference_path_info(), glsl_path_info(), flat_path_info(), arbfp_path_info(),
+      combiners_path_info(), half_path_info(), gx_path_info(),
   };
   return paths;
 }
@@ -27,6 +27,17 @@ const PathInfo& find_path(const std::string& name) {
     names += (names.empty() ? "" : ", ") + p.name;
   }
   throw InputError("--path", name, "unknown path (valid: " + names + ")");
+}
+
+const PathInfo& path_with_role(PathRole role) {
+  const PathInfo* found = nullptr;
+  for (const PathInfo& p : all_paths()) {
+    if (p.role != role) continue;
+    LT_CHECK(!found, "two paths share a role that has one path");
+    found = &p;
+  }
+  LT_CHECK(found, "no path has the role");
+  return *found;
 }
 
 std::string resolve_variant(const PathInfo& path, const std::string& requested) {

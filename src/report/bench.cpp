@@ -23,8 +23,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-FrameTiming time_frames(Path& path, const BenchOptions& o,
-                        std::map<std::string, std::vector<double>>* stats_out = nullptr) {
+// Each figure a path reports, over the timed frames.
+using StatSamples = std::array<std::vector<double>, FrameStats::kFields.size()>;
+
+FrameTiming time_frames(Path& path, const BenchOptions& o, StatSamples* stats_out = nullptr) {
   for (int i = 0; i < o.warmup; ++i) {
     path.frame();
     glFinish();
@@ -36,7 +38,11 @@ FrameTiming time_frames(Path& path, const BenchOptions& o,
     glFinish();  // a frame is over when the GL work is, not when the calls return
     ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     if (stats_out) {
-      for (const auto& [k, v] : path.frame_stats()) (*stats_out)[k].push_back(v);
+      const FrameStats st = path.frame_stats();
+      for (size_t k = 0; k < FrameStats::kFields.size(); ++k) {
+        const auto field = FrameStats::kFields[k].second;
+        if (st.*field) (*stats_out)[k].push_back(*(st.*field));
+      }
     }
   }
   return summarize_frames(ms);
@@ -87,8 +93,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
   }
   for (const std::string& name : o.paths) find_path(name);  // unknown names are input errors
   // The baseline is always measured, whatever --paths says: every ratio needs it.
-  const PathInfo& flat = find_path("flat");
-  const PathInfo& reference = find_path("reference");
+  const PathInfo& flat = path_with_role(PathRole::Baseline);
+  const PathInfo& reference = path_with_role(PathRole::GroundTruth);
 
   // Every scene is read before anything is written: a bad one is reported with nothing created.
   std::vector<Scene> scenes;
@@ -120,8 +126,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           const std::string why = p->refusal ? p->refusal(scene, v.name) : "";
           if (!why.empty()) {
             if (!o.quiet)
-              std::fprintf(stderr, "bench: %s: %s %s skipped: %s\n", sname.c_str(),
-                           p->name.c_str(), v.name.c_str(), why.c_str());
+              std::fprintf(stderr, "bench: %s: %s %s skipped: %s\n", sname.c_str(), p->name.c_str(),
+                           v.name.c_str(), why.c_str());
             continue;
           }
           BenchRow row;
@@ -158,15 +164,16 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       for (BenchRow& row : scene_rows) {
         const PathInfo& p = find_path(row.path);
         auto path = session.build(p, row.variant);
-        std::map<std::string, std::vector<double>> stats;
+        StatSamples stats;
         row.at_wide = row.path == flat.name ? flat_t : time_frames(*path, o, &stats);
         row.ratio_to_flat = row.at_wide.median_ms;  // divided by the baseline below
         // Every figure a path reports, as the median over the timed frames.
-        for (const auto& [key, values] : stats) row.stats[key] = median(values);
-        if (row.stats.count("shading_seconds") && row.stats.count("covered_pixels")) {
-          const double secs = row.stats["shading_seconds"];
-          row.stats["shading_mpixels_per_s"] =
-              secs > 0 ? row.stats["covered_pixels"] / secs / 1e6 : 0;
+        for (size_t k = 0; k < stats.size(); ++k) {
+          if (!stats[k].empty()) row.stats.*(FrameStats::kFields[k].second) = median(stats[k]);
+        }
+        if (row.stats.shading_seconds && row.stats.covered_pixels) {
+          const double secs = *row.stats.shading_seconds;
+          row.shading_mpixels_per_s = secs > 0 ? *row.stats.covered_pixels / secs / 1e6 : 0;
         }
       }
       const FrameTiming again = time_frames(*base, o);
@@ -200,25 +207,23 @@ std::string error_cell(const BenchRow& r, bool max) {
 std::string stats_note(const BenchRow& r) {
   std::string n;
   auto add = [&](const std::string& s) { n += (n.empty() ? "" : "; ") + s; };
-  const auto& st = r.stats;
-  if (st.count("shading_mpixels_per_s")) {
-    add("CPU shading " + fmt(st.at("shading_mpixels_per_s")) + " Mpixels/s on " +
-        fmt(st.count("threads") ? st.at("threads") : 1, 0) + " threads");
+  const FrameStats& st = r.stats;
+  if (r.shading_mpixels_per_s) {
+    add("CPU shading " + fmt(*r.shading_mpixels_per_s) + " Mpixels/s on " +
+        fmt(st.threads.value_or(1), 0) + " threads");
   }
-  if (st.count("cpu_vertex_seconds")) {
-    add("per-vertex CPU " + fmt(st.at("cpu_vertex_seconds") * 1e3) + " ms a frame");
+  if (st.cpu_vertex_seconds)
+    add("per-vertex CPU " + fmt(*st.cpu_vertex_seconds * 1e3) + " ms a frame");
+  if (st.tev_stage_pixels) {
+    add("TEV " + fmt(*st.tev_stage_pixels / 1e6) + " M stage-pixels, XF " +
+        fmt(st.xf_light_vertices.value_or(0) / 1e3, 1) + " k light-vertices, CPU pixel stage " +
+        fmt(st.tev_seconds.value_or(0) * 1e3) + " ms a frame");
   }
-  if (st.count("tev_stage_pixels")) {
-    add("TEV " + fmt(st.at("tev_stage_pixels") / 1e6) + " M stage-pixels, XF " +
-        fmt(st.count("xf_light_vertices") ? st.at("xf_light_vertices") / 1e3 : 0, 1) +
-        " k light-vertices, CPU pixel stage " +
-        fmt(st.count("tev_seconds") ? st.at("tev_seconds") * 1e3 : 0) + " ms a frame");
+  if (st.nonfinite_pixels && *st.nonfinite_pixels > 0) {
+    add(fmt(*st.nonfinite_pixels, 0) + " NaN/Inf pixels (drawn as the path's marker colour)");
   }
-  if (st.count("nonfinite_pixels") && st.at("nonfinite_pixels") > 0) {
-    add(fmt(st.at("nonfinite_pixels"), 0) + " NaN/Inf pixels (drawn as the path's marker colour)");
-  }
-  if (st.count("cube_rebuild_seconds") && st.at("cube_rebuild_seconds") > 0) {
-    add("cube-map build " + fmt(st.at("cube_rebuild_seconds") * 1e3) +
+  if (st.cube_rebuild_seconds && *st.cube_rebuild_seconds > 0) {
+    add("cube-map build " + fmt(*st.cube_rebuild_seconds * 1e3) +
         " ms (once per light/view/material change)");
   }
   return n;
@@ -271,10 +276,18 @@ std::string csv(const std::vector<BenchRow>& rows) {
     } else {
       s << ",,,,,,,";
     }
-    if (r.stats.count("shading_mpixels_per_s")) s << r.stats.at("shading_mpixels_per_s");
+    if (r.shading_mpixels_per_s) s << *r.shading_mpixels_per_s;
     s << ",\"" << r.cost << "\"\n";
   }
   return s.str();
+}
+
+// The figures a path reported, by name, plus the bench's own shading rate.
+nlohmann::json stats_json(const BenchRow& r) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : r.stats.set_fields()) j[name] = value;
+  if (r.shading_mpixels_per_s) j["shading_mpixels_per_s"] = *r.shading_mpixels_per_s;
+  return j;
 }
 
 nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& rows) {
@@ -297,7 +310,7 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                         {"ratio_to_flat", r.ratio_to_flat},
                         {"image", r.image},
                         {"heatmap", r.heatmap},
-                        {"stats", r.stats},
+                        {"stats", stats_json(r)},
                         {"cost", r.cost}};
     if (r.error) {
       x["error"] = {{"max_lsb", r.error->max_lsb},
@@ -426,7 +439,8 @@ void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& row
     if (grid.empty() || grid.back().first != r.scene) {
       grid.push_back({r.scene, {"images/" + r.scene + "__reference.exr"}});
     }
-    if (r.path == "reference" || find_path(r.path).variants.front().name != r.variant) continue;
+    const PathInfo& info = find_path(r.path);
+    if (info.role == PathRole::GroundTruth || info.variants.front().name != r.variant) continue;
     grid.back().second.push_back(r.image);
     if (!r.heatmap.empty()) grid.back().second.push_back(r.heatmap);
   }

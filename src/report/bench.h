@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "metrics/compare.h"
+#include "paths/frame_stats.h"
 
 namespace lt {
 
@@ -31,11 +32,12 @@ struct FrameTiming {
 struct BenchRow {
   std::string scene, path, variant;
   FrameTiming at_scene_size, at_wide;
-  double ratio_to_flat = 0;             // at 1280x720, flat measured in the same session
-  std::optional<ErrorStats> error;      // covered pixels against the reference (none for flat)
-  std::map<std::string, double> stats;  // path's own figures (reference: shading Mpixels/s)
-  std::string cost;                     // Path::cost(): instructions or stages
-  std::string image, heatmap;           // relative to out_dir
+  double ratio_to_flat = 0;         // at 1280x720, flat measured in the same session
+  std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
+  FrameStats stats;                 // the path's own figures, medians over the timed frames
+  std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
+  std::string cost;                             // Path::cost(): instructions or stages
+  std::string image, heatmap;                   // relative to out_dir
 };
 
 std::vector<BenchRow> run_bench(const BenchOptions& options);

@@ -257,11 +257,12 @@ class CombinersPath final : public Path {
     return out;
   }
 
-  std::map<std::string, double> frame_stats() const override {
-    std::map<std::string, double> stats = {{"cpu_vertex_seconds", cpu_seconds_},
-                                           {"passes", static_cast<double>(passes_drawn_)}};
-    if (variant_ == "lobe=cube") stats["cube_rebuild_seconds"] = cube_seconds_;
-    return stats;
+  FrameStats frame_stats() const override {
+    FrameStats s;
+    s.cpu_vertex_seconds = cpu_seconds_;
+    s.passes = passes_drawn_;
+    if (variant_ == "lobe=cube") s.cube_rebuild_seconds = cube_seconds_;
+    return s;
   }
 
  private:

@@ -36,12 +36,14 @@ class FlatPath final : public Path {
 }  // namespace
 
 PathInfo flat_path_info() {
-  return {"flat",
-          "timing baseline: same geometry in one constant colour (not an approximation)",
-          {{"constant", "albedo as a constant colour"}},
-          [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
-            return std::make_unique<FlatPath>(ctx);
-          }};
+  PathInfo info{"flat",
+                "timing baseline: same geometry in one constant colour (not an approximation)",
+                {{"constant", "albedo as a constant colour"}},
+                [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
+                  return std::make_unique<FlatPath>(ctx);
+                }};
+  info.role = PathRole::Baseline;
+  return info;
 }
 
 }  // namespace lt

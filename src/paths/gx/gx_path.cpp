@@ -202,12 +202,14 @@ class GxPath final : public Path {
            (passes == 1 ? " pass" : " passes");
   }
 
-  std::map<std::string, double> frame_stats() const override {
-    return {{"cpu_vertex_seconds", vertex_seconds_},
-            {"tev_seconds", pixel_seconds_},
-            {"tev_stage_pixels", static_cast<double>(stage_pixels_)},
-            {"xf_light_vertices", static_cast<double>(light_vertices_)},
-            {"passes", static_cast<double>(pixel_programs_.size())}};
+  FrameStats frame_stats() const override {
+    FrameStats s;
+    s.cpu_vertex_seconds = vertex_seconds_;
+    s.tev_seconds = pixel_seconds_;
+    s.tev_stage_pixels = static_cast<double>(stage_pixels_);
+    s.xf_light_vertices = static_cast<double>(light_vertices_);
+    s.passes = static_cast<double>(pixel_programs_.size());
+    return s;
   }
 
  private:

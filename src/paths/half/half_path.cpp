@@ -56,11 +56,13 @@ class HalfPath final : public Path {
     return out;
   }
 
-  std::map<std::string, double> frame_stats() const override {
-    return {{"shading_seconds", shading_seconds_},
-            {"covered_pixels", static_cast<double>(covered_)},
-            {"threads", static_cast<double>(threads())},
-            {"nonfinite_pixels", static_cast<double>(nonfinite_)}};
+  FrameStats frame_stats() const override {
+    FrameStats s;
+    s.shading_seconds = shading_seconds_;
+    s.covered_pixels = static_cast<double>(covered_);
+    s.threads = threads();
+    s.nonfinite_pixels = static_cast<double>(nonfinite_);
+    return s;
   }
 
  private:

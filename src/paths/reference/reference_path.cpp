@@ -34,10 +34,12 @@ class ReferencePath final : public Path {
     return out;
   }
 
-  std::map<std::string, double> frame_stats() const override {
-    return {{"shading_seconds", shading_seconds_},
-            {"covered_pixels", static_cast<double>(covered_)},
-            {"threads", static_cast<double>(threads())}};
+  FrameStats frame_stats() const override {
+    FrameStats s;
+    s.shading_seconds = shading_seconds_;
+    s.covered_pixels = static_cast<double>(covered_);
+    s.threads = threads();
+    return s;
   }
 
  private:
@@ -70,12 +72,14 @@ class ReferencePath final : public Path {
 }  // namespace
 
 PathInfo reference_path_info() {
-  return {"reference",
-          "double precision on the CPU over a float G-buffer: the ground truth",
-          {{"exact", "std::pow in double; the only variant"}},
-          [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
-            return std::make_unique<ReferencePath>(ctx);
-          }};
+  PathInfo info{"reference",
+                "double precision on the CPU over a float G-buffer: the ground truth",
+                {{"exact", "std::pow in double; the only variant"}},
+                [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
+                  return std::make_unique<ReferencePath>(ctx);
+                }};
+  info.role = PathRole::GroundTruth;
+  return info;
 }
 
 }  // namespace lt
