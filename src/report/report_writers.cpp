@@ -1,0 +1,347 @@
+// The reports of `ltrender bench` (report.md, report.csv, report.json, chart.svg, contact.png,
+// index.html): writers only, from the rows run_bench measured (bench.cpp).
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "render/session.h"
+#include "report/bench.h"
+
+namespace lt {
+
+namespace {
+
+std::string fmt(double v, int prec = 2) {
+  if (!std::isfinite(v)) return v > 0 ? "inf" : "nan";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(prec) << v;
+  return s.str();
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  write_atomically(p, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw InputError(p.string(), "", "cannot write");
+  });
+}
+
+std::string error_cell(const BenchRow& r, bool max) {
+  if (!r.error) return "-";
+  return fmt(max ? r.error->max_lsb : r.error->mean_lsb, max ? 2 : 3);
+}
+
+// The figures paths report through Path::frame_stats, in words, for the notes column.
+std::string stats_note(const BenchRow& r) {
+  std::string n;
+  auto add = [&](const std::string& s) { n += (n.empty() ? "" : "; ") + s; };
+  const FrameStats& st = r.stats;
+  if (r.shading_mpixels_per_s) {
+    add("CPU shading " + fmt(*r.shading_mpixels_per_s) + " Mpixels/s on " +
+        fmt(st.threads.value_or(1), 0) + " threads");
+  }
+  if (st.cpu_vertex_seconds)
+    add("per-vertex CPU " + fmt(*st.cpu_vertex_seconds * 1e3) + " ms a frame");
+  if (st.tev_stage_pixels) {
+    add("TEV " + fmt(*st.tev_stage_pixels / 1e6) + " M stage-pixels, XF " +
+        fmt(st.xf_light_vertices.value_or(0) / 1e3, 1) + " k light-vertices, CPU pixel stage " +
+        fmt(st.tev_seconds.value_or(0) * 1e3) + " ms a frame");
+  }
+  if (st.nonfinite_pixels && *st.nonfinite_pixels > 0) {
+    add(fmt(*st.nonfinite_pixels, 0) + " NaN/Inf pixels (drawn as the path's marker colour)");
+  }
+  if (st.cube_rebuild_seconds && *st.cube_rebuild_seconds > 0) {
+    add("cube-map build " + fmt(*st.cube_rebuild_seconds * 1e3) +
+        " ms (once per light/view/material change)");
+  }
+  return n;
+}
+
+std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  std::ostringstream s;
+  s << "# ltrender bench\n\n"
+    << "Frames: median and min of " << o.frames << " after " << o.warmup
+    << " warm-up, each bounded by glFinish. `ratio` = median at " << o.wide_width << "x"
+    << o.wide_height
+    << " / `flat` median in the same session. Error: covered pixels against "
+       "the reference, in LSB (1/255).\n\n"
+    << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
+    << o.wide_height
+    << ") median / min | ratio to flat | max LSB | mean LSB | p99 LSB | "
+       "% > 1 LSB | cost | notes |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& r : rows) {
+    const std::string notes = stats_note(r);
+    s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
+      << fmt(r.at_scene_size.median_ms) << " / " << fmt(r.at_scene_size.min_ms) << " | "
+      << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
+      << " | " << error_cell(r, true) << " | " << error_cell(r, false) << " | "
+      << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
+      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | " << notes
+      << " |\n";
+  }
+  s << "\n![speed against error](chart.svg)\n\nContact sheet: `contact.png` (one row per scene: "
+       "the reference, then each path's render followed by its error heatmap, in the table's "
+       "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background) and "
+       "`index.html` with labels.\n";
+  return s.str();
+}
+
+std::string csv(const std::vector<BenchRow>& rows) {
+  std::ostringstream s;
+  s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
+       "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
+       "shading_mpixels_per_s,cost\n";
+  for (const BenchRow& r : rows) {
+    s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
+      << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
+      << r.ratio_to_flat << ",";
+    if (r.error) {
+      s << r.error->max_lsb << "," << r.error->mean_lsb << "," << r.error->rmse_lsb << ","
+        << (std::isfinite(r.error->psnr_db) ? std::to_string(r.error->psnr_db) : "inf") << ","
+        << r.error->p99_lsb << "," << r.error->percent_over_1_lsb << ","
+        << r.error->percent_over_4_lsb << ",";
+    } else {
+      s << ",,,,,,,";
+    }
+    if (r.shading_mpixels_per_s) s << *r.shading_mpixels_per_s;
+    s << ",\"" << r.cost << "\"\n";
+  }
+  return s.str();
+}
+
+// The figures a path reported, by name, plus the bench's own shading rate.
+nlohmann::json stats_json(const BenchRow& r) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : r.stats.set_fields()) j[name] = value;
+  if (r.shading_mpixels_per_s) j["shading_mpixels_per_s"] = *r.shading_mpixels_per_s;
+  return j;
+}
+
+nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  nlohmann::json j;
+  j["frames"] = o.frames;
+  j["warmup"] = o.warmup;
+  j["wide"] = {o.wide_width, o.wide_height};
+  j["rows"] = nlohmann::json::array();
+  auto finite = [](double v) -> nlohmann::json {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  for (const BenchRow& r : rows) {
+    nlohmann::json x = {{"scene", r.scene},
+                        {"path", r.path},
+                        {"variant", r.variant},
+                        {"ms_median", r.at_scene_size.median_ms},
+                        {"ms_min", r.at_scene_size.min_ms},
+                        {"ms_median_wide", r.at_wide.median_ms},
+                        {"ms_min_wide", r.at_wide.min_ms},
+                        {"ratio_to_flat", r.ratio_to_flat},
+                        {"image", r.image},
+                        {"heatmap", r.heatmap},
+                        {"stats", stats_json(r)},
+                        {"cost", r.cost}};
+    if (r.error) {
+      x["error"] = {{"max_lsb", r.error->max_lsb},
+                    {"mean_lsb", r.error->mean_lsb},
+                    {"rmse_lsb", r.error->rmse_lsb},
+                    {"psnr_db", finite(r.error->psnr_db)},
+                    {"p99_lsb", r.error->p99_lsb},
+                    {"percent_over_1_lsb", r.error->percent_over_1_lsb},
+                    {"percent_over_4_lsb", r.error->percent_over_4_lsb}};
+    }
+    j["rows"].push_back(x);
+  }
+  return j;
+}
+
+// One point per path and variant, over all scenes of the run (the table has every scene):
+// x = geometric mean of the ms per frame at the wide size, y = the worst max LSB (filled) and the
+// average mean LSB (ring). Both axes are logarithmic: times span orders of magnitude (the CPU
+// paths), and so do errors, from the 0.5 LSB floor of 8-bit output to 100+ for sg-simplified.
+// Errors under 0.1 LSB (the float outputs) sit on the bottom line.
+std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  struct Point {
+    std::string path, variant;
+    double log_ms_sum = 0, worst_max = 0, mean_sum = 0;
+    int n = 0;
+  };
+  std::vector<Point> points;
+  for (const BenchRow& r : rows) {
+    if (!r.error || r.at_wide.median_ms <= 0) continue;
+    auto it = std::find_if(points.begin(), points.end(), [&](const Point& p) {
+      return p.path == r.path && p.variant == r.variant;
+    });
+    if (it == points.end()) it = points.insert(points.end(), Point{r.path, r.variant});
+    it->log_ms_sum += std::log10(r.at_wide.median_ms);
+    it->worst_max = std::max(it->worst_max, r.error->max_lsb);
+    it->mean_sum += r.error->mean_lsb;
+    ++it->n;
+  }
+  const double W = 1000, H = 600, L = 70, R = 170, T = 40, B = 60;
+  const double y_floor = 0.1;
+  double lx0 = 1e30, lx1 = -1e30, ymax = 1;
+  for (const Point& p : points) {
+    lx0 = std::min(lx0, p.log_ms_sum / p.n);
+    lx1 = std::max(lx1, p.log_ms_sum / p.n);
+    ymax = std::max(ymax, p.worst_max);
+  }
+  if (points.empty()) lx0 = 0, lx1 = 1;
+  lx0 = std::floor(lx0);
+  lx1 = std::max(lx0 + 1, std::ceil(lx1));
+  const double ly0 = std::log10(y_floor), ly1 = std::ceil(std::log10(ymax));
+  auto X = [&](double log_ms) { return L + (log_ms - lx0) / (lx1 - lx0) * (W - L - R); };
+  auto Y = [&](double lsb) {
+    return H - B - (std::log10(std::max(lsb, y_floor)) - ly0) / (ly1 - ly0) * (H - T - B);
+  };
+  static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
+                                  "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  std::map<std::string, std::string> colour;
+  for (const Point& p : points) {
+    if (!colour.count(p.path)) colour[p.path] = palette[colour.size() % 8];
+  }
+  std::ostringstream s;
+  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
+    << "' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' "
+       "fill='white'/>\n"
+    << "<text x='" << L
+    << "' y='18' font-size='14'>Speed against error, per path and variant "
+       "over all scenes</text>\n<text x='"
+    << L << "' y='33'>x: geometric mean ms per frame at " << o.wide_width << "x" << o.wide_height
+    << " (log); y: worst max LSB (filled) and average mean LSB (ring), log</text>\n";
+  for (double e = lx0; e <= lx1; e += 1) {
+    for (int m = 1; m < 10; ++m) {
+      const double v = e + std::log10(m);
+      if (v > lx1) break;
+      s << "<line x1='" << X(v) << "' x2='" << X(v) << "' y1='" << T << "' y2='" << H - B
+        << "' stroke='" << (m == 1 ? "#bbb" : "#eee") << "'/>\n";
+      if (m == 1) {
+        s << "<text x='" << X(v) - 10 << "' y='" << H - B + 18 << "'>" << std::pow(10.0, e)
+          << "</text>\n";
+      }
+    }
+  }
+  for (double e = ly0; e <= ly1; e += 1) {
+    const double v = std::pow(10.0, e);
+    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(v) << "' y2='" << Y(v)
+      << "' stroke='#ddd'/><text x='" << L - 45 << "' y='" << Y(v) + 4 << "'>"
+      << (e == ly0 ? "&lt;= " : "") << v << "</text>\n";
+  }
+  // The 8-bit floor and the 2 LSB bar, for reading the chart at a glance.
+  for (const auto& [v, label] :
+       {std::pair<double, const char*>{0.5, "0.5 LSB: 8-bit floor"}, {2.0, "2 LSB"}}) {
+    s << "<line x1='" << L << "' x2='" << W - R << "' y1='" << Y(v) << "' y2='" << Y(v)
+      << "' stroke='#888' stroke-dasharray='4 3'/><text x='" << W - R - 120 << "' y='" << Y(v) - 3
+      << "' fill='#666'>" << label << "</text>\n";
+  }
+  s << "<text x='" << (L + W - R) / 2 - 40 << "' y='" << H - 15 << "'>ms per frame</text>\n"
+    << "<text transform='translate(18," << H / 2 << ") rotate(-90)'>error (LSB)</text>\n";
+  for (const Point& p : points) {
+    const std::string& c = colour[p.path];
+    const double x = X(p.log_ms_sum / p.n), mean = p.mean_sum / p.n;
+    const std::string title = "<title>" + p.path + " " + p.variant + ": " +
+                              fmt(std::pow(10.0, p.log_ms_sum / p.n)) + " ms, worst max " +
+                              fmt(p.worst_max) + ", average mean " + fmt(mean, 3) + " LSB</title>";
+    s << "<circle cx='" << x << "' cy='" << Y(p.worst_max) << "' r='5' fill='" << c << "'>" << title
+      << "</circle>\n"
+      << "<circle cx='" << x << "' cy='" << Y(mean) << "' r='4' fill='none' stroke='" << c
+      << "' stroke-width='1.5'>" << title << "</circle>\n"
+      << "<text x='" << x + 7 << "' y='" << Y(p.worst_max) + 4 << "' fill='" << c << "'>"
+      << p.variant << "</text>\n";
+  }
+  int i = 0;
+  for (const auto& [path, c] : colour) {
+    s << "<circle cx='" << W - R + 20 << "' cy='" << T + 20 + i * 20 << "' r='5' fill='" << c
+      << "'/><text x='" << W - R + 32 << "' y='" << T + 24 + i * 20 << "'>" << path << "</text>\n";
+    ++i;
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  const int tw = 160, th = 120, pad = 4;
+  // One row per scene: the reference, then each path's default variant and its heatmap (every
+  // variant is in index.html; all of them here would make a sheet too wide to look at).
+  std::vector<std::pair<std::string, std::vector<std::string>>> grid;
+  for (const BenchRow& r : rows) {
+    if (grid.empty() || grid.back().first != r.scene) {
+      grid.push_back({r.scene, {"images/" + r.scene + "__reference.exr"}});
+    }
+    const PathInfo& info = find_path(r.path);
+    if (info.role == PathRole::GroundTruth || info.variants.front().name != r.variant) continue;
+    grid.back().second.push_back(r.image);
+    if (!r.heatmap.empty()) grid.back().second.push_back(r.heatmap);
+  }
+  size_t cols = 0;
+  for (const auto& g : grid) cols = std::max(cols, g.second.size());
+  if (grid.empty()) return;
+  Image sheet(static_cast<int>(cols) * (tw + pad) + pad,
+              static_cast<int>(grid.size()) * (th + pad) + pad);
+  for (size_t i = 0; i < sheet.rgba.size(); ++i) sheet.rgba[i] = (i % 4 == 3) ? 1.0f : 1.0f;
+  for (size_t row = 0; row < grid.size(); ++row) {
+    for (size_t col = 0; col < grid[row].second.size(); ++col) {
+      const Image src = read_image(o.out_dir / grid[row].second[col]);
+      OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::FLOAT),
+                        const_cast<float*>(src.rgba.data()));
+      OIIO::ImageBuf small =
+          OIIO::ImageBufAlgo::fit(in, "", 0.0f, "letterbox", OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4));
+      std::vector<float> px(static_cast<size_t>(tw) * th * 4);
+      small.get_pixels(OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, px.data());
+      const int ox = pad + static_cast<int>(col) * (tw + pad);
+      const int oy = pad + static_cast<int>(row) * (th + pad);
+      for (int y = 0; y < th; ++y) {
+        for (int x = 0; x < tw; ++x) {
+          float* d = sheet.at(ox + x, oy + y);
+          const float* s = &px[(static_cast<size_t>(y) * tw + x) * 4];
+          d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = 1;
+        }
+      }
+    }
+  }
+  write_image(o.out_dir / "contact.png", sheet);
+}
+
+std::string html(const std::vector<BenchRow>& rows) {
+  std::ostringstream s;
+  s << "<!doctype html><meta charset='utf-8'><title>ltrender bench</title>"
+       "<style>body{font-family:sans-serif} td{vertical-align:top;font-size:12px}"
+       "img{width:240px;image-rendering:pixelated}</style><h1>ltrender bench</h1>"
+       "<p><img src='chart.svg' style='width:900px'></p><table>";
+  std::string scene;
+  for (const BenchRow& r : rows) {
+    if (r.scene != scene) {
+      if (!scene.empty()) s << "</tr>";
+      scene = r.scene;
+      s << "<tr><th colspan='20' align='left'><h2>" << scene << "</h2></th></tr><tr>";
+    }
+    s << "<td><b>" << r.path << "</b> " << r.variant << "<br>" << fmt(r.at_wide.median_ms) << " ms";
+    if (r.error)
+      s << ", max " << fmt(r.error->max_lsb) << " / mean " << fmt(r.error->mean_lsb, 3) << " LSB";
+    s << "<br><img src='" << r.image << "'>";
+    if (!r.heatmap.empty()) s << "<br><img src='" << r.heatmap << "'>";
+    s << "</td>";
+  }
+  s << "</tr></table>";
+  return s.str();
+}
+
+}  // namespace
+
+void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  write_text(o.out_dir / "report.md", markdown(o, rows));
+  write_text(o.out_dir / "report.csv", csv(rows));
+  write_text(o.out_dir / "report.json", json_rows(o, rows).dump(2) + "\n");
+  write_text(o.out_dir / "chart.svg", svg_chart(o, rows));
+  write_text(o.out_dir / "index.html", html(rows));
+  write_contact_sheet(o, rows);
+}
+
+}  // namespace lt
