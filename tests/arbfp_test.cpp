@@ -209,12 +209,6 @@ TEST(ArbfpGenerator, PerVertexLobePacksFourLightsPerTexcoord) {
   EXPECT_THROW(arbfp::generate_arb(s, s.materials[0], pv), InputError);
 }
 
-size_t non_finite(const Image& img) {
-  size_t n = 0;
-  for (float v : img.rgba) n += !std::isfinite(v);
-  return n;
-}
-
 // Per-variant thresholds on the demo scenes (max LSB over covered pixels), each from the
 // variant's documented error. "Weight" below is what multiplies the lobe in the image: s * T *
 // light colour * albedo, up to ~5 on the demo scenes (coloured_cubes: s 3, colour 2, T 0.8).
@@ -297,7 +291,7 @@ TEST_P(ArbfpDemo, VariantWithinItsDocumentedError) {
   const Scene scene = test::load_test_scene(c.scene);
   const Image ref = render_scene(scene, "reference", "");
   const Image img = render_scene(scene, "arbfp", c.variant);
-  ASSERT_EQ(non_finite(img), 0u);
+  ASSERT_EQ(test::non_finite(img), 0u);
   const Comparison cmp = compare_images(img, ref, TestEncoding::kUnorm8);
   EXPECT_GT(cmp.covered.pixels, scene.width * scene.height / 50);
   const bool per_vertex = c.variant == "pow=mul:vertex";

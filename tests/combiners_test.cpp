@@ -257,16 +257,10 @@ TEST(CombinerState, MissingInputNamesTheStageLine) {
 // ---------------------------------------------------------------------------------------------
 // Against the reference
 
-size_t non_finite(const Image& img) {
-  size_t n = 0;
-  for (float v : img.rgba) n += !std::isfinite(v);
-  return n;
-}
-
 Comparison against_reference(const Scene& scene, const std::string& variant, int w = 0, int h = 0) {
   const Image ref = render_scene(scene, "reference", "", w, h);
   const Image img = render_scene(scene, "combiners", variant, w, h);
-  EXPECT_EQ(non_finite(img), 0u);
+  EXPECT_EQ(test::non_finite(img), 0u);
   return compare_images(img, ref, TestEncoding::kUnorm8);
 }
 
@@ -445,7 +439,7 @@ TEST(CombinersTexgen, MatchesTheCpuVariantWhereApplicable) {
   }
   const Image cpu = render_scene(scene, "combiners", "t=vertex");
   const Image gen = render_scene(scene, "combiners", "t=texgen");
-  ASSERT_EQ(non_finite(gen), 0u);
+  ASSERT_EQ(test::non_finite(gen), 0u);
   const Comparison c = compare_images(gen, cpu, TestEncoding::kUnorm8);
   EXPECT_LE(c.covered.max_lsb, 1.0);
   EXPECT_LE(c.covered.mean_lsb, 0.05);
@@ -472,7 +466,7 @@ TEST(CombinersCube, PerspectiveIsFiniteAndPointLightsFallBack) {
   RenderSession session(scene, 64, 48);
   const auto path = session.build(find_path("combiners"), "lobe=cube");
   path->frame();
-  EXPECT_EQ(non_finite(path->result()), 0u);
+  EXPECT_EQ(test::non_finite(path->result()), 0u);
   const auto stages = path->stages();
   // Two point lights (t=vertex passes) and one directional light (cube pass) per material.
   size_t cube = 0, vertex = 0;

@@ -241,11 +241,8 @@ TEST_P(GxHardScene, OrthographicTwinRendersThroughEveryVariant) {
   for (const VariantInfo& v : find_path("gx").variants) {
     ASSERT_EQ(find_path("gx").refusal(scene, v.name), "") << v.name;
     const Image img = render_scene(scene, "gx", v.name);
-    size_t bad = 0, covered = 0;
-    for (float x : img.rgba) bad += !std::isfinite(x);
-    for (size_t i = 0; i < img.pixel_count(); ++i) covered += img.rgba[i * 4 + 3] > 0.5f;
-    EXPECT_EQ(bad, 0u) << v.name;
-    EXPECT_GT(covered, 0u) << v.name;
+    EXPECT_EQ(test::non_finite(img), 0u) << v.name;
+    EXPECT_GT(test::covered_pixels(img), 0u) << v.name;
   }
 }
 

@@ -28,12 +28,6 @@ Rendered render_half(const Scene& scene, const std::string& variant, int width =
   return {path->result(), path->frame_stats()};
 }
 
-size_t non_finite(const Image& img) {
-  size_t n = 0;
-  for (float v : img.rgba) n += !std::isfinite(v);
-  return n;
-}
-
 struct HalfQuadCase {
   const char* name;
   const char* variant;
@@ -116,7 +110,7 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
   const Rendered r = render_half(scene, c.variant);
   const bool marker = std::isnan(c.expected);
   EXPECT_EQ(r.stats.nonfinite_pixels.value(), marker ? 32.0 * 32.0 : 0.0);
-  EXPECT_EQ(non_finite(r.image), 0u) << "no NaN or Inf ever reaches an image";
+  EXPECT_EQ(test::non_finite(r.image), 0u) << "no NaN or Inf ever reaches an image";
   for (int y = 0; y < r.image.height; ++y) {
     for (int x = 0; x < r.image.width; ++x) {
       const float* p = r.image.at(x, y);
@@ -209,7 +203,7 @@ size_t count_marker(const Image& img) {
 TEST(HalfUnguarded, ZeroPowZeroIsCountedAndMarked) {
   const Scene scene = load_scene(test::source_dir() / "scenes/hard/zero_pow_zero.json");
   const Rendered r = render_half(scene, "pow=unguarded");
-  EXPECT_EQ(non_finite(r.image), 0u);
+  EXPECT_EQ(test::non_finite(r.image), 0u);
   EXPECT_GT(r.stats.nonfinite_pixels.value(), 0.0);
   EXPECT_EQ(static_cast<double>(count_marker(r.image)), r.stats.nonfinite_pixels.value());
 }
@@ -222,7 +216,7 @@ TEST(HalfUnguarded, ZeroPowZeroIsCountedAndMarked) {
 TEST(HalfUnguarded, PointLightAtVertexOverflowsAttenuation) {
   const Scene scene = load_scene(test::source_dir() / "scenes/hard/point_light_at_vertex.json");
   const Rendered r = render_half(scene, "pow=unguarded", 1280, 720);
-  EXPECT_EQ(non_finite(r.image), 0u);
+  EXPECT_EQ(test::non_finite(r.image), 0u);
   EXPECT_EQ(r.stats.nonfinite_pixels.value(), 4.0);
   EXPECT_EQ(count_marker(r.image), 4u);
   EXPECT_EQ(render_half(scene, "pow=exact", 1280, 720).stats.nonfinite_pixels.value(), 0.0);

@@ -20,12 +20,6 @@ std::string test_name(const std::string& s) {
   return test::test_param_name(fs::path(s).stem().string());
 }
 
-size_t non_finite(const Image& img) {
-  size_t n = 0;
-  for (float v : img.rgba) n += !std::isfinite(v);
-  return n;
-}
-
 // glsl against the reference. Both rasterise the same float G-buffer inputs (same transform,
 // same interpolation); glsl shades in float with exact pow. Measured: the float target is within
 // 5e-4 LSB of the reference on every scene (`ltrender bench scenes/*.json scenes/hard/*.json
@@ -59,10 +53,8 @@ class DemoScene : public ::testing::TestWithParam<std::string> {};
 TEST_P(DemoScene, GlslMatchesReference) {
   const Scene scene = load_scene(test::source_dir() / GetParam());
   const Image ref = render_scene(scene, "reference", "");
-  ASSERT_EQ(non_finite(ref), 0u);
-  size_t covered = 0;
-  for (size_t i = 0; i < ref.pixel_count(); ++i) covered += ref.rgba[i * 4 + 3] > 0.5f;
-  EXPECT_GT(covered, ref.pixel_count() / 50) << "the scene shows too little";
+  ASSERT_EQ(test::non_finite(ref), 0u);
+  EXPECT_GT(test::covered_pixels(ref), ref.pixel_count() / 50) << "the scene shows too little";
   expect_glsl_matches(scene, ref);
 }
 
@@ -111,10 +103,8 @@ TEST_P(HardScene, NoNanOrInfReachesTheImage) {
   if (info.refusal && !info.refusal(scene, hc.variant).empty())
     GTEST_SKIP() << info.refusal(scene, hc.variant);
   const Image img = render_scene(scene, hc.path, hc.variant);
-  EXPECT_EQ(non_finite(img), 0u) << hc.path << " " << hc.variant;
-  size_t covered = 0;
-  for (size_t i = 0; i < img.pixel_count(); ++i) covered += img.rgba[i * 4 + 3] > 0.5f;
-  EXPECT_GT(covered, 0u) << "the hard case shows nothing";
+  EXPECT_EQ(test::non_finite(img), 0u) << hc.path << " " << hc.variant;
+  EXPECT_GT(test::covered_pixels(img), 0u) << "the hard case shows nothing";
 }
 
 INSTANTIATE_TEST_SUITE_P(Hard, HardScene, ::testing::ValuesIn(hard_cases()), [](const auto& info) {
@@ -137,9 +127,12 @@ TEST(VariantGrammar, PathsWithAGrammarAcceptEveryValidCombination) {
   EXPECT_EQ(resolve_variant(find_path("arbfp"), "pow=lut:128:f16"), "pow=lut:128:f16");
   EXPECT_EQ(resolve_variant(find_path("gx"), "lut=64:t=vertex"), "t=vertex:lut=64");
   EXPECT_EQ(resolve_variant(find_path("gx"), ""), "t=vertex");
-  for (const auto& [path, bad] : std::vector<std::pair<std::string, std::string>>{
-           {"arbfp", "pow=lut:1:f16"}, {"arbfp", "pow=lut:64:f8"}, {"gx", "t=vertex:lut=0"},
-           {"glsl", "pow=lut:64:u8"}, {"half", "pow=mul"}}) {
+  for (const auto& [path, bad] :
+       std::vector<std::pair<std::string, std::string>>{{"arbfp", "pow=lut:1:f16"},
+                                                        {"arbfp", "pow=lut:64:f8"},
+                                                        {"gx", "t=vertex:lut=0"},
+                                                        {"glsl", "pow=lut:64:u8"},
+                                                        {"half", "pow=mul"}}) {
     EXPECT_THROW(resolve_variant(find_path(path), bad), InputError) << path << " " << bad;
   }
 }

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include "image/image.h"
 
 namespace lt {
 namespace fs = std::filesystem;  // the same alias as core/fs.h
@@ -101,6 +104,21 @@ inline std::string test_param_name(const std::string& s) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
   return r;
+}
+
+// NaN or Inf values anywhere in an image (all four channels): model.md's "no NaN or Inf ever
+// reaches an image" is this being 0.
+inline size_t non_finite(const Image& img) {
+  size_t n = 0;
+  for (float v : img.rgba) n += !std::isfinite(v);
+  return n;
+}
+
+// Pixels whose alpha (coverage) is over one half.
+inline size_t covered_pixels(const Image& img) {
+  size_t n = 0;
+  for (size_t i = 0; i < img.pixel_count(); ++i) n += img.rgba[i * 4 + 3] > 0.5f;
+  return n;
 }
 
 }  // namespace lt::test
