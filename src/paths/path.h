@@ -109,11 +109,4 @@ const PathInfo& path_with_role(PathRole role);
 // listing the valid variants otherwise.
 std::string resolve_variant(const PathInfo& path, const std::string& requested);
 
-// The start every GL path shares: viewport, clear to the scene's background with alpha 0 (alpha
-// is coverage), depth test on, the shared matrices loaded.
-void begin_frame(const PathContext& ctx);
-
-// Reads the 8-bit OSMesa colour buffer as the path result (flips to top row first, A = coverage).
-Image read_framebuffer(const gl::Context& gl);
-
 }  // namespace lt

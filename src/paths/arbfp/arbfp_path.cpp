@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_program.h"
+#include "paths/common/frame.h"
 
 namespace lt {
 

@@ -11,6 +11,7 @@
 #include "model/power_lut.h"
 #include "model/translucency.h"
 #include "paths/combiners/combiner_budget.h"
+#include "paths/common/frame.h"
 
 namespace lt {
 

@@ -1,5 +1,7 @@
 #include "paths/flat/flat_path.h"
 
+#include "paths/common/frame.h"
+
 namespace lt {
 
 namespace {

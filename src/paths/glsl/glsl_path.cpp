@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "gl/program.h"
+#include "paths/common/frame.h"
 
 namespace lt {
 

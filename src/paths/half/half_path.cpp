@@ -6,8 +6,8 @@
 #include <thread>
 
 #include "core/error.h"
+#include "paths/common/gbuffer.h"
 #include "paths/half/half_shading.h"
-#include "paths/reference/gbuffer.h"
 
 namespace lt {
 

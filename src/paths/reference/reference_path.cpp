@@ -4,7 +4,7 @@
 #include <thread>
 
 #include "model/translucency.h"
-#include "paths/reference/gbuffer.h"
+#include "paths/common/gbuffer.h"
 
 namespace lt {
 

@@ -1,4 +1,4 @@
-#include "paths/reference/gbuffer.h"
+#include "paths/common/gbuffer.h"
 
 namespace lt {
 
