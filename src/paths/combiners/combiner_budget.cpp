@@ -43,8 +43,9 @@ CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& prof
     CombinerBudgetMaterial m;
     m.material = scene.materials[plan.material].name;
     // A pass is one program: the limits apply to the largest program the material uses.
-    for (const auto& [name, program] : plan.programs) {
-      m.program += (m.program.empty() ? "" : "+") + name;
+    for (const auto& [kind, program] : plan.programs) {
+      if (!m.program.empty()) m.program += '+';
+      m.program += program_file(kind);
       // GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs
       // a unit; the colour sum after the combiners is free.
       const int program_stages = static_cast<int>(program.stages.size());

@@ -22,6 +22,22 @@ bool texgen_applicable(const Scene& scene, const Material& material) {
                      [](const Light& l) { return l.type == Light::Type::Directional; });
 }
 
+const char* program_file(PassKind kind) {
+  switch (kind) {
+    case PassKind::DiffuseOnly:
+      return "diffuse_only.comb";
+    case PassKind::LobeVertex:
+      return "lobe_vertex.comb";
+    case PassKind::LobeTexgen:
+      return "lobe_texgen.comb";
+    case PassKind::LobeCube:
+      return "lobe_cube.comb";
+    case PassKind::LobeCubeFull:
+      return "lobe_cube_full.comb";
+  }
+  return "";
+}
+
 std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant) {
   std::vector<CombinerMaterialPlan> plans(scene.materials.size());
   for (const SceneObject& o : scene.objects) plans[o.material].used = true;
@@ -30,7 +46,7 @@ std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::
     const Material& m = scene.materials[i];
     p.material = static_cast<int>(i);
     if (!m.translucency || scene.lights.empty()) {
-      p.pass_programs = {"diffuse_only.comb"};
+      p.pass_kinds = {PassKind::DiffuseOnly};
     } else {
       // One pass per light: the lobe needs att*T of its own light in the primary colour, and a
       // vertex has one primary colour (see combiners/README.md, "Why one pass per light").
@@ -39,14 +55,15 @@ std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::
         if (variant == "lobe=cube" && l.type == Light::Type::Directional) {
           // Constant thickness: the whole term depends on N only and fits in the cube's rgb.
           const bool constant = m.translucency->thickness_source == ThicknessSource::Constant;
-          p.pass_programs.push_back(constant ? "lobe_cube_full.comb" : "lobe_cube.comb");
+          p.pass_kinds.push_back(constant ? PassKind::LobeCubeFull : PassKind::LobeCube);
         } else {
-          p.pass_programs.push_back(texgen ? "lobe_texgen.comb" : "lobe_vertex.comb");
+          p.pass_kinds.push_back(texgen ? PassKind::LobeTexgen : PassKind::LobeVertex);
         }
       }
     }
-    for (const std::string& name : p.pass_programs) {
-      if (!p.programs.count(name)) p.programs.emplace(name, combiners::load_combiner_program(name));
+    for (PassKind k : p.pass_kinds) {
+      if (!p.programs.count(k))
+        p.programs.emplace(k, combiners::load_combiner_program(program_file(k)));
     }
   }
   return plans;
@@ -98,10 +115,6 @@ glm::dvec3 cube_direction(int face, int i, int j, int size) {
   }
 }
 
-bool is_cube(const std::string& program) {
-  return program == "lobe_cube.comb" || program == "lobe_cube_full.comb";
-}
-
 unsigned char to_unorm8(double v) {
   return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
@@ -142,7 +155,7 @@ class CombinersPath final : public Path {
       glBindTexture(GL_TEXTURE_1D, 0);
       lut_textures_[p.material] = tex;
       for (int pass = 0; pass < p.passes(); ++pass) {
-        if (!is_cube(p.pass_programs[static_cast<size_t>(pass)])) continue;
+        if (!uses_cube(p.kind(pass))) continue;
         const auto t0 = std::chrono::steady_clock::now();
         cubes_[p.material][static_cast<size_t>(pass)] = build_cube(p.material, pass);
         cube_seconds_ +=
@@ -233,17 +246,18 @@ class CombinersPath final : public Path {
       if (!p.used) continue;
       const std::string material = "material " + ctx_.scene.materials[p.material].name;
       for (int pass = 0; pass < p.passes(); ++pass) {
-        const std::string& name = p.pass_programs[static_cast<size_t>(pass)];
+        const PassKind kind = p.kind(pass);
+        const std::string name = program_file(kind);
         std::string note;
-        if (variant_ == "t=texgen" && name == "lobe_vertex.comb") {
+        if (variant_ == "t=texgen" && kind == PassKind::LobeVertex) {
           note =
               " (texgen not applicable: needs directional lights, an orthographic camera and "
               "unnormalised H; t computed per vertex on the CPU)";
         }
-        if (variant_ == "lobe=cube" && name == "lobe_vertex.comb") {
+        if (variant_ == "lobe=cube" && kind == PassKind::LobeVertex) {
           note = " (point light: no cube, t per vertex)";
         }
-        if (is_cube(name)) {
+        if (uses_cube(kind)) {
           const Cube& c = cubes_[p.material][static_cast<size_t>(pass)];
           note = " (cube " + std::to_string(kCombinerCubeSize) + "^2 x 6, RGBA8" +
                  (c.constant_clamped ? "; albedo*color*g > 4 clamped" : "") + ")";
@@ -307,9 +321,7 @@ class CombinersPath final : public Path {
     std::vector<double> g(rgb.size());
     double g_max = 0;
     const glm::dvec3 ambient = pass == 0 ? mat.albedo * s.ambient_light : glm::dvec3(0);
-    const bool full =
-        plans_[static_cast<size_t>(material)].pass_programs[static_cast<size_t>(pass)] ==
-        "lobe_cube_full.comb";
+    const bool full = plans_[static_cast<size_t>(material)].kind(pass) == PassKind::LobeCubeFull;
     const glm::dvec3 T = model::thickness(tr, glm::dvec3(1));  // constant when `full`
     for (int f = 0; f < 6; ++f) {
       for (int j = 0; j < n; ++j) {
@@ -424,7 +436,7 @@ class CombinersPath final : public Path {
     const Scene& s = ctx_.scene;
     const gl::GpuMesh& mesh = ctx_.geometry.meshes()[object];
     const CombinerMaterialPlan& plan = plans_[static_cast<size_t>(mesh.material)];
-    const std::string& name = plan.pass_programs[static_cast<size_t>(pass)];
+    const PassKind kind = plan.kind(pass);
     const combiners::CombinerProgram& program = plan.program(pass);
     const Material& mat = s.materials[static_cast<size_t>(mesh.material)];
     const size_t l = static_cast<size_t>(pass);
@@ -432,12 +444,12 @@ class CombinersPath final : public Path {
     combiners::ProgramInputs in;
     in.textures["white"] = {GL_TEXTURE_2D, white_};
     bool secondary = false, texcoords = false;
-    if (is_cube(name)) {
+    if (uses_cube(kind)) {
       const Cube& c = cubes_[static_cast<size_t>(mesh.material)][l];
       in.textures["lobe_cube"] = {GL_TEXTURE_CUBE_MAP, c.texture};
       in.constants["lobe_color"] = glm::dvec4(c.lobe_color, 1);
       stream(buf[0], vt.thickness);
-    } else if (name == "diffuse_only.comb") {
+    } else if (kind == PassKind::DiffuseOnly) {
       stream(buf[0], vt.diffuse);
     } else {
       const Light& light = s.lights[l];
@@ -455,7 +467,7 @@ class CombinersPath final : public Path {
     combiners::apply(program, in);
     glActiveTexture(GL_TEXTURE0);
     glMatrixMode(GL_TEXTURE);
-    if (name == "lobe_texgen.comb") {
+    if (kind == PassKind::LobeTexgen) {
       load_texgen_matrix(mat, s.lights[l], luts_[static_cast<size_t>(mesh.material)]);
     } else {
       glLoadIdentity();

@@ -15,19 +15,32 @@ namespace lt {
 
 PathInfo combiners_path_info();
 
+// What one pass draws, chosen once by plan_combiners; every later decision reads the kind.
+enum class PassKind {
+  DiffuseOnly,   // a material without translucency: the diffuse sum per vertex
+  LobeVertex,    // the LUT at a per-vertex t
+  LobeTexgen,    // the LUT at t from texgen NORMAL_MAP and the texture matrix
+  LobeCube,      // the lobe from a cube map of the normal, thickness per vertex
+  LobeCubeFull,  // the whole term in the cube map (constant thickness)
+};
+// Its program in combiners/ ("lobe_vertex.comb").
+const char* program_file(PassKind kind);
+inline bool uses_cube(PassKind k) {
+  return k == PassKind::LobeCube || k == PassKind::LobeCubeFull;
+}
+
 // The plan for one scene: which program each pass of each material uses (shared by the path and
 // the budget checker, so both count the same thing). Pass l of a translucent material draws
 // light l and adds onto the passes before it; a material without translucency takes one pass.
 struct CombinerMaterialPlan {
   int material = 0;
-  bool used = false;                                           // some object draws with it
-  std::vector<std::string> pass_programs;                      // file in combiners/ per pass
-  std::map<std::string, combiners::CombinerProgram> programs;  // by file name
+  bool used = false;                                        // some object draws with it
+  std::vector<PassKind> pass_kinds;                         // per pass
+  std::map<PassKind, combiners::CombinerProgram> programs;  // the programs those kinds use
 
-  int passes() const { return static_cast<int>(pass_programs.size()); }
-  const combiners::CombinerProgram& program(int pass) const {
-    return programs.at(pass_programs[static_cast<size_t>(pass)]);
-  }
+  int passes() const { return static_cast<int>(pass_kinds.size()); }
+  PassKind kind(int pass) const { return pass_kinds[static_cast<size_t>(pass)]; }
+  const combiners::CombinerProgram& program(int pass) const { return programs.at(kind(pass)); }
 };
 // `variant` as registered ("t=vertex", "t=texgen", "lobe=cube"). t=texgen serves only scenes
 // texgen_applicable accepts (else t=vertex); lobe=cube serves directional lights (point lights
