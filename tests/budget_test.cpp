@@ -1,15 +1,14 @@
 // The budget checker: the program counter on hand-written programs with known counts (including
 // the texture-indirection cases of ARB_fragment_program issue 24), agreement with Mesa's own
 // counts for every generated program, the profiles, the term's cost, and the CLI's exit codes.
-#include "budget/budget.h"
-
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "arb_test_util.h"
-#include "budget/program_counter.h"
 #include "gl/context.h"
+#include "paths/arbfp/arb_budget.h"
+#include "paths/arbfp/arb_counter.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arbfp_path.h"

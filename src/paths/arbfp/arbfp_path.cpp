@@ -1,8 +1,8 @@
 #include "paths/arbfp/arbfp_path.h"
 
-#include "budget/budget.h"
-#include "budget/program_counter.h"
 #include "core/error.h"
+#include "paths/arbfp/arb_budget.h"
+#include "paths/arbfp/arb_counter.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/common/frame.h"

@@ -1,4 +1,4 @@
-#include "budget/profiles.h"
+#include "paths/arbfp/arb_profiles.h"
 
 #include "core/error.h"
 

@@ -1,4 +1,4 @@
-#include "budget/program_counter.h"
+#include "paths/arbfp/arb_counter.h"
 
 #include <algorithm>
 #include <cctype>

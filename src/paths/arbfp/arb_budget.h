@@ -1,13 +1,14 @@
-// `ltrender budget`: every program a path generates for a scene, counted (program_counter.h) and
-// checked against a profile pair (profiles.h), plus the translucency term's own cost per light:
-// the program with the term minus the same program without it.
+// The arbfp path's budget (`ltrender budget SCENE --path arbfp`): every program it generates for
+// a scene, counted (arb_counter.h) and checked against a profile pair (arb_profiles.h), plus the
+// translucency term's own cost per light: the program with the term minus the same program
+// without it. It lives with the path (no other folder includes the ARB generator).
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "budget/profiles.h"
+#include "paths/arbfp/arb_profiles.h"
 #include "scene/scene.h"
 
 namespace lt::budget {

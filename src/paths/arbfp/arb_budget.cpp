@@ -1,4 +1,4 @@
-#include "budget/budget.h"
+#include "paths/arbfp/arb_budget.h"
 
 #include <iomanip>
 #include <set>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "budget/program_counter.h"
+#include "paths/arbfp/arb_counter.h"
 
 namespace lt::budget {
 
