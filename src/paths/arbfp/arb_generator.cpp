@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "gl/program.h"
+#include "model/pow_curves.h"
 #include "model/translucency.h"
 
 namespace lt::arbfp {
@@ -93,42 +94,6 @@ PowVariant parse_variant(const std::string& name) {
   throw InputError("--variant", name,
                    "unknown arbfp variant (pow=exact, pow=lut:N:u8|f16|f32 with 2 <= N <= 4096, "
                    "pow=sg, pow=sg-simplified, pow=sg-fitted, pow=mul, pow=mul:vertex)");
-}
-
-double sg_exponent(double p) {
-  return p / std::log(2.0) + 1 / std::log(2.0);
-}
-
-double fit_sg_exponent(double p) {
-  // Max error over a dense t grid; the fitted curve is smooth, 4097 samples resolve its peak.
-  auto max_error = [p](double n) {
-    double e = 0;
-    for (int i = 0; i <= 4096; ++i) {
-      const double t = i / 4096.0;
-      e = std::max(e, std::abs(std::exp2(n * (t - 1)) - model::lobe(t, p)));
-    }
-    return e;
-  };
-  // Coarse scan over [0, 2 n'_sg + 8], then golden-section refinement around the best sample
-  // (the max error is unimodal near its minimum, not necessarily globally).
-  const double hi = 2 * sg_exponent(p) + 8;
-  const int steps = 200;
-  int best = 0;
-  double best_e = max_error(0);
-  for (int i = 1; i <= steps; ++i) {
-    const double e = max_error(hi * i / steps);
-    if (e < best_e) best_e = e, best = i;
-  }
-  double a = hi * std::max(best - 1, 0) / steps, b = hi * std::min(best + 1, steps) / steps;
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int it = 0; it < 60; ++it) {
-    const double c = b - g * (b - a), d = a + g * (b - a);
-    if (max_error(c) < max_error(d))
-      b = d;
-    else
-      a = c;
-  }
-  return (a + b) / 2;
 }
 
 namespace {
@@ -485,12 +450,12 @@ ArbPrograms generate_arb(const Scene& scene, const Material& material, const Pow
     }
     if (!flat_lobe && (method == PowMethod::Sg || method == PowMethod::SgSimplified ||
                        method == PowMethod::SgFitted)) {
-      double n = sg_exponent(tr.power);
+      double n = model::sg_exponent(tr.power);
       if (method == PowMethod::SgSimplified) n = tr.power;
       if (method == PowMethod::SgFitted) {
-        n = fit_sg_exponent(tr.power);
+        n = model::fit_sg_exponent(tr.power);
         out.notes.push_back("pow=sg-fitted: n' = " + num(n) + " for p = " + num(tr.power) +
-                            " (sg: " + num(sg_exponent(tr.power)) + ")");
+                            " (sg: " + num(model::sg_exponent(tr.power)) + ")");
       }
       params << "PARAM sg = " << vec4(n, 0, 0, 0) << ";  # n'\n";
       lobe << "# " << variant.name() << ": t^p ~ exp2(n' * (t - 1)) = exp2(t * n' - n'). t <= 1, "

@@ -39,11 +39,6 @@ struct PowVariant {
 // malformed.
 PowVariant parse_variant(const std::string& name);
 
-// n' of exp2(n' (t - 1)) minimising max over t in [0, 1] of |exp2(n' (t - 1)) - t^p|, in double.
-double fit_sg_exponent(double p);
-// The spherical-Gaussian exponent of the seed: n' = p / ln 2 + 1 / ln 2 (1.4427 = 1 / ln 2).
-double sg_exponent(double p);
-
 struct ArbPrograms {
   std::string vertex, fragment;
   std::optional<model::PowerLut> lut;  // the texture the fragment program samples as texture[0]

@@ -26,6 +26,7 @@
 
 #include <cmath>
 
+#include "model/pow_curves.h"
 #include "model/translucency.h"
 
 namespace lt::fp16 {
@@ -141,7 +142,7 @@ SceneH prepare_scene(const Scene& scene, PowMode mode) {
       h.distortion = to_half(tr.distortion);
       h.ambient = to_half(tr.ambient);
       // The blog's n = n * 1.4427f + 1.4427f, in half like the rest of the shader.
-      const half k = to_half(1.4427);
+      const half k = to_half(model::kSeedLog2e);
       h.sg_exponent = f.add(f.mul(h.power, k), k);
       h.thickness = h.vertex_thickness ? to_half(tr.tint) : to_half(tr.thickness * tr.tint);
     }
