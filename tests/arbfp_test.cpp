@@ -210,108 +210,15 @@ TEST(ArbfpGenerator, PerVertexLobePacksFourLightsPerTexcoord) {
   EXPECT_THROW(arbfp::generate_arb(s, s.materials[0], pv), InputError);
 }
 
-// Per-variant thresholds on the demo scenes (max LSB over covered pixels), each from the
-// variant's documented error. "Weight" below is what multiplies the lobe in the image: s * T *
-// light colour * albedo, up to ~5 on the demo scenes (coloured_cubes: s 3, colour 2, T 0.8).
-double max_lsb_for(const std::string& v) {
-  // pow=mul:vertex: per scene, see per_vertex_max_lsb.
-  if (v == "pow=mul:vertex") return 0;
-  // Float shading of the exact equation, rounded once to 8 bits: 0.5 LSB plus float noise.
-  if (v == "pow=exact" || v == "pow=mul") return 1.0;
-  // Half texels (2^-11 relative) and linear interpolation (h^2/8 p(p-1) <= 1e-4 at N = 256,
-  // ~1.7e-3 at N = 64, p = 8) times the weight: well under 1 LSB more. Measured <= 0.92.
-  if (v == "pow=lut:256:f16" || v == "pow=lut:64:f16") return 1.5;
-  // f32 texels, but N = 32: interpolation error 1/31^2/8 * 56 = 7e-3 of the lobe, times the
-  // weight ~2.5 on backlit_sphere (s 2 * colour 1.2 * T 0.6 ...): ~2.3 LSB measured.
-  if (v == "pow=lut:32:f32") return 3.0;
-  // u8 texels: 0.5/255 per texel times the weight (~5): up to ~2.5 LSB, plus llvmpipe's 8-bit
-  // filtering of unorm8 textures and the output rounding. Measured <= 3.9.
-  if (v == "pow=lut:256:u8" || v == "pow=lut:64:u8") return 5.0;
-  // 16 texels: interpolation error 1/15^2/8 * 56 = 0.03 of the lobe for p = 8 (backlit_sphere),
-  // times the weight. Measured 8.2.
-  if (v == "pow=lut:16:u8") return 12.0;
-  // The spherical-Gaussian curve is not t^p: max |exp2(n'(t-1)) - t^p| is 0.027 (p = 8) to 0.065
-  // (p = 3) of the lobe, times the weight. Measured <= 26 (sg) and <= 31 (fitted: minimax on
-  // the lobe over [0, 1], not on the image, so it can be worse where the image weights it).
-  if (v == "pow=sg") return 32.0;
-  if (v == "pow=sg-fitted") return 40.0;
-  // exp2(p(t-1)) is a different curve (model.md: ~35-40 LSB off for any p): large by design.
-  if (v == "pow=sg-simplified") return 200.0;
-  ADD_FAILURE() << "no threshold for " << v;
-  return 0;
-}
-
 struct VariantCase {
   std::string scene, variant;
 };
-
-// pow=mul:vertex computes t and the lobe at the vertices and interpolates (lobe * s + a) linearly
-// across each triangle, so its error is the lobe's curvature over a triangle: it grows with
-// triangle size and with how fast N (and, for point lights, L) turns across it, and it peaks
-// where the lobe's narrow maximum falls between the vertices: on back-lit silhouettes. Its bound
-// is therefore per scene: measured (`ltrender bench scenes/*.json --paths arbfp`) on llvmpipe,
-// which is deterministic, plus ~30% so a change of mesh generator or rasteriser rounding does not
-// trip it while a real regression (e.g. a wrong group or component) still does. The mean stays
-// small everywhere (<= 1.12 LSB measured): the error is local to the rims, not a wrong curve.
-double per_vertex_max_lsb(const std::string& scene) {
-  const std::string s = fs::path(scene).stem().string();
-  // Flat slab and block faces, directional lights: N and L are constant per face, only V turns,
-  // and slowly. Measured 0.74.
-  if (s == "thin_vs_thick") return 1.5;
-  // sphere_s4: small triangles, smooth normals, but p = 8 (a narrow lobe). Measured 3.98.
-  if (s == "backlit_sphere") return 6.0;
-  // Cubes, two triangles per face, point lights 1.6 units away: each face's lobe is the
-  // interpolation of four corner values, L turning by up to ~30 degrees over a face. Measured
-  // 17.91 (mean 1.11).
-  if (s == "coloured_cubes") return 25.0;
-  // The blob's back-lit rims (the ears), where N turns by tens of degrees over one triangle and
-  // the lobe (p 3-4, s up to 3) peaks between vertices. Measured 33.90 (three_point_blob, point
-  // lights) and 45.76 (baked_blob), at the silhouette only: p99 <= 3.7 LSB.
-  if (s == "three_point_blob") return 45.0;
-  if (s == "baked_blob") return 60.0;
-  ADD_FAILURE() << "no pow=mul:vertex threshold for " << s << ": measure it first (bench)";
-  return 0;
-}
 
 void PrintTo(const VariantCase& c, std::ostream* os) {
   *os << c.scene << " " << c.variant;
 }
 
-std::vector<VariantCase> demo_cases() {
-  std::vector<VariantCase> out;
-  for (const std::string& s : test::json_files("scenes")) {
-    for (const std::string& v : variant_names()) out.push_back({s, v});
-  }
-  return out;
-}
-
-class ArbfpDemo : public ::testing::TestWithParam<VariantCase> {};
-
-TEST_P(ArbfpDemo, VariantWithinItsDocumentedError) {
-  const VariantCase& c = GetParam();
-  const Scene scene = test::load_test_scene(c.scene);
-  const Image ref = render_scene(scene, "reference", "");
-  const Image img = render_scene(scene, "arbfp", c.variant);
-  ASSERT_EQ(test::non_finite(img), 0u);
-  const Comparison cmp = compare_images(img, ref, TestEncoding::kUnorm8);
-  EXPECT_GT(cmp.covered.pixels, scene.width * scene.height / 50);
-  const bool per_vertex = c.variant == "pow=mul:vertex";
-  EXPECT_LE(cmp.covered.max_lsb, per_vertex ? per_vertex_max_lsb(c.scene) : max_lsb_for(c.variant))
-      << "at " << cmp.covered.max_x << "," << cmp.covered.max_y;
-  if (per_vertex) EXPECT_LE(cmp.covered.mean_lsb, 1.5);
-  if (c.variant == "pow=sg-simplified") {
-    // ... and it really is the other curve: far off on average, not just at a few pixels.
-    EXPECT_GT(cmp.covered.mean_lsb, 5.0);
-  }
-  // Coverage is the same rasteriser's (ARB_position_invariant): the background agrees exactly.
-  EXPECT_EQ(cmp.image.pixels, ref.pixel_count());
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, ArbfpDemo, ::testing::ValuesIn(demo_cases()),
-                         [](const auto& info) {
-                           return test::test_param_name(fs::path(info.param.scene).stem().string() +
-                                                        "__" + info.param.variant);
-                         });
+// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
 // Every variant on every hard scene: finite everywhere (POW of 0 through LG2/EX2 is NaN unless
 // guarded, RSQ(0) is inf, a light at distance 0 divides by 0). The 8-bit framebuffer would hide a

@@ -264,64 +264,7 @@ Comparison against_reference(const Scene& scene, const std::string& variant, int
   return compare_images(img, ref, TestEncoding::kUnorm8);
 }
 
-// Measured (t=vertex, default meshes, scene size) and the bound set a little above. The error is
-// per-vertex sampling: diffuse, attenuation and thickness interpolated linearly and t interpolated
-// across each triangle, so it is largest where the lobe or N.L bends within a triangle: on coarse
-// meshes and at silhouettes (grazing triangles cover few pixels but span a wide range of normals).
-// p99 keeps the bound meaningful where a handful of pixels set the max.
-struct DemoBound {
-  const char* scene;
-  double max_lsb, mean_lsb, p99_lsb;
-  const char* why;
-};
-
-void PrintTo(const DemoBound& c, std::ostream* os) {
-  *os << c.scene;
-}
-
-const DemoBound kDemo[] = {
-    // measured max 81.8 (a lobe tip's silhouette), mean 0.53, p99 4.8: the blob's thin lobes
-    // turn the normal fast within a triangle, and thickness is per vertex here anyway.
-    {"baked_blob", 90, 0.65, 6, "thin lobes: large normal change per triangle"},
-    // measured max 4.02, mean 0.46, p99 1.53: sphere_s4 (5120 faces) is fine enough for p = 8.
-    {"backlit_sphere", 5, 0.6, 2, "icosphere s4: small triangles"},
-    // measured max 20.3, mean 1.41, p99 11.8: cube faces of a few large quads, two point lights
-    // close to them: attenuation and N.L vary across each triangle far from linearly.
-    {"coloured_cubes", 24, 1.7, 14, "large flat faces near point lights"},
-    // measured max 2.94, mean 0.57, p99 2.15 (baked vertex thickness): flat faces and
-    // directional lights leave only the interpolated t and the 8-bit LUT.
-    {"thin_vs_thick", 4, 0.7, 2.6, "flat faces: interpolated t, 8-bit LUT"},
-    // measured max 33.2 (at a lobe tip's silhouette), mean 0.51, p99 3.3.
-    {"three_point_blob", 40, 0.65, 4, "thin lobes: large normal change per triangle"},
-};
-
-class CombinersDemo : public ::testing::TestWithParam<DemoBound> {};
-
-TEST_P(CombinersDemo, MatchesReferenceWithinPerVertexBound) {
-  const DemoBound& b = GetParam();
-  const Scene scene = load_scene(test::source_dir() / "scenes" / (std::string(b.scene) + ".json"));
-  const Comparison c = against_reference(scene, "");
-  std::printf("%s: max %.2f mean %.3f p99 %.2f\n", b.scene, c.covered.max_lsb, c.covered.mean_lsb,
-              c.covered.p99_lsb);
-  EXPECT_LE(c.covered.max_lsb, b.max_lsb)
-      << b.why << " at " << c.covered.max_x << "," << c.covered.max_y;
-  EXPECT_LE(c.covered.mean_lsb, b.mean_lsb) << b.why;
-  EXPECT_LE(c.covered.p99_lsb, b.p99_lsb) << b.why;
-  EXPECT_EQ(c.test_non_finite, 0u);
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, CombinersDemo, ::testing::ValuesIn(kDemo),
-                         [](const auto& info) { return std::string(info.param.scene); });
-
-TEST(CombinersDemo, EveryDemoSceneHasABound) {
-  for (const auto& e : fs::directory_iterator(test::source_dir() / "scenes")) {
-    if (e.path().extension() != ".json") continue;
-    const std::string stem = e.path().stem().string();
-    bool found = false;
-    for (const DemoBound& b : kDemo) found = found || stem == b.scene;
-    EXPECT_TRUE(found) << stem << ": measure the combiners error and add a bound to kDemo";
-  }
-}
+// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
 // Hard cases (model.md) through the default variant: finite everywhere (paths_test checks that
 // too) and within bounds measured on the per-vertex sampling, set a little above. Cases not

@@ -140,39 +140,7 @@ TEST_P(GxDemoScene, ExportRoundTripIsBitExact) {
   EXPECT_EQ(differ, 0u);
 }
 
-// gx against the reference. The bounds are measured (`ltrender bench scenes/*.json --paths gx`)
-// plus a margin, and each has its cause:
-//  - mean: the hardware truncates four times on the way (XF float -> int, the material multiply
-//    (mat * (l + (l >> 7))) >> 8, the interpolated colour, and 8-bit TEV inputs), about 0.5 LSB
-//    each and always downwards, and multiplied by the x2 scale where lights are brighter than 1
-//    (measured 2.9 to 5.7 LSB; 0.8 on a one-light scene with no scale, GxPath.OneDimLight...);
-//  - max: t is interpolated per vertex, so thin lobes and silhouettes are off as for the
-//    combiners' t=vertex (which measures 20 and 82 LSB max on coloured_cubes and baked_blob).
-struct Bound {
-  const char* scene;
-  double max_lsb, mean_lsb;
-};
-constexpr Bound kBounds[] = {
-    {"scenes/backlit_sphere.json", 8, 3.5},    {"scenes/baked_blob.json", 90, 4.5},
-    {"scenes/coloured_cubes.json", 34, 7.0},   {"scenes/thin_vs_thick.json", 12, 4.5},
-    {"scenes/three_point_blob.json", 32, 5.0},
-};
-
-TEST_P(GxDemoScene, WithinItsBoundOfTheReference) {
-  const Scene scene = load_scene(test::source_dir() / GetParam());
-  const Bound* b = nullptr;
-  for (const Bound& k : kBounds) {
-    if (GetParam() == k.scene) b = &k;
-  }
-  ASSERT_NE(b, nullptr) << "every demo scene needs a gx bound: add one for " << GetParam();
-  const Comparison c = compare_images(render_scene(scene, "gx", ""),
-                                      render_scene(scene, "reference", ""), TestEncoding::kUnorm8);
-  EXPECT_EQ(c.test_non_finite, 0u);
-  EXPECT_LE(c.covered.max_lsb, b->max_lsb) << "at " << c.covered.max_x << "," << c.covered.max_y;
-  EXPECT_LE(c.covered.mean_lsb, b->mean_lsb);
-  // The bias is downwards, never a wrong colour: the error is within 1 LSB on the background.
-  EXPECT_LE(c.image.max_lsb, b->max_lsb);
-}
+// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_files("scenes")),
                          [](const auto& info) {

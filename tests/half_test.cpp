@@ -141,40 +141,7 @@ std::string test_name(const std::string& s) {
   return test::test_param_name(fs::path(s).stem().string());
 }
 
-// Demo scenes against the reference (float output, compared unquantised).
-// pow=exact, measured (`ltrender bench scenes/*.json --paths half`): max 0.91..2.76 LSB, mean
-// 0.073..0.184 LSB. Half keeps 11 bits: one rounding is <= 2^-12 relative (0.06 LSB at 1.0),
-// and a chain of ~20 roundings stays a fraction of an LSB; the pow amplifies the relative error
-// of t by p (t^p: rel err p * rel_err(t)), so backlit_sphere (p = 8, t off by ~2 half ulps,
-// ~1e-3) reaches 2.76 LSB on its brightest lobe. Bar: max 3.5 LSB, mean 0.25 LSB.
-// pow=sg adds the spherical Gaussian's own curve error (arbfp's pow=sg shows the same in float):
-// measured max 10.6..23.7 LSB, mean 2.3..5.1 LSB. Bar: max 28 LSB, mean 6 LSB: it catches a
-// broken fp16 SG, not the (known) SG curve. pow=unguarded equals pow=exact wherever no guard
-// fires, and no guard fires on the demo scenes: same bar, and no non-finite pixel.
-struct Bar {
-  const char* variant;
-  double max_lsb, mean_lsb;
-};
-constexpr Bar kBars[] = {{"pow=exact", 3.5, 0.25}, {"pow=sg", 28, 6}, {"pow=unguarded", 3.5, 0.25}};
-
-class HalfDemoScene : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(HalfDemoScene, MatchesReferenceWithinHalfPrecision) {
-  const Scene scene = load_scene(test::source_dir() / GetParam());
-  const Image ref = render_scene(scene, "reference", "");
-  for (const Bar& bar : kBars) {
-    const Rendered r = render_half(scene, bar.variant);
-    EXPECT_EQ(r.stats.nonfinite_pixels.value(), 0.0) << bar.variant;
-    const Comparison c = compare_images(r.image, ref, TestEncoding::kFloat);
-    EXPECT_EQ(c.test_non_finite, 0u);
-    EXPECT_LE(c.covered.max_lsb, bar.max_lsb)
-        << bar.variant << " at " << c.covered.max_x << "," << c.covered.max_y;
-    EXPECT_LE(c.covered.mean_lsb, bar.mean_lsb) << bar.variant;
-  }
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, HalfDemoScene, ::testing::ValuesIn(scene_files("scenes")),
-                         [](const auto& info) { return test_name(info.param); });
+// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
 // Hard scenes: the guarded variants never produce a non-finite value (nothing to hide behind the
 // marker); paths_test.cpp checks the images of every variant for NaN/Inf.

@@ -48,18 +48,7 @@ void expect_glsl_matches(const Scene& scene, const Image& ref) {
   EXPECT_LE(cf.covered.mean_lsb, kGlslF32MeanLsb);
 }
 
-class DemoScene : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(DemoScene, GlslMatchesReference) {
-  const Scene scene = load_scene(test::source_dir() / GetParam());
-  const Image ref = render_scene(scene, "reference", "");
-  ASSERT_EQ(test::non_finite(ref), 0u);
-  EXPECT_GT(test::covered_pixels(ref), ref.pixel_count() / 50) << "the scene shows too little";
-  expect_glsl_matches(scene, ref);
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, DemoScene, ::testing::ValuesIn(scene_files("scenes")),
-                         [](const auto& info) { return test_name(info.param); });
+// The demo scenes: tests/bounds.json (bounds_test.cpp).
 
 class HardSceneGlsl : public ::testing::TestWithParam<std::string> {};
 

@@ -1,0 +1,138 @@
+// Every port's error against the reference, on every demo scene, from one table: tests/bounds.json
+// (rows: path, variant, scene or "*", max / mean / p99 LSB bounds, a reason). One parameterised
+// test renders each (scene, path, variant) the bench would run and holds it to its row; another
+// fails when a variant has no row, so a new path or variant cannot land without a stated bound.
+// The bounds are measured (`ltrender bench scenes/*.json scenes/ortho/*.json`) with a margin, and
+// the reason says why the error is what it is.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "metrics/compare.h"
+#include "render/session.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+struct BoundRow {
+  std::string path, variant, scene;  // scene: a stem ("backlit_sphere") or "*"
+  double max_lsb = 0, mean_lsb = 0;
+  std::optional<double> p99_lsb, image_max_lsb, min_mean_lsb;
+  std::string reason;
+};
+
+const std::vector<BoundRow>& bound_rows() {
+  static const std::vector<BoundRow> rows = [] {
+    std::ifstream in(test::source_dir() / "tests" / "bounds.json");
+    const auto j = nlohmann::json::parse(in);
+    std::vector<BoundRow> out;
+    for (const auto& r : j.at("bounds")) {
+      BoundRow b;
+      b.path = r.at("path");
+      b.variant = r.at("variant");
+      b.scene = r.at("scene");
+      b.max_lsb = r.at("max");
+      b.mean_lsb = r.at("mean");
+      if (r.contains("p99")) b.p99_lsb = r.at("p99").get<double>();
+      if (r.contains("image_max")) b.image_max_lsb = r.at("image_max").get<double>();
+      if (r.contains("min_mean")) b.min_mean_lsb = r.at("min_mean").get<double>();
+      b.reason = r.at("reason");
+      out.push_back(std::move(b));
+    }
+    return out;
+  }();
+  return rows;
+}
+
+// The row for a case: the scene's own row wins over the path's "*" row.
+const BoundRow* find_row(const std::string& path, const std::string& variant,
+                         const std::string& scene) {
+  const BoundRow* any = nullptr;
+  for (const BoundRow& r : bound_rows()) {
+    if (r.path != path || r.variant != variant) continue;
+    if (r.scene == scene) return &r;
+    if (r.scene == "*") any = &r;
+  }
+  return any;
+}
+
+struct BoundCase {
+  std::string scene_file, path, variant;
+};
+
+void PrintTo(const BoundCase& c, std::ostream* os) {
+  *os << c.scene_file << " " << c.path << " " << c.variant;
+}
+
+// What the bench runs: every port, every variant, every demo scene, but the variants a scene
+// refuses (gx t=texgen under perspective).
+std::vector<BoundCase> bound_cases() {
+  std::vector<BoundCase> out;
+  std::vector<std::string> scenes = test::json_files("scenes");
+  for (const std::string& s : test::json_files("scenes/ortho")) scenes.push_back(s);
+  for (const std::string& s : scenes) {
+    const Scene scene = load_scene(test::source_dir() / s);
+    for (const PathInfo& p : all_paths()) {
+      if (p.role != PathRole::Port) continue;
+      for (const VariantInfo& v : p.variants) {
+        if (p.refusal && !p.refusal(scene, v.name).empty()) continue;
+        out.push_back({s, p.name, v.name});
+      }
+    }
+  }
+  return out;
+}
+
+std::string stem(const std::string& file) {
+  return fs::path(file).stem().string();
+}
+
+TEST(Bounds, EveryVariantOnEveryDemoSceneHasARow) {
+  for (const BoundCase& c : bound_cases()) {
+    EXPECT_NE(find_row(c.path, c.variant, stem(c.scene_file)), nullptr)
+        << "tests/bounds.json has no row for " << c.path << " " << c.variant << " on "
+        << stem(c.scene_file) << ": measure it (ltrender bench) and state why";
+  }
+  for (const BoundRow& r : bound_rows()) {
+    EXPECT_FALSE(r.reason.empty()) << r.path << " " << r.variant << " " << r.scene;
+    EXPECT_GT(r.max_lsb, 0) << r.path << " " << r.variant << " " << r.scene;
+  }
+}
+
+class Bounded : public ::testing::TestWithParam<BoundCase> {};
+
+TEST_P(Bounded, WithinItsRowOfTheReference) {
+  const BoundCase& c = GetParam();
+  const BoundRow* row = find_row(c.path, c.variant, stem(c.scene_file));
+  ASSERT_NE(row, nullptr) << "no row (see Bounds.EveryVariantOnEveryDemoSceneHasARow)";
+  const Scene scene = load_scene(test::source_dir() / c.scene_file);
+  RenderSession session(scene, scene.width, scene.height);
+  auto ref = session.build(path_with_role(PathRole::GroundTruth), "");
+  ref->frame();
+  const Image reference = ref->result();
+  const PathInfo& info = find_path(c.path);
+  auto path = session.build(info, c.variant);
+  path->frame();
+  const Image img = path->result();
+  EXPECT_EQ(test::non_finite(img), 0u) << "no NaN or Inf ever reaches an image";
+  const Comparison cmp = compare_images(
+      img, reference, path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8);
+  EXPECT_GT(cmp.covered.pixels, reference.pixel_count() / 50) << "the scene shows too little";
+  EXPECT_LE(cmp.covered.max_lsb, row->max_lsb)
+      << row->reason << "; at " << cmp.covered.max_x << "," << cmp.covered.max_y;
+  EXPECT_LE(cmp.covered.mean_lsb, row->mean_lsb) << row->reason;
+  if (row->p99_lsb) EXPECT_LE(cmp.covered.p99_lsb, *row->p99_lsb) << row->reason;
+  if (row->image_max_lsb) EXPECT_LE(cmp.image.max_lsb, *row->image_max_lsb) << row->reason;
+  if (row->min_mean_lsb) EXPECT_GE(cmp.covered.mean_lsb, *row->min_mean_lsb) << row->reason;
+}
+
+INSTANTIATE_TEST_SUITE_P(Demo, Bounded, ::testing::ValuesIn(bound_cases()), [](const auto& info) {
+  return test::test_param_name(stem(info.param.scene_file) + "__" + info.param.path + "__" +
+                               info.param.variant);
+});
+
+}  // namespace
+}  // namespace lt
