@@ -126,8 +126,8 @@ const BadProgram kBad[] = {
     {"crossbar_to_untextured",
      "stage 0\n  rgb REPLACE primary\nstage 1\n  texture white\n  rgb MODULATE texture0 previous\n",
      3, "unit 0 binds no texture"},
-    {"unknown_texture", "stage 0\n  texture marble\n  rgb REPLACE texture\n", 2,
-     "unknown texture 'marble'"},
+    {"texture_not_a_name", "stage 0\n  texture mar-ble\n  rgb REPLACE texture\n", 2,
+     "is not a name"},
     {"duplicate", "stage 0\n  rgb REPLACE primary\n  rgb REPLACE previous\n", 3, "given twice"},
     {"literal_out_of_range", "stage 0\n  rgb REPLACE constant\n  constant 2 0 0 1\n", 3,
      "outside [0, 1]"},
@@ -240,6 +240,22 @@ TEST(CombinerState, CrossbarAndTexgenState) {
   EXPECT_FALSE(glIsEnabled(GL_COLOR_SUM));
   combiners::reset_texture_state(combiners::kMaxStages);
   glDeleteTextures(1, &tex);
+}
+
+// The parser takes any texture name; apply() refuses one the path does not provide, naming the
+// line of the stage that binds it.
+TEST(CombinerState, UnprovidedTextureNamesItsLine) {
+  gl::Context ctx(8, 8);
+  const combiners::CombinerProgram p = combiners::parse_combiner_program(
+      "stage 0\n  texture marble\n  rgb REPLACE texture\n", "marble.comb");
+  try {
+    combiners::apply(p, {});
+    FAIL() << "applied an unprovided texture";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "marble.comb");
+    EXPECT_EQ(e.where(), "1");  // the line of the stage that binds it
+    EXPECT_NE(e.what_only().find("texture 'marble' is not provided"), std::string::npos);
+  }
 }
 
 TEST(CombinerState, MissingInputNamesTheStageLine) {

@@ -148,11 +148,13 @@ class Parser {
   void stage_directive(Stage& stage, const std::vector<std::string>& w) {
     const std::string& key = w[0];
     if (key == "texture") {
-      expect_count(w, 2, "texture none|white|power_lut|lobe_cube");
-      static const std::set<std::string> names = {"none", "white", "power_lut", "lobe_cube"};
-      if (!names.count(w[1])) {
-        fail("unknown texture '" + w[1] + "' (valid: none, white, power_lut, lobe_cube)");
-      }
+      // Any name: the path that applies the program provides its textures by name, and apply()
+      // names the line of one it does not provide. So a new texture needs no parser change.
+      expect_count(w, 2, "texture none|NAME");
+      const bool identifier = std::all_of(w[1].begin(), w[1].end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+      });
+      if (!identifier) fail("texture '" + w[1] + "' is not a name (letters, digits, _)");
       stage.texture = w[1];
     } else if (key == "texcoord") {
       expect_count(w, 2, "texcoord none|array|normal_map");
