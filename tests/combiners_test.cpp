@@ -13,6 +13,7 @@
 #include "paths/combiners/combiner_budget.h"
 #include "paths/combiners/combiner_program.h"
 #include "paths/combiners/combiners_path.h"
+#include "paths/combiners/texgen_matrix.h"
 #include "render/session.h"
 #include "test_util.h"
 

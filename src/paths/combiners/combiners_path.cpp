@@ -11,16 +11,12 @@
 #include "model/power_lut.h"
 #include "model/translucency.h"
 #include "paths/combiners/combiner_budget.h"
+#include "paths/combiners/cube_lobe.h"
+#include "paths/combiners/texgen_matrix.h"
+#include "paths/combiners/vertex_terms.h"
 #include "paths/common/frame.h"
 
 namespace lt {
-
-bool texgen_applicable(const Scene& scene, const Material& material) {
-  if (scene.camera.projection != Camera::Projection::Orthographic) return false;
-  if (material.translucency && material.translucency->normalize_distorted_light) return false;
-  return std::all_of(scene.lights.begin(), scene.lights.end(),
-                     [](const Light& l) { return l.type == Light::Type::Directional; });
-}
 
 const char* program_file(PassKind kind) {
   switch (kind) {
@@ -83,42 +79,6 @@ void stream(GLuint buffer, const std::vector<float>& data) {
                GL_STREAM_DRAW);
 }
 
-// Per-vertex inputs of one object for one frame, computed on the CPU in double.
-struct VertexTerms {
-  // Per light: the LUT coordinate of the unsaturated t (the texture's CLAMP_TO_EDGE saturates
-  // per pixel, after interpolation, as the per-pixel model does), att * T * fold (rgba), and the
-  // light's diffuse and ambient part albedo * color * att * (diffuse + a*T) (rgb; pass 0 also
-  // carries albedo * ambient_light).
-  std::vector<std::vector<float>> texcoord, primary, secondary;
-  std::vector<float> thickness;  // rgba: T, the primary colour of a lobe=cube pass
-  std::vector<float> diffuse;    // rgba: albedo * (ambient + sum of color * att * diffuse), the
-                                 // whole term of a material without translucency
-};
-
-// The direction of texel (i, j) of a cube face, from GL's face table (spec "Cube Map Texture
-// Selection": s = (sc/|ma| + 1)/2, t = (tc/|ma| + 1)/2), at the texel centre.
-glm::dvec3 cube_direction(int face, int i, int j, int size) {
-  const double sc = 2.0 * (i + 0.5) / size - 1, tc = 2.0 * (j + 0.5) / size - 1;
-  switch (face) {
-    case 0:
-      return {1, -tc, -sc};  // +X
-    case 1:
-      return {-1, -tc, sc};  // -X
-    case 2:
-      return {sc, 1, tc};  // +Y
-    case 3:
-      return {sc, -1, -tc};  // -Y
-    case 4:
-      return {sc, -tc, 1};  // +Z
-    default:
-      return {-sc, -tc, -1};  // -Z
-  }
-}
-
-unsigned char to_unorm8(double v) {
-  return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-}
-
 class CombinersPath final : public Path {
  public:
   CombinersPath(const PathContext& ctx, const std::string& variant)
@@ -135,7 +95,7 @@ class CombinersPath final : public Path {
 
     luts_.resize(s.materials.size());
     lut_textures_.resize(s.materials.size(), 0);
-    cubes_.assign(s.materials.size(), std::vector<Cube>(s.lights.size()));
+    cubes_.assign(s.materials.size(), std::vector<CubeLobe>(s.lights.size()));
     for (const CombinerMaterialPlan& p : plans_) {
       const Material& m = s.materials[p.material];
       if (!p.used || !m.translucency) continue;
@@ -157,7 +117,9 @@ class CombinersPath final : public Path {
       for (int pass = 0; pass < p.passes(); ++pass) {
         if (!uses_cube(p.kind(pass))) continue;
         const auto t0 = std::chrono::steady_clock::now();
-        cubes_[p.material][static_cast<size_t>(pass)] = build_cube(p.material, pass);
+        cubes_[p.material][static_cast<size_t>(pass)] =
+            build_cube_lobe(ctx_.scene, ctx_.geometry.origin(), p.material,
+                            static_cast<size_t>(pass), p.kind(pass) == PassKind::LobeCubeFull);
         cube_seconds_ +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
@@ -174,7 +136,7 @@ class CombinersPath final : public Path {
       if (t) glDeleteTextures(1, &t);
     }
     for (const auto& per_light : cubes_) {
-      for (const Cube& c : per_light) {
+      for (const CubeLobe& c : per_light) {
         if (c.texture) glDeleteTextures(1, &c.texture);
       }
     }
@@ -185,7 +147,8 @@ class CombinersPath final : public Path {
     const auto t0 = std::chrono::steady_clock::now();
     const auto& meshes = ctx_.geometry.meshes();
     std::vector<VertexTerms> terms(meshes.size());
-    for (size_t i = 0; i < meshes.size(); ++i) terms[i] = vertex_terms(i);
+    for (size_t i = 0; i < meshes.size(); ++i)
+      terms[i] = vertex_terms(ctx_.scene, ctx_.geometry.origin(), i, lut_of(i));
     cpu_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     begin_frame(ctx_);
@@ -258,7 +221,7 @@ class CombinersPath final : public Path {
           note = " (point light: no cube, t per vertex)";
         }
         if (uses_cube(kind)) {
-          const Cube& c = cubes_[p.material][static_cast<size_t>(pass)];
+          const CubeLobe& c = cubes_[p.material][static_cast<size_t>(pass)];
           note = " (cube " + std::to_string(kCombinerCubeSize) + "^2 x 6, RGBA8" +
                  (c.constant_clamped ? "; albedo*color*g > 4 clamped" : "") + ")";
         }
@@ -281,157 +244,6 @@ class CombinersPath final : public Path {
   }
 
  private:
-  struct Cube {
-    GLuint texture = 0;
-    glm::dvec3 lobe_color{0};  // albedo * color * g: the alpha channel holds (a + s lobe) / g
-    bool constant_clamped = false;
-  };
-
-  // The view vector the cube is built for: exact for an orthographic camera; under perspective
-  // the direction to the centre of the objects drawn with this material.
-  glm::dvec3 cube_view(int material) const {
-    const Scene& s = ctx_.scene;
-    if (s.camera.projection == Camera::Projection::Orthographic) return -s.camera.forward();
-    glm::dvec3 sum(0);
-    size_t n = 0;
-    for (const SceneObject& o : s.objects) {
-      if (o.material != material) continue;
-      for (const glm::dvec3& p : o.mesh.positions) sum += p - ctx_.geometry.origin();
-      n += o.mesh.positions.size();
-    }
-    return model::view_vector(s.camera, n ? sum / static_cast<double>(n) : glm::dvec3(0));
-  }
-
-  // The whole term of directional light `pass` for `material` as a function of the normal, in
-  // eye space (texgen NORMAL_MAP gives the eye-space normal). lobe_cube.comb: rgb = albedo *
-  // color * max(N.L, 0) (+ albedo * ambient_light in pass 0), alpha = (a + s * lobe) / g, T from
-  // the primary colour. lobe_cube_full.comb (constant T): rgb = the whole term, alpha 1.
-  Cube build_cube(int material, int pass) const {
-    const Scene& s = ctx_.scene;
-    const Material& mat = s.materials[static_cast<size_t>(material)];
-    const Translucency& tr = *mat.translucency;
-    const Light& light = s.lights[static_cast<size_t>(pass)];
-    const glm::dmat3 view(
-        glm::lookAt(glm::dvec3(0), s.camera.forward(), s.camera.up));  // world -> eye rotation
-    const glm::dmat3 to_world = glm::transpose(view);
-    const glm::dvec3 V = cube_view(material);
-    const glm::dvec3 L = -light.direction;
-    const int n = kCombinerCubeSize;
-    std::vector<glm::dvec3> rgb(6 * static_cast<size_t>(n) * n);
-    std::vector<double> g(rgb.size());
-    double g_max = 0;
-    const glm::dvec3 ambient = pass == 0 ? mat.albedo * s.ambient_light : glm::dvec3(0);
-    const bool full = plans_[static_cast<size_t>(material)].kind(pass) == PassKind::LobeCubeFull;
-    const glm::dvec3 T = model::thickness(tr, glm::dvec3(1));  // constant when `full`
-    for (int f = 0; f < 6; ++f) {
-      for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-          const size_t k = (static_cast<size_t>(f) * n + j) * n + i;
-          const glm::dvec3 N = glm::normalize(to_world * cube_direction(f, i, j, n));
-          g[k] = tr.ambient + light.translucency_scale *
-                                  model::lobe(model::translucency_dot(V, L, N, tr), tr.power);
-          const double diffuse = std::max(glm::dot(N, L), 0.0);
-          if (full) {
-            rgb[k] = mat.albedo * light.color * (diffuse + g[k] * T) + ambient;
-            g[k] = 1;  // alpha unused
-          } else {
-            rgb[k] = mat.albedo * light.color * diffuse + ambient;
-          }
-          g_max = std::max(g_max, g[k]);
-        }
-      }
-    }
-    // g_max = 0 (no lobe and no translucency ambient): alpha 0 and constant 0 either way.
-    const double scale = g_max > 0 ? g_max : 1.0;
-    Cube c;
-    c.lobe_color = mat.albedo * light.color * scale;
-    c.constant_clamped = !full && std::max({c.lobe_color.r, c.lobe_color.g, c.lobe_color.b}) > 4;
-    std::vector<unsigned char> texels(static_cast<size_t>(n) * n * 4);
-    glGenTextures(1, &c.texture);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, c.texture);
-    for (int f = 0; f < 6; ++f) {
-      for (size_t t = 0; t < static_cast<size_t>(n) * n; ++t) {
-        const size_t k = static_cast<size_t>(f) * n * n + t;
-        // rgb over 1 is lossless to clamp: the pixel saturates anyway (every other term >= 0).
-        for (int ch = 0; ch < 3; ++ch) texels[t * 4 + ch] = to_unorm8(rgb[k][ch]);
-        texels[t * 4 + 3] = to_unorm8(g[k] / scale);
-      }
-      glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, n, n, 0,
-                   GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-    }
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-    return c;
-  }
-
-  VertexTerms vertex_terms(size_t object) const {
-    const Scene& s = ctx_.scene;
-    const TriangleMesh& mesh = s.objects[object].mesh;
-    const Material& mat = s.materials[static_cast<size_t>(s.objects[object].material)];
-    const size_t n = mesh.positions.size();
-    const size_t lights = s.lights.size();
-    VertexTerms vt;
-    vt.texcoord.assign(lights, std::vector<float>(n));
-    vt.primary.assign(lights, std::vector<float>(n * 4));
-    vt.secondary.assign(lights, std::vector<float>(n * 3));
-    vt.thickness.assign(n * 4, 1.0f);
-    vt.diffuse.assign(n * 4, 1.0f);
-    const model::PowerLut* lut =
-        mat.translucency ? &luts_[static_cast<size_t>(s.objects[object].material)] : nullptr;
-    const std::vector<double> fold = fold_factors(mat);
-    const glm::dvec3 ambient = mat.albedo * s.ambient_light;
-    for (size_t v = 0; v < n; ++v) {
-      const glm::dvec3& P = mesh.positions[v];
-      const glm::dvec3 N = mesh.normals[v];  // unit or zero (model.md "no normal")
-      const glm::dvec3 V = model::view_vector(s.camera, P - ctx_.geometry.origin());
-      const glm::dvec3 T =
-          mat.translucency ? model::thickness(*mat.translucency,
-                                              mesh.has_colors() ? mesh.colors[v] : glm::dvec3(1))
-                           : glm::dvec3(0);
-      glm::dvec3 diffuse_sum = ambient;
-      for (size_t l = 0; l < lights; ++l) {
-        const Light& light = s.lights[l];
-        const model::LightSample ls = model::sample_light(light, P, N);
-        const double diffuse = ls.attenuation * std::max(glm::dot(N, ls.L), 0.0);
-        diffuse_sum += mat.albedo * light.color * diffuse;
-        if (!mat.translucency) continue;
-        const Translucency& tr = *mat.translucency;
-        const glm::dvec3 own =
-            mat.albedo * light.color * (diffuse + ls.attenuation * tr.ambient * T) +
-            (l == 0 ? ambient : glm::dvec3(0));
-        vt.texcoord[l][v] = static_cast<float>(
-            lut->coordinate(model::translucency_dot_unsaturated(V, ls.L, N, tr)));
-        const glm::dvec3 prim = ls.attenuation * T * fold[l];
-        for (int c = 0; c < 3; ++c) {
-          vt.primary[l][v * 4 + c] = static_cast<float>(prim[c]);
-          vt.secondary[l][v * 3 + c] = static_cast<float>(own[c]);
-        }
-        vt.primary[l][v * 4 + 3] = 1.0f;
-      }
-      for (int c = 0; c < 3; ++c) {
-        vt.thickness[v * 4 + c] = static_cast<float>(T[c]);
-        vt.diffuse[v * 4 + c] = static_cast<float>(diffuse_sum[c]);
-      }
-    }
-    return vt;
-  }
-
-  // K = albedo * color * s reaches the combiner as a constant (clamped to [0, 1]) times a scale
-  // of at most 4. Where K exceeds 4 the excess f = K/4 moves into the primary colour (att*T*f),
-  // which is exact while att*T*f <= 1.
-  std::vector<double> fold_factors(const Material& mat) const {
-    std::vector<double> out;
-    for (const Light& l : ctx_.scene.lights) {
-      const glm::dvec3 k = mat.albedo * l.color * l.translucency_scale;
-      const double m = std::max({k.r, k.g, k.b});
-      out.push_back(m > 4 ? m / 4 : 1.0);
-    }
-    return out;
-  }
-
   void draw_pass(size_t object, int pass, const VertexTerms& vt) {
     const Scene& s = ctx_.scene;
     const gl::GpuMesh& mesh = ctx_.geometry.meshes()[object];
@@ -445,7 +257,7 @@ class CombinersPath final : public Path {
     in.textures["white"] = {GL_TEXTURE_2D, white_};
     bool secondary = false, texcoords = false;
     if (uses_cube(kind)) {
-      const Cube& c = cubes_[static_cast<size_t>(mesh.material)][l];
+      const CubeLobe& c = cubes_[static_cast<size_t>(mesh.material)][l];
       in.textures["lobe_cube"] = {GL_TEXTURE_CUBE_MAP, c.texture};
       in.constants["lobe_color"] = glm::dvec4(c.lobe_color, 1);
       stream(buf[0], vt.thickness);
@@ -454,8 +266,8 @@ class CombinersPath final : public Path {
     } else {
       const Light& light = s.lights[l];
       in.textures["power_lut"] = {GL_TEXTURE_1D, lut_textures_[static_cast<size_t>(mesh.material)]};
-      in.constants["lobe_color"] =
-          glm::dvec4(mat.albedo * light.color * light.translucency_scale / fold_factors(mat)[l], 1);
+      in.constants["lobe_color"] = glm::dvec4(
+          mat.albedo * light.color * light.translucency_scale / fold_factors(s, mat)[l], 1);
       stream(buf[0], vt.primary[l]);
       stream(buf[2], vt.secondary[l]);
       secondary = true;
@@ -468,7 +280,9 @@ class CombinersPath final : public Path {
     glActiveTexture(GL_TEXTURE0);
     glMatrixMode(GL_TEXTURE);
     if (kind == PassKind::LobeTexgen) {
-      load_texgen_matrix(mat, s.lights[l], luts_[static_cast<size_t>(mesh.material)]);
+      const glm::mat4 m =
+          texgen_matrix(s, mat, s.lights[l], luts_[static_cast<size_t>(mesh.material)]);
+      glLoadMatrixf(glm::value_ptr(m));
     } else {
       glLoadIdentity();
     }
@@ -497,23 +311,12 @@ class CombinersPath final : public Path {
     ctx_.geometry.unbind();
   }
 
-  // texgen NORMAL_MAP yields the eye-space normal n (q = 1 from the current texcoord). With V
-  // and L constant in eye space, t = -V.L - d (V.n) is one row of the texture matrix, followed by
-  // the LUT's texel-centre remap u = t (N-1)/N + 0.5/N (model/power_lut.h). Loaded into the
-  // current (GL_TEXTURE) matrix of unit 0.
-  void load_texgen_matrix(const Material& mat, const Light& light, const model::PowerLut& lut) {
-    const glm::dmat3 view(
-        glm::lookAt(glm::dvec3(0), ctx_.scene.camera.forward(), ctx_.scene.camera.up));
-    const glm::dvec3 V_eye = view * -ctx_.scene.camera.forward();  // (0, 0, 1)
-    const glm::dvec3 L_eye = view * -light.direction;
-    const double d = mat.translucency->distortion;
-    const double a = (lut.size - 1.0) / lut.size, b = 0.5 / lut.size;
-    glm::dmat4 m(0.0);  // column-major: m[col][row]
-    for (int c = 0; c < 3; ++c) m[c][0] = -d * V_eye[c] * a;
-    m[3][0] = -glm::dot(V_eye, L_eye) * a + b;
-    m[3][3] = 1;
-    const glm::mat4 mf(m);
-    glLoadMatrixf(glm::value_ptr(mf));
+  // The LUT object `i`'s material samples; null for a material without translucency.
+  const model::PowerLut* lut_of(size_t i) const {
+    const int m = ctx_.scene.objects[i].material;
+    return ctx_.scene.materials[static_cast<size_t>(m)].translucency
+               ? &luts_[static_cast<size_t>(m)]
+               : nullptr;
   }
 
   PathContext ctx_;
@@ -521,7 +324,7 @@ class CombinersPath final : public Path {
   std::vector<CombinerMaterialPlan> plans_;
   std::vector<model::PowerLut> luts_;
   std::vector<GLuint> lut_textures_;
-  std::vector<std::vector<Cube>> cubes_;        // [material][light], lobe=cube passes only
+  std::vector<std::vector<CubeLobe>> cubes_;    // [material][light], lobe=cube passes only
   std::vector<std::array<GLuint, 3>> buffers_;  // per object: primary, texcoord, secondary
   GLuint white_ = 0;
   double cpu_seconds_ = 0, cube_seconds_ = 0;

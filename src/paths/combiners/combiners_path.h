@@ -47,13 +47,7 @@ struct CombinerMaterialPlan {
 // get t=vertex passes).
 std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant);
 
-// t = dot(V, -(L + N d)) is affine in the eye-space normal only when L and V are constant: every
-// light directional, the camera orthographic and H not normalised.
-bool texgen_applicable(const Scene& scene, const Material& material);
-
 // The power LUT size and format the path samples (8-bit texels, as GL 1.3 hardware stores them).
 inline constexpr int kCombinerLutSize = 256;
-// Texels per cube face edge of the lobe=cube variant (8-bit RGBA).
-inline constexpr int kCombinerCubeSize = 256;
 
 }  // namespace lt

@@ -1,0 +1,29 @@
+#include "paths/combiners/texgen_matrix.h"
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace lt {
+
+bool texgen_applicable(const Scene& scene, const Material& material) {
+  if (scene.camera.projection != Camera::Projection::Orthographic) return false;
+  if (material.translucency && material.translucency->normalize_distorted_light) return false;
+  return std::all_of(scene.lights.begin(), scene.lights.end(),
+                     [](const Light& l) { return l.type == Light::Type::Directional; });
+}
+
+glm::mat4 texgen_matrix(const Scene& scene, const Material& mat, const Light& light,
+                        const model::PowerLut& lut) {
+  const glm::dmat3 view(glm::lookAt(glm::dvec3(0), scene.camera.forward(), scene.camera.up));
+  const glm::dvec3 V_eye = view * -scene.camera.forward();  // (0, 0, 1)
+  const glm::dvec3 L_eye = view * -light.direction;
+  const double d = mat.translucency->distortion;
+  const double a = (lut.size - 1.0) / lut.size, b = 0.5 / lut.size;
+  glm::dmat4 m(0.0);  // column-major: m[col][row]
+  for (int c = 0; c < 3; ++c) m[c][0] = -d * V_eye[c] * a;
+  m[3][0] = -glm::dot(V_eye, L_eye) * a + b;
+  m[3][3] = 1;
+  return glm::mat4(m);
+}
+
+}  // namespace lt

@@ -1,0 +1,69 @@
+#include "paths/combiners/vertex_terms.h"
+
+#include <algorithm>
+
+#include "model/translucency.h"
+
+namespace lt {
+
+std::vector<double> fold_factors(const Scene& scene, const Material& mat) {
+  std::vector<double> out;
+  for (const Light& l : scene.lights) {
+    const glm::dvec3 k = mat.albedo * l.color * l.translucency_scale;
+    const double m = std::max({k.r, k.g, k.b});
+    out.push_back(m > 4 ? m / 4 : 1.0);
+  }
+  return out;
+}
+
+VertexTerms vertex_terms(const Scene& s, const glm::dvec3& eye, size_t object,
+                         const model::PowerLut* lut) {
+  const TriangleMesh& mesh = s.objects[object].mesh;
+  const Material& mat = s.materials[static_cast<size_t>(s.objects[object].material)];
+  const size_t n = mesh.positions.size();
+  const size_t lights = s.lights.size();
+  VertexTerms vt;
+  vt.texcoord.assign(lights, std::vector<float>(n));
+  vt.primary.assign(lights, std::vector<float>(n * 4));
+  vt.secondary.assign(lights, std::vector<float>(n * 3));
+  vt.thickness.assign(n * 4, 1.0f);
+  vt.diffuse.assign(n * 4, 1.0f);
+  const std::vector<double> fold = fold_factors(s, mat);
+  const glm::dvec3 ambient = mat.albedo * s.ambient_light;
+  for (size_t v = 0; v < n; ++v) {
+    const glm::dvec3& P = mesh.positions[v];
+    const glm::dvec3 N = mesh.normals[v];  // unit or zero (model.md "no normal")
+    const glm::dvec3 V = model::view_vector(s.camera, P - eye);
+    const glm::dvec3 T = mat.translucency
+                             ? model::thickness(*mat.translucency,
+                                                mesh.has_colors() ? mesh.colors[v] : glm::dvec3(1))
+                             : glm::dvec3(0);
+    glm::dvec3 diffuse_sum = ambient;
+    for (size_t l = 0; l < lights; ++l) {
+      const Light& light = s.lights[l];
+      const model::LightSample ls = model::sample_light(light, P, N);
+      const double diffuse = ls.attenuation * std::max(glm::dot(N, ls.L), 0.0);
+      diffuse_sum += mat.albedo * light.color * diffuse;
+      if (!mat.translucency) continue;
+      const Translucency& tr = *mat.translucency;
+      const glm::dvec3 own =
+          mat.albedo * light.color * (diffuse + ls.attenuation * tr.ambient * T) +
+          (l == 0 ? ambient : glm::dvec3(0));
+      vt.texcoord[l][v] =
+          static_cast<float>(lut->coordinate(model::translucency_dot_unsaturated(V, ls.L, N, tr)));
+      const glm::dvec3 prim = ls.attenuation * T * fold[l];
+      for (int c = 0; c < 3; ++c) {
+        vt.primary[l][v * 4 + c] = static_cast<float>(prim[c]);
+        vt.secondary[l][v * 3 + c] = static_cast<float>(own[c]);
+      }
+      vt.primary[l][v * 4 + 3] = 1.0f;
+    }
+    for (int c = 0; c < 3; ++c) {
+      vt.thickness[v * 4 + c] = static_cast<float>(T[c]);
+      vt.diffuse[v * 4 + c] = static_cast<float>(diffuse_sum[c]);
+    }
+  }
+  return vt;
+}
+
+}  // namespace lt
