@@ -61,6 +61,17 @@ glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoin
   return material.albedo * (scene.ambient_light + sum);
 }
 
+std::string why_t_is_not_affine_in_the_normal(const Scene& scene, const Material& material) {
+  if (scene.camera.projection != Camera::Projection::Orthographic)
+    return "the camera is perspective (V varies over the mesh)";
+  for (const Light& l : scene.lights) {
+    if (l.type != Light::Type::Directional) return "a point light (L varies over the mesh)";
+  }
+  if (material.translucency && material.translucency->normalize_distorted_light)
+    return "material " + material.name + " normalises H";
+  return "";
+}
+
 glm::dvec3 view_vector(const Camera& camera, const glm::dvec3& P_rel) {
   if (camera.projection == Camera::Projection::Orthographic) return -camera.forward();
   const double len = glm::length(P_rel);

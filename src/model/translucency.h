@@ -3,6 +3,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <string>
 
 #include "scene/scene.h"
 
@@ -54,6 +55,12 @@ glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness)
 
 // c = albedo * (ambient_light + sum over lights of color * (diffuse + trans)).
 glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoint& sp);
+
+// Why t = dot(V, -(L + N d)) is not affine in the normal for `material` in this scene (empty when
+// it is): only then can fixed-function hardware compute it from the normal through a texture
+// matrix (GL texgen, GX texgen), which needs V and L constant over the mesh (an orthographic
+// camera, directional lights) and H not normalised.
+std::string why_t_is_not_affine_in_the_normal(const Scene& scene, const Material& material);
 
 // View vector for a camera at a point: normalize(E - P), or -forward for orthographic.
 // `P_rel` is the point relative to the eye (the paths work camera-relative).

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "model/translucency.h"
+
 namespace lt {
 
 bool texgen_applicable(const Scene& scene, const Material& material) {
-  if (scene.camera.projection != Camera::Projection::Orthographic) return false;
-  if (material.translucency && material.translucency->normalize_distorted_light) return false;
-  return std::all_of(scene.lights.begin(), scene.lights.end(),
-                     [](const Light& l) { return l.type == Light::Type::Directional; });
+  return model::why_t_is_not_affine_in_the_normal(scene, material).empty();
 }
 
 glm::mat4 texgen_matrix(const Scene& scene, const Material& mat, const Light& light,

@@ -9,8 +9,7 @@
 
 namespace lt {
 
-// t = dot(V, -(L + N d)) is affine in the eye-space normal only when L and V are constant: every
-// light directional, the camera orthographic and H not normalised.
+// t = dot(V, -(L + N d)) is affine in the eye-space normal (model's rule).
 bool texgen_applicable(const Scene& scene, const Material& material);
 
 // texgen NORMAL_MAP yields the eye-space normal n (q = 1 from the current texcoord). With V

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "model/translucency.h"
 
 namespace lt::gx {
 
@@ -89,16 +90,10 @@ std::string to_string(const GxVariant& v) {
 
 std::string refusal(const Scene& scene, const GxVariant& v) {
   if (v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex) return "";
-  const std::string what = to_string(v) + " needs t affine in the normal";
-  if (scene.camera.projection != Camera::Projection::Orthographic)
-    return what + ": the camera is perspective (V varies over the mesh); use t=vertex";
-  for (const Light& l : scene.lights) {
-    if (l.type != Light::Type::Directional)
-      return what + ": a point light (L varies over the mesh); use t=vertex";
-  }
   for (const Material& m : scene.materials) {
-    if (m.translucency && m.translucency->normalize_distorted_light)
-      return what + ": material " + m.name + " normalises H; use t=vertex";
+    const std::string why = model::why_t_is_not_affine_in_the_normal(scene, m);
+    if (!why.empty())
+      return to_string(v) + " needs t affine in the normal: " + why + "; use t=vertex";
   }
   return "";
 }
