@@ -31,7 +31,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
   const Camera& cam = scene.camera;
   const double aspect = static_cast<double>(width) / height;
   // The view looks from the origin (camera-relative), so its translation is zero.
-  view_ = glm::lookAt(glm::dvec3(0), cam.forward(), cam.up);
+  view_ = cam.view_from_origin();
   if (cam.projection == Camera::Projection::Perspective) {
     projection_ = glm::perspective(glm::radians(cam.fov_y_deg), aspect, cam.near, cam.far);
   } else {

@@ -10,6 +10,10 @@
 
 namespace lt {
 
+glm::dmat4 Camera::view_from_origin() const {
+  return glm::lookAt(glm::dvec3(0), forward(), up);
+}
+
 namespace {
 
 using json = nlohmann::json;

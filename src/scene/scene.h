@@ -21,6 +21,9 @@ struct Camera {
   double near = 0.1, far = 100;
 
   glm::dvec3 forward() const { return glm::normalize(target - eye); }
+  // World to eye rotation (looking down -z, `up` up): the one view every path shares, with the
+  // eye at the origin (camera-relative rendering).
+  glm::dmat4 view_from_origin() const;
 };
 
 enum class ThicknessSource { Vertex, Constant };

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
 #include "model/translucency.h"
@@ -56,8 +55,7 @@ CubeLobe build_cube_lobe(const Scene& s, const glm::dvec3& eye, int material, si
   const Material& mat = s.materials[static_cast<size_t>(material)];
   const Translucency& tr = *mat.translucency;
   const Light& light = s.lights[light_index];
-  const glm::dmat3 view(
-      glm::lookAt(glm::dvec3(0), s.camera.forward(), s.camera.up));  // world -> eye rotation
+  const glm::dmat3 view(s.camera.view_from_origin());  // world -> eye rotation
   const glm::dmat3 to_world = glm::transpose(view);
   const glm::dvec3 V = cube_view(s, eye, material);
   const glm::dvec3 L = -light.direction;

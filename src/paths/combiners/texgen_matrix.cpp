@@ -1,7 +1,6 @@
 #include "paths/combiners/texgen_matrix.h"
 
 #include <algorithm>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "model/translucency.h"
 
@@ -13,7 +12,7 @@ bool texgen_applicable(const Scene& scene, const Material& material) {
 
 glm::mat4 texgen_matrix(const Scene& scene, const Material& mat, const Light& light,
                         const model::PowerLut& lut) {
-  const glm::dmat3 view(glm::lookAt(glm::dvec3(0), scene.camera.forward(), scene.camera.up));
+  const glm::dmat3 view(scene.camera.view_from_origin());
   const glm::dvec3 V_eye = view * -scene.camera.forward();  // (0, 0, 1)
   const glm::dvec3 L_eye = view * -light.direction;
   const double d = mat.translucency->distortion;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <set>
 #include <sstream>
 
@@ -19,8 +18,8 @@ namespace lt::gx {
 SceneView SceneView::of(const Scene& scene) {
   SceneView v;
   v.eye = scene.camera.eye;
-  // The same view as gl::SceneGeometry (camera-relative lookAt), so every path sees one camera.
-  v.view = glm::dmat3(glm::lookAt(glm::dvec3(0), scene.camera.forward(), scene.camera.up));
+  // The same view as gl::SceneGeometry, so every path sees one camera.
+  v.view = glm::dmat3(scene.camera.view_from_origin());
   return v;
 }
 
