@@ -1,11 +1,7 @@
 // The pixel engine, texture object, vertex format and cache calls.
-#include <numbers>
-
 #include "paths/gx/program/machine.h"
 
 namespace lt::gx::interp {
-
-namespace {}  // namespace
 
 void add_pixel_calls(CallTable& table) {
   using K = ParamKind;

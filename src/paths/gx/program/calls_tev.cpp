@@ -1,6 +1,4 @@
 // The TEV calls: stage order, colour and alpha combiners, registers, konst and swap tables.
-#include <numbers>
-
 #include "paths/gx/program/machine.h"
 
 namespace lt::gx::interp {
