@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/find_named.h"
 #include "paths/arbfp/arbfp_path.h"
 #include "paths/combiners/combiners_path.h"
 #include "paths/flat/flat_path.h"
@@ -21,12 +22,7 @@ const std::vector<PathInfo>& all_paths() {
 }
 
 const PathInfo& find_path(const std::string& name) {
-  std::string names;
-  for (const PathInfo& p : all_paths()) {
-    if (p.name == name) return p;
-    names += (names.empty() ? "" : ", ") + p.name;
-  }
-  throw InputError("--path", name, "unknown path (valid: " + names + ")");
+  return find_named(all_paths(), name, "--path", "path");
 }
 
 const PathInfo& path_with_role(PathRole role) {

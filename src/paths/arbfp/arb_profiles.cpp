@@ -1,6 +1,7 @@
 #include "paths/arbfp/arb_profiles.h"
 
 #include "core/error.h"
+#include "core/find_named.h"
 
 namespace lt::budget {
 
@@ -32,12 +33,7 @@ const std::vector<Profile>& all_profiles() {
 }
 
 const Profile& find_profile(const std::string& name) {
-  std::string names;
-  for (const Profile& p : all_profiles()) {
-    if (p.name == name) return p;
-    names += (names.empty() ? "" : ", ") + p.name;
-  }
-  throw InputError("--profile", name, "unknown profile (valid: " + names + ")");
+  return find_named(all_profiles(), name, "--profile", "profile");
 }
 
 std::vector<Overrun> check(const ProgramCounts& c, const Profile& p) {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/find_named.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/program/parser.h"
 
@@ -135,12 +136,7 @@ const std::vector<GxProfile>& gx_profiles() {
 }
 
 const GxProfile& find_gx_profile(const std::string& name) {
-  std::string names;
-  for (const GxProfile& p : gx_profiles()) {
-    if (p.name == name) return p;
-    names += (names.empty() ? "" : ", ") + p.name;
-  }
-  throw InputError("--profile", name, "unknown gx profile (valid: " + names + ")");
+  return find_named(gx_profiles(), name, "--profile", "gx profile");
 }
 
 bool GxBudgetReport::fits() const {
