@@ -1,6 +1,6 @@
-// Generates the arbfp path's ARB vertex and fragment programs for one material of a scene, from
-// the templates in legacy_shaders/arb/. Pure CPU (no GL context), so `ltrender budget` and the
-// tests can count the programs without rendering.
+// Generates the arbfp path's ARB vertex and fragment programs for one material of a scene, as
+// instruction lists (arb_ir.h) and as the text GL loads. Pure CPU (no GL context), so
+// `ltrender budget` and the tests can count the programs without rendering.
 #pragma once
 
 #include <optional>
@@ -8,13 +8,16 @@
 #include <vector>
 
 #include "model/power_lut.h"
+#include "paths/arbfp/arb_ir.h"
 #include "paths/arbfp/arb_variant.h"
 #include "scene/scene.h"
 
 namespace lt::arbfp {
 
 struct ArbPrograms {
-  std::string vertex, fragment;
+  std::string vertex, fragment;  // ir::print of the programs below
+  ir::Program vertex_program{ir::ProgramKind::Vertex};
+  ir::Program fragment_program{ir::ProgramKind::Fragment};
   std::optional<model::PowerLut> lut;  // the texture the fragment program samples as texture[0]
   std::vector<std::string> notes;      // what the variant did for this material (for `info`)
 };
