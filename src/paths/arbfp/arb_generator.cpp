@@ -35,14 +35,17 @@ const char kFragmentHeader[] =
 )";
 
 const char kVertexHeader[] =
-    R"(# arbfp path, vertex program: shading is per pixel, so this mostly hands the fragment program what
-# it reads. Generated per material by src/paths/arbfp/arb_generator.cpp: the thickness line and,
-# for pow=mul:vertex only, the translucency lobe per vertex (into texcoord[3..7], four lights per
-# texcoord) are the parts that vary.
-#
-# ARB_position_invariant: the position is transformed by the fixed-function MODELVIEW/PROJECTION
-# exactly as ftransform() and fixed-function do, so every path rasterises the same pixels.
-)";
+    "# arbfp path, vertex program: shading is per pixel, so this mostly hands the fragment program "
+    "what\n"
+    "# it reads. Generated per material by src/paths/arbfp/arb_generator.cpp: the thickness line "
+    "and,\n"
+    "# for pow=mul:vertex only, the translucency lobe per vertex (into texcoord[3..7], four lights "
+    "per\n"
+    "# texcoord) are the parts that vary.\n"
+    "#\n"
+    "# ARB_position_invariant: the position is transformed by the fixed-function "
+    "MODELVIEW/PROJECTION\n"
+    "# exactly as ftransform() and fixed-function do, so every path rasterises the same pixels.\n";
 
 bool is_integer_power(double p) {
   return p >= 1 && p == std::floor(p) && p <= 1 << 20;
