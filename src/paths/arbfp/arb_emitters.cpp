@@ -41,7 +41,7 @@ namespace {
 const double kInvNormalMax = 1 / model::kMinNormalLength;
 const double kNormalLengthSqMin = model::kMinNormalLength * model::kMinNormalLength;
 const double kAttenuationMin = model::kMinAttenuationDenominator;
-const double kInvLengthMax = 1e30;  // any finite clamp works: 0 * 1e30 = 0, 1e30 * 1e-6 < inf
+const double kInvLengthMax = 1e30;  // finite, so 0 * 1e30 = 0 where 0 * RSQ(0) would be NaN
 const double kSaturateMax = 1;
 
 // The programs write the guards as powers of ten ("1e-12", "1"): one literal per guard, checked.
@@ -141,17 +141,6 @@ void emit_normalize(ir::Block& code, const Reg& dst, const Reg& src, bool clamp,
   code.op(Op::MUL, dst.masked("xyz"), {src, dst.swz("w")});
 }
 
-}  // namespace
-
-void emit_view_vector(ir::Block& code, const Shading& s) {
-  // No rasterised point is at the eye (near > 0), but a clipped triangle's vertex can be: there
-  // the vertex program makes V = 0 (t = 0) instead of 0 * inf.
-  const bool vertex = code.kind() == ir::ProgramKind::Vertex;
-  code.text(vertex ? "# V = normalize(-P), 0 for a vertex at the eye (1/|P| clamped to 1e30).\n"
-                   : "# V = normalize(-P): the eye is the origin of camera-relative space.\n");
-  emit_normalize(code, s.V, -s.P, vertex, s.guard);
-}
-
 void emit_point_light_direction(ir::Block& code, const Shading& s, const Reg& position) {
   const bool vertex = code.kind() == ir::ProgramKind::Vertex;
   const Reg &L = s.L, &r = s.r;
@@ -172,6 +161,17 @@ void emit_point_light_direction(ir::Block& code, const Shading& s, const Reg& po
         "false).\n");
     code.op(Op::CMP, L.masked("xyz"), {-L.swz("w"), L, s.N});
   }
+}
+
+}  // namespace
+
+void emit_view_vector(ir::Block& code, const Shading& s) {
+  // No rasterised point is at the eye (near > 0), but a clipped triangle's vertex can be: there
+  // the vertex program makes V = 0 (t = 0) instead of 0 * inf.
+  const bool vertex = code.kind() == ir::ProgramKind::Vertex;
+  code.text(vertex ? "# V = normalize(-P), 0 for a vertex at the eye (1/|P| clamped to 1e30).\n"
+                   : "# V = normalize(-P): the eye is the origin of camera-relative space.\n");
+  emit_normalize(code, s.V, -s.P, vertex, s.guard);
 }
 
 Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, size_t light,

@@ -70,11 +70,10 @@ struct Shading {
 void emit_normal(ir::Block& code, const Shading& s, const ir::Reg& n);
 // V = normalize(-P). A vertex program clamps 1/|P| so a vertex at the eye gets V = 0.
 void emit_view_vector(ir::Block& code, const Shading& s);
-// L = (position - P) / dist, and L = N at distance 0. Leaves 1/dist in r.x (the fragment
-// program's attenuation reads it). Scratch: r.x (and r.y in a vertex program).
-void emit_point_light_direction(ir::Block& code, const Shading& s, const ir::Reg& position);
-// Light i's comment and its L: the directional light's PARAM, or a point light's direction
-// computed into s.L by emit_point_light_direction.
+// Light i's comment and its L: the directional light's PARAM, or for a point light s.L =
+// (position - P) / dist, and L = N at distance 0 (CMP in a fragment program, a mask in a vertex
+// program). A point light leaves 1/dist in r.x, which the fragment program's attenuation reads;
+// scratch: r.x (and r.y in a vertex program).
 ir::Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, size_t light,
                              const ir::Reg& light_vector);
 // H = L + N * d, normalised on request, and t = dot(V, -H) into `t` (one lane). A fragment
