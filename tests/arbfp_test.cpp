@@ -5,12 +5,14 @@
 
 #include <cmath>
 
+#include "arb_ir_query.h"
 #include "arb_test_util.h"
 #include "gl/program.h"
 #include "metrics/compare.h"
 #include "model/pow_curves.h"
 #include "model/translucency.h"
 #include "paths/arbfp/arb_generator.h"
+#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arbfp_path.h"
 #include "render/session.h"
@@ -58,7 +60,7 @@ TEST(ArbfpVariants, FittedExponentBeatsTheSeedsOnTheLobe) {
   }
 }
 
-// A tiny scene for the generator tests (no meshes needed: generation is text only).
+// A tiny scene for the generator tests (no meshes needed: generation is CPU only).
 Scene small_scene(bool point, bool ambient) {
   Scene s;
   Material m;
@@ -76,30 +78,28 @@ Scene small_scene(bool point, bool ambient) {
   return s;
 }
 
-// Whether a program's code (comments stripped: the templates mention every feature) has `what`.
-bool has(const std::string& text, const std::string& what) {
-  std::string code;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    size_t end = text.find('\n', pos);
-    if (end == std::string::npos) end = text.size();
-    const std::string line = text.substr(pos, end - pos);
-    code += line.substr(0, line.find('#')) + "\n";
-    pos = end + 1;
-  }
-  return code.find(what) != std::string::npos;
+bool contains(const std::string& text, const std::string& what) {
+  return text.find(what) != std::string::npos;
 }
 
+using arbfp::ir::Op;
+using test::count_op;
+using test::has_op;
+
+// Each feature's instructions only when the scene uses it; counted on the instruction list.
 TEST(ArbfpGenerator, EmitsOnlyWhatTheSceneUses) {
   const arbfp::PowVariant exact;
   {
     const Scene s = small_scene(false, false);
     const auto p = arbfp::generate_arb(s, s.materials[0], exact);
-    EXPECT_FALSE(has(p.fragment, "att0")) << "attenuation only for point lights";
-    EXPECT_FALSE(has(p.fragment, "ambient_light")) << "ambient only when non-zero";
-    EXPECT_FALSE(has(p.fragment, "RSQ H.w")) << "normalised H only on request";
-    EXPECT_FALSE(has(p.vertex, "texcoord[2]")) << "constant thickness needs no vertex colour";
-    EXPECT_TRUE(has(p.fragment, "POW"));
+    const auto& fp = p.fragment_program;
+    EXPECT_FALSE(has_op(fp, Op::RCP)) << "attenuation only for point lights";
+    EXPECT_FALSE(test::declares_param(fp, "ambient_light")) << "ambient only when non-zero";
+    EXPECT_EQ(count_op(fp, Op::RSQ), 2) << "N and V: normalised H only on request";
+    EXPECT_FALSE(test::reads_attrib(p.vertex_program, "vertex.color"))
+        << "constant thickness needs no vertex colour";
+    EXPECT_FALSE(test::reads_attrib(fp, "fragment.texcoord[2]"));
+    EXPECT_EQ(count_op(fp, Op::POW), 1);
     EXPECT_FALSE(p.lut.has_value());
   }
   {
@@ -107,19 +107,22 @@ TEST(ArbfpGenerator, EmitsOnlyWhatTheSceneUses) {
     s.materials[0].translucency->normalize_distorted_light = true;
     s.materials[0].translucency->thickness_source = ThicknessSource::Vertex;
     const auto p = arbfp::generate_arb(s, s.materials[0], exact);
-    EXPECT_TRUE(has(p.fragment, "RCP att0.x"));
-    EXPECT_TRUE(has(p.fragment, "ambient_light"));
-    EXPECT_TRUE(has(p.fragment, "RSQ H.w"));
+    const auto& fp = p.fragment_program;
+    EXPECT_EQ(count_op(fp, Op::RCP), 2) << "dist = 1 / RSQ(dist^2), then the attenuation";
+    EXPECT_TRUE(test::declares_param(fp, "ambient_light"));
+    EXPECT_EQ(count_op(fp, Op::RSQ), 4) << "N, V, the point light's L and H";
     // The tint is applied per vertex, so the fragment program reads T straight from texcoord[2].
-    EXPECT_TRUE(has(p.vertex, "MUL result.texcoord[2], vertex.color, tint"));
-    EXPECT_FALSE(has(p.fragment, "tint"));
+    EXPECT_TRUE(test::writes_output(p.vertex_program, "result.texcoord[2]"));
+    EXPECT_TRUE(test::reads_attrib(p.vertex_program, "vertex.color"));
+    EXPECT_TRUE(test::reads_attrib(fp, "fragment.texcoord[2]"));
+    EXPECT_FALSE(test::declares_param(fp, "tint"));
   }
   {
     // Without the term: no view vector, no lobe.
     const Scene s = small_scene(false, false);
     const auto p = arbfp::generate_arb(s, s.materials[0], exact, false);
-    EXPECT_FALSE(has(p.fragment, "POW"));
-    EXPECT_FALSE(has(p.fragment, "MUL V.xyz"));
+    EXPECT_FALSE(has_op(p.fragment_program, Op::POW));
+    EXPECT_EQ(count_op(p.fragment_program, Op::RSQ), 1) << "N only";
   }
 }
 
@@ -127,8 +130,9 @@ TEST(ArbfpGenerator, PowerZeroHasNoPowAtAll) {
   Scene s = small_scene(false, false);
   s.materials[0].translucency->power = 0;
   for (const std::string& n : variant_names()) {
-    const auto p = arbfp::generate_arb(s, s.materials[0], arbfp::parse_variant(n));
-    EXPECT_FALSE(has(p.fragment, "POW") || has(p.fragment, "TEX") || has(p.fragment, "EX2")) << n;
+    const auto& fp =
+        arbfp::generate_arb(s, s.materials[0], arbfp::parse_variant(n)).fragment_program;
+    EXPECT_FALSE(has_op(fp, Op::POW) || has_op(fp, Op::TEX) || has_op(fp, Op::EX2)) << n;
   }
 }
 
@@ -136,12 +140,35 @@ TEST(ArbfpGenerator, MulFallsBackToExactForNonIntegerPowerAndSaysSo) {
   Scene s = small_scene(false, false);
   s.materials[0].translucency->power = 2.5;
   const auto p = arbfp::generate_arb(s, s.materials[0], arbfp::parse_variant("pow=mul"));
-  EXPECT_TRUE(has(p.fragment, "POW"));
+  EXPECT_EQ(count_op(p.fragment_program, Op::POW), 1);
   ASSERT_FALSE(p.notes.empty());
-  EXPECT_TRUE(has(p.notes.front(), "not an integer"));
+  EXPECT_TRUE(contains(p.notes.front(), "not an integer"));
   s.materials[0].translucency->power = 8;
   const auto q = arbfp::generate_arb(s, s.materials[0], arbfp::parse_variant("pow=mul"));
-  EXPECT_FALSE(has(q.fragment, "POW"));
+  EXPECT_FALSE(has_op(q.fragment_program, Op::POW)) << "no POW for pow=mul with integer p";
+  EXPECT_EQ(test::count_squarings(q.fragment_program), 3) << "t^8 by three squarings";
+}
+
+// The LUT replaces POW by one TEX per light, and its coordinate remaps all come before the first
+// TEX, so any light count stays at 2 texture indirections (ARB_fragment_program issue 24).
+TEST(ArbfpGenerator, LutIsOneTexPerLightInTwoIndirections) {
+  const arbfp::PowVariant lut = arbfp::parse_variant("pow=lut:256:u8");
+  for (size_t lights : {1u, 2u, 5u, 9u}) {
+    Scene s = small_scene(false, false);
+    while (s.lights.size() < lights) s.lights.push_back(s.lights.front());
+    const auto p = arbfp::generate_arb(s, s.materials[0], lut);
+    const budget::ProgramCounts c = arbfp::ir::count(p.fragment_program);
+    EXPECT_EQ(c.tex, static_cast<int>(lights)) << lights << " lights";
+    EXPECT_EQ(c.indirections, 2) << lights << " lights";
+    EXPECT_FALSE(has_op(p.fragment_program, Op::POW)) << lights << " lights";
+    ASSERT_TRUE(p.lut.has_value());
+    EXPECT_EQ(p.lut->size, 256);
+  }
+  // Without a texture there is one indirection.
+  const Scene s = small_scene(false, false);
+  const auto sg = arbfp::generate_arb(s, s.materials[0], arbfp::parse_variant("pow=sg"));
+  EXPECT_EQ(arbfp::ir::count(sg.fragment_program).indirections, 1);
+  EXPECT_EQ(count_op(sg.fragment_program, Op::EX2), 1);
 }
 
 // pow=mul:vertex: the lobe is the vertex program's; the fragment program only reads it.
@@ -155,46 +182,51 @@ TEST(ArbfpGenerator, PerVertexLobeIsInTheVertexProgramOnly) {
       s.materials[0].translucency->power = power;
       s.materials[0].translucency->normalize_distorted_light = point;
       const auto p = arbfp::generate_arb(s, s.materials[0], pv);
+      const auto& vp = p.vertex_program;
+      const auto& fp = p.fragment_program;
       const std::string what =
           std::string(point ? "point" : "directional") + " p " + std::to_string(power);
-      // The term in the vertex program: H = L + N*d, t = dot(V, -H) saturated by MAX/MIN (no
-      // _SAT in ARB_vertex_program), the lobe, and its hand-over to the fragment program.
-      EXPECT_TRUE(has(p.vertex, "MAD H.xyz, N, material.x")) << what;
-      EXPECT_TRUE(has(p.vertex, "DP3 tv0.x, V, -H")) << what;
-      EXPECT_TRUE(has(p.vertex, "MAX tv0.x, tv0, material.w")) << what;
-      EXPECT_TRUE(has(p.vertex, "MIN tv0.x, tv0, guard.z")) << what;
-      EXPECT_TRUE(has(p.vertex, "result.texcoord[3].x, lobe0")) << what;
-      EXPECT_FALSE(has(p.vertex, "_SAT") || has(p.vertex, "CMP")) << what << ": not in ARBvp1.0";
+      // The term in the vertex program: t = dot(V, -H) saturated by MAX/MIN (no _SAT in
+      // ARB_vertex_program; the IR refuses it and CMP there), the lobe, and its hand-over to the
+      // fragment program.
+      EXPECT_EQ(count_op(vp, Op::MAX), power == 4 ? 1 : 2) << what << ": saturate (and POW floor)";
+      EXPECT_EQ(count_op(vp, Op::MIN), point ? 5 : 3) << what << ": 1/|n|, 1/|V|, (L, H,) t <= 1";
+      EXPECT_TRUE(test::writes_output(vp, "result.texcoord[3]", "x")) << what;
+      EXPECT_FALSE(test::saturates(vp) || has_op(vp, Op::CMP)) << what << ": not in ARBvp1.0";
       if (power == 4) {
-        EXPECT_TRUE(has(p.vertex, "MUL lobe0.x, tv0, tv0")) << what;
-        EXPECT_FALSE(has(p.vertex, "POW")) << what;
+        EXPECT_EQ(test::count_squarings(vp), 2) << what << ": t^4 by two squarings";
+        EXPECT_FALSE(has_op(vp, Op::POW)) << what;
       } else {
         // Non-integer p: POW per vertex of t floored at 2^-126, masked by (t > 0) for 0^p = 0.
-        EXPECT_TRUE(has(p.vertex, "POW lobe0.x, r.x, material.y")) << what;
-        EXPECT_TRUE(has(p.vertex, "SLT r.x, material.w, tv0")) << what;
+        EXPECT_EQ(count_op(vp, Op::POW), 1) << what;
+        EXPECT_EQ(count_op(vp, Op::SLT), 1) << what;
         ASSERT_FALSE(p.notes.empty());
-        EXPECT_TRUE(has(p.notes.front(), "not an integer")) << what;
+        EXPECT_TRUE(contains(p.notes.front(), "not an integer")) << what;
       }
       if (point) {
-        // L = N at distance 0, selected by a mask (no CMP in vertex programs).
-        EXPECT_TRUE(has(p.vertex, "SGE r.y, -L.w, material.w")) << what;
-        EXPECT_TRUE(has(p.vertex, "RSQ H.w")) << what;
+        // L = N at distance 0, selected by a mask (no CMP in vertex programs); normalised H.
+        EXPECT_EQ(count_op(vp, Op::SGE), 2) << what << ": the zero normal and distance 0";
+        EXPECT_EQ(count_op(vp, Op::RSQ), 4) << what << ": N, V, L and H";
         // Diffuse and attenuation stay per pixel.
-        EXPECT_TRUE(has(p.fragment, "RCP att0.x")) << what;
+        EXPECT_EQ(count_op(fp, Op::RCP), 2) << what;
       }
-      // The fragment program: no t, no V, no H, no lobe math; only lobe * T + diffuse.
-      for (const char* gone :
-           {"POW", "EX2", "LG2", "TEX", "tv0", "lobe0", "H.xyz", "V.xyz", "material"}) {
-        EXPECT_FALSE(has(p.fragment, gone)) << what << ": " << gone;
+      // The fragment program: no t, no V, no H, no lobe math; only lobe * T + diffuse per light
+      // on top of the program without the term.
+      for (Op gone : {Op::POW, Op::EX2, Op::LG2, Op::TEX}) {
+        EXPECT_FALSE(has_op(fp, gone)) << what << ": " << arbfp::ir::info(gone).name;
       }
-      EXPECT_TRUE(has(p.fragment, "MAD acc.xyz, fragment.texcoord[3].x, T, diffuse0.x")) << what;
+      EXPECT_EQ(count_op(fp, Op::RSQ), point ? 2 : 1) << what << ": N (and L), no V or H";
+      const auto base = arbfp::generate_arb(s, s.materials[0], pv, false);
+      EXPECT_EQ(arbfp::ir::count(fp).alu, arbfp::ir::count(base.fragment_program).alu + 1) << what;
+      EXPECT_TRUE(test::reads_attrib(fp, "fragment.texcoord[3]", "x")) << what;
     }
   }
   // Without the term (the budget's baseline) the vertex program has no lobe either.
   const Scene s = small_scene(false, false);
   const auto p = arbfp::generate_arb(s, s.materials[0], pv, false);
-  EXPECT_FALSE(has(p.vertex, "texcoord[3]"));
-  EXPECT_FALSE(has(p.fragment, "texcoord[3]"));
+  EXPECT_FALSE(test::writes_output(p.vertex_program, "result.texcoord[3]", "x"));
+  EXPECT_FALSE(test::reads_attrib(p.fragment_program, "fragment.texcoord[3]"));
+  EXPECT_EQ(p.vertex_program.instructions().size(), 2u) << "position and normal only";
 }
 
 // Lights 0-3 in texcoord[3], 4-7 in texcoord[4] ...; ps_2_0's 8 texcoords end at 20 lights.
@@ -203,9 +235,10 @@ TEST(ArbfpGenerator, PerVertexLobePacksFourLightsPerTexcoord) {
   Scene s = small_scene(false, false);
   while (s.lights.size() < 6) s.lights.push_back(s.lights.front());
   const auto p = arbfp::generate_arb(s, s.materials[0], pv);
-  EXPECT_TRUE(has(p.vertex, "result.texcoord[3].xyzw, lobe0"));
-  EXPECT_TRUE(has(p.vertex, "result.texcoord[4].xy, lobe1"));
-  EXPECT_TRUE(has(p.fragment, "fragment.texcoord[4].y"));
+  EXPECT_TRUE(test::writes_output(p.vertex_program, "result.texcoord[3]", "xyzw"));
+  EXPECT_TRUE(test::writes_output(p.vertex_program, "result.texcoord[4]", "xy"));
+  EXPECT_TRUE(test::reads_attrib(p.fragment_program, "fragment.texcoord[4]", "y"));
+  EXPECT_FALSE(test::reads_attrib(p.fragment_program, "fragment.texcoord[4]", "z"));
   while (s.lights.size() < arbfp::kMaxVertexLobeLights + 1) s.lights.push_back(s.lights.front());
   EXPECT_THROW(arbfp::generate_arb(s, s.materials[0], pv), InputError);
 }

@@ -1,6 +1,7 @@
 // The budget checker: the program counter on hand-written programs with known counts (including
 // the texture-indirection cases of ARB_fragment_program issue 24), agreement with Mesa's own
-// counts for every generated program, the profiles, the term's cost, and the CLI's exit codes.
+// counts for every generated program (both the text counter and the IR counter), the profiles, the
+// term's cost, and the CLI's exit codes.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "paths/arbfp/arb_budget.h"
 #include "paths/arbfp/arb_counter.h"
 #include "paths/arbfp/arb_generator.h"
+#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arbfp_path.h"
 
@@ -122,11 +124,8 @@ MesaCounts mesa_counts(GLenum target, const std::string& source) {
           p.query(GL_PROGRAM_INSTRUCTIONS_ARB)};
 }
 
-void expect_agrees_with_mesa(const std::string& source, const std::string& what) {
-  ProgramCounts c = count_program(source);
-  const GLenum target =
-      c.kind == budget::ProgramKind::Vertex ? GL_VERTEX_PROGRAM_ARB : GL_FRAGMENT_PROGRAM_ARB;
-  const MesaCounts m = mesa_counts(target, source);
+// `c` counts `source`; Mesa counts it too.
+void expect_agrees_with_mesa(ProgramCounts c, const MesaCounts& m, const std::string& what) {
   if (c.position_invariant) {
     // Mesa inserts the transform of ARB_position_invariant into the program it counts: 4 DP4
     // (the budget adds the same 4 to the vertex slots) and a temporary of its own for them, on
@@ -142,11 +141,20 @@ void expect_agrees_with_mesa(const std::string& source, const std::string& what)
   EXPECT_EQ(c.instructions() + 1, m.instructions) << what << " (Mesa counts END)";
 }
 
-TEST(ProgramCounter, HandWrittenProgramsAgreeWithMesa) {
-  gl::Context ctx(8, 8);
-  for (const Known& k : kKnown) expect_agrees_with_mesa(k.source, k.name);
+GLenum target_of(const ProgramCounts& c) {
+  return c.kind == budget::ProgramKind::Vertex ? GL_VERTEX_PROGRAM_ARB : GL_FRAGMENT_PROGRAM_ARB;
 }
 
+TEST(ProgramCounter, HandWrittenProgramsAgreeWithMesa) {
+  gl::Context ctx(8, 8);
+  for (const Known& k : kKnown) {
+    const ProgramCounts c = count_program(k.source);
+    expect_agrees_with_mesa(c, mesa_counts(target_of(c), k.source), k.name);
+  }
+}
+
+// Both counters: the text counter on the printed program and the IR counter on its instruction
+// list (what the budget uses), each against Mesa's own count of the same text.
 TEST(ProgramCounter, EveryGeneratedProgramAgreesWithMesa) {
   gl::Context ctx(8, 8);
   std::vector<std::string> scenes = test::json_files("scenes");
@@ -158,8 +166,15 @@ TEST(ProgramCounter, EveryGeneratedProgramAgreesWithMesa) {
         for (bool term : {true, false}) {
           const auto p = arbfp::generate_arb(scene, m, arbfp::parse_variant(v.name), term);
           const std::string what = file + " " + m.name + " " + v.name + (term ? "" : " (no term)");
-          expect_agrees_with_mesa(p.vertex, what + " vertex");
-          expect_agrees_with_mesa(p.fragment, what + " fragment");
+          const std::pair<const std::string&, const arbfp::ir::Program&> programs[] = {
+              {p.vertex, p.vertex_program}, {p.fragment, p.fragment_program}};
+          for (const auto& [text, ir] : programs) {
+            const ProgramCounts from_ir = arbfp::ir::count(ir);
+            const MesaCounts mesa = mesa_counts(target_of(from_ir), text);
+            const std::string kind = budget::to_string(from_ir.kind);
+            expect_agrees_with_mesa(count_program(text), mesa, what + " " + kind + " (text)");
+            expect_agrees_with_mesa(from_ir, mesa, what + " " + kind + " (IR)");
+          }
         }
       }
     }

@@ -6,20 +6,12 @@
 
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
+#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/path.h"
 
 namespace lt::budget {
 
 namespace {
-
-ProgramCounts count(const std::string& source, const std::string& name) {
-  try {
-    return count_program(source);
-  } catch (const std::invalid_argument& e) {
-    LT_CHECK(false, "generated program " + name + " cannot be counted: " + e.what());
-  }
-  return {};
-}
 
 // Materials some object draws with, in scene order (the paths build programs only for these).
 std::vector<size_t> used_materials(const Scene& scene) {
@@ -34,10 +26,14 @@ void add_arbfp(const Scene& scene, const std::string& variant, BudgetReport& r) 
     const Material& mat = scene.materials[m];
     const arbfp::ArbPrograms p = arbfp::generate_arb(scene, mat, v);
     const std::string name = "material " + mat.name;
-    r.programs.push_back(
-        {name + ": vertex program", count(p.vertex, name), r.vertex_profile->name, {}});
-    r.programs.push_back(
-        {name + ": fragment program", count(p.fragment, name), r.fragment_profile->name, {}});
+    r.programs.push_back({name + ": vertex program",
+                          arbfp::ir::count(p.vertex_program),
+                          r.vertex_profile->name,
+                          {}});
+    r.programs.push_back({name + ": fragment program",
+                          arbfp::ir::count(p.fragment_program),
+                          r.fragment_profile->name,
+                          {}});
     if (!mat.translucency) continue;
     // The term's cost light by light: programs for the scene's first k lights, with and
     // without the term; light k's share is the growth of that difference.
@@ -47,9 +43,10 @@ void add_arbfp(const Scene& scene, const std::string& variant, BudgetReport& r) 
     TermCost::Cost previous;
     for (size_t k = 1; k <= scene.lights.size(); ++k) {
       partial.lights.assign(scene.lights.begin(), scene.lights.begin() + static_cast<long>(k));
-      const ProgramCounts with = count(arbfp::generate_arb(partial, mat, v, true).fragment, name);
+      const ProgramCounts with =
+          arbfp::ir::count(arbfp::generate_arb(partial, mat, v, true).fragment_program);
       const ProgramCounts without =
-          count(arbfp::generate_arb(partial, mat, v, false).fragment, name);
+          arbfp::ir::count(arbfp::generate_arb(partial, mat, v, false).fragment_program);
       const TermCost::Cost diff{with.alu - without.alu, with.tex - without.tex};
       tc.per_light.push_back({diff.alu - previous.alu, diff.tex - previous.tex});
       previous = diff;

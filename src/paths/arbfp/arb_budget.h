@@ -1,7 +1,8 @@
 // The arbfp path's budget (`ltrender budget SCENE --path arbfp`): every program it generates for
-// a scene, counted (arb_counter.h) and checked against a profile pair (arb_profiles.h), plus the
-// translucency term's own cost per light: the program with the term minus the same program
-// without it. It lives with the path (no other folder includes the ARB generator).
+// a scene, counted on its instruction list (arb_ir_counter.h) and checked against a profile pair
+// (arb_profiles.h), plus the translucency term's own cost per light: the program with the term
+// minus the same program without it. It lives with the path (no other folder includes the ARB
+// generator).
 #pragma once
 
 #include <nlohmann/json.hpp>

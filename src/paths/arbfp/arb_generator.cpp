@@ -2,574 +2,431 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <sstream>
 
 #include "core/error.h"
-#include "gl/program.h"
-#include "model/pow_curves.h"
-#include "model/translucency.h"
+#include "paths/arbfp/arb_emitters.h"
+#include "paths/arbfp/arb_lobe.h"
 
 namespace lt::arbfp {
 
+using ir::attrib;
+using ir::Op;
+using ir::output;
+using ir::Reg;
+
 namespace {
 
-// ARB programs take float literals; %.9g round-trips a float exactly.
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(static_cast<float>(v)));
-  return buf;
-}
+// The programs' own description, at their top (what `ltrender info --source` shows).
+const char kFragmentHeader[] =
+    R"(# arbfp path, fragment program: the equation of model.md per pixel in ARB_fragment_program
+# assembly (the SM2 model). Generated per material by src/paths/arbfp/arb_generator.cpp, which
+# emits only what the scene uses: one block per light (attenuation only for point lights), the
+# view vector and thickness only when the translucency term reads them, ambient only when
+# non-zero. Lights are packed four to a register (component x, y, z, w of diffuse0, tv0, lobe0,
+# att0; then diffuse1 ...) so the lobe t^p, or its replacement, runs once per group of four.
+#
+# Inputs from translucency.vp:
+#   fragment.texcoord[0]  camera-relative position P (the eye is the origin)
+#   fragment.texcoord[1]  interpolated normal (not unit)
+#   fragment.texcoord[2]  vertex thickness (only when the material reads it)
+#   fragment.texcoord[3+g] pow=mul:vertex only: (lobe * s + a) of light group g, per vertex
+#                          (then the fragment program has no t, V, H or lobe of its own)
+#
+)";
 
-std::string vec4(double x, double y, double z, double w) {
-  std::string s = "{";
-  s.append(num(x)).append(", ").append(num(y)).append(", ").append(num(z)).append(", ");
-  s.append(num(w)).append("}");
-  return s;
-}
-std::string vec4(const glm::dvec3& v, double w) {
-  return vec4(v.x, v.y, v.z, w);
-}
+const char kVertexHeader[] =
+    "# arbfp path, vertex program: shading is per pixel, so this mostly hands the fragment program "
+    "what\n"
+    "# it reads. Generated per material by src/paths/arbfp/arb_generator.cpp: the thickness line "
+    "and,\n"
+    "# for pow=mul:vertex only, the translucency lobe per vertex (into texcoord[3..7], four lights "
+    "per\n"
+    "# texcoord) are the parts that vary.\n"
+    "#\n"
+    "# ARB_position_invariant: the position is transformed by the fixed-function "
+    "MODELVIEW/PROJECTION\n"
+    "# exactly as ftransform() and fixed-function do, so every path rasterises the same pixels.\n";
 
 bool is_integer_power(double p) {
   return p >= 1 && p == std::floor(p) && p <= 1 << 20;
 }
 
-const char kComponents[] = "xyzw";
+// What the scene, the material and the variant ask of the two programs, decided once (Mesa's
+// state key): the generators below only read it.
+struct Key {
+  const Scene& scene;
+  const Translucency tr;  // the material's, or the defaults when it has none
+  const PowVariant& variant;
+  bool term = false;              // the translucency term is generated
+  bool flat_lobe = false;         // p = 0: t^0 = 1 everywhere (0^0 := 1), no t and no lobe
+  bool vertex_lobe = false;       // pow=mul:vertex: the vertex program computes the lobe
+  bool fragment_lobe = false;     // the fragment program computes t and the lobe
+  bool vertex_thickness = false;  // T comes from the vertex colour
+  bool ortho = false, ambient = false, any_point = false;
+  size_t lights = 0, groups = 0;
+  PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
+  std::vector<std::string> notes = {};
+};
 
-}  // namespace
+Key make_key(const Scene& scene, const Material& material, const PowVariant& variant,
+             bool translucency_term) {
+  Key k{scene, material.translucency.value_or(Translucency{}), variant};
+  k.term = translucency_term && material.translucency.has_value();
+  k.lights = scene.lights.size();
+  k.groups = group_count(k.lights);
+  k.vertex_thickness = k.term && k.tr.thickness_source == ThicknessSource::Vertex;
+  k.ortho = scene.camera.projection == Camera::Projection::Orthographic;
+  k.ambient = scene.ambient_light != glm::dvec3(0);
+  k.flat_lobe = k.term && k.tr.power == 0;
+  for (const Light& l : scene.lights) k.any_point |= l.type == Light::Type::Point;
+  k.vertex_lobe = k.term && !k.flat_lobe && variant.per_vertex;
+  k.fragment_lobe = k.term && !k.flat_lobe && !k.vertex_lobe;
+  if (k.vertex_lobe && k.lights > kMaxVertexLobeLights) {
+    throw InputError("--variant", variant.name(),
+                     "the per-vertex lobe takes at most " + std::to_string(kMaxVertexLobeLights) +
+                         " lights (four per texcoord, texcoord[3..7]); the scene has " +
+                         std::to_string(k.lights));
+  }
+  k.method = variant.method;
+  if (k.term && !k.flat_lobe && k.method == PowMethod::Mul && !is_integer_power(k.tr.power)) {
+    k.notes.push_back(variant.name() + ": power " + ir::num(k.tr.power) +
+                      " is not an integer, exact POW used instead" +
+                      (variant.per_vertex ? " (per vertex)" : ""));
+    k.method = PowMethod::Exact;
+  }
+  if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
+  if (k.vertex_lobe) {
+    k.notes.push_back(std::string("pow=mul:vertex: t and the lobe per vertex, Gouraud-") +
+                      "interpolated" + (k.any_point ? " (point lights: L at the vertex too)" : ""));
+  }
+  return k;
+}
 
-std::string PowVariant::name() const {
+// ---- The vertex program ----------------------------------------------------------------------
+
+// pow=mul:vertex: N, V, L, H, t = saturate(dot(V, -H)), the lobe t^p and (lobe * s + a) per
+// vertex, into texcoord[kVertexLobeTexcoord + g] (lobe * s + a is linear in the lobe, so
+// interpolating it equals applying it to the interpolated lobe). Every hard-case convention of
+// src/model/translucency.h holds at the vertices; between them the lobe is Gouraud-interpolated
+// (also for point lights, whose L is taken at the vertex here, like the combiners path), which is
+// this variant's error.
+void emit_vertex_lobe(ir::Program& p, Key& k) {
+  ir::Block decls = p.block(), temps = p.block(), code = p.block();
+  decls.text(
+      "# The translucency lobe per vertex (pow=mul:vertex): the fragment program only adds\n"
+      "# lobe * T to the diffuse term of each light.\n");
+  Shading s;
+  s.P = attrib("vertex.position");
+  s.material = declare_material(decls, k.tr);
+  s.guard = declare_guards(decls);
+  if (k.ortho) s.V = declare_orthographic_view(decls, k.scene);
+  std::vector<Reg> light_vector, scale;
+  for (size_t i = 0; i < k.lights; ++i) {
+    light_vector.push_back(declare_light_vector(decls, k.scene, i));
+  }
+  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(decls, k.scene, g));
+
+  s.r = p.temp("r");
+  s.N = p.temp("N");
+  s.H = p.temp("H");
+  if (!k.ortho) s.V = p.temp("V");
+  if (k.any_point) s.L = p.temp("L");
+  std::vector<Reg> tv, lobe;
+  for (size_t g = 0; g < k.groups; ++g) {
+    tv.push_back(p.temp("tv" + std::to_string(g)));
+    lobe.push_back(p.temp("lobe" + std::to_string(g)));
+  }
+  temps.temps();
+
+  code.text("# N = n / |n|, or 0 when |n| < 1e-6 (then H = L, as the reference).\n");
+  emit_normal(code, s, attrib("vertex.normal"));
+  if (!k.ortho) emit_view_vector(code, s);
+  for (size_t i = 0; i < k.lights; ++i) {
+    const Reg L = emit_light_direction(code, s, k.scene, i, light_vector[i]);
+    emit_t(code, s, L, k.tr.normalize_distorted_light, write_lane(tv, i));
+  }
+  code.text("# t = saturate(dot(V, -H)) for a whole group at once (no _SAT in vertex programs).\n");
+  for (size_t g = 0; g < k.groups; ++g) {
+    const Reg dst = tv[g].masked(group_mask(g, k.lights));
+    code.op(Op::MAX, dst, {tv[g], s.material.zero});
+    code.op(Op::MIN, dst, {tv[g], s.guard.one});
+  }
+  LobeInput in{decls, code, s, k.variant, k.tr, k.lights, tv, lobe, k.any_point, k.notes};
+  lobe_mul_vertex(in, k.method);
+  code.text("# lobe * s + a, to the fragment program.\n");
+  for (size_t g = 0; g < k.groups; ++g) {
+    const Reg out = output("result.texcoord[" + std::to_string(kVertexLobeTexcoord + g) + "]");
+    emit_scale_and_ambient(code, out.masked(group_mask(g, k.lights)), lobe[g], scale[g], s.material,
+                           k.tr.ambient != 0);
+  }
+  code.text("\n");
+}
+
+// Shading is per pixel: the vertex program hands the fragment program the camera-relative
+// position, the normal and, when the material reads it, the vertex thickness.
+ir::Program vertex_program(Key& k) {
+  ir::Program p(ir::ProgramKind::Vertex);
+  ir::Block b = p.block();
+  b.text(kVertexHeader);
+  b.option("ARB_position_invariant");
+  b.text(
+      "# Camera-relative position (the eye is the origin: src/gl/scene_geometry.h) and the world "
+      "normal,\n# through texture coordinates because colour varyings may be clamped to [0, 1].\n");
+  b.op(Op::MOV, output("result.texcoord[0]"), {attrib("vertex.position")});
+  b.op(Op::MOV, output("result.texcoord[1]"), {attrib("vertex.normal")});
+  if (k.vertex_thickness) {
+    // T = vertex colour * tint is multiplied here: the tint is constant, so interpolating the
+    // product equals the product of the interpolation, and the fragment program saves one MUL
+    // per pixel.
+    b.text("# Vertex thickness: the mesh colour times the material's tint.\n");
+    const Reg tint = b.param("tint", vec4(k.tr.tint, 0));
+    b.op(Op::MUL, output("result.texcoord[2]"), {attrib("vertex.color"), tint});
+  } else {
+    b.text("# (constant thickness: nothing more to pass)\n");
+  }
+  if (k.vertex_lobe) {
+    emit_vertex_lobe(p, k);
+  } else {
+    p.block().text("# (the lobe is computed per pixel)\n");
+  }
+  return p;
+}
+
+// ---- The fragment program --------------------------------------------------------------------
+
+// The fragment program's blocks (in print order) and registers.
+struct Fragment {
+  explicit Fragment(ir::Program& prog)
+      : p(prog), head(p.block()), decls(p.block()), temps(p.block()), code(p.block()) {}
+  ir::Program& p;
+  ir::Block head, decls, temps, code;
+  Shading s;
+  Reg albedo, sum, acc, T, ambient;
+  std::vector<Reg> diffuse, tv, lobe, att;        // per group
+  std::vector<Reg> color, light_vector, light_k;  // per light
+};
+
+// Declarations in print order (the TEMP statement lists the temporaries in allocation order).
+void declare_fragment(Fragment& f, const Key& k, const Material& material) {
+  ir::Program& p = f.p;
+  ir::Block& d = f.decls;
+  d.text("# albedo.w = 1 is the output alpha (coverage for the comparison).\n");
+  f.albedo = d.param("albedo", vec4(material.albedo, 1));
+  f.s.guard = declare_guards(d);
+  f.s.P = attrib("fragment.texcoord[0]");
+  f.s.r = p.temp("r");
+  f.s.N = p.temp("N");
+  f.sum = p.temp("sum");
+  if (k.fragment_lobe) f.s.H = p.temp("H");
+  if (k.any_point) f.s.L = p.temp("L");
+  for (size_t g = 0; g < k.groups; ++g) {
+    const std::string n = std::to_string(g);
+    f.diffuse.push_back(p.temp("diffuse" + n));
+    if (k.fragment_lobe) f.tv.push_back(p.temp("tv" + n)), f.lobe.push_back(p.temp("lobe" + n));
+    if (k.any_point) f.att.push_back(p.temp("att" + n));
+  }
+  if (k.term) {
+    f.acc = p.temp("acc");
+    if (k.vertex_lobe) {
+      d.text("# pow=mul:vertex: (lobe * s + a) of light group g comes in fragment.texcoord[" +
+             std::to_string(kVertexLobeTexcoord) + " + g]\n");
+    } else {
+      f.s.material = declare_material(d, k.tr);
+    }
+    if (k.vertex_thickness) {
+      // The vertex program multiplied the tint in (see there).
+      d.text("# T = fragment.texcoord[2]: vertex colour * tint\n");
+      f.T = attrib("fragment.texcoord[2]");
+    } else {
+      d.text("# constant thickness * tint\n");
+      f.T = d.param("T", vec4(k.tr.thickness * k.tr.tint, 0));
+    }
+    if (k.fragment_lobe) f.s.V = k.ortho ? declare_orthographic_view(d, k.scene) : p.temp("V");
+  }
+  if (k.ambient) f.ambient = d.param("ambient_light", vec4(k.scene.ambient_light, 0));
+  for (size_t i = 0; i < k.lights; ++i) {
+    const Light& l = k.scene.lights[i];
+    const std::string prefix = "light" + std::to_string(i) + "_";
+    f.color.push_back(d.param(prefix + "color", vec4(l.color, 0)));
+    f.light_vector.push_back(declare_light_vector(d, k.scene, i));
+    f.light_k.push_back(l.type == Light::Type::Point
+                            ? d.param(prefix + "k", ir::vec4(l.kc, l.kl, l.kq, 0), "kc, kl, kq")
+                            : Reg{});
+  }
+}
+
+// att = 1 / max(kc + kl dist + kq dist^2, kMinAttenuationDenominator), from the r.x = 1/dist
+// that emit_point_light_direction left.
+void emit_attenuation(ir::Block& code, const Shading& s, const Reg& k, const Reg& att) {
+  const Reg& r = s.r;
+  code.text("# dist = 1 / RSQ(dist^2): RCP(+inf) = 0, so no NaN at distance 0.\n");
+  code.op(Op::RCP, r.masked("y"), {r.swz("x")});
+  code.op(Op::MAD, r.masked("z"), {r.swz("y"), k.swz("y"), k.swz("x")});
+  code.op(Op::MAD, r.masked("z"), {s.L.swz("w"), k.swz("z"), r.swz("z")});
+  code.op(Op::MAX, r.masked("z"), {r.swz("z"), s.guard.attenuation_min});
+  code.op(Op::RCP, att, {r.swz("z")});
+}
+
+// Per light: diffuse (and attenuation), then t.
+void fragment_lights(Fragment& f, const Key& k) {
+  ir::Block& code = f.code;
+  code.text(
+      "\n# Per light: diffuse (and attenuation), then t = saturate(dot(V, -H)) with H = L + "
+      "N*d.\n");
+  for (size_t i = 0; i < k.lights; ++i) {
+    const Reg L = emit_light_direction(code, f.s, k.scene, i, f.light_vector[i]);
+    if (k.scene.lights[i].type == Light::Type::Point) {
+      emit_attenuation(code, f.s, f.light_k[i], write_lane(f.att, i));
+    }
+    code.op_sat(Op::DP3, write_lane(f.diffuse, i), {f.s.N, L});
+    if (k.fragment_lobe) emit_t(code, f.s, L, k.tr.normalize_distorted_light, write_lane(f.tv, i));
+  }
+}
+
+// Each light's lobe as the accumulation reads it.
+struct FragmentLobe {
+  LobeLanes lanes;
+  // The LUT's lanes hold t^p and are scaled light by light in the accumulation (these are the
+  // scales, per group); every other lobe arrives as lobe * s + a (empty).
+  std::vector<Reg> scale_in_accumulation;
+};
+
+LobeLanes fragment_method(LobeInput& in, PowMethod method, const model::PowerLut* lut) {
   switch (method) {
     case PowMethod::Exact:
-      return "pow=exact";
+      return lobe_exact(in);
     case PowMethod::Lut:
-      return "pow=lut:" + std::to_string(lut_size) + ":" + model::to_string(lut_format);
+      return lobe_lut(in, *lut);
     case PowMethod::Sg:
-      return "pow=sg";
+      return lobe_sg(in);
     case PowMethod::SgSimplified:
-      return "pow=sg-simplified";
+      return lobe_sg_simplified(in);
     case PowMethod::SgFitted:
-      return "pow=sg-fitted";
+      return lobe_sg_fitted(in);
     case PowMethod::Mul:
-      return per_vertex ? "pow=mul:vertex" : "pow=mul";
+      return lobe_mul(in);
   }
-  return "?";
+  return {};
 }
 
-PowVariant parse_variant(const std::string& name) {
-  PowVariant v;
-  const std::string prefix = "pow=";
-  if (name.rfind(prefix, 0) != 0) {
-    throw InputError("--variant", name, "arbfp variants start with pow=");
-  }
-  const std::string m = name.substr(prefix.size());
-  if (m == "exact") return v;
-  if (m == "sg") return {PowMethod::Sg};
-  if (m == "sg-simplified") return {PowMethod::SgSimplified};
-  if (m == "sg-fitted") return {PowMethod::SgFitted};
-  if (m == "mul") return {PowMethod::Mul};
-  if (m == "mul:vertex") {
-    v.method = PowMethod::Mul;
-    v.per_vertex = true;
-    return v;
-  }
-  // lut:N:FORMAT
-  int size = 0;
-  char format[8] = {};
-  if (std::sscanf(m.c_str(), "lut:%d:%7s", &size, format) == 2 && size >= 2 && size <= 4096) {
-    v.method = PowMethod::Lut;
-    v.lut_size = size;
-    const std::string f = format;
-    if (f == "u8")
-      v.lut_format = model::LutFormat::U8;
-    else if (f == "f16")
-      v.lut_format = model::LutFormat::F16;
-    else if (f == "f32")
-      v.lut_format = model::LutFormat::F32;
-    else
-      throw InputError("--variant", name, "LUT format must be u8, f16 or f32");
-    if (v.name() == name) return v;
-  }
-  throw InputError("--variant", name,
-                   "unknown arbfp variant (pow=exact, pow=lut:N:u8|f16|f32 with 2 <= N <= 4096, "
-                   "pow=sg, pow=sg-simplified, pow=sg-fitted, pow=mul, pow=mul:vertex)");
-}
-
-namespace {
-
-// One light's place in the packed registers: group g (diffuse<g>, tv<g>, lobe<g>, att<g>) and
-// component c.
-struct Slot {
-  std::string g, c;
-};
-Slot slot(size_t i) {
-  return {std::to_string(i / 4), std::string(1, kComponents[i % 4])};
-}
-// Write mask covering the lights of group g.
-std::string group_mask(size_t g, size_t lights) {
-  const size_t n = std::min<size_t>(4, lights - g * 4);
-  std::string mask = ".";
-  mask.append(kComponents, n);
-  return mask;
-}
-
-// t^k from tv<g> into lobe<g> for every group, by left-to-right binary exponentiation: one MUL per
-// bit after the leading one, plus one per set bit; no extra register (t stays in tv<g>). Both
-// program kinds have MUL and MOV, so the fragment program and pow=mul:vertex's vertex program
-// share it.
-void emit_mul_chain(std::ostream& out, unsigned long k, size_t groups, size_t n_lights) {
-  int top = 0;
-  while ((k >> (top + 1)) != 0) ++top;
-  for (size_t g = 0; g < groups; ++g) {
-    const std::string lg = "lobe" + std::to_string(g), tg = "tv" + std::to_string(g);
-    const std::string m = group_mask(g, n_lights);
-    std::string cur = tg;
-    for (int b = top - 1; b >= 0; --b) {
-      out << "MUL " << lg << m << ", " << cur << ", " << cur << ";\n";
-      cur = lg;
-      if ((k >> b) & 1) out << "MUL " << lg << m << ", " << lg << ", " << tg << ";\n";
+// The lobe t^p for every light, by the variant's method, then lobe * s + a per group.
+FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut) {
+  f.code.text("\n# The lobe t^p for every light of a group at once, then (lobe * s + a).\n");
+  FragmentLobe out;
+  LobeLanes& lanes = out.lanes;
+  if (k.vertex_lobe) {
+    f.code.text("# pow=mul:vertex: the lobe, times s plus a, was computed per vertex.\n");
+    for (size_t i = 0; i < k.lights; ++i) {
+      const std::string texcoord = std::to_string(kVertexLobeTexcoord + i / 4);
+      lanes.push_back(attrib("fragment.texcoord[" + texcoord + "]").swz(component(i)));
     }
-    if (cur == tg) out << "MOV " << lg << m << ", " << tg << ";  # p = 1\n";
+    return out;
   }
+  if (!k.term) return out;
+  if (k.flat_lobe) {
+    for (size_t g = 0; g < k.groups; ++g) {
+      const std::array<double, 4> s = light_scales(k.scene, g);
+      const double a = k.tr.ambient;
+      f.lobe.push_back(f.decls.param("lobe" + std::to_string(g),
+                                     ir::vec4(s[0] + a, s[1] + a, s[2] + a, s[3] + a),
+                                     "1 * s + a (flat lobe)"));
+    }
+    for (size_t i = 0; i < k.lights; ++i) lanes.push_back(read_lane(f.lobe, i));
+    return out;
+  }
+  LobeInput in{f.decls, f.code, f.s, k.variant, k.tr, k.lights, f.tv, f.lobe, k.any_point, k.notes};
+  if (k.method == PowMethod::Lut) {
+    lut = model::PowerLut::build(k.variant.lut_size, k.variant.lut_format, {k.tr.power});
+  }
+  lanes = fragment_method(in, k.method, lut ? &*lut : nullptr);
+  std::vector<Reg> scale;
+  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(f.decls, k.scene, g));
+  if (k.method == PowMethod::Lut) {
+    out.scale_in_accumulation = scale;
+    return out;
+  }
+  for (size_t g = 0; g < k.groups; ++g) {
+    emit_scale_and_ambient(f.code, f.lobe[g].masked(group_mask(g, k.lights)), f.lobe[g], scale[g],
+                           f.s.material, k.tr.ambient != 0);
+  }
+  return out;
 }
 
-// The group's light scales s, packed like the lights.
-std::string scale_param(const Scene& scene, size_t g) {
-  double s[4] = {0, 0, 0, 0};
-  for (size_t i = g * 4; i < std::min(scene.lights.size(), g * 4 + 4); ++i) {
-    s[i % 4] = scene.lights[i].translucency_scale;
-  }
-  return "PARAM scale" + std::to_string(g) + " = " + vec4(s[0], s[1], s[2], s[3]) +
-         ";  # s per light\n";
-}
-
-// pow=mul:vertex, the vertex program's part: N, V, L, H, t = saturate(dot(V, -H)), the lobe t^p
-// and (lobe * s + a) per vertex, into texcoord[kVertexLobeTexcoord + g] (lobe * s + a is linear
-// in the lobe, so interpolating it equals applying it to the interpolated lobe). Written with
-// ARB_vertex_program's instructions only: no CMP and no _SAT there, so the hard cases select with
-// SGE/SLT masks and saturate is MAX/MIN. Every hard-case convention of src/model/translucency.h
-// holds at the vertices; between them the lobe is Gouraud-interpolated (also for point lights,
-// whose L is taken at the vertex here, like the combiners path), which is this variant's error.
-std::string vertex_lobe_block(const Scene& scene, const Translucency& tr, PowMethod method) {
-  const size_t n_lights = scene.lights.size();
-  const size_t groups = (n_lights + 3) / 4;
-  const bool ortho = scene.camera.projection == Camera::Projection::Orthographic;
-  bool any_point = false;
-  for (const Light& l : scene.lights) any_point |= l.type == Light::Type::Point;
-  std::ostringstream params, code;
-  std::string temps = "r, N, H";
-  if (!ortho) temps += ", V";
-  if (any_point) temps += ", L";
-  for (size_t g = 0; g < groups; ++g)
-    temps += ", tv" + std::to_string(g) + ", lobe" + std::to_string(g);
-
-  params << "# The translucency lobe per vertex (pow=mul:vertex): the fragment program only adds\n"
-         << "# lobe * T to the diffuse term of each light.\n"
-         << "# material = (distortion d, power p, lt ambient a, 0)\n"
-         << "PARAM material = " << vec4(tr.distortion, tr.power, tr.ambient, 0) << ";\n"
-         << "# guard = the fragment program's (x, y: zero normal; w: 1/|v| clamp so 0 * 1e30 = 0\n"
-         << "# where IEEE would give 0 * inf = NaN); z = 1, the upper bound of saturate.\n"
-         << "PARAM guard = {1e6, 1e-12, 1, 1e30};\n";
-  if (ortho) {
-    params << "# orthographic: every view ray is parallel, V = -forward\n"
-           << "PARAM V = " << vec4(-scene.camera.forward(), 0) << ";\n";
-  }
-  for (size_t i = 0; i < n_lights; ++i) {
-    const Light& l = scene.lights[i];
-    const std::string li = "light" + std::to_string(i) + "_";
-    if (l.type == Light::Type::Directional) {
-      params << "PARAM " << li << "L = " << vec4(-l.direction, 0) << ";  # -direction\n";
+// sum = ambient_light + sum over lights of color * att * (diffuse + lobe * T).
+void accumulate(Fragment& f, const Key& k, const FragmentLobe& lobe) {
+  ir::Block& code = f.code;
+  code.text(
+      "\n# sum = ambient_light + sum over lights of color * att * (diffuse + (lobe*s + a) * T).\n");
+  const Reg sum = f.sum.masked("xyz");
+  for (size_t i = 0; i < k.lights; ++i) {
+    const bool point = k.scene.lights[i].type == Light::Type::Point;
+    Reg x = read_lane(f.diffuse, i);
+    if (k.term) {
+      const Reg& l = lobe.lanes[i];
+      if (!lobe.scale_in_accumulation.empty()) {
+        emit_scale_and_ambient(code, l.as_destination(), l,
+                               read_lane(lobe.scale_in_accumulation, i), f.s.material,
+                               k.tr.ambient != 0);
+      }
+      code.op(Op::MAD, f.acc.masked("xyz"), {l, f.T, x});
+      if (point) code.op(Op::MUL, f.acc.masked("xyz"), {f.acc, read_lane(f.att, i)});
+      x = f.acc;
+    } else if (point) {
+      code.op(Op::MUL, write_lane(f.diffuse, i), {x, read_lane(f.att, i)});
+    }
+    if (i > 0) {
+      code.op(Op::MAD, sum, {x, f.color[i], f.sum});
+    } else if (k.ambient) {
+      code.op(Op::MAD, sum, {x, f.color[i], f.ambient});
     } else {
-      params << "PARAM " << li << "position = " << vec4(l.position - scene.camera.eye, 0)
-             << ";  # camera-relative\n";
+      code.op(Op::MUL, sum, {x, f.color[i]});
     }
   }
-  for (size_t g = 0; g < groups; ++g) params << scale_param(scene, g);
+  if (k.lights == 0) {
+    if (k.ambient) {
+      code.op(Op::MOV, sum, {f.ambient});
+    } else {
+      code.op(Op::SUB, sum, {f.albedo, f.albedo}, "0");
+    }
+  }
+}
 
-  code << "# N = n / |n|, or 0 when |n| < 1e-6 (then H = L, as the reference).\n"
-       << "DP3 r.x, vertex.normal, vertex.normal;\n"
-       << "RSQ r.y, r.x;\n"
-       << "MIN r.y, r.y, guard.x;\n"
-       << "SGE r.z, r.x, guard.y;\n"
-       << "MUL r.y, r.y, r.z;\n"
-       << "MUL N.xyz, vertex.normal, r.y;\n";
-  if (!ortho) {
-    // No rasterised point is at the eye (near > 0), but a clipped triangle's vertex can be: there
-    // V = 0 (t = 0) instead of 0 * inf.
-    code << "# V = normalize(-P), 0 for a vertex at the eye (1/|P| clamped to 1e30).\n"
-         << "DP3 V.w, vertex.position, vertex.position;\n"
-         << "RSQ V.w, V.w;\n"
-         << "MIN V.w, V.w, guard.w;\n"
-         << "MUL V.xyz, -vertex.position, V.w;\n";
-  }
-  for (size_t i = 0; i < n_lights; ++i) {
-    const Light& l = scene.lights[i];
-    const std::string li = "light" + std::to_string(i) + "_";
-    const Slot sl = slot(i);
-    std::string L = "L";
-    if (l.type == Light::Type::Directional) {
-      L = li + "L";
-      code << "# light " << i << ": directional\n";
-    } else {
-      code << "# light " << i << ": point, L at the vertex. L = (position - P) / dist, and L = N "
-           << "at distance 0:\n# there 0 * min(RSQ(0), 1e30) = 0, and the SGE mask adds N.\n"
-           << "SUB L.xyz, " << li << "position, vertex.position;\n"
-           << "DP3 L.w, L, L;\n"
-           << "RSQ r.x, L.w;\n"
-           << "MIN r.x, r.x, guard.w;\n"
-           << "MUL L.xyz, L, r.x;\n"
-           << "SGE r.y, -L.w, material.w;\n"
-           << "MAD L.xyz, N, r.y, L;\n";
-    }
-    code << "MAD H.xyz, N, material.x, " << L << ";\n";
-    if (tr.normalize_distorted_light) {
-      code << "# normalised H on request: normalize(0) := 0 (1/|H| clamped to 1e30).\n"
-           << "DP3 H.w, H, H;\n"
-           << "RSQ H.w, H.w;\n"
-           << "MIN H.w, H.w, guard.w;\n"
-           << "MUL H.xyz, H, H.w;\n";
-    }
-    code << "DP3 tv" << sl.g << "." << sl.c << ", V, -H;\n";
-  }
-  code << "# t = saturate(dot(V, -H)) for a whole group at once (no _SAT in vertex programs).\n";
-  for (size_t g = 0; g < groups; ++g) {
-    const std::string m = group_mask(g, n_lights);
-    code << "MAX tv" << g << m << ", tv" << g << ", material.w;\n"
-         << "MIN tv" << g << m << ", tv" << g << ", guard.z;\n";
-  }
-  if (method == PowMethod::Mul) {
-    const auto k = static_cast<unsigned long>(tr.power);
-    code << "# t^" << k << " by repeated squaring (exact up to float rounding).\n";
-    emit_mul_chain(code, k, groups, n_lights);
-  } else {
-    // POW is EX2(p * LG2(t)) and LG2(0) = -inf: POW reads t clamped to the smallest normal float
-    // (finite everywhere), and the (t > 0) mask makes the model's 0 for t = 0 (0^p, p > 0; p = 0
-    // never gets here: flat lobe).
-    params << "PARAM pow_floor = " << vec4(std::ldexp(1.0, -126), 0, 0, 0) << ";  # 2^-126\n";
-    code << "# non-integer p: POW of max(t, 2^-126), times (t > 0) for the model's 0^p = 0.\n";
-    for (size_t i = 0; i < n_lights; ++i) {
-      const Slot sl = slot(i);
-      code << "MAX r.x, tv" << sl.g << "." << sl.c << ", pow_floor.x;\n"
-           << "POW lobe" << sl.g << "." << sl.c << ", r.x, material.y;\n";
-    }
-    for (size_t g = 0; g < groups; ++g) {
-      const std::string m = group_mask(g, n_lights);
-      code << "SLT r" << m << ", material.w, tv" << g << ";\n"
-           << "MUL lobe" << g << m << ", lobe" << g << ", r;\n";
-    }
-  }
-  code << "# lobe * s + a, to the fragment program.\n";
-  for (size_t g = 0; g < groups; ++g) {
-    const std::string m = group_mask(g, n_lights);
-    const std::string out = "result.texcoord[" + std::to_string(kVertexLobeTexcoord + g) + "]";
-    if (tr.ambient != 0) {
-      code << "MAD " << out << m << ", lobe" << g << ", scale" << g << ", material.z;\n";
-    } else {
-      code << "MUL " << out << m << ", lobe" << g << ", scale" << g << ";  # a = 0\n";
-    }
-  }
-  return params.str() + "TEMP " + temps + ";\n" + code.str();
+ir::Program fragment_program(Key& k, const Material& material,
+                             std::optional<model::PowerLut>& lut) {
+  ir::Program p(ir::ProgramKind::Fragment);
+  Fragment f(p);
+  declare_fragment(f, k, material);
+  f.code.text(
+      "# N = n / |n|, or 0 when |n| < 1e-6 (then diffuse = 0 and H = L, as the reference).\n");
+  emit_normal(f.code, f.s, attrib("fragment.texcoord[1]"));
+  if (k.fragment_lobe && !k.ortho) emit_view_vector(f.code, f.s);
+  fragment_lights(f, k);
+  accumulate(f, k, emit_lobe(f, k, lut));
+  f.code.text("\n");
+  f.code.op(Op::MUL, output("result.color").masked("xyz"), {f.sum, f.albedo});
+  f.code.op(Op::MOV, output("result.color").masked("w"), {f.albedo.swz("w")});
+  // Known only now: every temporary (the LUT's) and every note (sg-fitted's).
+  f.temps.text("\n");
+  f.temps.temps();
+  f.temps.text("\n");
+  std::string head = kFragmentHeader;
+  head += "# Variant: " + (k.term ? k.variant.name() : std::string("no translucency term")) + "\n";
+  for (const std::string& n : k.notes) head += "# note: " + n + "\n";
+  f.head.text(head + "\n");
+  return p;
 }
 
 }  // namespace
 
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
                          bool translucency_term) {
+  Key k = make_key(scene, material, variant, translucency_term);
   ArbPrograms out;
-  const bool term = translucency_term && material.translucency.has_value();
-  const Translucency tr = material.translucency.value_or(Translucency{});
-  const size_t n_lights = scene.lights.size();
-  const size_t groups = (n_lights + 3) / 4;
-  const bool vertex_thickness = term && tr.thickness_source == ThicknessSource::Vertex;
-  const bool ortho = scene.camera.projection == Camera::Projection::Orthographic;
-  const bool ambient = scene.ambient_light != glm::dvec3(0);
-  // p = 0: t^0 = 1 everywhere (0^0 := 1), so the lobe and t are not computed at all.
-  const bool flat_lobe = term && tr.power == 0;
-  bool any_point = false;
-  for (const Light& l : scene.lights) any_point |= l.type == Light::Type::Point;
-  // pow=mul:vertex: the vertex program computes the lobe; the fragment program reads it.
-  const bool vertex_lobe = term && !flat_lobe && variant.per_vertex;
-  // The fragment program's own t and lobe.
-  const bool fragment_lobe = term && !flat_lobe && !vertex_lobe;
-  if (vertex_lobe && n_lights > kMaxVertexLobeLights) {
-    throw InputError("--variant", variant.name(),
-                     "the per-vertex lobe takes at most " + std::to_string(kMaxVertexLobeLights) +
-                         " lights (four per texcoord, texcoord[3..7]); the scene has " +
-                         std::to_string(n_lights));
-  }
-
-  PowMethod method = variant.method;
-  if (term && !flat_lobe && method == PowMethod::Mul && !is_integer_power(tr.power)) {
-    out.notes.push_back(variant.name() + ": power " + num(tr.power) +
-                        " is not an integer, exact POW used instead" +
-                        (variant.per_vertex ? " (per vertex)" : ""));
-    method = PowMethod::Exact;
-  }
-  if (flat_lobe) out.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
-  if (vertex_lobe) {
-    out.notes.push_back(std::string("pow=mul:vertex: t and the lobe per vertex, Gouraud-") +
-                        "interpolated" + (any_point ? " (point lights: L at the vertex too)" : ""));
-  }
-
-  std::ostringstream params, view, lights, lobe, acc;
-  std::vector<std::string> temps = {"r", "N", "sum"};
-  if (fragment_lobe) temps.push_back("H");
-  if (any_point) temps.push_back("L");
-  for (size_t g = 0; g < groups; ++g) {
-    const std::string s = std::to_string(g);
-    temps.push_back("diffuse" + s);
-    if (fragment_lobe) temps.push_back("tv" + s), temps.push_back("lobe" + s);
-    if (any_point) temps.push_back("att" + s);
-  }
-  if (term) temps.push_back("acc");
-
-  // Constants: material, view, thickness, lobe parameters.
-  if (term) {
-    if (vertex_lobe) {
-      params << "# pow=mul:vertex: (lobe * s + a) of light group g comes in fragment.texcoord["
-             << kVertexLobeTexcoord << " + g]\n";
-    } else {
-      params << "# material = (distortion d, power p, lt ambient a, 0)\n"
-             << "PARAM material = " << vec4(tr.distortion, tr.power, tr.ambient, 0) << ";\n";
-    }
-    if (vertex_thickness) {
-      // T = vertex colour * tint is multiplied in the vertex program: the tint is constant, so
-      // interpolating the product equals the product of the interpolation, and the fragment
-      // program saves one MUL per pixel.
-      params << "# T = fragment.texcoord[2]: vertex colour * tint\n";
-    } else {
-      params << "# constant thickness * tint\n"
-             << "PARAM T = " << vec4(tr.thickness * tr.tint, 0) << ";\n";
-    }
-    if (fragment_lobe) {
-      if (ortho) {
-        params << "# orthographic: every view ray is parallel, V = -forward\n"
-               << "PARAM V = " << vec4(-scene.camera.forward(), 0) << ";\n";
-      } else {
-        temps.push_back("V");
-        view << "# V = normalize(-P): the eye is the origin of camera-relative space.\n"
-             << "DP3 V.w, fragment.texcoord[0], fragment.texcoord[0];\n"
-             << "RSQ V.w, V.w;\n"
-             << "MUL V.xyz, -fragment.texcoord[0], V.w;\n";
-      }
-    }
-  }
-  if (ambient) params << "PARAM ambient_light = " << vec4(scene.ambient_light, 0) << ";\n";
-
-  // Per light: diffuse, attenuation, t.
-  for (size_t i = 0; i < n_lights; ++i) {
-    const Light& l = scene.lights[i];
-    const std::string li = "light" + std::to_string(i) + "_";
-    const Slot sl = slot(i);
-    params << "PARAM " << li << "color = " << vec4(l.color, 0) << ";\n";
-    std::string L = "L";
-    if (l.type == Light::Type::Directional) {
-      L = li + "L";
-      params << "PARAM " << li << "L = " << vec4(-l.direction, 0) << ";  # -direction\n";
-      lights << "# light " << i << ": directional\n";
-    } else {
-      params << "PARAM " << li << "position = " << vec4(l.position - scene.camera.eye, 0)
-             << ";  # camera-relative\n"
-             << "PARAM " << li << "k = " << vec4(l.kc, l.kl, l.kq, 0) << ";  # kc, kl, kq\n";
-      lights << "# light " << i << ": point. L = (position - P) / dist, and L = N at distance 0.\n"
-             << "SUB L.xyz, " << li << "position, fragment.texcoord[0];\n"
-             << "DP3 L.w, L, L;\n"
-             << "RSQ r.x, L.w;\n"
-             << "MUL L.xyz, L, r.x;\n"
-             << "# dist^2 = 0 made L = 0 * inf = NaN above: CMP selects N instead (-dist^2 < 0 is "
-                "false).\n"
-             << "CMP L.xyz, -L.w, L, N;\n"
-             << "# dist = 1 / RSQ(dist^2): RCP(+inf) = 0, so no NaN at distance 0.\n"
-             << "RCP r.y, r.x;\n"
-             << "MAD r.z, r.y, " << li << "k.y, " << li << "k.x;\n"
-             << "MAD r.z, L.w, " << li << "k.z, r.z;\n"
-             << "MAX r.z, r.z, guard.z;\n"
-             << "RCP att" << sl.g << "." << sl.c << ", r.z;\n";
-    }
-    lights << "DP3_SAT diffuse" << sl.g << "." << sl.c << ", N, " << L << ";\n";
-    if (fragment_lobe) {
-      lights << "MAD H.xyz, N, material.x, " << L << ";\n";
-      if (tr.normalize_distorted_light) {
-        lights << "# normalised H on request: normalize(0) := 0 (1/|H| clamped to 1e30).\n"
-               << "DP3 H.w, H, H;\n"
-               << "RSQ H.w, H.w;\n"
-               << "MIN H.w, H.w, guard.w;\n"
-               << "MUL H.xyz, H, H.w;\n";
-      }
-      lights << "DP3_SAT tv" << sl.g << "." << sl.c << ", V, -H;\n";
-    }
-  }
-
-  // The lobe, per group of four lights; lobe<g> ends up holding (lobe * s + a). lobe_reg[i] is
-  // where light i's lobe is (the LUT variants keep one register per light, see there).
-  std::vector<std::string> lobe_reg(n_lights);
-  for (size_t i = 0; i < n_lights; ++i) {
-    if (vertex_lobe) {
-      lobe_reg[i] =
-          "fragment.texcoord[" + std::to_string(kVertexLobeTexcoord + i / 4) + "]." + slot(i).c;
-    } else {
-      lobe_reg[i].append("lobe").append(slot(i).g).append(".").append(slot(i).c);
-    }
-  }
-  if (vertex_lobe) {
-    lobe << "# pow=mul:vertex: the lobe, times s plus a, was computed per vertex.\n";
-  } else if (term) {
-    // The LUT's coordinate remaps of every group come before every TEX: a TEX reading a
-    // register an ALU instruction wrote starts a new texture indirection (ARB_fragment_program
-    // issue 24), so this order keeps the program at 2 indirections for any light count.
-    if (!flat_lobe && method == PowMethod::Lut) {
-      out.lut = model::PowerLut::build(variant.lut_size, variant.lut_format, {tr.power});
-      params << "# texel-centre addressing (src/model/power_lut.h): u = t * (N-1)/N + 0.5/N\n"
-             << "PARAM lut = "
-             << vec4(out.lut->coordinate(1) - out.lut->coordinate(0), out.lut->coordinate(0), 0, 0)
-             << ";\n";
-      lobe << "# " << variant.name() << ": t^p from a " << variant.lut_size
-           << "-texel 1D texture, linear filtering.\n";
-      for (size_t g = 0; g < groups; ++g) {
-        lobe << "MAD tv" << g << group_mask(g, n_lights) << ", tv" << g << ", lut.x, lut.y;\n";
-      }
-      // Each TEX writes a whole register of its own: Mesa's ARB_fragment_program (llvmpipe)
-      // returns wrong values from the third write-masked TEX into one register (measured: a
-      // packed lobe0.z was garbage), and a TEX overwriting a register an ALU instruction read
-      // since the last TEX would add an indirection. Registers dead by now are reused first.
-      std::vector<std::string> pool;
-      for (size_t g = 0; g < groups; ++g) pool.push_back("lobe" + std::to_string(g));
-      pool.push_back("H");
-      pool.push_back("r");
-      if (any_point) pool.push_back("L");
-      for (size_t i = 0; i < n_lights; ++i) {
-        if (i >= pool.size()) {
-          pool.push_back("tex" + std::to_string(i));
-          temps.push_back(pool.back());
-        }
-        const Slot sl = slot(i);
-        lobe_reg[i] = pool[i] + ".x";
-        lobe << "TEX " << pool[i] << ", tv" << sl.g << "." << sl.c << ", texture[0], 1D;\n";
-      }
-    }
-    if (!flat_lobe && (method == PowMethod::Sg || method == PowMethod::SgSimplified ||
-                       method == PowMethod::SgFitted)) {
-      double n = model::sg_exponent(tr.power);
-      if (method == PowMethod::SgSimplified) n = tr.power;
-      if (method == PowMethod::SgFitted) {
-        n = model::fit_sg_exponent(tr.power);
-        out.notes.push_back("pow=sg-fitted: n' = " + num(n) + " for p = " + num(tr.power) +
-                            " (sg: " + num(model::sg_exponent(tr.power)) + ")");
-      }
-      params << "PARAM sg = " << vec4(n, 0, 0, 0) << ";  # n'\n";
-      lobe << "# " << variant.name() << ": t^p ~ exp2(n' * (t - 1)) = exp2(t * n' - n'). t <= 1, "
-           << "so EX2 never overflows.\n";
-      for (size_t g = 0; g < groups; ++g) {
-        lobe << "MAD lobe" << g << group_mask(g, n_lights) << ", tv" << g << ", sg.x, -sg.x;\n";
-      }
-      for (size_t i = 0; i < n_lights; ++i) {
-        const Slot sl = slot(i);
-        lobe << "EX2 lobe" << sl.g << "." << sl.c << ", lobe" << sl.g << "." << sl.c << ";\n";
-      }
-    }
-    if (!flat_lobe && method == PowMethod::Mul) {
-      const auto k = static_cast<unsigned long>(tr.power);
-      lobe << "# pow=mul: t^" << k << " by repeated squaring (exact up to float rounding).\n";
-      emit_mul_chain(lobe, k, groups, n_lights);
-    }
-    if (!flat_lobe && method == PowMethod::Exact) {
-      lobe << "# pow=exact: POW is EX2(p * LG2(t)) and LG2(0) = -inf, so t = 0 is selected to the\n"
-           << "# model's 0 by CMP (-t < 0 only when t > 0); p = 0 never gets here (flat lobe).\n";
-      for (size_t i = 0; i < n_lights; ++i) {
-        const Slot sl = slot(i);
-        lobe << "POW lobe" << sl.g << "." << sl.c << ", tv" << sl.g << "." << sl.c
-             << ", material.y;\n";
-      }
-      for (size_t g = 0; g < groups; ++g) {
-        lobe << "CMP lobe" << g << group_mask(g, n_lights) << ", -tv" << g << ", lobe" << g
-             << ", material.w;\n";
-      }
-    }
-    // lobe * s + a, with the group's light scales packed like the lights.
-    for (size_t g = 0; g < groups; ++g) {
-      double s[4] = {0, 0, 0, 0};
-      for (size_t i = g * 4; i < std::min(n_lights, g * 4 + 4); ++i) {
-        s[i % 4] = scene.lights[i].translucency_scale;
-      }
-      const std::string m = group_mask(g, n_lights);
-      if (flat_lobe) {
-        params << "PARAM lobe" << g << " = "
-               << vec4(s[0] + tr.ambient, s[1] + tr.ambient, s[2] + tr.ambient, s[3] + tr.ambient)
-               << ";  # 1 * s + a (flat lobe)\n";
-        continue;
-      }
-      params << scale_param(scene, g);
-      if (method == PowMethod::Lut) continue;  // per light, in the accumulation below
-      if (tr.ambient != 0) {
-        lobe << "MAD lobe" << g << m << ", lobe" << g << ", scale" << g << ", material.z;\n";
-      } else {
-        lobe << "MUL lobe" << g << m << ", lobe" << g << ", scale" << g << ";  # a = 0\n";
-      }
-    }
-  }
-
-  // Accumulate: sum = ambient_light + sum_i color_i * att_i * (diffuse_i + lobe_i * T).
-  for (size_t i = 0; i < n_lights; ++i) {
-    const Light& l = scene.lights[i];
-    const Slot sl = slot(i);
-    const std::string li = "light" + std::to_string(i) + "_";
-    const bool point = l.type == Light::Type::Point;
-    std::string x;
-    if (term) {
-      if (fragment_lobe && method == PowMethod::Lut) {
-        const std::string& lr = lobe_reg[i];
-        acc << (tr.ambient != 0 ? "MAD " : "MUL ") << lr << ", " << lr << ", scale" << sl.g << "."
-            << sl.c << (tr.ambient != 0 ? ", material.z;\n" : ";  # a = 0\n");
-      }
-      acc << "MAD acc.xyz, " << lobe_reg[i] << ", "
-          << (vertex_thickness ? "fragment.texcoord[2]" : "T") << ", diffuse" << sl.g << "." << sl.c
-          << ";\n";
-      if (point) acc << "MUL acc.xyz, acc, att" << sl.g << "." << sl.c << ";\n";
-      x = "acc";
-    } else {
-      x = "diffuse" + sl.g + "." + sl.c;
-      if (point) acc << "MUL " << x << ", " << x << ", att" << sl.g << "." << sl.c << ";\n";
-    }
-    if (i > 0) {
-      acc << "MAD sum.xyz, " << x << ", " << li << "color, sum;\n";
-    } else if (ambient) {
-      acc << "MAD sum.xyz, " << x << ", " << li << "color, ambient_light;\n";
-    } else {
-      acc << "MUL sum.xyz, " << x << ", " << li << "color;\n";
-    }
-  }
-  if (n_lights == 0) {
-    acc << (ambient ? "MOV sum.xyz, ambient_light;\n" : "SUB sum.xyz, albedo, albedo;  # 0\n");
-  }
-
-  std::string notes;
-  for (const std::string& n : out.notes) notes += "# note: " + n + "\n";
-  std::string temp_list;
-  for (const std::string& t : temps) temp_list += (temp_list.empty() ? "" : ", ") + t;
-  out.fragment =
-      gl::fill_template(gl::read_shader_source("legacy_shaders/arb/translucency.fp"),
-                        {{"VARIANT", term ? variant.name() : std::string("no translucency term")},
-                         {"NOTES", notes},
-                         {"ALBEDO", vec4(material.albedo, 1)},
-                         {"PARAMS", params.str()},
-                         {"TEMPS", temp_list},
-                         {"VIEW", view.str()},
-                         {"LIGHTS", lights.str()},
-                         {"LOBE", lobe.str()},
-                         {"ACCUMULATE", acc.str()}},
-                        "translucency.fp");
-  out.vertex = gl::fill_template(
-      gl::read_shader_source("legacy_shaders/arb/translucency.vp"),
-      {{"LOBE", vertex_lobe ? vertex_lobe_block(scene, tr, method)
-                            : std::string("# (the lobe is computed per pixel)")},
-       {"THICKNESS", vertex_thickness
-                         ? "# Vertex thickness: the mesh colour times the material's tint.\n"
-                           "PARAM tint = " +
-                               vec4(tr.tint, 0) + ";\n" +
-                               "MUL result.texcoord[2], vertex.color, tint;"
-                         : "# (constant thickness: nothing more to pass)"}},
-      "translucency.vp");
+  out.fragment_program = fragment_program(k, material, out.lut);
+  out.vertex_program = vertex_program(k);
+  out.vertex = ir::print(out.vertex_program);
+  out.fragment = ir::print(out.fragment_program);
+  out.notes = k.notes;
   return out;
 }
 

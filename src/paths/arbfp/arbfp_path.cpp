@@ -2,8 +2,8 @@
 
 #include "core/error.h"
 #include "paths/arbfp/arb_budget.h"
-#include "paths/arbfp/arb_counter.h"
 #include "paths/arbfp/arb_generator.h"
+#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/common/frame.h"
 
@@ -100,8 +100,8 @@ class ArbfpPath final : public Path {
     budget::ProgramCounts frag, vert;
     for (const auto& m : materials_) {
       if (!m) continue;
-      const budget::ProgramCounts f = budget::count_program(m->source.fragment);
-      const budget::ProgramCounts v = budget::count_program(m->source.vertex);
+      const budget::ProgramCounts f = arbfp::ir::count(m->source.fragment_program);
+      const budget::ProgramCounts v = arbfp::ir::count(m->source.vertex_program);
       if (f.instructions() > frag.instructions()) frag = f;
       if (v.instructions() > vert.instructions()) vert = v;
     }
