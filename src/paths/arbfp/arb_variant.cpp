@@ -6,20 +6,37 @@
 
 namespace lt::arbfp {
 
+namespace {
+
+// The methods by name: one row each, read by name() and parse_variant() alike. The LUT's
+// "lut:N:FORMAT" is a grammar of its own (any N and format the generator builds).
+struct MethodName {
+  const char* name;
+  PowMethod method;
+  bool per_vertex;
+};
+constexpr MethodName kMethods[] = {
+    {"exact", PowMethod::Exact, false},
+    {"sg", PowMethod::Sg, false},
+    {"sg-simplified", PowMethod::SgSimplified, false},
+    {"sg-fitted", PowMethod::SgFitted, false},
+    {"mul", PowMethod::Mul, false},
+    {"mul:vertex", PowMethod::Mul, true},
+};
+
+std::string valid_names() {
+  std::string s;
+  for (const MethodName& m : kMethods) s += std::string("pow=") + m.name + ", ";
+  return s + "pow=lut:N:u8|f16|f32 with 2 <= N <= 4096";
+}
+
+}  // namespace
+
 std::string PowVariant::name() const {
-  switch (method) {
-    case PowMethod::Exact:
-      return "pow=exact";
-    case PowMethod::Lut:
-      return "pow=lut:" + std::to_string(lut_size) + ":" + model::to_string(lut_format);
-    case PowMethod::Sg:
-      return "pow=sg";
-    case PowMethod::SgSimplified:
-      return "pow=sg-simplified";
-    case PowMethod::SgFitted:
-      return "pow=sg-fitted";
-    case PowMethod::Mul:
-      return per_vertex ? "pow=mul:vertex" : "pow=mul";
+  if (method == PowMethod::Lut)
+    return "pow=lut:" + std::to_string(lut_size) + ":" + model::to_string(lut_format);
+  for (const MethodName& m : kMethods) {
+    if (m.method == method && m.per_vertex == per_vertex) return std::string("pow=") + m.name;
   }
   return "?";
 }
@@ -31,14 +48,10 @@ PowVariant parse_variant(const std::string& name) {
     throw InputError("--variant", name, "arbfp variants start with pow=");
   }
   const std::string m = name.substr(prefix.size());
-  if (m == "exact") return v;
-  if (m == "sg") return {PowMethod::Sg};
-  if (m == "sg-simplified") return {PowMethod::SgSimplified};
-  if (m == "sg-fitted") return {PowMethod::SgFitted};
-  if (m == "mul") return {PowMethod::Mul};
-  if (m == "mul:vertex") {
-    v.method = PowMethod::Mul;
-    v.per_vertex = true;
+  for (const MethodName& row : kMethods) {
+    if (m != row.name) continue;
+    v.method = row.method;
+    v.per_vertex = row.per_vertex;
     return v;
   }
   // lut:N:FORMAT
@@ -58,9 +71,7 @@ PowVariant parse_variant(const std::string& name) {
       throw InputError("--variant", name, "LUT format must be u8, f16 or f32");
     if (v.name() == name) return v;
   }
-  throw InputError("--variant", name,
-                   "unknown arbfp variant (pow=exact, pow=lut:N:u8|f16|f32 with 2 <= N <= 4096, "
-                   "pow=sg, pow=sg-simplified, pow=sg-fitted, pow=mul, pow=mul:vertex)");
+  throw InputError("--variant", name, "unknown arbfp variant (" + valid_names() + ")");
 }
 
 }  // namespace lt::arbfp
