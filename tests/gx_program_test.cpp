@@ -157,6 +157,8 @@ const BadCase kBad[] = {
 INSTANTIATE_TEST_SUITE_P(Cases, GxBadProgram, ::testing::ValuesIn(kBad),
                          [](const auto& info) { return std::string(info.param.what); });
 
+// fail_arg takes the argument's index: 8 (one past the end) read outside the call's arguments
+// (found by ./test.sh --sanitize), 5 named the wrap mode for a bad format.
 TEST(GxProgram, MipmappedTexturesAreRefusedAtTheirArgument) {
   try {
     run("u8 a[32] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 8, 1, GX_TF_I8, GX_CLAMP, GX_CLAMP, "
@@ -164,6 +166,20 @@ TEST(GxProgram, MipmappedTexturesAreRefusedAtTheirArgument) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(e.what_only().find("mipmapping is not modelled"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where(), "3:58") << e.what();  // GX_TRUE
+    EXPECT_NE(e.what_only().find("argument 8:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GxProgram, UnmodelledTextureFormatsAreRefusedAtTheirArgument) {
+  try {
+    run("u8 a[32] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 8, 1, GX_TF_RGBA8, GX_CLAMP, GX_CLAMP, "
+        "GX_FALSE);\n");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.what_only().find("texture format not modelled"), std::string::npos) << e.what();
+    EXPECT_EQ(e.where(), "3:28") << e.what();  // GX_TF_RGBA8
+    EXPECT_NE(e.what_only().find("argument 5:"), std::string::npos) << e.what();
   }
 }
 

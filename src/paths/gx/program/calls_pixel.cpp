@@ -39,8 +39,8 @@ void add_pixel_calls(CallTable& table) {
          integer(G::Bool, 0, 1)},
         [](Machine& m) {
           if (m.i(4) != 1 && m.i(4) != 3)
-            m.fail_arg(5, "texture format not modelled (GX_TF_I8 and GX_TF_IA8 are)");
-          if (m.b(7)) m.fail_arg(8, "mipmapping is not modelled (pass GX_FALSE)");
+            m.fail_arg(4, "texture format not modelled (GX_TF_I8 and GX_TF_IA8 are)");
+          if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
           TexObject& t = m.tex(0);
           t.array = m.name(1);
           t.texture.width = static_cast<int>(m.i(2));
