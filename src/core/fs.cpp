@@ -1,9 +1,13 @@
 #include "core/fs.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <sstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <new>
 
 #include "core/error.h"
 
@@ -46,15 +50,138 @@ void ensure_not_an_input(const fs::path& output, const std::vector<fs::path>& in
   }
 }
 
-std::string read_text_file(const fs::path& path) {
+namespace {
+
+constexpr std::uintmax_t kMiB = std::uintmax_t{1} << 20;
+
+const char* kind_noun(InputKind kind) {
+  switch (kind) {
+    case InputKind::Scene:
+      return "scene file";
+    case InputKind::Mesh:
+      return "mesh file";
+    case InputKind::Image:
+      return "image file";
+    case InputKind::Program:
+      return "program file";
+  }
+  return "file";
+}
+
+std::string size_text(std::uintmax_t bytes) {
+  if (bytes < kMiB) return std::to_string(bytes) + " bytes";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f MiB",
+                static_cast<double>(bytes) / static_cast<double>(kMiB));
+  return buf;
+}
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& what) {
+  throw InputError(path.string(), "", what);
+}
+
+[[noreturn]] void refuse_size(const fs::path& path, InputKind kind, std::uintmax_t size) {
+  refuse(path, "is " + size_text(size) + ", over the " +
+                   std::to_string(input_size_cap(kind) / kMiB) + " MiB limit for " +
+                   kind_noun(kind) + "s");
+}
+
+// Why a file that is not regular is refused, in the words of `ls -l`; through a symlink (a
+// scene linked to /dev/zero), the link's target too.
+std::string not_regular(const fs::path& path, mode_t mode, InputKind kind) {
+  std::string what;
+  if (S_ISDIR(mode)) {
+    what = std::string("is a directory, not ") + (kind == InputKind::Image ? "an " : "a ") +
+           kind_noun(kind);
+  } else if (S_ISFIFO(mode)) {
+    what = "is a FIFO (named pipe), not a regular file";
+  } else if (S_ISCHR(mode)) {
+    what = "is a character device, not a regular file";
+  } else if (S_ISBLK(mode)) {
+    what = "is a block device, not a regular file";
+  } else if (S_ISSOCK(mode)) {
+    what = "is a socket, not a regular file";
+  } else {
+    what = "is not a regular file";
+  }
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path.string(), "", "file not found");
-  if (fs::is_directory(path, ec)) throw InputError(path.string(), "", "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  if (fs::is_symlink(path, ec)) {
+    const fs::path target = fs::read_symlink(path, ec);
+    if (!ec) what += " (a symbolic link to " + target.string() + ")";
+  }
+  return what;
+}
+
+void check_stat(const fs::path& path, const struct stat& st, InputKind kind) {
+  if (!S_ISREG(st.st_mode)) refuse(path, not_regular(path, st.st_mode, kind));
+  const auto size = static_cast<std::uintmax_t>(st.st_size);
+  if (size > input_size_cap(kind)) refuse_size(path, kind, size);
+}
+
+struct FdCloser {
+  int fd;
+  ~FdCloser() { ::close(fd); }
+};
+
+}  // namespace
+
+std::uintmax_t input_size_cap(InputKind kind) {
+  switch (kind) {
+    case InputKind::Scene:
+    case InputKind::Program:
+      return 16 * kMiB;
+    case InputKind::Mesh:
+      return 256 * kMiB;
+    case InputKind::Image:
+      return 512 * kMiB;
+  }
+  return 16 * kMiB;
+}
+
+std::uintmax_t check_input_file(const fs::path& path, InputKind kind) {
+  // The system calls stop at a NUL: the file checked would not be the file named.
+  if (path.native().find('\0') != std::string::npos) refuse(path, "path contains a NUL byte");
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    const int err = errno;
+    if (err == ENOENT || err == ENOTDIR) refuse(path, "file not found");
+    refuse(path, std::string("cannot open file: ") + std::strerror(err));
+  }
+  check_stat(path, st, kind);
+  return static_cast<std::uintmax_t>(st.st_size);
+}
+
+std::string read_input_file(const fs::path& path, InputKind kind) {
+  check_input_file(path, kind);
+  // O_NONBLOCK: should a FIFO be swapped in after the check, open() still returns at once, and
+  // fstat below refuses it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) refuse(path, std::string("cannot open file: ") + std::strerror(errno));
+  const FdCloser closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) refuse(path, std::string("cannot read file: ") + std::strerror(errno));
+  check_stat(path, st, kind);
+  const std::uintmax_t cap = input_size_cap(kind);
+  std::string data;
+  try {
+    data.reserve(static_cast<std::size_t>(st.st_size));
+    char buf[1 << 16];
+    for (;;) {
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) refuse(path, std::string("cannot read file: ") + std::strerror(errno));
+      if (n == 0) break;
+      data.append(buf, static_cast<std::size_t>(n));
+      if (data.size() > cap) refuse_size(path, kind, data.size());
+    }
+  } catch (const std::bad_alloc&) {
+    refuse(path, "out of memory reading " + size_text(static_cast<std::uintmax_t>(st.st_size)));
+  }
+  return data;
+}
+
+std::string read_text_file(const fs::path& path) {
+  return read_input_file(path, InputKind::Program);
 }
 
 }  // namespace lt

@@ -56,8 +56,9 @@ void write_image(const std::filesystem::path& path, const Image& image) {
 }
 
 Image read_image(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "file not found");
+  // Before OpenImageIO sees the name: given a FIFO or /dev/zero, its format probing (every
+  // reader in turn once the one the extension names has failed) never returns.
+  check_input_file(path, InputKind::Image);
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) {
     throw InputError(path.string(), "", "cannot read image: " + OIIO::geterror());

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/fs.h"
 
 namespace lt {
 
@@ -219,8 +220,7 @@ Verdict judge(const Comparison& comparison, const Tolerance& tolerance) {
 }
 
 TestEncoding encoding_of(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "file not found");
+  check_input_file(path, InputKind::Image);  // as read_image: before OpenImageIO sees the name
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) throw InputError(path.string(), "", "cannot read image: " + OIIO::geterror());
   // Per-channel formats (EXR can mix) report the widest in spec.format; alpha is not compared

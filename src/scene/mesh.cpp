@@ -57,13 +57,7 @@ std::string lower_extension(const fs::path& path) {
 }
 
 std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path.string(), "", "cannot open file: " + std::string(std::strerror(errno)));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path.string(), "", "cannot read file");
-  return ss.str();
+  return read_input_file(path, InputKind::Mesh);
 }
 
 std::string plural(std::size_t n, const std::string& one, const std::string& many) {
@@ -1640,11 +1634,13 @@ const char* const kReadable = ".ply, .obj, .off, .stl, .stla, .stlb, .om";
 
 // =============================================================================================
 
-LoadedMesh read_mesh(const fs::path& path) {
+namespace {
+
+LoadedMesh read_mesh_unguarded(const fs::path& path) {
   const std::string file = path.string();
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(file, "", "file not found");
-  if (fs::is_directory(path, ec)) throw InputError(file, "", "is a directory, not a mesh file");
+  // Regular files within the size cap only, before anything opens it (the OM reader in its
+  // child opens it by name).
+  check_input_file(path, InputKind::Mesh);
   const std::string ext = lower_extension(path);
   const bool stl = ext == ".stl" || ext == ".stla" || ext == ".stlb";
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".om" && !stl) {
@@ -1691,6 +1687,12 @@ LoadedMesh read_mesh(const fs::path& path) {
   }
   finish(loaded, file, facts);
   return loaded;
+}
+
+}  // namespace
+
+LoadedMesh read_mesh(const fs::path& path) {
+  return read_mesh_unguarded(path);
 }
 
 TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {

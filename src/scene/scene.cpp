@@ -321,11 +321,17 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       ObjectReader o(objs[i], kp, file);
       SceneObject obj;
       obj.mesh_path = base_dir / o.string("mesh");
-      // A missing mesh is the scene's mistake: name the scene's key. Errors inside an existing
-      // mesh name the mesh file and line instead (read_mesh).
+      // A missing mesh, or one that is no file to read (a directory, a FIFO), is the scene's
+      // mistake: name the scene's key. Errors inside a mesh name the mesh file and line instead
+      // (read_mesh).
       std::error_code ec;
-      if (!fs::is_regular_file(obj.mesh_path, ec)) {
+      if (!fs::exists(obj.mesh_path, ec)) {
         o.fail(o.key_path("mesh"), "mesh file not found: " + obj.mesh_path.string());
+      }
+      try {
+        check_input_file(obj.mesh_path, InputKind::Mesh);
+      } catch (const InputError& e) {
+        o.fail(o.key_path("mesh"), "mesh file " + obj.mesh_path.string() + " " + e.what_only());
       }
       const std::string mat = o.string("material");
       auto found = std::find(material_names.begin(), material_names.end(), mat);
@@ -383,7 +389,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 }
 
 Scene load_scene(const fs::path& path) {
-  const std::string text = read_text_file(path);
+  const std::string text = read_input_file(path, InputKind::Scene);
   return parse_scene(text, path, path.parent_path());
 }
 
