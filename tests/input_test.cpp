@@ -3,17 +3,22 @@
 // the file, exit 2 and no output: never a hang (a FIFO), never runaway memory (/dev/zero). The
 // runs are bounded (test::RunLimits), so a regression fails here instead of hanging the suite.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "core/error.h"
 #include "core/fs.h"
 #include "image/image.h"
+#include "scene/mesh.h"
+#include "scene/scene.h"
 #include "test_util.h"
 
 namespace lt {
@@ -172,6 +177,85 @@ TEST(ReadInputFile, ReadsARegularFileWhole) {
   test::write_file(dir / "f.ply", bytes);
   EXPECT_EQ(read_input_file(dir / "f.ply", InputKind::Mesh), bytes);
   EXPECT_THROW(read_input_file(dir / "missing.ply", InputKind::Mesh), InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Within the caps a file can still be too large for the memory left: the error names the file
+// (not "std::bad_alloc" alone). Run in a child whose address space is capped just above what it
+// maps already.
+
+std::string error_with_memory_left(std::size_t headroom, const std::function<void()>& work) {
+  int fds[2];
+  if (::pipe(fds) != 0) return "pipe failed";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::close(fds[0]);
+    std::string msg = "(no error)";
+    long pages = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + headroom;
+    const rlimit as{limit, limit};
+    ::setrlimit(RLIMIT_AS, &as);
+    try {
+      work();
+    } catch (const InputError& e) {
+      msg = e.what();
+    } catch (const std::exception& e) {
+      msg = std::string("not an InputError: ") + e.what();
+    }
+    if (::write(fds[1], msg.data(), msg.size()) < 0) ::_exit(2);
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string out;
+  char buf[4096];
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, n);
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return out;
+}
+
+TEST(OutOfMemory, ABigMeshNamesItself) {
+  test::TempDir dir;
+  // A million vertices of binary PLY: 16 MB of file, well over 64 MB once it is a mesh.
+  const int n = 999999;
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(n) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                    std::to_string(n / 3) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < n; ++i) {
+    const float xyz[3] = {static_cast<float>(i % 1000), static_cast<float>(i / 1000), 0.0f};
+    ply.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  }
+  for (int f = 0; f < n / 3; ++f) {
+    const unsigned char count = 3;
+    const int idx[3] = {3 * f, 3 * f + 1, 3 * f + 2};
+    ply.append(reinterpret_cast<const char*>(&count), 1);
+    ply.append(reinterpret_cast<const char*>(idx), sizeof idx);
+  }
+  test::write_file(dir / "big.ply", ply);
+  const std::string msg =
+      error_with_memory_left(std::size_t{64} << 20, [&] { read_mesh(dir / "big.ply"); });
+  EXPECT_EQ(msg.rfind((dir / "big.ply").string() + ": out of memory", 0), 0u) << msg;
+}
+
+TEST(OutOfMemory, ABigSceneNamesItself) {
+  test::TempDir dir;
+  test::write_file(dir / "quad.obj", test::quad_obj());
+  // A 12 MB string under an unknown key, inside the scene cap: the parser copies it before the
+  // key is refused, and 20 MB of headroom cannot hold the file and the copy. (A string, not an
+  // array: nlohmann::json allocates while it destroys a partly parsed array, and a bad_alloc
+  // there ends the process whatever we catch.)
+  std::string scene = scene_with_mesh("quad.obj");
+  scene.insert(scene.find('{') + 1, "\"padding\": \"" + std::string(12 << 20, 'x') + "\",");
+  test::write_file(dir / "s.json", scene);
+  const std::string msg =
+      error_with_memory_left(std::size_t{20} << 20, [&] { load_scene(dir / "s.json"); });
+  EXPECT_EQ(msg.rfind((dir / "s.json").string() + ": out of memory", 0), 0u) << msg;
 }
 
 }  // namespace

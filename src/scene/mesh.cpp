@@ -32,6 +32,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -1689,10 +1690,21 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
   return loaded;
 }
 
+// A mesh within the size cap can still be too large for the machine (a 256 MiB file becomes a
+// few GB of halfedges): that is this file's failure, so it is named.
+[[noreturn]] void out_of_memory(const fs::path& path) {
+  throw InputError(path.string(), "",
+                   "out of memory reading this mesh (too large for this machine?)");
+}
+
 }  // namespace
 
 LoadedMesh read_mesh(const fs::path& path) {
-  return read_mesh_unguarded(path);
+  try {
+    return read_mesh_unguarded(path);
+  } catch (const std::bad_alloc&) {
+    out_of_memory(path);
+  }
 }
 
 TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
@@ -1725,7 +1737,12 @@ TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
 }
 
 TriangleMesh load_triangle_mesh(const fs::path& path) {
-  return to_triangle_mesh(read_mesh(path));
+  LoadedMesh loaded = read_mesh(path);
+  try {
+    return to_triangle_mesh(loaded);
+  } catch (const std::bad_alloc&) {
+    out_of_memory(path);
+  }
 }
 
 void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options) {

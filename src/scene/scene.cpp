@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -390,7 +391,13 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 
 Scene load_scene(const fs::path& path) {
   const std::string text = read_input_file(path, InputKind::Scene);
-  return parse_scene(text, path, path.parent_path());
+  try {
+    return parse_scene(text, path, path.parent_path());
+  } catch (const std::bad_alloc&) {
+    // Within the size cap, but too large for this machine: the scene's failure, named as such
+    // (its meshes name themselves).
+    throw InputError(path.string(), "", "out of memory reading this scene");
+  }
 }
 
 SceneNeeds scene_needs(const Scene& scene) {
