@@ -1,14 +1,11 @@
 #include "metrics/compare.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "core/fs.h"
 
 namespace lt {
 
@@ -220,15 +217,7 @@ Verdict judge(const Comparison& comparison, const Tolerance& tolerance) {
 }
 
 TestEncoding encoding_of(const std::filesystem::path& path) {
-  check_input_file(path, InputKind::Image);  // as read_image: before OpenImageIO sees the name
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string(), "", "cannot read image: " + OIIO::geterror());
-  // Per-channel formats (EXR can mix) report the widest in spec.format; alpha is not compared
-  // but an 8-bit file has one format for all its channels anyway.
-  const OIIO::TypeDesc format = in->spec().format;
-  const bool eight_bit =
-      format.basetype == OIIO::TypeDesc::UINT8 || format.basetype == OIIO::TypeDesc::INT8;
-  return eight_bit ? TestEncoding::kUnorm8 : TestEncoding::kFloat;
+  return image_file_is_8bit(path) ? TestEncoding::kUnorm8 : TestEncoding::kFloat;
 }
 
 Comparison compare_files(const std::filesystem::path& test,
