@@ -158,6 +158,31 @@ constexpr double kMaxDistortion = 1e3;
 constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
 constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
 
+// Vertex colours that are a material's thickness take the scalar's bounds (kMaxColour): a float
+// colour of 3e38, or a negative one, would carry Inf or a negative lobe into every path. Checked
+// where the colour becomes a number of the equation; a mesh's colours mean nothing before.
+void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, size_t object,
+                            const fs::path& mesh_path) {
+  for (size_t v = 0; v < mesh.colors.size(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      const double x = mesh.colors[v][c];
+      if (x >= 0 && x <= kMaxColour) continue;
+      std::string what = "vertex ";
+      what.append(std::to_string(v))
+          .append(" of ")
+          .append(mesh_path.string())
+          .append(" has colour component ")
+          .append(json(x).dump())
+          .append(", out of range for \"thickness\": \"vertex\" (allowed [")
+          .append(json(0.0).dump())
+          .append(", ")
+          .append(json(kMaxColour).dump())
+          .append("])");
+      throw InputError(file, "objects[" + std::to_string(object) + "].mesh", what);
+    }
+  }
+}
+
 }  // namespace
 
 glm::dmat4 Transform::matrix() const {
@@ -262,9 +287,8 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
             }
             tr.thickness_source = ThicknessSource::Vertex;
           } else if (th.is_number()) {
-            const double v = th.get<double>();
-            if (!std::isfinite(v) || v < 0) t.fail(kp, "must be a finite number >= 0");
-            tr.thickness = glm::dvec3(v);
+            // Bounded like the rgb form: 1e300 would make the reference's pixels Inf.
+            tr.thickness = glm::dvec3(t.number("thickness", {}, 0, kMaxColour));
           } else {
             tr.thickness = t.vec3_value(th, kp, 0, kMaxColour);
           }
@@ -373,6 +397,9 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
                        "material \"" + mat.name + "\" uses \"thickness\": \"vertex\" but " +
                            obj.mesh_path.string() +
                            " has no vertex colours (bake them with `ltrender bake`)");
+    }
+    if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
+      check_vertex_thickness(mesh, file, i, obj.mesh_path);
     }
     // World space in double: what the reference shades and what the GL paths upload
     // (camera-relative) as float.
