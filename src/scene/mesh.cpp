@@ -177,8 +177,12 @@ class OpenMeshLogCapture {
   // The last non-empty line OpenMesh printed, for error messages.
   std::string last_line() {
     for (auto* s : {&omerr(), &omlog(), &omout()}) s->flush();
+    // split_lines returns views into its argument: the text must outlive the loop (a
+    // temporary from str() dies before the loop body runs, and the views would read freed
+    // memory).
+    const std::string text = buffer_.str();
     std::string last;
-    for (auto line : split_lines(buffer_.str())) {
+    for (auto line : split_lines(text)) {
       auto t = trim(line);
       if (!t.empty()) last = std::string(t);
     }
