@@ -573,6 +573,10 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
 
   PlyBody body(data, h);
   for (auto& e : h.elements) {
+    // A record without properties is zero bytes: there is nothing to read whatever the count
+    // claims, and looping over 2^31 - 1 empty records costs seconds each. Every other record
+    // takes at least one byte (the check above), so the work is bounded by the file's size.
+    if (e.properties.empty()) continue;
     const bool is_vertex = &e == vertex, is_face = &e == face;
     if (is_face) {
       out.face_offsets.reserve(e.count + 1);
