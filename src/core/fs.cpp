@@ -34,10 +34,11 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
     fs::remove(tmp, ec);
     throw;
   }
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError(target.string(), "", "cannot write output: " + ec.message());
+  std::error_code renamed;
+  fs::rename(tmp, target, renamed);
+  if (renamed) {
+    fs::remove(tmp, ec);  // its own code: `renamed` is the reason the user needs
+    throw InputError(target.string(), "", "cannot write output: " + renamed.message());
   }
 }
 
