@@ -408,6 +408,23 @@ TEST(ReadMesh, ElementsWithoutPropertiesCostNothing) {
   EXPECT_EQ(m.mesh.n_faces(), 4u);
 }
 
+// Several unknown lines: one warning naming the first, whose non-printable bytes and length
+// cannot break the warning's single line.
+TEST(ReadMesh, UnknownPlyHeaderLinesAreOneWarning) {
+  TempDir dir;
+  write_text(dir.path() / "t.ply", "ply\nformat ascii 1.0\nmade\tby \x01tool " +
+                                       std::string(100, 'v') +
+                                       "\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nexporter 2\nelement face 1\n"
+                                       "property list uchar int vertex_indices\nend_header\n"
+                                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const LoadedMesh m = read_mesh(dir.path() / "t.ply");
+  EXPECT_EQ(m.mesh.n_faces(), 1u);
+  EXPECT_EQ(m.warnings.front(),
+            "2 header lines are not PLY keywords (the first: line 3 'made?by ?tool " +
+                std::string(66, 'v') + "...'): read as comments");
+}
+
 TEST(ReadMesh, PolygonsAreFannedKeepingTheirWinding) {
   const TriangleMesh t = load_triangle_mesh(kData / "odd" / "quads.obj");
   ASSERT_EQ(t.triangles.size(), 4u);

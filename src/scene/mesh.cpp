@@ -309,6 +309,33 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   std::size_t body_offset = 0;  // first byte after end_header's line
   std::size_t body_line = 0;    // line number of the first body line (ascii)
+  std::vector<std::string> warnings;
+};
+
+// A header line that is no PLY keyword (Blender writes "Created by Blender3D ..." without
+// `comment`). Common readers take such lines as comments, so we do, and say so once per file.
+class UnknownHeaderLines {
+ public:
+  void add(std::size_t line_no, std::string_view line) {
+    if (count_++ > 0) return;
+    first_line_ = line_no;
+    // The warning is one line of text: non-printable bytes would break it.
+    std::string_view shown = line.substr(0, 80);
+    for (char c : shown) first_ += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    if (line.size() > shown.size()) first_ += "...";
+  }
+  void report(std::vector<std::string>& warnings) const {
+    if (count_ == 0) return;
+    const std::string where = "line " + std::to_string(first_line_) + " '" + first_ + "'";
+    warnings.push_back(count_ == 1 ? "header " + where + " is not a PLY keyword: read as a comment"
+                                   : std::to_string(count_) +
+                                         " header lines are not PLY keywords (the first: " + where +
+                                         "): read as comments");
+  }
+
+ private:
+  std::size_t count_ = 0, first_line_ = 0;
+  std::string first_;
 };
 
 PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
@@ -325,6 +352,7 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
     ++line_no;
     return true;
   };
+  UnknownHeaderLines unknown;
   std::string_view line;
   if (!next_line(line) || trim(line) != "ply") {
     fail(file, data.empty() ? 0 : 1,
@@ -386,10 +414,11 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
       }
       h.elements.back().properties.push_back(p);
     } else {
-      fail(file, line_no, "unknown header keyword '" + std::string(key) + "'");
+      unknown.add(line_no, trim(line));
     }
   }
   if (!have_end) fail(file, 0, "PLY header has no end_header line (file truncated?)");
+  unknown.report(h.warnings);
   if (!have_format) fail(file, 0, "PLY header has no format line");
   h.body_offset = pos;
   h.body_line = line_no + 1;
@@ -488,12 +517,14 @@ struct RawMesh {
   std::vector<std::uint32_t> face_offsets{0};
   std::vector<std::uint32_t> face_indices;
   bool binary = false;
+  std::vector<std::string> warnings;  // what the reader accepted but the user should know
 };
 
 RawMesh parse_ply(const std::string& data, const std::string& file) {
   PlyHeader h = parse_ply_header(data, file);
   RawMesh out;
   out.binary = h.format != PlyFormat::Ascii;
+  out.warnings = h.warnings;
 
   // Find the vertex and face elements and give each property its role.
   PlyElement* vertex = nullptr;
@@ -1660,6 +1691,7 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
   FileFacts facts;
   if (ext == ".ply") {
     const RawMesh ply = parse_ply(read_bytes(path), file);
+    loaded.warnings = ply.warnings;
     OpenMeshLogCapture capture;  // the importer reports through omerr
     build_mesh(ply, loaded, facts);
   } else if (ext == ".om") {
