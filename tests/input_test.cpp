@@ -177,6 +177,13 @@ TEST(ReadInputFile, ReadsARegularFileWhole) {
   test::write_file(dir / "f.ply", bytes);
   EXPECT_EQ(read_input_file(dir / "f.ply", InputKind::Mesh), bytes);
   EXPECT_THROW(read_input_file(dir / "missing.ply", InputKind::Mesh), InputError);
+  // The system calls would stop at the NUL and read f.ply instead.
+  try {
+    read_input_file(dir.path().string() + "/f.ply" + std::string(1, '\0') + "x", InputKind::Mesh);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.what_only(), "path contains a NUL byte");
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -117,6 +117,9 @@ const BadCase kBad[] = {
     {"unknown_material_ref", "\"material\": \"marble\"", "\"material\": \"marbel\"",
      "objects[0].material: unknown material"},
     {"missing_mesh", "\"mesh\": \"quad.obj\"", "\"mesh\": \"nope.obj\"", "nope.obj"},
+    // The system calls stop at the NUL: it read quad.obj.
+    {"nul_in_mesh_path", "\"mesh\": \"quad.obj\"", "\"mesh\": \"quad.obj\\u0000.ply\"",
+     "objects[0].mesh: a path cannot contain a NUL byte: \"quad.obj\\u0000.ply\""},
     {"width_zero", "\"width\": 64", "\"width\": 0", "image.width: out of range"},
     {"far_before_near", "\"far\": 100", "\"far\": 0.01", "camera.far"},
     {"bad_projection", "\"perspective\"", "\"fisheye\"", "camera.projection"},
@@ -255,6 +258,16 @@ TEST_F(SceneFile, HugeScalarThicknessIsOneLineForEveryCommand) {
   EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
   EXPECT_FALSE(fs::exists(dir_ / "bench"));
+}
+
+// The message was cut at the NUL ("mesh file not found: .../nope"): all of it is one line now.
+TEST_F(SceneFile, NulInAMeshPathIsOneWholeLine) {
+  test::write_file(dir_ / "s.json",
+                   edit("\"mesh\": \"quad.obj\"", "\"mesh\": \"nope\\u0000.obj\""));
+  const auto r = test::run_ltrender("info " + (dir_ / "s.json").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "ltrender: error: " + (dir_ / "s.json").string() +
+                       ":objects[0].mesh: a path cannot contain a NUL byte: \"nope\\u0000.obj\"\n");
 }
 
 TEST_F(SceneFile, CliNeverOverwritesAnInput) {

@@ -345,7 +345,15 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       const std::string kp = "objects[" + std::to_string(i) + "]";
       ObjectReader o(objs[i], kp, file);
       SceneObject obj;
-      obj.mesh_path = base_dir / o.string("mesh");
+      const std::string mesh = o.string("mesh");
+      // JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL
+      // (and read another file), and so would the printed message.
+      if (mesh.find('\0') != std::string::npos) {
+        std::string shown;
+        for (char c : mesh) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
+        o.fail(o.key_path("mesh"), "a path cannot contain a NUL byte: \"" + shown + "\"");
+      }
+      obj.mesh_path = base_dir / mesh;
       // A missing mesh, or one that is no file to read (a directory, a FIFO), is the scene's
       // mistake: name the scene's key. Errors inside a mesh name the mesh file and line instead
       // (read_mesh).
