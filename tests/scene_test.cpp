@@ -185,11 +185,23 @@ TEST_F(SceneFile, CliRejectsUnknownPathAndVariantAndMissingScene) {
   EXPECT_EQ(r.exit_code, 2);
   r = test::run_ltrender("render " + scene + " --path glsl --width -5 -o " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  // Within each side's range but too many pixels in all: refused before any allocation.
+  // Within each side's range but too many pixels in all: refused before any allocation, naming
+  // the options (not the scene's image key) and the real limit, a pixel count.
   r = test::run_ltrender("render " + scene + " --path reference --width 16384 --height 16384 -o " +
                          out.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("at most 4096 x 4096 pixels"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err,
+            "ltrender: error: --width/--height: 16384x16384 is 268435456 pixels, over the limit of "
+            "16777216 (4096^2; the reference needs ~100 bytes a pixel)\n");
+  // One option: the other side is the scene's (48); 8192 x 4096 would pass a per-side limit.
+  r = test::run_ltrender("render " + scene + " --path reference --width 16384 --height 4096 -o " +
+                         out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("ltrender: error: --width/--height: 16384x4096 is 67108864 pixels", 0), 0u)
+      << r.err;
+  r = test::run_ltrender("render " + scene + " --path reference --width 16384 -o " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;  // 16384x48 is within the limit
+  fs::remove(out);
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -268,6 +280,19 @@ TEST_F(SceneFile, NulInAMeshPathIsOneWholeLine) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "ltrender: error: " + (dir_ / "s.json").string() +
                        ":objects[0].mesh: a path cannot contain a NUL byte: \"nope\\u0000.obj\"\n");
+}
+
+TEST_F(SceneFile, ImageTooLargeNamesTheImageKeyAndThePixelLimit) {
+  std::string text = edit("\"width\": 64", "\"width\": 8192");
+  text.replace(text.find("\"height\": 48"), 12, "\"height\": 8192");
+  test::write_file(dir_ / "big.json", text);
+  const auto r = test::run_ltrender("render " + (dir_ / "big.json").string() + " --path flat -o " +
+                                    (dir_ / "out.png").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "ltrender: error: " + (dir_ / "big.json").string() +
+                       ":image: 8192x8192 is 67108864 pixels, over the limit of 16777216 (4096^2; "
+                       "the reference needs ~100 bytes a pixel)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
 TEST_F(SceneFile, CliNeverOverwritesAnInput) {

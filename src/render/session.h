@@ -14,6 +14,11 @@ namespace lt {
 // At most 4096^2 pixels (image/image.h says why).
 inline constexpr long long kMaxPixels = kMaxImagePixels;
 
+// Throws InputError(file, where, ...) unless width x height is at least 1x1 and at most
+// kMaxPixels pixels in all. `file`/`where` name what set the size: the scene's "image" key, or
+// the options that override it.
+void check_image_size(int width, int height, const std::string& file, const std::string& where);
+
 class RenderSession {
  public:
   RenderSession(const Scene& scene, int width, int height)
