@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/fs.h"
 #include "core/stderr_capture.h"
 #include "image/image.h"
 #include "metrics/heatmap.h"
@@ -699,7 +700,8 @@ TEST_F(CompareCli, HeatmapIsWrittenOnPassAndFail) {
   EXPECT_GT(fail.at(1, 1)[2], 0.8f);
   // No temporary left behind.
   for (const auto& entry : fs::directory_iterator(dir_)) {
-    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+    EXPECT_EQ(entry.path().filename().string().find(kPartialOutputTag), std::string::npos)
+        << entry.path();
   }
 }
 

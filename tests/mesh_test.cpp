@@ -20,6 +20,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/fs.h"
 #include "scene/meshgen.h"
 #include "test_util.h"
 
@@ -793,7 +794,7 @@ TEST(MeshgenCli, WritesTheStandardSet) {
   EXPECT_EQ(sphere.positions.size(), 642u);
   // No temporaries left behind by the atomic writes.
   for (const auto& e : fs::recursive_directory_iterator(dir / "out")) {
-    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+    EXPECT_EQ(e.path().filename().string().find(kPartialOutputTag), std::string::npos) << e.path();
   }
 }
 

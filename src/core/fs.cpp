@@ -1,6 +1,7 @@
 #include "core/fs.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -8,10 +9,62 @@
 #include <cstdio>
 #include <cstring>
 #include <new>
+#include <vector>
 
 #include "core/error.h"
 
 namespace lt {
+
+namespace {
+
+// ".<target's name>.ltrender-partial.": what every temporary of `target` starts with.
+std::string partial_prefix(const fs::path& target) {
+  std::string prefix = ".";
+  prefix.append(target.filename().string()).append(kPartialOutputTag);
+  return prefix;
+}
+
+// The pid in a temporary's name when it is one of `target`'s, else 0.
+long partial_pid(const std::string& name, const fs::path& target) {
+  const std::string prefix = partial_prefix(target), ext = target.extension().string();
+  if (name.size() <= prefix.size() + ext.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - ext.size(), ext.size(), ext) != 0) {
+    return 0;
+  }
+  const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - ext.size());
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != digits.npos)
+    return 0;
+  return std::stol(digits);
+}
+
+// A process we may not signal (EPERM) is alive too: only ESRCH says it is gone.
+bool process_is_gone(long pid) {
+  return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
+// A write killed before its rename leaves its temporary behind, and nothing else would ever
+// remove it: the next write of the same target removes those whose process is gone. Only
+// regular files with exactly our name pattern are touched.
+void remove_stale_partials(const fs::path& dir, const fs::path& target) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const long pid = partial_pid(it->path().filename().string(), target);
+    if (pid <= 0 || pid == ::getpid() || !it->is_regular_file(ec) || it->is_symlink(ec)) continue;
+    if (process_is_gone(pid)) stale.push_back(it->path());
+  }
+  for (const auto& p : stale) fs::remove(p, ec);
+}
+
+}  // namespace
+
+fs::path partial_output_path(const fs::path& target, long pid) {
+  fs::path dir = target.parent_path();
+  if (dir.empty()) dir = ".";
+  std::string name = partial_prefix(target);
+  name.append(std::to_string(pid)).append(target.extension().string());
+  return dir / name;
+}
 
 void write_atomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
   fs::path dir = target.parent_path();
@@ -20,14 +73,9 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
   if (!fs::is_directory(dir, ec)) {
     throw InputError(target.string(), "", "output directory does not exist");
   }
+  remove_stale_partials(dir, target);
   // Same directory as the target so the final rename is atomic (no cross-device copy).
-  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a chained operator+ starting "." +.
-  std::string name = ".";
-  name.append(target.stem().string())
-      .append(".tmp.")
-      .append(std::to_string(::getpid()))
-      .append(target.extension().string());
-  const fs::path tmp = dir / name;
+  const fs::path tmp = partial_output_path(target, ::getpid());
   try {
     write(tmp);
   } catch (...) {

@@ -14,10 +14,18 @@ namespace fs = std::filesystem;
 
 // Calls `write(tmp)` with a temporary path in the target's directory that keeps the target's
 // extension (OpenImageIO and OpenMesh pick the format from it), then renames tmp -> target.
-// If `write` throws, the temporary is removed and the target is left as it was.
-// Throws InputError if the target's directory does not exist.
+// If `write` throws, the temporary is removed and the target is left as it was. A process killed
+// while writing leaves its temporary: the next write of the same target removes every one whose
+// process is gone. Throws InputError if the target's directory does not exist, or with the
+// rename's reason if it fails.
 void write_atomically(const fs::path& target,
                       const std::function<void(const fs::path& tmp)>& write);
+
+// Every temporary's name holds this: ".out.png.ltrender-partial.1234.png" for out.png, pid 1234.
+inline constexpr const char* kPartialOutputTag = ".ltrender-partial.";
+
+// The temporary write_atomically uses for `target` in process `pid`.
+fs::path partial_output_path(const fs::path& target, long pid);
 
 // Throws InputError if `output` names the same file as one of `inputs` (an input is never
 // overwritten, even through a different spelling of its path).
