@@ -153,7 +153,15 @@ TEST_P(BadMesh, IsOneInputErrorNamingTheFile) {
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(e.file(), path.string());
     EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
-    EXPECT_NE(e.what_only().find(c.what), std::string::npos) << "message: " << e.what();
+    // In a sanitized build OpenMesh's OM reader may overflow inside the child before it returns
+    // the broken mesh the release build reports: that is the crash message (read_om_in_child).
+    const bool sanitizer_crash =
+        test::kSanitizedBuild && path.extension() == ".om" &&
+        e.what_only().find("OpenMesh's OM reader crashed on this file (sanitizer report") !=
+            std::string::npos;
+    if (!sanitizer_crash) {
+      EXPECT_NE(e.what_only().find(c.what), std::string::npos) << "message: " << e.what();
+    }
     EXPECT_EQ(e.where(), c.line) << e.what();
     // OpenMesh's own chatter stays out of the terminal: the user sees our one line only.
     EXPECT_EQ(out, "");
