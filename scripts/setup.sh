@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Shared set-up for ./run.sh and ./test.sh: install the Debian packages that are missing, then
-# configure and build (Release) into build/. Idempotent and quiet when there is nothing to do.
+# configure and build (Release) into build/, or with --sanitize into build-sanitize/. Idempotent
+# and quiet when there is nothing to do.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,10 +29,18 @@ if [ ${#missing[@]} -gt 0 ]; then
     "${missing[@]}" >/dev/null
 fi
 
-jobs=$(nproc)
-if [ ! -f build/CMakeCache.txt ]; then
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# `--sanitize`: the ASan + UBSan build of ./test.sh --sanitize, in its own directory so that the
+# Release build (timings, the demo) is never instrumented.
+build=build
+config=(-DCMAKE_BUILD_TYPE=Release)
+if [ "${1:-}" = "--sanitize" ]; then
+  build=build-sanitize
+  config=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DLT_SANITIZE=ON)
 fi
-cmake --build build -j "$jobs" 2>&1 | grep -v -E '^\[ *[0-9]+%\]|^-- ' || true
+jobs=$(nproc)
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S . -B "$build" "${config[@]}" >/dev/null
+fi
+cmake --build "$build" -j "$jobs" 2>&1 | grep -v -E '^\[ *[0-9]+%\]|^-- ' || true
 # The grep above hides progress lines only; a failed build must still stop us.
-cmake --build build -j "$jobs" >/dev/null
+cmake --build "$build" -j "$jobs" >/dev/null

@@ -637,6 +637,21 @@ TEST_F(BakeCommand, OutputEqualToTheInputIsRejectedAndTheInputKept) {
   EXPECT_EQ(slurp(in()), before);
 }
 
+// Blender writes "Created by Blender3D ..." without `comment`; common readers take it as a
+// comment, and so do we, with one warning line.
+TEST_F(BakeCommand, UnknownHeaderLinesAreCommentsWithOneWarning) {
+  std::string text = ply_text(icosphere(1.0, 3));
+  const std::string line = "Created by Blender3D 2.79 - www.blender.org, source file: ''";
+  text.insert(text.find("element"), line + "\n");
+  test::write_file(dir_ / "blender.ply", text);
+  const std::string file = (dir_ / "blender.ply").string();
+  const test::RunResult r = test::run_ltrender("bake " + file + " -o " + out() + " --rays 8");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "ltrender: warning: " + file + ": header line 3 '" + line +
+                       "' is not a PLY keyword: read as a comment\n");
+  EXPECT_EQ(read_mesh(out()).mesh.n_vertices(), read_mesh(in()).mesh.n_vertices());
+}
+
 TEST_F(BakeCommand, BadOptionValuesAreRejected) {
   const std::string base = in() + " -o " + out();
   expect_rejected(base + " --rays -5");

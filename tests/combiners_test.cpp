@@ -132,6 +132,11 @@ const BadProgram kBad[] = {
     {"duplicate", "stage 0\n  rgb REPLACE primary\n  rgb REPLACE previous\n", 3, "given twice"},
     {"literal_out_of_range", "stage 0\n  rgb REPLACE constant\n  constant 2 0 0 1\n", 3,
      "outside [0, 1]"},
+    // NaN passed the range check (NaN < 0 and NaN > 1 are false).
+    {"literal_nan", "stage 0\n  rgb REPLACE constant\n  constant nan 0 0 0\n", 3,
+     "'nan' is not a finite number"},
+    {"literal_inf", "stage 0\n  rgb REPLACE constant\n  constant 0 -inf 0 0\n", 3,
+     "'-inf' is not a finite number"},
     {"fit_without_name", "stage 0\n  rgb REPLACE constant\n  rgb_scale fit\n", 1,
      "needs a named constant"},
     {"too_many_stages",

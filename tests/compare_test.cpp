@@ -2,6 +2,7 @@
 // is worked out by hand from the formula of metrics.md, e = |O/255 - clamp(R, 0, 1)| * 255.
 #include "metrics/compare.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,8 +20,11 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/fs.h"
+#include "core/stderr_capture.h"
 #include "image/image.h"
 #include "metrics/heatmap.h"
+#include "test_util.h"
 
 namespace lt {
 namespace {
@@ -422,6 +426,48 @@ TEST_F(CompareFiles, BadInputIsInputError) {
   EXPECT_THROW(compare_files(path("a.exr"), path("nan.exr")), InputError);
 }
 
+// Only four channels are read whatever the file declares; an alpha channel beyond them (a TIFF
+// with an extra sample before alpha) is still the coverage.
+TEST_F(CompareFiles, AlphaBeyondTheFourthChannelIsStillCoverage) {
+  auto out = OIIO::ImageOutput::create(path("five.tif"));
+  ASSERT_TRUE(out);
+  OIIO::ImageSpec spec(2, 1, 5, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"R", "G", "B", "X", "A"};
+  spec.alpha_channel = 4;
+  const float pixels[10] = {0.1f, 0.2f, 0.3f, 9.0f, 1.0f, 0.4f, 0.5f, 0.6f, 9.0f, 0.0f};
+  ASSERT_TRUE(out->open(path("five.tif"), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels));
+  out->close();
+  const Image img = read_image(path("five.tif"));
+  ASSERT_EQ(img.width, 2);
+  EXPECT_EQ(img.at(0, 0)[0], 0.1f);
+  EXPECT_EQ(img.at(0, 0)[3], 1.0f);
+  EXPECT_EQ(img.at(1, 0)[2], 0.6f);
+  EXPECT_EQ(img.at(1, 0)[3], 0.0f);
+}
+
+TEST(StderrCapture, FoldsWhatALibraryPrintedUnlessTheMessageSaysIt) {
+  {
+    StderrCapture capture;
+    std::fprintf(stderr, "libfoo error: bad chunk\n\n");
+    EXPECT_EQ(capture.fold_into("cannot read image"),
+              "cannot read image [libfoo error: bad chunk]");
+  }
+  {
+    StderrCapture capture;
+    std::fprintf(stderr, "libpng error: IDAT: hit end of file\n");
+    EXPECT_EQ(capture.fold_into("cannot decode image: PNG read error: IDAT: hit end of file"),
+              "cannot decode image: PNG read error: IDAT: hit end of file");
+  }
+  // Not taken (the call succeeded): passed on to stderr unchanged.
+  ::testing::internal::CaptureStderr();
+  {
+    StderrCapture capture;
+    std::fprintf(stderr, "libpng warning: iCCP: known incorrect sRGB profile\n");
+  }
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+            "libpng warning: iCCP: known incorrect sRGB profile\n");
+}
+
 // ---------------------------------------------------------------------------------------------
 // The command line, through the built binary.
 
@@ -573,6 +619,46 @@ TEST_F(CompareCli, MissingOrUnreadableFileIsBadInput) {
   }
 }
 
+// 68 bytes of valid PNG whose header claims 40000 x 40000 RGB pixels (13.7 GB as float RGB).
+const unsigned char kHugeHeaderPng[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+    0x44, 0x52, 0x00, 0x00, 0x9c, 0x40, 0x00, 0x00, 0x9c, 0x40, 0x08, 0x02, 0x00, 0x00,
+    0x00, 0xde, 0x6e, 0x99, 0x52, 0x00, 0x00, 0x00, 0x0b, 0x49, 0x44, 0x41, 0x54, 0x78,
+    0x9c, 0x63, 0x60, 0x60, 0x00, 0x00, 0x00, 0x03, 0x00, 0x01, 0xb8, 0xad, 0x3a, 0x63,
+    0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+
+TEST_F(CompareCli, HeaderSizeIsCheckedBeforeAllocating) {
+  write_image(path("ref.exr"), filled(4, 4, 0, 0, 0));
+  std::ofstream(path("huge.png"), std::ios::binary)
+      .write(reinterpret_cast<const char*>(kHugeHeaderPng), sizeof kHugeHeaderPng);
+  // 4 GB of address space: allocating first fails (std::bad_alloc) instead of using 13.7 GB.
+  const test::RunResult r = test::run_ltrender("compare " + q("huge.png") + " " + q("ref.exr"),
+                                               test::RunLimits{60, 4096});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err, "ltrender: error: " + path("huge.png") +
+                       ": header claims 40000x40000 pixels, over the limit of 16777216 (4096^2) "
+                       "pixels\n");
+}
+
+// libpng prints "libpng error: ..." to stderr itself before OpenImageIO reports the failure: it
+// is folded into the one line.
+TEST_F(CompareCli, TruncatedPngIsOneLine) {
+  Image noise(64, 64);
+  for (size_t i = 0; i < noise.rgba.size(); ++i)
+    noise.rgba[i] = static_cast<float>(i * 7919 % 255) / 255.0f;
+  write_image(path("ref.exr"), noise);
+  write_image(path("full.png"), noise);
+  const std::string png = read_all(path("full.png"));
+  std::ofstream(path("cut.png"), std::ios::binary) << png.substr(0, png.size() / 2);
+  const CliResult r = run(q("cut.png") + " " + q("ref.exr"));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("ltrender: error: " + path("cut.png") + ": cannot decode image: ", 0), 0u)
+      << r.err;
+  EXPECT_NE(r.err.find("IDAT"), std::string::npos) << r.err;  // libpng's words are kept
+}
+
 TEST_F(CompareCli, BadOptionValuesAreBadInput) {
   write_scene();
   const std::string files = q("same.png") + " " + q("ref.exr");
@@ -614,7 +700,8 @@ TEST_F(CompareCli, HeatmapIsWrittenOnPassAndFail) {
   EXPECT_GT(fail.at(1, 1)[2], 0.8f);
   // No temporary left behind.
   for (const auto& entry : fs::directory_iterator(dir_)) {
-    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+    EXPECT_EQ(entry.path().filename().string().find(kPartialOutputTag), std::string::npos)
+        << entry.path();
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/fs.h"
 #include "scene/meshgen.h"
 #include "test_util.h"
 
@@ -151,7 +153,15 @@ TEST_P(BadMesh, IsOneInputErrorNamingTheFile) {
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_EQ(e.file(), path.string());
     EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
-    EXPECT_NE(e.what_only().find(c.what), std::string::npos) << "message: " << e.what();
+    // In a sanitized build OpenMesh's OM reader may overflow inside the child before it returns
+    // the broken mesh the release build reports: that is the crash message (read_om_in_child).
+    const bool sanitizer_crash =
+        test::kSanitizedBuild && path.extension() == ".om" &&
+        e.what_only().find("OpenMesh's OM reader crashed on this file (sanitizer report") !=
+            std::string::npos;
+    if (!sanitizer_crash) {
+      EXPECT_NE(e.what_only().find(c.what), std::string::npos) << "message: " << e.what();
+    }
     EXPECT_EQ(e.where(), c.line) << e.what();
     // OpenMesh's own chatter stays out of the terminal: the user sees our one line only.
     EXPECT_EQ(out, "");
@@ -234,7 +244,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"corrupt_segv.om", "face 1 has a broken halfedge loop", ""},
         BadCase{"corrupt_abort.om", "face 2 has a broken halfedge loop", ""},
         BadCase{"corrupt_runaway.om", "OpenMesh could not read it: std::bad_alloc", ""},
-        BadCase{"truncated.om", "OpenMesh could not read it", ""}));
+        BadCase{"truncated.om", "OpenMesh could not read it", ""},
+        // OpenMesh's last log line is the reason; it was read from a destroyed string (freed
+        // bytes in the message, use-after-free under ASan).
+        BadCase{"unknown_chunk.om", "OpenMesh could not read it: Unknown chunk type ignored!",
+                ""}));
 
 TEST(ReadMesh, MissingFileAndDirectory) {
   const fs::path missing = kData / "bad" / "does_not_exist.ply";
@@ -381,6 +395,43 @@ TEST(ReadMesh, ListPropertiesAndExtraElementsAreSkipped) {
   EXPECT_EQ(t.positions[2], glm::dvec3(0, 1, 0));
   ASSERT_EQ(t.triangles.size(), 1u);
   EXPECT_EQ(t.triangles[0], glm::uvec3(0, 1, 2));
+}
+
+// 821 bytes of 25 such header lines kept bake busy for ~59 s: records of no properties hold no
+// bytes, so they cost nothing to skip.
+TEST(ReadMesh, ElementsWithoutPropertiesCostNothing) {
+  TempDir dir;
+  std::string ply = "ply\nformat ascii 1.0\n";
+  for (int i = 0; i < 3; ++i) ply += "element junk" + std::to_string(i) + " 2147483647\n";
+  ply +=
+      "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  write_text(dir.path() / "junk.ply", ply);
+  const auto start = std::chrono::steady_clock::now();
+  const LoadedMesh m = read_mesh(dir.path() / "junk.ply");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 1.0);  // ~7 s when each empty record was a loop iteration
+  EXPECT_EQ(m.mesh.n_vertices(), 4u);
+  EXPECT_EQ(m.mesh.n_faces(), 4u);
+}
+
+// Several unknown lines: one warning naming the first, whose non-printable bytes and length
+// cannot break the warning's single line.
+TEST(ReadMesh, UnknownPlyHeaderLinesAreOneWarning) {
+  TempDir dir;
+  write_text(dir.path() / "t.ply", "ply\nformat ascii 1.0\nmade\tby \x01tool " +
+                                       std::string(100, 'v') +
+                                       "\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nexporter 2\nelement face 1\n"
+                                       "property list uchar int vertex_indices\nend_header\n"
+                                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const LoadedMesh m = read_mesh(dir.path() / "t.ply");
+  EXPECT_EQ(m.mesh.n_faces(), 1u);
+  EXPECT_EQ(m.warnings.front(),
+            "2 header lines are not PLY keywords (the first: line 3 'made?by ?tool " +
+                std::string(66, 'v') + "...'): read as comments");
 }
 
 TEST(ReadMesh, PolygonsAreFannedKeepingTheirWinding) {
@@ -751,7 +802,7 @@ TEST(MeshgenCli, WritesTheStandardSet) {
   EXPECT_EQ(sphere.positions.size(), 642u);
   // No temporaries left behind by the atomic writes.
   for (const auto& e : fs::recursive_directory_iterator(dir / "out")) {
-    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+    EXPECT_EQ(e.path().filename().string().find(kPartialOutputTag), std::string::npos) << e.path();
   }
 }
 

@@ -117,6 +117,9 @@ const BadCase kBad[] = {
     {"unknown_material_ref", "\"material\": \"marble\"", "\"material\": \"marbel\"",
      "objects[0].material: unknown material"},
     {"missing_mesh", "\"mesh\": \"quad.obj\"", "\"mesh\": \"nope.obj\"", "nope.obj"},
+    // The system calls stop at the NUL: it read quad.obj.
+    {"nul_in_mesh_path", "\"mesh\": \"quad.obj\"", "\"mesh\": \"quad.obj\\u0000.ply\"",
+     "objects[0].mesh: a path cannot contain a NUL byte: \"quad.obj\\u0000.ply\""},
     {"width_zero", "\"width\": 64", "\"width\": 0", "image.width: out of range"},
     {"far_before_near", "\"far\": 100", "\"far\": 0.01", "camera.far"},
     {"bad_projection", "\"perspective\"", "\"fisheye\"", "camera.projection"},
@@ -126,6 +129,13 @@ const BadCase kBad[] = {
     // Magnitude limits keep every product of the equation finite in float (scene.cpp).
     {"albedo_beyond_float_safe", "\"albedo\": [0.9, 0.88, 0.85]", "\"albedo\": [1e300, 0.88, 0.85]",
      "materials.marble.albedo: component out of range"},
+    // The scalar thickness takes the rgb form's bound: 1e300 made the reference's pixels Inf.
+    {"scalar_thickness_beyond_float_safe", "\"thickness\": [0.5, 0.4, 0.3]", "\"thickness\": 1e300",
+     "materials.marble.translucency.thickness: out of range: 1e+300 (allowed [0.0, 10000.0])"},
+    {"scalar_thickness_beyond_float", "\"thickness\": [0.5, 0.4, 0.3]", "\"thickness\": 3.5e38",
+     "materials.marble.translucency.thickness: out of range"},
+    {"negative_scalar_thickness", "\"thickness\": [0.5, 0.4, 0.3]", "\"thickness\": -0.5",
+     "materials.marble.translucency.thickness: out of range"},
     {"number_overflow", "\"power\": 8", "\"power\": 1e400",
      "s.json: invalid JSON: number overflow"},
     {"eye_too_far", "\"eye\": [0, 0, 4]", "\"eye\": [0, 0, 4e12]",
@@ -175,12 +185,114 @@ TEST_F(SceneFile, CliRejectsUnknownPathAndVariantAndMissingScene) {
   EXPECT_EQ(r.exit_code, 2);
   r = test::run_ltrender("render " + scene + " --path glsl --width -5 -o " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  // Within each side's range but too many pixels in all: refused before any allocation.
+  // Within each side's range but too many pixels in all: refused before any allocation, naming
+  // the options (not the scene's image key) and the real limit, a pixel count.
   r = test::run_ltrender("render " + scene + " --path reference --width 16384 --height 16384 -o " +
                          out.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("at most 4096 x 4096 pixels"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err,
+            "ltrender: error: --width/--height: 16384x16384 is 268435456 pixels, over the limit of "
+            "16777216 (4096^2; the reference needs ~100 bytes a pixel)\n");
+  // One option: the other side is the scene's (48); 8192 x 4096 would pass a per-side limit.
+  r = test::run_ltrender("render " + scene + " --path reference --width 16384 --height 4096 -o " +
+                         out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("ltrender: error: --width/--height: 16384x4096 is 67108864 pixels", 0), 0u)
+      << r.err;
+  r = test::run_ltrender("render " + scene + " --path reference --width 16384 -o " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;  // 16384x48 is within the limit
+  fs::remove(out);
   EXPECT_FALSE(fs::exists(out));
+}
+
+// A triangle whose second vertex has float colour (`red`, 0.5, 0.5).
+std::string coloured_triangle(const std::string& red) {
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nproperty float red\nproperty float green\nproperty float blue\n"
+         "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+         "-1 -1 0 0.5 0.5 0.5\n1 -1 0 " +
+         red + " 0.5 0.5\n0 1 0 0.5 0.5 0.5\n3 0 1 2\n";
+}
+
+// Vertex colours that are the thickness are bounded like the scalar: 3e38 made Inf pixels, and
+// bench aborted on the reference's Inf (compare.cpp's CHECK).
+TEST_F(SceneFile, VertexThicknessColoursAreBoundedLikeTheScalar) {
+  std::string scene = edit("\"thickness\": [0.5, 0.4, 0.3]", "\"thickness\": \"vertex\"");
+  scene.replace(scene.find("quad.obj"), 8, "tri.ply");
+  test::write_file(dir_ / "s.json", scene);
+  for (const std::string& red : {"3e38", "-0.25"}) {
+    test::write_file(dir_ / "tri.ply", coloured_triangle(red));
+    for (const std::string& cmd : {"render " + (dir_ / "s.json").string() +
+                                       " --path reference -o " + (dir_ / "out.exr").string(),
+                                   "bench " + (dir_ / "s.json").string() + " --paths glsl -o " +
+                                       (dir_ / "bench").string()}) {
+      const auto r = test::run_ltrender(cmd);
+      EXPECT_EQ(r.exit_code, 2) << cmd << ": " << r.err;
+      EXPECT_EQ(r.err.rfind("ltrender: error: " + (dir_ / "s.json").string() +
+                                ":objects[0].mesh: vertex 1 of " + (dir_ / "tri.ply").string() +
+                                " has colour component ",
+                            0),
+                0u)
+          << r.err;
+      EXPECT_NE(r.err.find("out of range for \"thickness\": \"vertex\" (allowed [0.0, 10000.0])"),
+                std::string::npos)
+          << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
+    EXPECT_FALSE(fs::exists(dir_ / "bench"));
+  }
+  // In range: renders.
+  test::write_file(dir_ / "tri.ply", coloured_triangle("10000"));
+  const auto r = test::run_ltrender("render " + (dir_ / "s.json").string() +
+                                    " --path reference -o " + (dir_ / "out.exr").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// The scalar form through the commands that misbehaved: no Inf reference, no multi-kilobyte
+// arbfp error, no SIGABRT from bench.
+TEST_F(SceneFile, HugeScalarThicknessIsOneLineForEveryCommand) {
+  test::write_file(dir_ / "s.json", edit("\"thickness\": [0.5, 0.4, 0.3]", "\"thickness\": 1e300"));
+  const std::string scene = (dir_ / "s.json").string();
+  for (const std::string& cmd :
+       {"render " + scene + " --path reference -o " + (dir_ / "out.exr").string(),
+        "render " + scene + " --path arbfp -o " + (dir_ / "out.png").string(),
+        "bench " + scene + " --paths glsl -o " + (dir_ / "bench").string()}) {
+    const auto r = test::run_ltrender(cmd);
+    EXPECT_EQ(r.exit_code, 2) << cmd << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("ltrender: error: " + scene +
+                              ":materials.marble.translucency.thickness: out of range",
+                          0),
+              0u)
+        << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "bench"));
+}
+
+// The message was cut at the NUL ("mesh file not found: .../nope"): all of it is one line now.
+TEST_F(SceneFile, NulInAMeshPathIsOneWholeLine) {
+  test::write_file(dir_ / "s.json",
+                   edit("\"mesh\": \"quad.obj\"", "\"mesh\": \"nope\\u0000.obj\""));
+  const auto r = test::run_ltrender("info " + (dir_ / "s.json").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "ltrender: error: " + (dir_ / "s.json").string() +
+                       ":objects[0].mesh: a path cannot contain a NUL byte: \"nope\\u0000.obj\"\n");
+}
+
+TEST_F(SceneFile, ImageTooLargeNamesTheImageKeyAndThePixelLimit) {
+  std::string text = edit("\"width\": 64", "\"width\": 8192");
+  text.replace(text.find("\"height\": 48"), 12, "\"height\": 8192");
+  test::write_file(dir_ / "big.json", text);
+  const auto r = test::run_ltrender("render " + (dir_ / "big.json").string() + " --path flat -o " +
+                                    (dir_ / "out.png").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "ltrender: error: " + (dir_ / "big.json").string() +
+                       ":image: 8192x8192 is 67108864 pixels, over the limit of 16777216 (4096^2; "
+                       "the reference needs ~100 bytes a pixel)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
 TEST_F(SceneFile, CliNeverOverwritesAnInput) {

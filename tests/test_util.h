@@ -54,13 +54,37 @@ struct RunResult {
   std::string out, err;
 };
 
+// Built by ./test.sh --sanitize (AddressSanitizer): its shadow memory cannot live under
+// `ulimit -v`, and its allocator exits on exhaustion instead of throwing std::bad_alloc.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kSanitizedBuild = true;
+#else
+inline constexpr bool kSanitizedBuild = false;
+#endif
+
+// Bounds for a run that must not hang or exhaust memory when the bug it tests is back: a hang
+// ends as exit 124 (timeout(1)), runaway memory as a failed allocation (in a sanitized build,
+// AddressSanitizer's own RSS limit ends it).
+struct RunLimits {
+  int seconds = 0;          // 0: no time limit
+  long long memory_mb = 0;  // address space (ulimit -v); 0: no limit
+};
+
 // Runs the built ltrender binary with `args` (a shell-quoted string).
-inline RunResult run_ltrender(const std::string& args) {
+inline RunResult run_ltrender(const std::string& args, const RunLimits& limits = {}) {
   const fs::path dir = fs::temp_directory_path();
   const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(std::rand());
   const fs::path out = dir / ("lt_out_" + tag), err = dir / ("lt_err_" + tag);
+  std::string prefix;
+  if (limits.memory_mb > 0 && kSanitizedBuild) {
+    prefix += "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}hard_rss_limit_mb=" +
+              std::to_string(limits.memory_mb) + " ";
+  } else if (limits.memory_mb > 0) {
+    prefix += "ulimit -v " + std::to_string(limits.memory_mb * 1024) + "; ";
+  }
+  if (limits.seconds > 0) prefix += "timeout -k 5 " + std::to_string(limits.seconds) + " ";
   const std::string cmd =
-      std::string(LT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+      prefix + std::string(LT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
   const int status = std::system(cmd.c_str());
   auto slurp = [](const fs::path& p) {
     std::ifstream in(p);

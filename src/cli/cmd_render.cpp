@@ -48,7 +48,15 @@ Action add_render(CLI::App& app) {
     if (!a->program.empty() && !info.takes_program_file)
       throw InputError("--program", a->program,
                        "path " + info.name + " takes no program file (the gx path does)");
+    // The options' size, before the meshes are read when both are given; with one, the other
+    // side is the scene's. Their error names the options, not the scene's `image` key.
+    const char* const size_options = "--width/--height";
+    if (a->width > 0 && a->height > 0) check_image_size(a->width, a->height, size_options, "");
     const Scene scene = load_scene(a->scene);
+    if (a->width > 0 || a->height > 0) {
+      check_image_size(a->width > 0 ? a->width : scene.width,
+                       a->height > 0 ? a->height : scene.height, size_options, "");
+    }
     std::vector<fs::path> inputs = {a->scene};
     if (!a->program.empty()) inputs.push_back(a->program);
     for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);

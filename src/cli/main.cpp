@@ -11,13 +11,19 @@
 
 namespace {
 
-// cli.md promises one line: library messages (OpenImageIO, OpenMesh) may hold newlines.
+// cli.md promises one line: library messages (OpenImageIO, OpenMesh) may hold newlines, and a
+// NUL would end the printed line early.
 std::string one_line(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  for (char& c : s) {
-    if (c == '\n' || c == '\r') c = ' ';
+  std::string out;
+  for (char c : s) {
+    if (c == '\0') {
+      out += "\\0";
+    } else {
+      out += (c == '\n' || c == '\r') ? ' ' : c;
+    }
   }
-  return s;
+  return out;
 }
 
 int usage_error(const std::string& what) {

@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <memory>
+#include <new>
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/stderr_capture.h"
 
 namespace lt {
 
@@ -55,25 +58,80 @@ void write_image(const std::filesystem::path& path, const Image& image) {
   });
 }
 
-Image read_image(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "file not found");
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) {
-    throw InputError(path.string(), "", "cannot read image: " + OIIO::geterror());
+namespace {
+
+// "WxH", or "WxHxD" for a volume. Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a
+// chained operator+ starting with a short literal.
+std::string size_text(const OIIO::ImageSpec& spec) {
+  std::string s = std::to_string(spec.width);
+  s.append("x").append(std::to_string(spec.height));
+  if (spec.depth > 1) s.append("x").append(std::to_string(spec.depth));
+  return s;
+}
+
+// An image file opened for reading, with the capture of what its libraries print on the side.
+// Every failure folds that text into the one InputError (cli.md's one line).
+class CheckedInput {
+ public:
+  explicit CheckedInput(const fs::path& path) : path_(path) {
+    // Before OpenImageIO sees the name: given a FIFO or /dev/zero, its format probing (every
+    // reader in turn once the one the extension names has failed) never returns.
+    check_input_file(path, InputKind::Image);
+    in_ = OIIO::ImageInput::open(path.string());
+    if (!in_) fail("cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in_->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) fail("image has no pixels");
+    // The header's size is checked before any pixel is allocated: 65 bytes of PNG can claim
+    // 40000 x 40000 pixels (13.7 GB as float RGB).
+    const long long pixels = static_cast<long long>(spec.width) * spec.height;
+    if (pixels > kMaxImagePixels || spec.depth > 1) {
+      fail("header claims " + size_text(spec) + " pixels, over the limit of " +
+           std::to_string(kMaxImagePixels) + " (4096^2) pixels");
+    }
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  const int channels = spec.nchannels;
-  if (spec.width <= 0 || spec.height <= 0 || channels <= 0) {
-    throw InputError(path.string(), "", "image has no pixels");
+  ~CheckedInput() {
+    if (in_) in_->close();  // libraries may still print while closing: inside the capture
   }
-  std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * channels);
-  // Reading as FLOAT maps 8-bit v to v/255 exactly, which is what the LSB metrics assume.
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
-    throw InputError(path.string(), "", "cannot decode image: " + in->geterror());
+  CheckedInput(const CheckedInput&) = delete;
+  CheckedInput& operator=(const CheckedInput&) = delete;
+
+  const OIIO::ImageSpec& spec() const { return in_->spec(); }
+
+  // Channels [begin, end) of every pixel as float (8-bit v becomes v/255 exactly, which is what
+  // the LSB metrics assume).
+  std::vector<float> read_channels(int begin, int end) {
+    std::vector<float> data(static_cast<size_t>(spec().width) * spec().height * (end - begin));
+    if (!in_->read_image(0, 0, begin, end, OIIO::TypeDesc::FLOAT, data.data())) {
+      fail("cannot decode image: " + in_->geterror());
+    }
+    return data;
   }
-  Image img(spec.width, spec.height);
+
+  [[noreturn]] void fail(const std::string& what) {
+    throw InputError(path_.string(), "", capture_.fold_into(what));
+  }
+
+ private:
+  const fs::path& path_;
+  StderrCapture capture_;  // declared before in_: it outlives the reader's close
+  std::unique_ptr<OIIO::ImageInput> in_;
+};
+
+}  // namespace
+
+namespace {
+
+Image read_image_unguarded(const std::filesystem::path& path) {
+  CheckedInput in(path);
+  const OIIO::ImageSpec& spec = in.spec();
+  // At most four channels are read (grey or RGB, then alpha): memory stays 16 bytes a pixel
+  // whatever number of channels the file declares.
+  const int channels = std::min(spec.nchannels, 4);
+  const std::vector<float> data = in.read_channels(0, channels);
   const int alpha = spec.alpha_channel;
+  std::vector<float> far_alpha;  // an alpha channel beyond the first four, read on its own
+  if (alpha >= channels && alpha < spec.nchannels) far_alpha = in.read_channels(alpha, alpha + 1);
+  Image img(spec.width, spec.height);
   for (size_t i = 0; i < img.pixel_count(); ++i) {
     const float* s = &data[i * channels];
     float* d = &img.rgba[i * 4];
@@ -82,9 +140,32 @@ Image read_image(const std::filesystem::path& path) {
     } else {
       d[0] = d[1] = d[2] = s[0];
     }
-    d[3] = (alpha >= 0 && alpha < channels) ? s[alpha] : 1.0f;
+    if (!far_alpha.empty()) {
+      d[3] = far_alpha[i];
+    } else {
+      d[3] = (alpha >= 0 && alpha < channels) ? s[alpha] : 1.0f;
+    }
   }
   return img;
+}
+
+}  // namespace
+
+Image read_image(const std::filesystem::path& path) {
+  try {
+    return read_image_unguarded(path);
+  } catch (const std::bad_alloc&) {
+    // Within the pixel limit but too large for the memory left: name the file.
+    throw InputError(path.string(), "", "out of memory reading this image");
+  }
+}
+
+bool image_file_is_8bit(const std::filesystem::path& path) {
+  CheckedInput in(path);
+  // Per-channel formats (EXR can mix) report the widest in spec.format; an 8-bit file has one
+  // format for all its channels.
+  const OIIO::TypeDesc format = in.spec().format;
+  return format.basetype == OIIO::TypeDesc::UINT8 || format.basetype == OIIO::TypeDesc::INT8;
 }
 
 void flip_vertically(Image& image) {

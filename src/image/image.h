@@ -39,9 +39,19 @@ void write_image(const std::filesystem::path& path, const Image& image);
 // Throws InputError unless `path` ends in .png or .exr (checked before any work is done).
 void check_output_extension(const std::filesystem::path& path);
 
+// The largest image ltrender makes or reads: the reference's float G-buffer and readbacks take
+// ~100 bytes a pixel, so this keeps a render under 2 GB instead of letting a typo exhaust memory.
+inline constexpr long long kMaxImagePixels = 4096LL * 4096LL;
+
 // Reads PNG/EXR/anything OpenImageIO reads into linear float RGBA (8-bit values become v/255;
-// no alpha channel means fully covered). Throws InputError naming the file.
+// no alpha channel means fully covered). Throws InputError naming the file, with whatever the
+// image libraries printed folded in: for a file that is not regular (core/fs.h), over the image
+// size cap, or whose header claims more than kMaxImagePixels (checked before allocating).
 Image read_image(const std::filesystem::path& path);
+
+// Whether the file stores 8-bit samples (PNG) rather than float or half (EXR); the same checks
+// and errors as read_image.
+bool image_file_is_8bit(const std::filesystem::path& path);
 
 // Flip rows: GL reads bottom row first.
 void flip_vertically(Image& image);

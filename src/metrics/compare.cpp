@@ -1,7 +1,5 @@
 #include "metrics/compare.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -219,16 +217,7 @@ Verdict judge(const Comparison& comparison, const Tolerance& tolerance) {
 }
 
 TestEncoding encoding_of(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string(), "", "file not found");
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string(), "", "cannot read image: " + OIIO::geterror());
-  // Per-channel formats (EXR can mix) report the widest in spec.format; alpha is not compared
-  // but an 8-bit file has one format for all its channels anyway.
-  const OIIO::TypeDesc format = in->spec().format;
-  const bool eight_bit =
-      format.basetype == OIIO::TypeDesc::UINT8 || format.basetype == OIIO::TypeDesc::INT8;
-  return eight_bit ? TestEncoding::kUnorm8 : TestEncoding::kFloat;
+  return image_file_is_8bit(path) ? TestEncoding::kUnorm8 : TestEncoding::kFloat;
 }
 
 Comparison compare_files(const std::filesystem::path& test,

@@ -4,12 +4,23 @@
 
 namespace lt {
 
+void check_image_size(int width, int height, const std::string& file, const std::string& where) {
+  const long long pixels = static_cast<long long>(width) * height;
+  if (width >= 1 && height >= 1 && pixels <= kMaxPixels) return;
+  // The limit is on the pixel count, not on each side (8192x2048 is fine): say it that way.
+  std::string what = std::to_string(width);
+  what.append("x")
+      .append(std::to_string(height))
+      .append(" is ")
+      .append(std::to_string(pixels))
+      .append(" pixels, over the limit of ")
+      .append(std::to_string(kMaxPixels))
+      .append(" (4096^2; the reference needs ~100 bytes a pixel)");
+  throw InputError(file, where, what);
+}
+
 int RenderSession::checked(const Scene& scene, int width, int height) {
-  if (width < 1 || height < 1 || static_cast<long long>(width) * height > kMaxPixels) {
-    throw InputError(scene.file.string(), "image",
-                     std::to_string(width) + "x" + std::to_string(height) +
-                         " is out of range (at most 4096 x 4096 pixels)");
-  }
+  check_image_size(width, height, scene.file.string(), "image");
   return width;
 }
 

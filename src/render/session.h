@@ -6,13 +6,18 @@
 
 #include "gl/context.h"
 #include "gl/scene_geometry.h"
+#include "image/image.h"
 #include "paths/path.h"
 
 namespace lt {
 
-// At most 4096 x 4096 pixels: the reference's float G-buffer and readbacks take ~100 bytes a
-// pixel, so this keeps a render under 2 GB instead of letting a typo exhaust memory.
-inline constexpr long long kMaxPixels = 4096LL * 4096LL;
+// At most 4096^2 pixels (image/image.h says why).
+inline constexpr long long kMaxPixels = kMaxImagePixels;
+
+// Throws InputError(file, where, ...) unless width x height is at least 1x1 and at most
+// kMaxPixels pixels in all. `file`/`where` name what set the size: the scene's "image" key, or
+// the options that override it.
+void check_image_size(int width, int height, const std::string& file, const std::string& where);
 
 class RenderSession {
  public:

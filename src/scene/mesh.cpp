@@ -32,6 +32,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -39,6 +40,10 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/common_interface_defs.h>
+#endif
 
 namespace lt {
 
@@ -57,13 +62,7 @@ std::string lower_extension(const fs::path& path) {
 }
 
 std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path.string(), "", "cannot open file: " + std::string(std::strerror(errno)));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path.string(), "", "cannot read file");
-  return ss.str();
+  return read_input_file(path, InputKind::Mesh);
 }
 
 std::string plural(std::size_t n, const std::string& one, const std::string& many) {
@@ -182,8 +181,12 @@ class OpenMeshLogCapture {
   // The last non-empty line OpenMesh printed, for error messages.
   std::string last_line() {
     for (auto* s : {&omerr(), &omlog(), &omout()}) s->flush();
+    // split_lines returns views into its argument: the text must outlive the loop (a
+    // temporary from str() dies before the loop body runs, and the views would read freed
+    // memory).
+    const std::string text = buffer_.str();
     std::string last;
-    for (auto line : split_lines(buffer_.str())) {
+    for (auto line : split_lines(text)) {
       auto t = trim(line);
       if (!t.empty()) last = std::string(t);
     }
@@ -310,6 +313,33 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   std::size_t body_offset = 0;  // first byte after end_header's line
   std::size_t body_line = 0;    // line number of the first body line (ascii)
+  std::vector<std::string> warnings;
+};
+
+// A header line that is no PLY keyword (Blender writes "Created by Blender3D ..." without
+// `comment`). Common readers take such lines as comments, so we do, and say so once per file.
+class UnknownHeaderLines {
+ public:
+  void add(std::size_t line_no, std::string_view line) {
+    if (count_++ > 0) return;
+    first_line_ = line_no;
+    // The warning is one line of text: non-printable bytes would break it.
+    std::string_view shown = line.substr(0, 80);
+    for (char c : shown) first_ += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    if (line.size() > shown.size()) first_ += "...";
+  }
+  void report(std::vector<std::string>& warnings) const {
+    if (count_ == 0) return;
+    const std::string where = "line " + std::to_string(first_line_) + " '" + first_ + "'";
+    warnings.push_back(count_ == 1 ? "header " + where + " is not a PLY keyword: read as a comment"
+                                   : std::to_string(count_) +
+                                         " header lines are not PLY keywords (the first: " + where +
+                                         "): read as comments");
+  }
+
+ private:
+  std::size_t count_ = 0, first_line_ = 0;
+  std::string first_;
 };
 
 PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
@@ -326,6 +356,7 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
     ++line_no;
     return true;
   };
+  UnknownHeaderLines unknown;
   std::string_view line;
   if (!next_line(line) || trim(line) != "ply") {
     fail(file, data.empty() ? 0 : 1,
@@ -387,10 +418,11 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
       }
       h.elements.back().properties.push_back(p);
     } else {
-      fail(file, line_no, "unknown header keyword '" + std::string(key) + "'");
+      unknown.add(line_no, trim(line));
     }
   }
   if (!have_end) fail(file, 0, "PLY header has no end_header line (file truncated?)");
+  unknown.report(h.warnings);
   if (!have_format) fail(file, 0, "PLY header has no format line");
   h.body_offset = pos;
   h.body_line = line_no + 1;
@@ -489,12 +521,14 @@ struct RawMesh {
   std::vector<std::uint32_t> face_offsets{0};
   std::vector<std::uint32_t> face_indices;
   bool binary = false;
+  std::vector<std::string> warnings;  // what the reader accepted but the user should know
 };
 
 RawMesh parse_ply(const std::string& data, const std::string& file) {
   PlyHeader h = parse_ply_header(data, file);
   RawMesh out;
   out.binary = h.format != PlyFormat::Ascii;
+  out.warnings = h.warnings;
 
   // Find the vertex and face elements and give each property its role.
   PlyElement* vertex = nullptr;
@@ -574,6 +608,10 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
 
   PlyBody body(data, h);
   for (auto& e : h.elements) {
+    // A record without properties is zero bytes: there is nothing to read whatever the count
+    // claims, and looping over 2^31 - 1 empty records costs seconds each. Every other record
+    // takes at least one byte (the check above), so the work is bounded by the file's size.
+    if (e.properties.empty()) continue;
     const bool is_vertex = &e == vertex, is_face = &e == face;
     if (is_face) {
       out.face_offsets.reserve(e.count + 1);
@@ -1251,6 +1289,18 @@ RawMesh deserialize(const std::string& data, const std::string& file) {
   return m;
 }
 
+// In a sanitized build (./test.sh --sanitize) the OM reader's overflows and runaway allocations
+// are sanitizer reports, which end the child with exit code 1 rather than a signal; the death
+// callback gives them a code of their own, so the parent reports a crash as it does for the
+// release build's signals. Only the child's death is handled: the sanitizer stays on everywhere.
+constexpr int kChildSanitizerDied = 86;
+
+void on_sanitizer_death_in_child() {
+#if defined(__SANITIZE_ADDRESS__)
+  __sanitizer_set_death_callback([] { ::_exit(kChildSanitizerDied); });
+#endif
+}
+
 bool write_all(int fd, const std::string& data) {
   std::size_t done = 0;
   while (done < data.size()) {
@@ -1281,6 +1331,7 @@ RawMesh read_om_in_child(const fs::path& path, const std::string& file,
   }
   if (pid == 0) {
     ::close(pipe_fds[0]);
+    on_sanitizer_death_in_child();
     const int devnull = ::open("/dev/null", O_WRONLY);
     if (devnull >= 0) {
       ::dup2(devnull, 1);
@@ -1355,6 +1406,10 @@ RawMesh read_om_in_child(const fs::path& path, const std::string& file,
     fail(file, 0,
          "OpenMesh's OM reader crashed on this file (signal " + std::to_string(WTERMSIG(status)) +
              "; corrupt or truncated?)");
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kChildSanitizerDied) {
+    fail(file, 0,
+         "OpenMesh's OM reader crashed on this file (sanitizer report; corrupt or truncated?)");
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     fail(file, 0, data.empty() ? "OpenMesh could not read it" : data);
@@ -1640,11 +1695,13 @@ const char* const kReadable = ".ply, .obj, .off, .stl, .stla, .stlb, .om";
 
 // =============================================================================================
 
-LoadedMesh read_mesh(const fs::path& path) {
+namespace {
+
+LoadedMesh read_mesh_unguarded(const fs::path& path) {
   const std::string file = path.string();
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(file, "", "file not found");
-  if (fs::is_directory(path, ec)) throw InputError(file, "", "is a directory, not a mesh file");
+  // Regular files within the size cap only, before anything opens it (the OM reader in its
+  // child opens it by name).
+  check_input_file(path, InputKind::Mesh);
   const std::string ext = lower_extension(path);
   const bool stl = ext == ".stl" || ext == ".stla" || ext == ".stlb";
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".om" && !stl) {
@@ -1655,6 +1712,7 @@ LoadedMesh read_mesh(const fs::path& path) {
   FileFacts facts;
   if (ext == ".ply") {
     const RawMesh ply = parse_ply(read_bytes(path), file);
+    loaded.warnings = ply.warnings;
     OpenMeshLogCapture capture;  // the importer reports through omerr
     build_mesh(ply, loaded, facts);
   } else if (ext == ".om") {
@@ -1693,6 +1751,23 @@ LoadedMesh read_mesh(const fs::path& path) {
   return loaded;
 }
 
+// A mesh within the size cap can still be too large for the machine (a 256 MiB file becomes a
+// few GB of halfedges): that is this file's failure, so it is named.
+[[noreturn]] void out_of_memory(const fs::path& path) {
+  throw InputError(path.string(), "",
+                   "out of memory reading this mesh (too large for this machine?)");
+}
+
+}  // namespace
+
+LoadedMesh read_mesh(const fs::path& path) {
+  try {
+    return read_mesh_unguarded(path);
+  } catch (const std::bad_alloc&) {
+    out_of_memory(path);
+  }
+}
+
 TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
   const PolyMesh& mesh = loaded.mesh;
   TriangleMesh out;
@@ -1723,7 +1798,12 @@ TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
 }
 
 TriangleMesh load_triangle_mesh(const fs::path& path) {
-  return to_triangle_mesh(read_mesh(path));
+  LoadedMesh loaded = read_mesh(path);
+  try {
+    return to_triangle_mesh(loaded);
+  } catch (const std::bad_alloc&) {
+    out_of_memory(path);
+  }
 }
 
 void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -161,6 +162,31 @@ constexpr double kMaxDistortion = 1e3;
 constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
 constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
 
+// Vertex colours that are a material's thickness take the scalar's bounds (kMaxColour): a float
+// colour of 3e38, or a negative one, would carry Inf or a negative lobe into every path. Checked
+// where the colour becomes a number of the equation; a mesh's colours mean nothing before.
+void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, size_t object,
+                            const fs::path& mesh_path) {
+  for (size_t v = 0; v < mesh.colors.size(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      const double x = mesh.colors[v][c];
+      if (x >= 0 && x <= kMaxColour) continue;
+      std::string what = "vertex ";
+      what.append(std::to_string(v))
+          .append(" of ")
+          .append(mesh_path.string())
+          .append(" has colour component ")
+          .append(json(x).dump())
+          .append(", out of range for \"thickness\": \"vertex\" (allowed [")
+          .append(json(0.0).dump())
+          .append(", ")
+          .append(json(kMaxColour).dump())
+          .append("])");
+      throw InputError(file, "objects[" + std::to_string(object) + "].mesh", what);
+    }
+  }
+}
+
 }  // namespace
 
 glm::dmat4 Transform::matrix() const {
@@ -265,9 +291,8 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
             }
             tr.thickness_source = ThicknessSource::Vertex;
           } else if (th.is_number()) {
-            const double v = th.get<double>();
-            if (!std::isfinite(v) || v < 0) t.fail(kp, "must be a finite number >= 0");
-            tr.thickness = glm::dvec3(v);
+            // Bounded like the rgb form: 1e300 would make the reference's pixels Inf.
+            tr.thickness = glm::dvec3(t.number("thickness", {}, 0, kMaxColour));
           } else {
             tr.thickness = t.vec3_value(th, kp, 0, kMaxColour);
           }
@@ -324,12 +349,26 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       const std::string kp = "objects[" + std::to_string(i) + "]";
       ObjectReader o(objs[i], kp, file);
       SceneObject obj;
-      obj.mesh_path = base_dir / o.string("mesh");
-      // A missing mesh is the scene's mistake: name the scene's key. Errors inside an existing
-      // mesh name the mesh file and line instead (read_mesh).
+      const std::string mesh = o.string("mesh");
+      // JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL
+      // (and read another file), and so would the printed message.
+      if (mesh.find('\0') != std::string::npos) {
+        std::string shown;
+        for (char c : mesh) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
+        o.fail(o.key_path("mesh"), "a path cannot contain a NUL byte: \"" + shown + "\"");
+      }
+      obj.mesh_path = base_dir / mesh;
+      // A missing mesh, or one that is no file to read (a directory, a FIFO), is the scene's
+      // mistake: name the scene's key. Errors inside a mesh name the mesh file and line instead
+      // (read_mesh).
       std::error_code ec;
-      if (!fs::is_regular_file(obj.mesh_path, ec)) {
+      if (!fs::exists(obj.mesh_path, ec)) {
         o.fail(o.key_path("mesh"), "mesh file not found: " + obj.mesh_path.string());
+      }
+      try {
+        check_input_file(obj.mesh_path, InputKind::Mesh);
+      } catch (const InputError& e) {
+        o.fail(o.key_path("mesh"), "mesh file " + obj.mesh_path.string() + " " + e.what_only());
       }
       const std::string mat = o.string("material");
       auto found = std::find(material_names.begin(), material_names.end(), mat);
@@ -371,6 +410,9 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
                            obj.mesh_path.string() +
                            " has no vertex colours (bake them with `ltrender bake`)");
     }
+    if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
+      check_vertex_thickness(mesh, file, i, obj.mesh_path);
+    }
     // World space in double: what the reference shades and what the GL paths upload
     // (camera-relative) as float.
     const glm::dmat4 m = obj.transform.matrix();
@@ -387,8 +429,14 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 }
 
 Scene load_scene(const fs::path& path) {
-  const std::string text = read_text_file(path);
-  return parse_scene(text, path, path.parent_path());
+  const std::string text = read_input_file(path, InputKind::Scene);
+  try {
+    return parse_scene(text, path, path.parent_path());
+  } catch (const std::bad_alloc&) {
+    // Within the size cap, but too large for this machine: the scene's failure, named as such
+    // (its meshes name themselves).
+    throw InputError(path.string(), "", "out of memory reading this scene");
+  }
 }
 
 SceneNeeds scene_needs(const Scene& scene) {

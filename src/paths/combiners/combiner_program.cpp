@@ -1,8 +1,10 @@
 #include "paths/combiners/combiner_program.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "gl/context.h"
@@ -135,12 +137,15 @@ class Parser {
     fail(what + " must be an integer, not '" + s + "'");
   }
 
+  // Finite numbers only: stod reads "nan" and "inf", and a NaN passes every range check after it
+  // (NaN < 0 and NaN > 1 are both false).
   double parse_double(const std::string& s) const {
     try {
       size_t used = 0;
       const double v = std::stod(s, &used);
-      if (used == s.size()) return v;
-    } catch (const std::exception&) {
+      if (used == s.size() && std::isfinite(v)) return v;
+      if (used == s.size()) fail("'" + s + "' is not a finite number");
+    } catch (const std::logic_error&) {  // invalid_argument, out_of_range
     }
     fail("'" + s + "' is not a number");
   }

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <new>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -422,7 +423,13 @@ ProgramFile parse_program(const std::string& text, const std::string& file_for_e
 }
 
 ProgramFile load_program(const std::filesystem::path& path) {
-  return parse_program(read_text_file(path), path.string());
+  const std::string text = read_text_file(path);
+  try {
+    return parse_program(text, path.string());
+  } catch (const std::bad_alloc&) {
+    // Within the size cap but too large for this machine: name the file, not std::bad_alloc.
+    throw InputError(path.string(), "", "out of memory reading this program file");
+  }
 }
 
 }  // namespace lt::gx
