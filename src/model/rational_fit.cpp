@@ -65,7 +65,7 @@ RationalFit fit_rational22(const std::function<double(double)>& f, double x_max,
   }
   // Unknowns u = (a0, a1, a2, k1, k2): residual P(x) - f(x) (1 + k1 x + k2 x^2), each sample
   // weighted by 1 / Q_prev(x)^2 so the iteration converges to the true rational least squares.
-  Rational22 current;  // k = (1, 0, 0): the first solve is the polynomial fit
+  Rational22 current;             // k = (1, 0, 0): the first solve is the polynomial fit
   best.r.a = {fs.front(), 0, 0};  // the constant, should every solve fail
   best.max_error = max_error(best.r, xs, fs);
   for (int iter = 0; iter < 30; ++iter) {
