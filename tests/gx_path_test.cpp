@@ -171,17 +171,6 @@ TEST(GxPath, TexgenMatchesVertexTWhereItApplies) {
   EXPECT_LE(c.covered.percent_over_1_lsb, 0.01);
 }
 
-// lobe=xf-spec: no texture, the lobe as a fitted XF attenuation per vertex (measured 9.8 max /
-// 6.0 mean LSB on backlit_sphere_ortho; the rational of degree 2 cannot follow t^8 closely).
-TEST(GxPath, XfSpecularLobeIsWithinItsBound) {
-  const Scene scene = load_scene(test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json");
-  const Comparison c = compare_images(render_scene(scene, "gx", "lobe=xf-spec"),
-                                      render_scene(scene, "reference", ""), TestEncoding::kUnorm8);
-  EXPECT_EQ(c.test_non_finite, 0u);
-  EXPECT_LE(c.covered.max_lsb, 13.0);
-  EXPECT_LE(c.covered.mean_lsb, 7.5);
-}
-
 // The hard cases of model.md are perspective scenes with point lights, where t=texgen and
 // lobe=xf-spec are refused; their orthographic, directional twins render with no NaN through
 // every gx variant.
