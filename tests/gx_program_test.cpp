@@ -151,6 +151,8 @@ const BadCase kBad[] = {
     {"unterminated_comment", "/* no end\nGX_SetNumChans(1);\n", "1:1", "unterminated comment"},
     {"badly_named_function", "void setup(void) {\n  GX_SetNumChans(1);\n}\n", "1:1",
      "ltrender_<material>_pass<N>"},
+    {"matrix_beyond_float", "Mtx m = {{1e39, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};\n", "1:11",
+     "out of float range"},
     {"too_many_bytes", "u8 a[2] = {1, 2, 3};\n", "1:1", "declares 2 bytes but lists 3"},
 };
 

@@ -398,7 +398,8 @@ class Parser {
     const Token t = take();
     const double v = t.kind == Token::Kind::Integer ? static_cast<double>(integer_literal(t))
                                                     : std::strtod(t.text.c_str(), nullptr);
-    if (!std::isfinite(v)) fail(t.pos, "number out of range: " + t.text);
+    // Mtx entries are f32 in C: a value beyond float's range would be an Inf in XF.
+    if (!std::isfinite(static_cast<float>(v))) fail(t.pos, "number out of float range: " + t.text);
     return negative ? -v : v;
   }
 
