@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "bake/thickness_baker.h"
-#include "scene/meshgen.h"
+#include "mesh/meshgen.h"
 
 namespace {
 

@@ -14,8 +14,8 @@
 
 #include "bake/thickness_baker.h"
 #include "core/error.h"
-#include "scene/mesh.h"
-#include "scene/meshgen.h"
+#include "mesh/mesh_io.h"
+#include "mesh/meshgen.h"
 #include "test_util.h"
 
 namespace lt::bake {

@@ -1,7 +1,8 @@
 // Mesh I/O and the procedural meshes: every malformed input is one InputError naming the file,
 // round trips keep what they promise, generated meshes are closed, outward and measure what
 // geometry says they should.
-#include "scene/mesh.h"
+#include "mesh/mesh_io.h"
+#include "mesh/normals.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -21,7 +22,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "scene/meshgen.h"
+#include "mesh/meshgen.h"
 #include "test_util.h"
 
 namespace lt {

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/mesh.h"
+#include "mesh/poly_mesh.h"
 
 namespace lt::bake {
 

@@ -19,7 +19,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
-#include "scene/mesh.h"
+#include "mesh/mesh_io.h"
 
 namespace lt::cli {
 

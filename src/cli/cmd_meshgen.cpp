@@ -1,4 +1,4 @@
-// `ltrender meshgen OUTDIR`: writes the procedural meshes of scene/meshgen.h (the committed
+// `ltrender meshgen OUTDIR`: writes the procedural meshes of mesh/meshgen.h (the committed
 // meshes/ directory is this command's output).
 #include <cstdio>
 #include <filesystem>
@@ -7,7 +7,8 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
-#include "scene/meshgen.h"
+#include "mesh/meshgen.h"
+#include "mesh/mesh_io.h"
 
 namespace lt::cli {
 

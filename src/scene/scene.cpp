@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "mesh/mesh_io.h"
 
 namespace lt {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/mesh.h"
+#include "scene/triangle_mesh.h"
 
 namespace lt {
 

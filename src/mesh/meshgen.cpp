@@ -1,7 +1,7 @@
 // Procedural meshes. Each generator first builds plain arrays (positions, normals, triangles),
 // because splitting edges and displacing vertices is simpler there, and converts to a PolyMesh
 // once at the end.
-#include "scene/meshgen.h"
+#include "mesh/meshgen.h"
 
 #include <algorithm>
 #include <array>
@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "mesh/normals.h"
 
 namespace lt::meshgen {
 

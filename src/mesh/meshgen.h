@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/mesh.h"
+#include "mesh/poly_mesh.h"
 
 namespace lt::meshgen {
 

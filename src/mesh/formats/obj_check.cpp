@@ -1,0 +1,134 @@
+#include "mesh/formats/obj_check.h"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "mesh/normals.h"
+#include "mesh/reader_support.h"
+
+namespace lt::meshio {
+
+namespace {
+
+// An OBJ index as a 0-based one: positive indices count from 1, negative ones back from the last
+// element defined so far (OBJ spec; OpenMesh resolves them the same way).
+long long zero_based(long long index, std::size_t defined_so_far) {
+  return index < 0 ? static_cast<long long>(defined_so_far) + index : index - 1;
+}
+
+}  // namespace
+
+FileFacts check_obj(const std::string& text, const std::string& file) {
+  FileFacts facts;
+  const auto lines = split_lines(text);
+  // Pass 1: how many positions and normals (OpenMesh resolves positive indices against all of
+  // them, so a face may name a vertex defined further down).
+  std::size_t total_v = 0, total_vn = 0;
+  for (auto raw : lines) {
+    auto t = split_whitespace(trim(raw));
+    if (t.empty()) continue;
+    if (t[0] == "v") ++total_v;
+    if (t[0] == "vn") ++total_vn;
+  }
+  std::vector<glm::vec3> colors;
+  std::size_t colored = 0, seen_v = 0, seen_vn = 0;
+  facts.normal_given.assign(total_v, 0);
+  for (std::size_t li = 0; li < lines.size(); ++li) {
+    const std::size_t line_no = li + 1;
+    auto line = trim(lines[li]);
+    if (line.empty() || line[0] == '#') continue;
+    auto t = split_whitespace(line);
+    const auto key = t[0];
+    if (key == "v" || key == "vn") {
+      if (t.size() < 4) fail(file, line_no, std::string(key) + " needs three numbers");
+      double xyz[3];
+      for (int k = 0; k < 3; ++k) {
+        if (!parse_double(t[k + 1], xyz[k])) {
+          fail(file, line_no, "'" + std::string(t[k + 1]) + "' is not a number");
+        }
+        if (!fits_openmesh_float(xyz[k])) {
+          fail(file, line_no,
+               (key == "v" ? "vertex " + std::to_string(seen_v) + " has a non-finite coordinate "
+                           : "normal " + std::to_string(seen_vn) + " is not a finite number ") +
+                   "('" + std::string(t[k + 1]) + "'; OpenMesh reads OBJ numbers as float)");
+        }
+      }
+      if (key == "vn") {
+        ++seen_vn;
+        continue;
+      }
+      // OpenMesh reads "v x y z r g b" colours when three more numbers follow.
+      double rgb[3];
+      bool has_rgb = t.size() >= 7;
+      for (int k = 0; has_rgb && k < 3; ++k) has_rgb = parse_double(t[k + 4], rgb[k]);
+      if (has_rgb) {
+        for (double c : rgb) {
+          if (!fits_openmesh_float(c))
+            fail(file, line_no, "vertex " + std::to_string(seen_v) + " has a non-finite colour");
+        }
+        colors.emplace_back(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
+                            static_cast<float>(rgb[2]));
+        ++colored;
+      } else {
+        colors.emplace_back(0.0f);
+      }
+      ++seen_v;
+    } else if (key == "vt") {
+      double uv;
+      if (t.size() < 3 || !parse_double(t[1], uv) || !parse_double(t[2], uv)) {
+        fail(file, line_no, "vt needs two numbers");  // OpenMesh gives up on the whole file
+      }
+    } else if (key == "f") {
+      if (t.size() < 4) fail(file, line_no, "a face needs at least 3 vertices");
+      std::vector<long long> corners;
+      for (std::size_t k = 1; k < t.size(); ++k) {
+        const auto corner = t[k];
+        // v, v/vt, v//vn or v/vt/vn
+        std::array<std::string_view, 3> parts{};
+        std::size_t start = 0, part = 0;
+        for (std::size_t i = 0; i <= corner.size() && part < 3; ++i) {
+          if (i == corner.size() || corner[i] == '/') {
+            parts[part++] = corner.substr(start, i - start);
+            start = i + 1;
+          }
+        }
+        long long v = 0;
+        if (parts[0].empty() || !parse_int(parts[0], v) || v == 0) {
+          fail(file, line_no,
+               "face corner '" + std::string(corner) + "' has no valid vertex index");
+        }
+        const long long vertex = zero_based(v, seen_v);
+        if (vertex < 0 || vertex >= static_cast<long long>(total_v)) {
+          fail(file, line_no,
+               "face vertex index " + std::to_string(v) + " is out of range (the file has " +
+                   plural(total_v, "vertex", "vertices") + ")");
+        }
+        corners.push_back(vertex);
+        if (!parts[2].empty()) {
+          long long n = 0;
+          if (!parse_int(parts[2], n) || n == 0) {
+            fail(file, line_no,
+                 "face corner '" + std::string(corner) + "' has an invalid normal index");
+          }
+          const long long normal = zero_based(n, seen_vn);
+          if (normal < 0 || normal >= static_cast<long long>(total_vn)) {
+            fail(file, line_no,
+                 "face normal index " + std::to_string(n) + " is out of range (the file has " +
+                     plural(total_vn, "normal", "normals") + ")");
+          }
+          facts.normal_given[static_cast<std::size_t>(vertex)] = 1;
+        }
+      }
+      auto sorted = corners;
+      std::sort(sorted.begin(), sorted.end());
+      sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+      if (sorted.size() != corners.size()) ++facts.repeated_faces;
+    }
+  }
+  facts.vertices = total_v;
+  facts.take_parsed_colors(std::move(colors), colored);
+  return facts;
+}
+
+}  // namespace lt::meshio

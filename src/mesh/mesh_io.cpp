@@ -1,0 +1,168 @@
+// Mesh input and output. OpenMesh 9.0 is the mesh library, but its readers trust their input
+// and lose precision: the PLY reader rounds positions to float, truncates float colours to 8 bits
+// and loops forever on a truncated header; the OBJ reader writes outside its arrays on an
+// out-of-range index; a corrupt OM file aborts or segfaults inside the library; and a text value
+// a reader cannot parse silently shifts every value after it. So PLY has a reader of its own,
+// OBJ, OFF and STL are checked before OpenMesh reads them, OM is read in a child process (one
+// file per format in formats/), and OpenMesh's log streams are captured so that the user sees
+// our one-line error rather than its chatter.
+#include "mesh/mesh_io.h"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <algorithm>
+#include <new>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "mesh/formats/obj_check.h"
+#include "mesh/formats/off_check.h"
+#include "mesh/formats/om_reader.h"
+#include "mesh/formats/ply_reader.h"
+#include "mesh/formats/ply_writer.h"
+#include "mesh/formats/stl_check.h"
+#include "mesh/mesh_checks.h"
+#include "mesh/openmesh_log.h"
+#include "mesh/reader_support.h"
+
+namespace lt {
+
+using namespace meshio;
+using OpenMesh::IO::Options;
+
+namespace {
+
+const char* const kReadable = ".ply, .obj, .off, .stl, .stla, .stlb, .om";
+
+LoadedMesh read_mesh_unguarded(const fs::path& path) {
+  const std::string file = path.string();
+  // Regular files within the size cap only, before anything opens it (the OM reader in its
+  // child opens it by name).
+  check_input_file(path, InputKind::Mesh);
+  const std::string ext = lower_extension(path);
+  const bool stl = ext == ".stl" || ext == ".stla" || ext == ".stlb";
+  if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".om" && !stl) {
+    throw InputError(file, "", "unknown mesh format '" + ext + "' (readable: " + kReadable + ")");
+  }
+
+  LoadedMesh loaded;
+  FileFacts facts;
+  if (ext == ".ply") {
+    const RawMesh ply = parse_ply(read_input_file(path, InputKind::Mesh), file);
+    loaded.warnings = ply.warnings;
+    OpenMeshLogCapture capture;  // the importer reports through omerr
+    build_mesh(ply, loaded, facts);
+  } else if (ext == ".om") {
+    OpenMeshLogCapture capture;
+    // Rebuilt from the face loops: whatever halfedges the file held, the mesh we hand on has
+    // the connectivity add_face makes.
+    build_mesh(read_om_in_child(path, file, capture), loaded, facts);
+  } else {
+    const std::string data = read_input_file(path, InputKind::Mesh);
+    if (ext == ".obj") facts = check_obj(data, file);
+    if (ext == ".off") facts = check_off(data, file);
+    if (stl) check_stl(data, file);
+    OpenMeshLogCapture capture;
+    PolyMesh& mesh = loaded.mesh;
+    // Vertex status lets the importer mark the copies it makes for non-manifold faces.
+    mesh.request_vertex_status();
+    Options options = requested_options();
+    read_with_openmesh(mesh, file, options, capture);
+    // STL has neither vertex normals nor colours, but its reader hands the request back as if
+    // the file had them (and leaves them uninitialised).
+    if (stl) options -= Options::VertexNormal | Options::VertexColor | Options::ColorFloat;
+    loaded.read_options = options;
+    const std::size_t split = repair_split_vertices(mesh, options, facts);
+    if (split) {
+      loaded.warnings.push_back(plural(split, "vertex", "vertices") +
+                                " duplicated to split off non-manifold faces");
+    }
+    if (facts.vertices && mesh.n_vertices() != facts.vertices + split) {
+      throw InputError(file, "",
+                       "OpenMesh read " + plural(mesh.n_vertices() - split, "vertex", "vertices") +
+                           " where the file has " + std::to_string(facts.vertices));
+    }
+    mesh.release_vertex_status();
+  }
+  finish_loaded_mesh(loaded, file, facts);
+  return loaded;
+}
+
+// A mesh within the size cap can still be too large for the machine (a 256 MiB file becomes a
+// few GB of halfedges): that is this file's failure, so it is named.
+[[noreturn]] void out_of_memory(const fs::path& path) {
+  throw InputError(path.string(), "",
+                   "out of memory reading this mesh (too large for this machine?)");
+}
+
+}  // namespace
+
+LoadedMesh read_mesh(const fs::path& path) {
+  try {
+    return read_mesh_unguarded(path);
+  } catch (const std::bad_alloc&) {
+    out_of_memory(path);
+  }
+}
+
+TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
+  const PolyMesh& mesh = loaded.mesh;
+  TriangleMesh out;
+  out.positions.reserve(mesh.n_vertices());
+  out.normals.reserve(mesh.n_vertices());
+  for (auto vh : mesh.vertices()) {
+    out.positions.push_back(to_glm(mesh.point(vh)));
+    out.normals.push_back(to_glm(mesh.normal(vh)));
+  }
+  if (loaded.read_options.vertex_has_color()) {
+    out.colors.reserve(mesh.n_vertices());
+    for (auto vh : mesh.vertices()) {
+      const auto& c = mesh.color(vh);
+      out.colors.emplace_back(c[0], c[1], c[2]);
+    }
+  }
+  // A fan from the face's first corner keeps the polygon's winding (and so its orientation).
+  out.triangles.reserve(mesh.n_faces());
+  std::vector<unsigned int> corners;
+  for (auto fh : mesh.faces()) {
+    corners.clear();
+    for (auto vh : mesh.fv_range(fh)) corners.push_back(static_cast<unsigned int>(vh.idx()));
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+      out.triangles.emplace_back(corners[0], corners[k], corners[k + 1]);
+    }
+  }
+  return out;
+}
+
+TriangleMesh load_triangle_mesh(const fs::path& path) {
+  LoadedMesh loaded = read_mesh(path);
+  try {
+    return to_triangle_mesh(loaded);
+  } catch (const std::bad_alloc&) {
+    out_of_memory(path);
+  }
+}
+
+void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".ply") {
+    write_atomically(path, [&](const fs::path& tmp) { write_ply(tmp, path, mesh, options); });
+    return;
+  }
+  static const char* const writable[] = {".obj", ".off", ".om", ".stl", ".stla", ".stlb", ".vtk"};
+  if (std::find(std::begin(writable), std::end(writable), ext) == std::end(writable)) {
+    throw InputError(
+        path.string(), "",
+        "unknown mesh format '" + ext + "' (writable: .ply, .obj, .off, .om, .stl, .vtk)");
+  }
+  write_atomically(path, [&](const fs::path& tmp) {
+    OpenMeshLogCapture capture;
+    // 17 significant digits: OpenMesh's default of 6 would move a vertex at 1e6 by up to 0.5.
+    if (!OpenMesh::IO::write_mesh(mesh, tmp.string(), options, 17)) {
+      const std::string why = capture.last_line();
+      throw InputError(path.string(), "",
+                       "OpenMesh could not write it" + (why.empty() ? std::string() : ": " + why));
+    }
+  });
+}
+
+}  // namespace lt

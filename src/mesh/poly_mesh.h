@@ -1,0 +1,55 @@
+// The editable mesh: OpenMesh's PolyMesh with double positions and normals, as read from a file
+// (what the baker edits and writes back) and as meshgen makes it. Only mesh/ and bake/ see this
+// type; the renderer takes the plain arrays of scene/triangle_mesh.h.
+#pragma once
+
+#include <OpenMesh/Core/IO/Options.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Utils/color_cast.hh>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+// OpenMesh 9.0's ExporterT instantiates color_cast<Vec4ui>(Color) for every mesh it writes and
+// ships no caster from Vec3f (our Color), so writing a PolyMesh does not compile without this.
+// It lives here, beside the traits, so that every translation unit sees the same specialisation.
+namespace OpenMesh {
+template <>
+struct color_caster<Vec4ui, Vec3f> {
+  using return_type = Vec4ui;
+  static return_type cast(const Vec3f& c) {
+    return Vec4ui(static_cast<unsigned int>(c[0] * 255.0f + 0.5f),
+                  static_cast<unsigned int>(c[1] * 255.0f + 0.5f),
+                  static_cast<unsigned int>(c[2] * 255.0f + 0.5f), 255u);
+  }
+};
+}  // namespace OpenMesh
+
+namespace lt {
+
+// Double precision points and normals: bakes and the reference path work in double, and
+// coordinates near 1e6 must survive a round trip. Colours are float rgb in [0, 1].
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+  using Color = OpenMesh::Vec3f;
+  VertexAttributes(OpenMesh::Attributes::Normal | OpenMesh::Attributes::Color);
+  FaceAttributes(OpenMesh::Attributes::Normal);
+};
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
+
+// A mesh as read from a file, before triangulation.
+struct LoadedMesh {
+  PolyMesh mesh;
+  OpenMesh::IO::Options read_options;  // what the file had (normals, colours, ...)
+  std::vector<std::string> warnings;   // e.g. "3 zero-length normals recomputed"
+};
+
+inline glm::dvec3 to_glm(const OpenMesh::Vec3d& v) {
+  return {v[0], v[1], v[2]};
+}
+inline OpenMesh::Vec3d to_om(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+}  // namespace lt

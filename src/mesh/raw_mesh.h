@@ -1,0 +1,48 @@
+// What a format's reader hands on: the file as plain arrays (RawMesh), or what a check learnt
+// about a file that OpenMesh then reads (FileFacts); and the one way arrays become a PolyMesh.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "mesh/poly_mesh.h"
+
+namespace lt::meshio {
+
+// What the format checks learn about a file, used once OpenMesh has read it.
+struct FileFacts {
+  std::size_t vertices = 0;        // vertex records in the file; 0 when the check cannot tell
+  std::size_t repeated_faces = 0;  // faces naming a vertex twice (OpenMesh drops or shrinks them)
+  std::vector<char> normal_given;  // per vertex: the file gave it a normal (OBJ: via a face)
+  std::vector<glm::vec3> colors;   // exact colours when we parsed them ourselves
+  bool has_colors = false;         // `colors` is valid for every vertex
+  bool partial_colors = false;     // some vertices had colours and others not: dropped
+  bool colors_checked = false;     // our pass decides about colours, not OpenMesh's options
+
+  // A text check's colours, one per vertex record (zero where the record had none), `colored`
+  // of them from the file: kept when every vertex has one, dropped (with a warning later) when
+  // only some have. Call after setting `vertices`.
+  void take_parsed_colors(std::vector<glm::vec3> parsed, std::size_t colored);
+};
+
+// A mesh as plain arrays (a parsed PLY file, or what an OM file's halfedges describe), before
+// it becomes a PolyMesh.
+struct RawMesh {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;  // empty when the file has none
+  std::vector<glm::vec3> colors;    // empty when the file has none
+  bool float_colors = false;
+  std::vector<std::uint32_t> face_offsets{0};
+  std::vector<std::uint32_t> face_indices;
+  bool binary = false;
+  std::vector<std::string> warnings;  // what the reader accepted but the user should know
+};
+
+// Builds the mesh from arrays through OpenMesh's importer, so that the connectivity is whatever
+// add_face makes of the faces (consistent by construction), whatever the file said.
+void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts);
+
+}  // namespace lt::meshio
