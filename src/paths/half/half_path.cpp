@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "core/error.h"
-#include "paths/common/gbuffer.h"
+#include "paths/common/cpu_shaded_path.h"
 #include "paths/half/half_shading.h"
 
 namespace lt {
@@ -27,48 +27,25 @@ fp16::PowMode pow_mode(const std::string& variant) {
                    "half: unknown variant (pow=exact, pow=sg, pow=unguarded)");
 }
 
-class HalfPath final : public Path {
+class HalfPath final : public CpuShadedPath {
  public:
   HalfPath(const PathContext& ctx, const std::string& variant)
-      : ctx_(ctx), gbuffer_(ctx, "the half path's G-buffer"), mode_(pow_mode(variant)) {
+      : CpuShadedPath(ctx, "the half path's G-buffer", "fp16 emulation (Imath half)"),
+        mode_(pow_mode(variant)) {
     // The shader sees the G-buffer's camera-relative space, so its light positions are too.
     const Scene relative = camera_relative_lights(ctx);
     scene_ = fp16::prepare_scene(relative, mode_);
     background_ = relative.background;
   }
 
-  void frame() override {
-    gbuffer_.rasterise();
-    const auto t0 = std::chrono::steady_clock::now();
-    shade();
-    shading_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
-
-  // Float output: the half values widened exactly, so the report measures fp16 alone.
-  Image result() override { return image_; }
-  bool float_output() const override { return true; }
-
-  std::vector<BuiltStage> stages() const override {
-    std::vector<BuiltStage> out = gbuffer_.stages();
-    out.push_back(
-        {"shading: fp16 emulation (Imath half) on " + std::to_string(threads()) + " threads", "cpu",
-         ""});
-    return out;
-  }
-
   FrameStats frame_stats() const override {
-    FrameStats s;
-    s.shading_seconds = shading_seconds_;
-    s.covered_pixels = static_cast<double>(covered_);
-    s.threads = threads();
+    FrameStats s = CpuShadedPath::frame_stats();
     s.nonfinite_pixels = static_cast<double>(nonfinite_);
     return s;
   }
 
  private:
-  static unsigned threads() { return GBuffer::threads(); }
-
-  void shade() {
+  void shade() override {
     std::vector<size_t> nonfinite(threads(), 0);
     covered_ = gbuffer_.shade_covered(image_, background_, [&](size_t g, float* out, unsigned w) {
       const glm::vec3 c =
@@ -82,14 +59,10 @@ class HalfPath final : public Path {
     for (size_t n : nonfinite) nonfinite_ += n;
   }
 
-  PathContext ctx_;
-  GBuffer gbuffer_;
   fp16::PowMode mode_;
   fp16::SceneH scene_;
   glm::dvec3 background_{0};
-  Image image_;
-  double shading_seconds_ = 0;
-  size_t covered_ = 0, nonfinite_ = 0;
+  size_t nonfinite_ = 0;
 };
 
 }  // namespace

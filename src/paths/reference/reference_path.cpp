@@ -1,51 +1,20 @@
 #include "paths/reference/reference_path.h"
 
-#include <chrono>
-#include <thread>
-
 #include "model/translucency.h"
-#include "paths/common/gbuffer.h"
+#include "paths/common/cpu_shaded_path.h"
 
 namespace lt {
 
 namespace {
 
-class ReferencePath final : public Path {
+class ReferencePath final : public CpuShadedPath {
  public:
   explicit ReferencePath(const PathContext& ctx)
-      : ctx_(ctx),
-        gbuffer_(ctx, "the reference G-buffer"),
+      : CpuShadedPath(ctx, "the reference G-buffer", "model::shade in double"),
         relative_scene_(camera_relative_lights(ctx)) {}
 
-  void frame() override {
-    gbuffer_.rasterise();
-    const auto t0 = std::chrono::steady_clock::now();
-    shade();
-    shading_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
-
-  Image result() override { return image_; }
-  bool float_output() const override { return true; }
-
-  std::vector<BuiltStage> stages() const override {
-    std::vector<BuiltStage> out = gbuffer_.stages();
-    out.push_back({"shading: model::shade in double on " + std::to_string(threads()) + " threads",
-                   "cpu", ""});
-    return out;
-  }
-
-  FrameStats frame_stats() const override {
-    FrameStats s;
-    s.shading_seconds = shading_seconds_;
-    s.covered_pixels = static_cast<double>(covered_);
-    s.threads = threads();
-    return s;
-  }
-
  private:
-  static unsigned threads() { return GBuffer::threads(); }
-
-  void shade() {
+  void shade() override {
     const Scene& s = relative_scene_;
     covered_ = gbuffer_.shade_covered(image_, s.background, [&](size_t g, float* out, unsigned) {
       const float* pos = gbuffer_.position(g);
@@ -61,12 +30,7 @@ class ReferencePath final : public Path {
     });
   }
 
-  PathContext ctx_;
-  GBuffer gbuffer_;
   Scene relative_scene_;
-  Image image_;
-  double shading_seconds_ = 0;
-  size_t covered_ = 0;
 };
 
 }  // namespace

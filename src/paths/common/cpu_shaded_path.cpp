@@ -1,0 +1,34 @@
+#include "paths/common/cpu_shaded_path.h"
+
+#include <chrono>
+#include <utility>
+
+namespace lt {
+
+CpuShadedPath::CpuShadedPath(const PathContext& ctx, const std::string& gbuffer_user,
+                             std::string shading)
+    : ctx_(ctx), gbuffer_(ctx, gbuffer_user), shading_(std::move(shading)) {}
+
+void CpuShadedPath::frame() {
+  gbuffer_.rasterise();
+  const auto t0 = std::chrono::steady_clock::now();
+  shade();
+  shading_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::vector<BuiltStage> CpuShadedPath::stages() const {
+  std::vector<BuiltStage> out = gbuffer_.stages();
+  out.push_back(
+      {"shading: " + shading_ + " on " + std::to_string(threads()) + " threads", "cpu", ""});
+  return out;
+}
+
+FrameStats CpuShadedPath::frame_stats() const {
+  FrameStats s;
+  s.shading_seconds = shading_seconds_;
+  s.covered_pixels = static_cast<double>(covered_);
+  s.threads = threads();
+  return s;
+}
+
+}  // namespace lt
