@@ -269,3 +269,36 @@ TEST(OutOfMemory, ABigSceneNamesItself) {
 
 }  // namespace
 }  // namespace lt
+
+namespace lt {
+namespace {
+
+// Library messages with newlines (OpenImageIO's "PNG read error: ...\nPNG library error") become
+// one line where the error is made, so every consumer sees cli.md's one line.
+TEST(InputErrorText, LinesAreJoinedWhereTheErrorIsMade) {
+  const InputError e("f.png", "",
+                     "cannot decode image: PNG read error: CRC error\nPNG library error\n");
+  EXPECT_EQ(e.what_only(), "cannot decode image: PNG read error: CRC error; PNG library error");
+  EXPECT_EQ(std::string(e.what()),
+            "f.png: cannot decode image: PNG read error: CRC error; PNG library error");
+}
+
+// A message quoting kilobytes (an unknown key 5000 characters long) is cut to a bounded line.
+TEST(InputErrorText, TheCliLineHasABoundedLength) {
+  test::TempDir dir;
+  const std::string key(5000, 'k');
+  std::ifstream in(test::source_dir() / "scenes" / "backlit_sphere.json");
+  std::string scene((std::istreambuf_iterator<char>(in)), {});
+  scene.replace(scene.find("../meshes/"), 10, (test::source_dir() / "meshes").string() + "/");
+  scene.insert(1, "\"" + key + "\": 1,");
+  test::write_file(dir / "s.json", scene);
+  const auto r = test::run_ltrender("info " + (dir / "s.json").string());
+  EXPECT_EQ(r.exit_code, 2);
+  ASSERT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u);
+  EXPECT_LT(r.err.size(), 1100u);
+  EXPECT_NE(r.err.find("more characters)"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace lt

@@ -1,5 +1,6 @@
 // ltrender: thin main. Parses the command line, dispatches to a subcommand, and maps failures
 // to the exit codes of cli.md: 0 success, 1 a check failed, 2 bad input or usage (one line).
+#include <cstddef>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -11,8 +12,11 @@
 
 namespace {
 
-// cli.md promises one line: library messages (OpenImageIO, OpenMesh) may hold newlines, and a
-// NUL would end the printed line early.
+// cli.md promises one line of bounded length: library messages (OpenImageIO, OpenMesh) may hold
+// newlines, a NUL would end the printed line early, and a message quoting a generated program or
+// a corrupt file's bytes can run to kilobytes.
+constexpr std::size_t kMaxMessage = 1000;
+
 std::string one_line(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
   std::string out;
@@ -22,6 +26,11 @@ std::string one_line(std::string s) {
     } else {
       out += (c == '\n' || c == '\r') ? ' ' : c;
     }
+  }
+  if (out.size() > kMaxMessage) {
+    const std::size_t cut = out.size() - kMaxMessage;
+    out.resize(kMaxMessage);
+    out += "... (" + std::to_string(cut) + " more characters)";
   }
   return out;
 }
