@@ -311,3 +311,55 @@ TEST_F(SceneFile, CliNeverOverwritesAnInput) {
 
 }  // namespace
 }  // namespace lt
+
+namespace lt {
+namespace {
+
+// README "Scene limits": the counts a scene may ask for, refused at parse time with the key,
+// and the largest allowed count still parses.
+std::string repeated(const std::string& element, std::size_t n) {
+  std::string s;
+  for (std::size_t i = 0; i < n; ++i) s += (i ? "," : "") + element;
+  return s;
+}
+
+TEST_F(SceneFile, CountLimitsAreCheckedWithTheKey) {
+  const std::string light =
+      R"({"type": "directional", "direction": [0, 0, 1], "color": [1, 1, 1]})";
+  const std::string lights_from = R"("lights": [)";
+  const std::size_t lights_at = std::string(kGood).find(lights_from);
+  const std::size_t lights_end = std::string(kGood).find("],\n  \"objects\"");
+  auto with_lights = [&](std::size_t n) {
+    std::string s = kGood;
+    return s.replace(lights_at, lights_end - lights_at, lights_from + repeated(light, n));
+  };
+  EXPECT_EQ(parse(with_lights(64)).lights.size(), 64u);
+  EXPECT_NE(error_of(with_lights(65)).find("s.json:lights: 65 lights, more than the limit of 64"),
+            std::string::npos)
+      << error_of(with_lights(65));
+
+  const std::string object = R"({"mesh": "quad.obj", "material": "plaster"})";
+  const std::string objects_from = R"("objects": [)";
+  auto with_objects = [&](std::size_t n) {
+    std::string s = kGood;
+    const std::size_t at = s.find(objects_from);
+    return s.replace(at, s.rfind(']') - at, objects_from + repeated(object, n));
+  };
+  EXPECT_EQ(parse(with_objects(1024)).objects.size(), 1024u);
+  EXPECT_NE(error_of(with_objects(1025)).find("s.json:objects: 1025 objects, more than the limit"),
+            std::string::npos)
+      << error_of(with_objects(1025));
+
+  std::string many_materials = "\"materials\": {";
+  for (int i = 0; i < 257; ++i)
+    many_materials += (i ? "," : "") + std::string("\"m") + std::to_string(i) + "\": {}";
+  std::string s = kGood;
+  const std::size_t at = s.find("\"materials\": {");
+  s.replace(at, std::string("\"materials\": {").size(), many_materials + ",");
+  EXPECT_NE(error_of(s).find("s.json:materials: 259 materials, more than the limit of 256"),
+            std::string::npos)
+      << error_of(s);
+}
+
+}  // namespace
+}  // namespace lt

@@ -163,6 +163,17 @@ constexpr double kMaxDistortion = 1e3;
 constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
 constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
 
+// Count limits (README, "Scene limits"): what a scene may ask for, far above what the targets
+// draw, and low enough that no accepted scene stalls a command. The GL paths unroll the light
+// loop, and llvmpipe's compile time grows with it (64 lights: ~6 s for glsl; 1,000: minutes);
+// fixed-function GL and the Wii's XF light 8 at a time.
+constexpr std::size_t kMaxLights = 64;
+constexpr std::size_t kMaxMaterials = 256;
+constexpr std::size_t kMaxObjects = 1024;
+// Every vertex is uploaded (float) and shaded per path; 2^24 vertices is ~10 binary PLYs at the
+// mesh size cap, and a GL index buffer of 2^24 entries per attribute stays addressable.
+constexpr std::size_t kMaxSceneVertices = std::size_t{1} << 24;
+
 // Vertex colours that are a material's thickness take the scalar's bounds (kMaxColour): a float
 // colour of 3e38, or a negative one, would carry Inf or a negative lobe into every path. Checked
 // where the colour becomes a number of the equation; a mesh's colours mean nothing before.
@@ -270,6 +281,10 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     if (!mats.is_object() || mats.empty()) {
       top.fail("materials", "expected a non-empty object of named materials");
     }
+    if (mats.size() > kMaxMaterials) {
+      top.fail("materials", std::to_string(mats.size()) + " materials, more than the limit of " +
+                                std::to_string(kMaxMaterials));
+    }
     for (auto it = mats.begin(); it != mats.end(); ++it) {
       ObjectReader m(it.value(), "materials." + it.key(), file);
       Material mat;
@@ -310,6 +325,10 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
   if (top.has("lights")) {
     const json& lights = top.get("lights");
     if (!lights.is_array()) top.fail("lights", "expected an array");
+    if (lights.size() > kMaxLights) {
+      top.fail("lights", std::to_string(lights.size()) + " lights, more than the limit of " +
+                             std::to_string(kMaxLights));
+    }
     for (size_t i = 0; i < lights.size(); ++i) {
       ObjectReader l(lights[i], "lights[" + std::to_string(i) + "]", file);
       Light light;
@@ -346,6 +365,10 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
   {
     const json& objs = top.get("objects");
     if (!objs.is_array() || objs.empty()) top.fail("objects", "expected a non-empty array");
+    if (objs.size() > kMaxObjects) {
+      top.fail("objects", std::to_string(objs.size()) + " objects, more than the limit of " +
+                              std::to_string(kMaxObjects));
+    }
     for (size_t i = 0; i < objs.size(); ++i) {
       const std::string kp = "objects[" + std::to_string(i) + "]";
       ObjectReader o(objs[i], kp, file);
@@ -400,10 +423,18 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
   top.finish();
 
   // Meshes last, so a typo in the JSON is reported before any file I/O.
+  std::size_t scene_vertices = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     SceneObject& obj = scene.objects[i];
     const Material& mat = scene.materials[obj.material];
     TriangleMesh mesh = load_triangle_mesh(obj.mesh_path);
+    scene_vertices += mesh.positions.size();
+    if (scene_vertices > kMaxSceneVertices) {
+      throw InputError(file, "objects[" + std::to_string(i) + "].mesh",
+                       "the scene's meshes reach " + std::to_string(scene_vertices) +
+                           " vertices with " + obj.mesh_path.string() +
+                           ", more than the limit of " + std::to_string(kMaxSceneVertices));
+    }
     if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex &&
         !mesh.has_colors()) {
       throw InputError(file, "objects[" + std::to_string(i) + "].mesh",

@@ -166,6 +166,20 @@ PathInfo arbfp_path_info() {
   // The variant grammar: any LUT width and format the generator builds, not just the rows the
   // bench runs ("pow=lut:128:f16").
   info.parse_variant = [](const std::string& v) { return arbfp::parse_variant(v).name(); };
+  // The per-vertex lobe packs four lights per texcoord: a scene with more lights cannot take it
+  // (bench skips it and says so, render refuses it with this reason).
+  info.refusal = [](const Scene& scene, const std::string& v) -> std::string {
+    if (!arbfp::parse_variant(v).per_vertex || scene.lights.size() <= arbfp::kMaxVertexLobeLights)
+      return "";
+    for (const Material& m : scene.materials) {
+      if (m.translucency && m.translucency->power != 0) {
+        return "the per-vertex lobe takes at most " + std::to_string(arbfp::kMaxVertexLobeLights) +
+               " lights (four per texcoord, texcoord[3..7]); the scene has " +
+               std::to_string(scene.lights.size());
+      }
+    }
+    return "";
+  };
   // Instructions, temporaries, parameters and indirections against ps_2_0 and friends.
   info.budget = [](const Scene& scene, const BudgetRequest& rq) {
     const budget::BudgetReport r =
