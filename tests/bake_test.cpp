@@ -694,3 +694,76 @@ TEST(BakeDemoMeshes, CommittedFilesMatchTheirCommand) {
 
 }  // namespace
 }  // namespace lt
+
+namespace lt {
+namespace {
+
+// bake's contract keeps "everything else the input had": a PLY's texture coordinates and any
+// other vertex property come out with their names, types and values (issue 15: u, v vanished).
+TEST(BakeKeepsProperties, UvAndOtherVertexPropertiesGoThroughUnchanged) {
+  test::TempDir dir;
+  // A tetrahedron with u, v (float), a uchar quality and an int id per vertex.
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float u\nproperty float v\nproperty uchar quality\n"
+      "property int id\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string body =
+      "0 0 1 0.125 0.875 7 -3\n1 0 -1 0.25 0.5 255 100000\n-1 0 -1 0.3333333 0.1 0 0\n"
+      "0 1.5 0 1 0 42 2147483647\n3 0 1 2\n3 0 3 1\n3 1 3 2\n3 2 3 0\n";
+  test::write_file(dir / "in.ply", header + body);
+  const auto r = test::run_ltrender("bake " + (dir / "in.ply").string() + " --rays 8 -o " +
+                                    (dir / "out.ply").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const LoadedMesh in = read_mesh(dir / "in.ply");
+  const LoadedMesh out = read_mesh(dir / "out.ply");
+  ASSERT_EQ(out.extra_vertex_properties.size(), 4u);
+  const char* names[] = {"u", "v", "quality", "id"};
+  const char* types[] = {"float", "float", "uchar", "int"};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(out.extra_vertex_properties[k].name, names[k]);
+    EXPECT_EQ(out.extra_vertex_properties[k].ply_type, types[k]);
+    // Float values read back bit-exact (9 significant digits), integers exactly.
+    EXPECT_EQ(out.extra_vertex_properties[k].values, in.extra_vertex_properties[k].values)
+        << names[k];
+  }
+  EXPECT_EQ(in.extra_vertex_properties[3].values[3], 2147483647.0);
+  EXPECT_TRUE(out.read_options.vertex_has_color());  // and the bake's own colours
+}
+
+TEST(BakeKeepsProperties, BinaryPlyKeepsThemToo) {
+  test::TempDir dir;
+  PolyMesh mesh = meshgen::icosphere(1.0, 1);
+  ExtraVertexProperty u{"s", "double", {}}, flag{"flag", "int8", {}};
+  for (auto vh : mesh.vertices()) {
+    u.values.push_back(0.1 * vh.idx() + 1e-9);
+    flag.values.push_back(vh.idx() % 2 ? -128 : 127);
+  }
+  write_mesh(dir / "in.ply", mesh,
+             OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::VertexNormal, {u, flag});
+  const auto r = test::run_ltrender("bake " + (dir / "in.ply").string() + " --rays 8 -o " +
+                                    (dir / "out.ply").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const LoadedMesh out = read_mesh(dir / "out.ply");
+  EXPECT_TRUE(out.read_options.is_binary());
+  ASSERT_EQ(out.extra_vertex_properties.size(), 2u);
+  EXPECT_EQ(out.extra_vertex_properties[0].values, u.values);
+  EXPECT_EQ(out.extra_vertex_properties[1].values, flag.values);
+}
+
+TEST(BakeKeepsProperties, OnlyPlyCanCarryThem) {
+  test::TempDir dir;
+  const PolyMesh mesh = meshgen::icosphere(1.0, 1);
+  ExtraVertexProperty u{"u", "float", std::vector<double>(mesh.n_vertices(), 0.5)};
+  try {
+    write_mesh(dir / "m.obj", mesh, OpenMesh::IO::Options(), {u});
+    FAIL() << "an OBJ cannot hold u";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("only PLY can carry the vertex properties u"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "m.obj"));
+}
+
+}  // namespace
+}  // namespace lt

@@ -188,7 +188,8 @@ int run_bake(const BakeOptions& o) {
   } else {
     options -= OpenMesh::IO::Options::ColorFloat;
   }
-  write_mesh(o.out, loaded.mesh, options);
+  // Everything else the input had (a PLY's u, v, ...) goes through unchanged.
+  write_mesh(o.out, loaded.mesh, options, loaded.extra_vertex_properties);
 
   const auto& r = report.result;
   const double mrays =

@@ -142,11 +142,19 @@ TriangleMesh load_triangle_mesh(const fs::path& path) {
   }
 }
 
-void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options) {
+void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options,
+                const std::vector<ExtraVertexProperty>& extras) {
   const std::string ext = lower_extension(path);
   if (ext == ".ply") {
-    write_atomically(path, [&](const fs::path& tmp) { write_ply(tmp, path, mesh, options); });
+    write_atomically(path,
+                     [&](const fs::path& tmp) { write_ply(tmp, path, mesh, options, extras); });
     return;
+  }
+  if (!extras.empty()) {
+    std::string names;
+    for (const auto& e : extras) names += (names.empty() ? "" : ", ") + e.name;
+    throw InputError(path.string(), "",
+                     "only PLY can carry the vertex properties " + names + ": write .ply");
   }
   static const char* const writable[] = {".obj", ".off", ".om", ".stl", ".stla", ".stlb", ".vtk"};
   if (std::find(std::begin(writable), std::end(writable), ext) == std::end(writable)) {

@@ -33,8 +33,10 @@ TriangleMesh load_triangle_mesh(const std::filesystem::path& path);
 // PLY is written by our own writer with double x/y/z (OpenMesh 9.0 rounds positions to float,
 // which a sphere near 1e6 does not survive); normals are float, colours float with ColorFloat
 // and 8-bit otherwise. Other formats keep OpenMesh's own precision (OBJ/OFF/STL float; OM keeps
-// double positions but stores colours in 8 bits).
+// double positions but stores colours in 8 bits). `extras` (a PLY's u, v, ... from read_mesh)
+// are written after the attributes; only PLY can hold them, so another format with extras is an
+// InputError naming them.
 void write_mesh(const std::filesystem::path& path, const PolyMesh& mesh,
-                OpenMesh::IO::Options options);
+                OpenMesh::IO::Options options, const std::vector<ExtraVertexProperty>& extras = {});
 
 }  // namespace lt

@@ -38,11 +38,21 @@ struct MeshTraits : public OpenMesh::DefaultTraits {
 };
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 
+// A per-vertex value the renderer does not use (PLY's u, v, quality, ...), kept so that a mesh
+// written back (bake) carries everything it did not change: its PLY name and type, a value per
+// vertex of the mesh.
+struct ExtraVertexProperty {
+  std::string name;
+  std::string ply_type;  // as the file declared it: "float", "uchar", "int32", ...
+  std::vector<double> values;
+};
+
 // A mesh as read from a file, before triangulation.
 struct LoadedMesh {
   PolyMesh mesh;
   OpenMesh::IO::Options read_options;  // what the file had (normals, colours, ...)
-  std::vector<std::string> warnings;   // e.g. "3 zero-length normals recomputed"
+  std::vector<ExtraVertexProperty> extra_vertex_properties;  // PLY only
+  std::vector<std::string> warnings;  // e.g. "3 zero-length normals recomputed"
 };
 
 inline glm::dvec3 to_glm(const OpenMesh::Vec3d& v) {

@@ -71,6 +71,13 @@ void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts) {
       mesh.set_color(vh, OpenMesh::Vec3f(c.r, c.g, c.b));
     }
   }
+  loaded.extra_vertex_properties.clear();
+  for (const auto& extra : raw.extras) {
+    ExtraVertexProperty copy{extra.name, extra.ply_type, {}};
+    copy.values.reserve(mesh.n_vertices());
+    for (auto vh : mesh.vertices()) copy.values.push_back(extra.values[origin[vh.idx()]]);
+    loaded.extra_vertex_properties.push_back(std::move(copy));
+  }
   if (mesh.n_vertices() > nv) {
     loaded.warnings.push_back(plural(mesh.n_vertices() - nv, "vertex", "vertices") +
                               " duplicated to split off non-manifold faces");

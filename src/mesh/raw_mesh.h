@@ -38,7 +38,8 @@ struct RawMesh {
   std::vector<std::uint32_t> face_offsets{0};
   std::vector<std::uint32_t> face_indices;
   bool binary = false;
-  std::vector<std::string> warnings;  // what the reader accepted but the user should know
+  std::vector<ExtraVertexProperty> extras;  // per file vertex
+  std::vector<std::string> warnings;        // what the reader accepted but the user should know
 };
 
 // Builds the mesh from arrays through OpenMesh's importer, so that the connectivity is whatever

@@ -11,48 +11,13 @@
 #include <sstream>
 #include <string_view>
 
+#include "mesh/formats/ply_types.h"
 #include "mesh/normals.h"
 #include "mesh/reader_support.h"
 
 namespace lt::meshio {
 
 namespace {
-
-enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-std::optional<PlyType> ply_type(std::string_view name) {
-  if (name == "char" || name == "int8") return PlyType::Int8;
-  if (name == "uchar" || name == "uint8") return PlyType::UInt8;
-  if (name == "short" || name == "int16") return PlyType::Int16;
-  if (name == "ushort" || name == "uint16") return PlyType::UInt16;
-  if (name == "int" || name == "int32") return PlyType::Int32;
-  if (name == "uint" || name == "uint32") return PlyType::UInt32;
-  if (name == "float" || name == "float32") return PlyType::Float32;
-  if (name == "double" || name == "float64") return PlyType::Float64;
-  return std::nullopt;
-}
-
-std::size_t ply_size(PlyType t) {
-  switch (t) {
-    case PlyType::Int8:
-    case PlyType::UInt8:
-      return 1;
-    case PlyType::Int16:
-    case PlyType::UInt16:
-      return 2;
-    case PlyType::Int32:
-    case PlyType::UInt32:
-    case PlyType::Float32:
-      return 4;
-    case PlyType::Float64:
-      return 8;
-  }
-  return 8;
-}
-
-bool ply_is_float(PlyType t) {
-  return t == PlyType::Float32 || t == PlyType::Float64;
-}
 
 // X..Z, NX..NZ and Red..Blue must stay consecutive: parse_ply indexes with them.
 enum class PlyRole { Other, X, Y, Z, NX, NY, NZ, Red, Green, Blue, Alpha, VertexIndices };
@@ -63,6 +28,8 @@ struct PlyProperty {
   bool is_list = false;
   PlyType count_type = PlyType::UInt8;
   PlyRole role = PlyRole::Other;
+  std::string type_name;  // as written in the header
+  int extra = -1;         // index into RawMesh::extras for a vertex property we keep as it is
 };
 
 struct PlyElement {
@@ -173,12 +140,14 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
         p.is_list = true;
         p.count_type = *ct;
         p.type = *et;
+        p.type_name = std::string(tokens[3]);
         p.name = std::string(tokens[4]);
       } else {
         if (tokens.size() != 3) fail(file, line_no, "property must be 'property <type> <name>'");
         auto t = ply_type(tokens[1]);
         if (!t) fail(file, line_no, "unknown property type '" + std::string(tokens[1]) + "'");
         p.type = *t;
+        p.type_name = std::string(tokens[1]);
         p.name = std::string(tokens[2]);
       }
       h.elements.back().properties.push_back(p);
@@ -310,6 +279,11 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
         {"blue", PlyRole::Blue},   {"diffuse_blue", PlyRole::Blue},
         {"alpha", PlyRole::Alpha}};
     auto it = roles.find(p.name);
+    if (it == roles.end() && !p.is_list) {
+      // Not ours to interpret (u, v, quality, ...): carried through to what bake writes.
+      p.extra = static_cast<int>(out.extras.size());
+      out.extras.push_back({p.name, p.type_name, {}});
+    }
     if (it == roles.end() || p.is_list) continue;
     p.role = it->second;
     if (p.role == PlyRole::X || p.role == PlyRole::Y || p.role == PlyRole::Z) {
@@ -359,6 +333,7 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
   out.positions.resize(nv);
   if (has_normal) out.normals.assign(nv, glm::dvec3(0.0));
   if (has_color) out.colors.assign(nv, glm::vec3(0.0f));
+  for (auto& extra : out.extras) extra.values.assign(nv, 0.0);
 
   PlyBody body(data, h);
   for (auto& e : h.elements) {
@@ -408,7 +383,10 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
           const float c =
               ply_is_float(p.type) ? static_cast<float>(v) : static_cast<float>(v) / 255.0f;
           const int role = static_cast<int>(p.role);
-          if (p.role >= PlyRole::X && p.role <= PlyRole::Z) {
+          if (p.extra >= 0) {
+            // Kept as its declared type holds it, so the writer gives back what was read.
+            out.extras[static_cast<std::size_t>(p.extra)].values[i] = ply_value_as(p.type, v);
+          } else if (p.role >= PlyRole::X && p.role <= PlyRole::Z) {
             out.positions[i][role - static_cast<int>(PlyRole::X)] = v;
           } else if (p.role >= PlyRole::NX && p.role <= PlyRole::NZ) {
             out.normals[i][role - static_cast<int>(PlyRole::NX)] = v;

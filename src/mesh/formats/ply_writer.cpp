@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "mesh/formats/ply_types.h"
 #include "mesh/normals.h"
 #include "mesh/reader_support.h"
 
@@ -17,8 +18,23 @@ namespace lt::meshio {
 
 using OpenMesh::IO::Options;
 
+namespace {
+
+// A value as ascii PLY writes it for `type`: integers as integers, floats with enough digits to
+// read back bit-exact.
+std::string ply_ascii(PlyType type, double value) {
+  const double stored = ply_value_as(type, value);
+  if (!ply_is_float(type)) return std::to_string(static_cast<long long>(stored));
+  char text[64];
+  std::snprintf(text, sizeof text, type == PlyType::Float32 ? "%.9g" : "%.17g", stored);
+  return text;
+}
+
+}  // namespace
+
 void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& target,
-               const PolyMesh& mesh, const Options& options) {
+               const PolyMesh& mesh, const Options& options,
+               const std::vector<ExtraVertexProperty>& extras) {
   std::ofstream out(tmp, std::ios::binary);
   if (!out)
     throw InputError(target.string(), "",
@@ -27,6 +43,12 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
   const bool normals = options.vertex_has_normal();
   const bool colors = options.vertex_has_color();
   const bool float_colors = options.color_is_float();
+  std::vector<PlyType> extra_types;
+  for (const auto& e : extras) {
+    const auto type = ply_type(e.ply_type);
+    LT_CHECK(type && e.values.size() == mesh.n_vertices(), "extra vertex property " + e.name);
+    extra_types.push_back(*type);
+  }
   std::size_t max_valence = 0;
   for (auto fh : mesh.faces()) max_valence = std::max<std::size_t>(max_valence, mesh.valence(fh));
 
@@ -40,6 +62,7 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
     const char* t = float_colors ? "float" : "uchar";
     header << "property " << t << " red\nproperty " << t << " green\nproperty " << t << " blue\n";
   }
+  for (const auto& e : extras) header << "property " << e.ply_type << " " << e.name << "\n";
   header << "element face " << mesh.n_faces() << "\n"
          << "property list " << (max_valence > 255 ? "int" : "uchar") << " int vertex_indices\n"
          << "end_header\n";
@@ -69,6 +92,11 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
             put(color8(c[k]));
           }
         }
+      }
+      for (std::size_t e = 0; e < extras.size(); ++e) {
+        unsigned char bytes[8];
+        ply_store(extra_types[e], extras[e].values[static_cast<std::size_t>(vh.idx())], bytes);
+        buf.append(reinterpret_cast<const char*>(bytes), ply_size(extra_types[e]));
       }
     }
     for (auto fh : mesh.faces()) {
@@ -105,6 +133,9 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
           std::snprintf(line, sizeof line, " %d %d %d", color8(c[0]), color8(c[1]), color8(c[2]));
         }
         s += line;
+      }
+      for (std::size_t e = 0; e < extras.size(); ++e) {
+        s += ' ' + ply_ascii(extra_types[e], extras[e].values[static_cast<std::size_t>(vh.idx())]);
       }
       out << s << '\n';
     }
