@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "mesh/triangulate.h"
 
 namespace lt::bake {
 
@@ -551,15 +552,8 @@ Surface surface_of(const PolyMesh& mesh) {
       s.normals.emplace_back(0.0);
     }
   }
-  // Fan triangulation, like the renderer's: vertex indices are OpenMesh's vertex handles.
-  std::vector<unsigned> corners;
-  for (auto fh : mesh.faces()) {
-    corners.clear();
-    for (auto vh : mesh.fv_range(fh)) corners.push_back(static_cast<unsigned>(vh.idx()));
-    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-      s.triangles.emplace_back(corners[0], corners[k], corners[k + 1]);
-    }
-  }
+  // The renderer's triangles: vertex indices are OpenMesh's vertex handles.
+  s.triangles = triangulate_faces(mesh);
   return s;
 }
 

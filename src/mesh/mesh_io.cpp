@@ -23,6 +23,7 @@
 #include "mesh/mesh_checks.h"
 #include "mesh/openmesh_log.h"
 #include "mesh/reader_support.h"
+#include "mesh/triangulate.h"
 
 namespace lt {
 
@@ -120,16 +121,9 @@ TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
       out.colors.emplace_back(c[0], c[1], c[2]);
     }
   }
-  // A fan from the face's first corner keeps the polygon's winding (and so its orientation).
-  out.triangles.reserve(mesh.n_faces());
-  std::vector<unsigned int> corners;
-  for (auto fh : mesh.faces()) {
-    corners.clear();
-    for (auto vh : mesh.fv_range(fh)) corners.push_back(static_cast<unsigned int>(vh.idx()));
-    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-      out.triangles.emplace_back(corners[0], corners[k], corners[k + 1]);
-    }
-  }
+  // Convex faces as a fan from their first corner, concave ones ear-clipped; both keep the
+  // polygon's winding (and so its orientation).
+  out.triangles = triangulate_faces(mesh);
   return out;
 }
 
