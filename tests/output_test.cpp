@@ -105,3 +105,66 @@ TEST(WriteAtomically, StaleTemporariesOfGoneProcessesGoOnTheNextWrite) {
 
 }  // namespace
 }  // namespace lt
+
+namespace lt {
+namespace {
+
+// write_directory_atomically: all files or none, and a killed writer's staging directory goes
+// on the next write.
+TEST(WriteDirectoryAtomically, PublishesEveryFileOrNone) {
+  test::TempDir dir;
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  test::write_file(out / "report.md", "old");
+  EXPECT_THROW(write_directory_atomically(out,
+                                          [](const fs::path& staging) {
+                                            test::write_file(staging / "report.md", "new");
+                                            throw InputError("x", "", "failed halfway");
+                                          }),
+               InputError);
+  EXPECT_EQ(test::read_file(out / "report.md"), "old");
+  EXPECT_FALSE(fs::exists(partial_output_path(out, ::getpid())));
+
+  write_directory_atomically(out, [](const fs::path& staging) {
+    fs::create_directories(staging / "images");
+    test::write_file(staging / "images" / "a.png", "a");
+    test::write_file(staging / "report.md", "new");
+  });
+  EXPECT_EQ(test::read_file(out / "report.md"), "new");
+  EXPECT_EQ(test::read_file(out / "images" / "a.png"), "a");
+  EXPECT_FALSE(fs::exists(partial_output_path(out, ::getpid())));
+
+  const fs::path stale = partial_output_path(out, gone_pid());
+  fs::create_directories(stale / "images");
+  test::write_file(stale / "images" / "b.png", "b");
+  write_directory_atomically(out, [](const fs::path&) {});
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_FALSE(fs::exists(out / "images" / "b.png"));
+}
+
+// Issue 15: a killed bench left a directory of new images beside an old report.md.
+TEST(WriteDirectoryAtomically, AKilledBenchLeavesThePreviousRunAsItWas) {
+  test::TempDir dir;
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  test::write_file(out / "report.md", "old");
+  const std::string scene = (test::source_dir() / "scenes" / "backlit_sphere.json").string();
+  // Far longer than 3 s (every path and variant, 200 frames each), so the kill lands mid-run.
+  const auto killed =
+      test::run_ltrender("bench " + scene + " --frames 200 --quiet -o " + out.string(), {3, 0});
+  ASSERT_NE(killed.exit_code, 0) << "the bench finished before it was killed";
+  EXPECT_EQ(test::read_file(out / "report.md"), "old");
+  EXPECT_FALSE(fs::exists(out / "images"));
+
+  const auto again =
+      test::run_ltrender("bench " + scene + " --paths flat --frames 10 --quiet -o " + out.string());
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(test::read_file(out / "report.md"), "old");
+  EXPECT_TRUE(fs::exists(out / "images"));
+  for (const auto& e : fs::directory_iterator(dir.path()))
+    EXPECT_EQ(e.path().filename().string().find(kPartialOutputTag), std::string::npos)
+        << e.path() << " is a staging directory left behind";
+}
+
+}  // namespace
+}  // namespace lt

@@ -37,8 +37,15 @@ Action add_bench(CLI::App& app) {
       }
       std::sort(o->scenes.begin(), o->scenes.end());
     }
-    const auto rows = run_bench(*o);
-    write_bench_reports(*o, rows);
+    // Images and reports appear together or not at all (core/fs.h): a killed bench leaves the
+    // previous run's directory as it was.
+    std::vector<BenchRow> rows;
+    write_directory_atomically(o->out_dir, [&](const fs::path& staging) {
+      BenchOptions staged = *o;
+      staged.out_dir = staging;
+      rows = run_bench(staged);
+      write_bench_reports(staged, rows);
+    });
     std::cout << "bench: " << rows.size() << " rows -> " << (o->out_dir / "report.md").string()
               << "\n";
     return 0;

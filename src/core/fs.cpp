@@ -44,16 +44,18 @@ bool process_is_gone(long pid) {
 
 // A write killed before its rename leaves its temporary behind, and nothing else would ever
 // remove it: the next write of the same target removes those whose process is gone. Only
-// regular files with exactly our name pattern are touched.
-void remove_stale_partials(const fs::path& dir, const fs::path& target) {
+// entries with exactly our name pattern and of the kind we write (a regular file, or for
+// write_directory_atomically a directory) are touched, never through a symlink.
+void remove_stale_partials(const fs::path& dir, const fs::path& target, bool directories = false) {
   std::error_code ec;
   std::vector<fs::path> stale;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const long pid = partial_pid(it->path().filename().string(), target);
-    if (pid <= 0 || pid == ::getpid() || !it->is_regular_file(ec) || it->is_symlink(ec)) continue;
+    if (pid <= 0 || pid == ::getpid() || it->is_symlink(ec)) continue;
+    if (directories ? !it->is_directory(ec) : !it->is_regular_file(ec)) continue;
     if (process_is_gone(pid)) stale.push_back(it->path());
   }
-  for (const auto& p : stale) fs::remove(p, ec);
+  for (const auto& p : stale) fs::remove_all(p, ec);
 }
 
 }  // namespace
@@ -88,6 +90,47 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
     fs::remove(tmp, ec);  // its own code: `renamed` is the reason the user needs
     throw InputError(target.string(), "", "cannot write output: " + renamed.message());
   }
+}
+
+void write_directory_atomically(const fs::path& dir,
+                                const std::function<void(const fs::path& staging)>& write) {
+  const fs::path target = dir.filename().empty() ? dir.parent_path() : dir;  // "out/" is out
+  fs::path parent = target.parent_path();
+  if (parent.empty()) parent = ".";
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec)) {
+    throw InputError(dir.string(), "", "the output directory's parent does not exist");
+  }
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec)) {
+    throw InputError(dir.string(), "", "exists and is not a directory");
+  }
+  remove_stale_partials(parent, target, /*directories=*/true);
+  const fs::path staging = partial_output_path(target, ::getpid());
+  fs::remove_all(staging, ec);
+  if (!fs::create_directory(staging, ec) || ec) {
+    throw InputError(dir.string(), "", "cannot create a staging directory: " + ec.message());
+  }
+  try {
+    write(staging);
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  // Publish: directories first, then each file by rename (same filesystem, as the staging
+  // directory is a sibling of the target).
+  std::error_code moved;
+  fs::create_directories(target, moved);
+  for (fs::recursive_directory_iterator it(staging, ec), end; !moved && !ec && it != end;
+       it.increment(ec)) {
+    const fs::path to = target / fs::relative(it->path(), staging);
+    if (it->is_directory()) {
+      fs::create_directories(to, moved);
+    } else {
+      fs::rename(it->path(), to, moved);
+    }
+  }
+  fs::remove_all(staging, ec);
+  if (moved) throw InputError(dir.string(), "", "cannot write output: " + moved.message());
 }
 
 void ensure_not_an_input(const fs::path& output, const std::vector<fs::path>& inputs) {

@@ -21,6 +21,15 @@ namespace fs = std::filesystem;
 void write_atomically(const fs::path& target,
                       const std::function<void(const fs::path& tmp)>& write);
 
+// A set of outputs written as one (bench's images and reports): `write(staging)` fills a
+// staging directory beside `dir` (".out.ltrender-partial.1234" for out/), then every file is
+// moved into `dir`, created if needed, and the staging directory removed. A failure removes
+// the staging directory and leaves `dir` as it was; a process killed while writing leaves its
+// staging directory, which the next write of `dir` removes once that process is gone. So a
+// killed run never leaves new images beside an old report.
+void write_directory_atomically(const fs::path& dir,
+                                const std::function<void(const fs::path& staging)>& write);
+
 // Every temporary's name holds this: ".out.png.ltrender-partial.1234.png" for out.png, pid 1234.
 inline constexpr const char* kPartialOutputTag = ".ltrender-partial.";
 
