@@ -19,7 +19,11 @@ Action add_bench(CLI::App& app) {
   sub->add_option("--paths", *paths, "Comma-separated paths (default: all; flat always runs)");
   sub->add_option("--frames", o->frames, "Timed frames per measurement (>= 10)")
       ->check(CLI::Range(10, 100000));
-  sub->add_option("--warmup", o->warmup, "Warm-up frames")->check(CLI::Range(0, 1000));
+  sub->add_option("--warmup", o->warmup, "Warm-up frames (at least; at 1280x720 until settled)")
+      ->check(CLI::Range(0, 1000));
+  sub->add_option("--min-time", o->min_time_s,
+                  "Least measuring time per path at 1280x720, in seconds (interleaved with flat)")
+      ->check(CLI::Range(0.0, 60.0));
   sub->add_option("-o,--output", *out, "Output directory")->required();
   sub->add_flag("--quiet", o->quiet, "No progress lines");
   return [o, scenes, paths, out]() -> int {

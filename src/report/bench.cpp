@@ -23,25 +23,26 @@ using Clock = std::chrono::steady_clock;
 // Each figure a path reports, over the timed frames.
 using StatSamples = std::array<std::vector<double>, FrameStats::kFields.size()>;
 
-FrameTiming time_frames(Path& path, const BenchOptions& o, StatSamples* stats_out = nullptr) {
-  for (int i = 0; i < o.warmup; ++i) {
-    path.frame();
-    glFinish();
+// One frame in milliseconds: it is over when the GL work is, not when the calls return.
+double timed_frame(Path& path) {
+  const auto t0 = Clock::now();
+  path.frame();
+  glFinish();
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+void collect_stats(const Path& path, StatSamples& stats) {
+  const FrameStats st = path.frame_stats();
+  for (size_t k = 0; k < FrameStats::kFields.size(); ++k) {
+    const auto field = FrameStats::kFields[k].second;
+    if (st.*field) stats[k].push_back(*(st.*field));
   }
+}
+
+FrameTiming time_frames(Path& path, const BenchOptions& o) {
+  for (int i = 0; i < o.warmup; ++i) timed_frame(path);
   std::vector<double> ms;
-  for (int i = 0; i < o.frames; ++i) {
-    const auto t0 = Clock::now();
-    path.frame();
-    glFinish();  // a frame is over when the GL work is, not when the calls return
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    if (stats_out) {
-      const FrameStats st = path.frame_stats();
-      for (size_t k = 0; k < FrameStats::kFields.size(); ++k) {
-        const auto field = FrameStats::kFields[k].second;
-        if (st.*field) (*stats_out)[k].push_back(*(st.*field));
-      }
-    }
-  }
+  for (int i = 0; i < o.frames; ++i) ms.push_back(timed_frame(path));
   return summarize_frames(ms);
 }
 
@@ -143,20 +144,32 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         }
       }
     }
-    // Pass 2, at 1280x720: timing only, with flat in the same session so every ratio is too.
+    // Pass 2, at 1280x720: timing only, each path in interleaved pairs with flat in the same
+    // session (report/interleaved_timing.h), so every ratio is the median of per-pair ratios.
     {
       RenderSession session(scene, o.wide_width, o.wide_height);
-      // flat is timed before and after the paths and the faster median is the baseline: the
-      // first timing of a fresh session also pays llvmpipe's warm-up (thread start, shader
-      // JIT for the fixed-function state), which would flatter every ratio.
       auto base = session.build(flat, flat.variants.front().name);
-      FrameTiming flat_t = time_frames(*base, o);
+      InterleaveOptions io;
+      io.min_pairs = o.frames;
+      io.min_seconds = o.min_time_s;
+      io.min_warmup = o.warmup;
+      std::vector<double> all_flat_ms;
       for (BenchRow& row : scene_rows) {
+        if (row.path == flat.name) continue;
         const PathInfo& p = find_path(row.path);
         auto path = session.build(p, row.variant);
         StatSamples stats;
-        row.at_wide = row.path == flat.name ? flat_t : time_frames(*path, o, &stats);
-        row.ratio_to_flat = row.at_wide.median_ms;  // divided by the baseline below
+        const InterleavedTiming t = time_interleaved(
+            [&](bool timed) {
+              const double ms = timed_frame(*path);
+              if (timed) collect_stats(*path, stats);
+              return ms;
+            },
+            [&] { return timed_frame(*base); }, io);
+        row.at_wide = summarize_frames(t.path_ms);
+        row.ratio = t.ratio;
+        row.ratio_to_flat = t.ratio.median;
+        all_flat_ms.insert(all_flat_ms.end(), t.baseline_ms.begin(), t.baseline_ms.end());
         // Every figure a path reports, as the median over the timed frames.
         for (size_t k = 0; k < stats.size(); ++k) {
           if (!stats[k].empty()) row.stats.*(FrameStats::kFields[k].second) = median(stats[k]);
@@ -166,11 +179,16 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           row.shading_mpixels_per_s = secs > 0 ? *row.stats.covered_pixels / secs / 1e6 : 0;
         }
       }
-      const FrameTiming again = time_frames(*base, o);
-      if (again.median_ms < flat_t.median_ms) flat_t = again;
+      // flat's own row: its frames from every pair of the scene (or alone if it is the only
+      // path), and a ratio of 1 by definition.
+      if (all_flat_ms.empty()) {
+        for (int i = 0; i < std::max(o.frames, 10); ++i) all_flat_ms.push_back(timed_frame(*base));
+      }
       for (BenchRow& row : scene_rows) {
-        if (row.path == flat.name) row.at_wide = flat_t;
-        row.ratio_to_flat = flat_t.median_ms > 0 ? row.at_wide.median_ms / flat_t.median_ms : 0;
+        if (row.path != flat.name) continue;
+        row.at_wide = summarize_frames(all_flat_ms);
+        row.ratio = estimate_ratio(std::vector<double>(all_flat_ms.size(), 1.0));
+        row.ratio_to_flat = 1.0;
       }
     }
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());

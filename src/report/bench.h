@@ -12,6 +12,7 @@
 
 #include "metrics/compare.h"
 #include "paths/frame_stats.h"
+#include "report/interleaved_timing.h"
 
 namespace lt {
 
@@ -19,8 +20,9 @@ struct BenchOptions {
   std::vector<std::filesystem::path> scenes;
   std::vector<std::string> paths;  // empty: every path
   std::filesystem::path out_dir;
-  int frames = 10;  // >= 10 (metrics.md)
-  int warmup = 2;
+  int frames = 10;  // >= 10 (metrics.md); at 1280x720, the least number of interleaved pairs
+  int warmup = 2;   // at least; at 1280x720 warm-up goes on until the frame time settles
+  double min_time_s = 0.5;  // at 1280x720, the least measuring time of each path (--min-time)
   int wide_width = 1280, wide_height = 720;
   bool quiet = false;
 };
@@ -32,7 +34,8 @@ struct FrameTiming {
 struct BenchRow {
   std::string scene, path, variant;
   FrameTiming at_scene_size, at_wide;
-  double ratio_to_flat = 0;         // at 1280x720, flat measured in the same session
+  double ratio_to_flat = 0;         // at 1280x720: the median of interleaved per-pair ratios
+  RatioEstimate ratio;              // the same, with its 95% interval and pair count
   std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
   FrameStats stats;                 // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time

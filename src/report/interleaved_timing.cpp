@@ -1,0 +1,90 @@
+#include "report/interleaved_timing.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lt {
+
+namespace {
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Frames until the last three are within 10% of their median (JIT, thread start-up and caches
+// are done), at least `min` and at most `max` of them.
+void warm_up(const std::function<double()>& frame, int min, int max) {
+  std::vector<double> recent;
+  for (int i = 0; i < max; ++i) {
+    recent.push_back(frame());
+    if (static_cast<int>(recent.size()) < std::max(min, 3)) continue;
+    const std::vector<double> last(recent.end() - 3, recent.end());
+    const double m = median_of(last);
+    const bool settled = std::all_of(last.begin(), last.end(),
+                                     [m](double x) { return std::fabs(x - m) <= 0.10 * m; });
+    if (settled) return;
+  }
+}
+
+}  // namespace
+
+std::pair<std::size_t, std::size_t> median_interval_ranks(std::size_t n, double confidence) {
+  if (n == 0) return {0, 0};
+  // P(X <= j - 1) for X ~ binomial(n, 1/2), summed in log space (n may be thousands).
+  const double tail = (1.0 - confidence) / 2.0;
+  double cdf = 0;
+  std::size_t j = 0;  // the largest j with P(X <= j - 1) <= tail, as a 0-based rank
+  for (std::size_t k = 0; k < n; ++k) {
+    const double log_p = std::lgamma(static_cast<double>(n) + 1) -
+                         std::lgamma(static_cast<double>(k) + 1) -
+                         std::lgamma(static_cast<double>(n - k) + 1) - n * std::log(2.0);
+    cdf += std::exp(log_p);
+    if (cdf > tail) break;
+    j = k + 1;
+  }
+  if (j == 0) return {0, n - 1};
+  // 1-based samples j and n - j + 1 bound the interval: 0-based j - 1 and n - j.
+  return {j - 1, n - j};
+}
+
+RatioEstimate estimate_ratio(std::vector<double> ratios) {
+  RatioEstimate e;
+  e.pairs = ratios.size();
+  if (ratios.empty()) return e;
+  std::sort(ratios.begin(), ratios.end());
+  e.median = median_of(ratios);
+  const auto [lo, hi] = median_interval_ranks(ratios.size());
+  e.low = ratios[lo];
+  e.high = ratios[hi];
+  return e;
+}
+
+InterleavedTiming time_interleaved(const std::function<double(bool timed)>& path_frame,
+                                   const std::function<double()>& baseline_frame,
+                                   const InterleaveOptions& o) {
+  warm_up(baseline_frame, o.min_warmup, o.max_warmup);
+  warm_up([&] { return path_frame(false); }, o.min_warmup, o.max_warmup);
+  InterleavedTiming t;
+  std::vector<double> ratios;
+  double path_seconds = 0;
+  while (static_cast<int>(ratios.size()) < o.min_pairs || path_seconds < o.min_seconds) {
+    // The baseline first in even pairs and second in odd ones, so that neither side always
+    // follows the other (a frame can pay for its predecessor's work still in flight).
+    const bool baseline_first = ratios.size() % 2 == 0;
+    double base = 0, path = 0;
+    if (baseline_first) base = baseline_frame();
+    path = path_frame(true);
+    if (!baseline_first) base = baseline_frame();
+    t.path_ms.push_back(path);
+    t.baseline_ms.push_back(base);
+    ratios.push_back(base > 0 ? path / base : 0);
+    path_seconds += path / 1000.0;
+  }
+  t.ratio = estimate_ratio(std::move(ratios));
+  return t;
+}
+
+}  // namespace lt

@@ -1,0 +1,71 @@
+// The bench's interleaved timing (issue 11): the median's interval from order statistics, and
+// the pairs, measuring time and warm-up it promises, on frame functions with known times.
+#include "report/interleaved_timing.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lt {
+namespace {
+
+// Ranks from the binomial(n, 1/2) tables of a distribution-free median interval (e.g. Conover,
+// Practical Nonparametric Statistics, table A3): 1-based (2, 9) for n = 10, (40, 61) for
+// n = 100; too few samples for 95% give the whole range.
+TEST(MedianInterval, RanksMatchTheBinomialTable) {
+  EXPECT_EQ(median_interval_ranks(10), (std::pair<std::size_t, std::size_t>{1, 8}));
+  EXPECT_EQ(median_interval_ranks(100), (std::pair<std::size_t, std::size_t>{39, 60}));
+  EXPECT_EQ(median_interval_ranks(5), (std::pair<std::size_t, std::size_t>{0, 4}));
+  EXPECT_EQ(median_interval_ranks(6), (std::pair<std::size_t, std::size_t>{0, 5}));
+  // Coverage of the returned ranks is at least 95% and one rank narrower would be below it.
+  for (std::size_t n : {8u, 20u, 37u, 250u}) {
+    const auto [lo, hi] = median_interval_ranks(n);
+    auto below = [n](std::size_t j) {  // P(X <= j - 1)
+      double p = 0;
+      for (std::size_t k = 0; k < j; ++k)
+        p += std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0) -
+                      n * std::log(2.0));
+      return p;
+    };
+    EXPECT_LE(2 * below(lo + 1), 0.05 + 1e-12) << n;
+    EXPECT_GT(2 * below(lo + 2), 0.05) << n;
+    EXPECT_EQ(hi, n - 1 - lo) << n;
+  }
+}
+
+TEST(MedianInterval, EstimateOfKnownRatios) {
+  const RatioEstimate e = estimate_ratio({1.9, 2.1, 2.0, 1.8, 2.2, 2.05, 1.95, 2.0, 2.0, 5.0});
+  EXPECT_DOUBLE_EQ(e.median, 2.0);
+  EXPECT_DOUBLE_EQ(e.low, 1.9);   // sorted sample 2 of 10
+  EXPECT_DOUBLE_EQ(e.high, 2.2);  // sorted sample 9 of 10: the outlier 5.0 does not move it
+  EXPECT_FALSE(e.wide());
+  EXPECT_TRUE(estimate_ratio({1, 2, 1, 2, 1, 2, 1, 2, 1, 2}).wide());
+}
+
+TEST(Interleaved, PairsMeasuringTimeAndWarmUp) {
+  // The path takes 3 ms and the baseline 1 ms, after five warm-up frames that get faster (a
+  // JIT, caches): the settle test waits for three frames within 10% of their median.
+  const double warming[] = {30, 20, 10, 5, 4};
+  int path_calls = 0, baseline_calls = 0, timed_path = 0;
+  auto path = [&](bool timed) {
+    timed_path += timed;
+    return ++path_calls <= 5 ? warming[path_calls - 1] : 3.0;
+  };
+  auto baseline = [&] { return ++baseline_calls <= 5 ? warming[baseline_calls - 1] / 3 : 1.0; };
+  InterleaveOptions o;
+  o.min_pairs = 10;
+  o.min_seconds = 0.3;  // 100 frames of 3 ms
+  o.min_warmup = 2;
+  const InterleavedTiming t = time_interleaved(path, baseline, o);
+  EXPECT_EQ(t.path_ms.size(), 100u);
+  EXPECT_EQ(t.baseline_ms.size(), 100u);
+  EXPECT_EQ(timed_path, 100);
+  EXPECT_EQ(path_calls, 100 + 5 + 3);  // warm-up: five warming frames, then three that agree
+  EXPECT_DOUBLE_EQ(t.ratio.median, 3.0);
+  EXPECT_DOUBLE_EQ(t.ratio.low, 3.0);
+  EXPECT_DOUBLE_EQ(t.ratio.high, 3.0);
+  EXPECT_EQ(t.ratio.pairs, 100u);
+}
+
+}  // namespace
+}  // namespace lt
