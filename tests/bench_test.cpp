@@ -59,6 +59,11 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     EXPECT_GT(r.at_scene_size.median_ms, 0) << r.path;
     EXPECT_LE(r.at_scene_size.min_ms, r.at_scene_size.median_ms);
     EXPECT_GT(r.ratio_to_flat, 0);
+    // Interleaved pairs: at least --frames of them, the median inside its interval.
+    EXPECT_GE(r.ratio.pairs, static_cast<std::size_t>(o.frames)) << r.path;
+    EXPECT_LE(r.ratio.low, r.ratio.median) << r.path;
+    EXPECT_LE(r.ratio.median, r.ratio.high) << r.path;
+    EXPECT_EQ(r.ratio.median, r.ratio_to_flat) << r.path;
     if (r.path == "flat") {
       EXPECT_EQ(r.ratio_to_flat, 1.0);
       EXPECT_FALSE(r.error);
@@ -87,12 +92,21 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
   };
   const std::string md = slurp("report.md"), csv = slurp("report.csv");
   EXPECT_EQ(static_cast<size_t>(std::count(csv.begin(), csv.end(), '\n')), expected + 1);
+  // Scripts read the CSV by column: the old columns keep their order, new ones come last.
+  EXPECT_EQ(csv.rfind("scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,"
+                      "ratio_to_flat,",
+                      0),
+            0u);
+  EXPECT_NE(csv.find(",cost,ratio_low,ratio_high,ratio_pairs\n"), std::string::npos);
   for (size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& r = rows[i];
     EXPECT_NE(md.find("| quad | " + r.path + " | " + r.variant + " | "), std::string::npos)
         << r.path << " " << r.variant;
     EXPECT_NE(csv.find("quad," + r.path + "," + r.variant + ","), std::string::npos);
     EXPECT_EQ(j["rows"][i]["path"], r.path);
+    EXPECT_DOUBLE_EQ(j["rows"][i]["ratio_interval"]["low"].get<double>(), r.ratio.low);
+    EXPECT_DOUBLE_EQ(j["rows"][i]["ratio_interval"]["high"].get<double>(), r.ratio.high);
+    EXPECT_EQ(j["rows"][i]["ratio_interval"]["pairs"].get<std::size_t>(), r.ratio.pairs);
     for (const auto& [name, value] : r.stats.set_fields()) {
       EXPECT_DOUBLE_EQ(j["rows"][i]["stats"][name].get<double>(), value) << r.path << " " << name;
     }

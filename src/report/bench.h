@@ -23,6 +23,7 @@ struct BenchOptions {
   int frames = 10;  // >= 10 (metrics.md); at 1280x720, the least number of interleaved pairs
   int warmup = 2;   // at least; at 1280x720 warm-up goes on until the frame time settles
   double min_time_s = 0.5;  // at 1280x720, the least measuring time of each path (--min-time)
+  std::string llvmpipe_threads = "as the environment says";  // for the report (--lp-threads)
   int wide_width = 1280, wide_height = 720;
   bool quiet = false;
 };

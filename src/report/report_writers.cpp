@@ -65,26 +65,35 @@ std::string stats_note(const BenchRow& r) {
   return n;
 }
 
+// "1.82-1.95 (+-3.4%)", with *wide* when the interval is wider than +-10%.
+std::string interval_cell(const RatioEstimate& e) {
+  if (e.pairs == 0) return "-";
+  return fmt(e.low) + "-" + fmt(e.high) + " (+-" + fmt(100 * e.relative_half_width(), 1) + "%" +
+         (e.wide() ? ", *wide*" : "") + ")";
+}
+
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
-    << "Frames: median and min of " << o.frames << " after " << o.warmup
-    << " warm-up, each bounded by glFinish. `ratio` = median at " << o.wide_width << "x"
-    << o.wide_height
-    << " / `flat` median in the same session. Error: covered pixels against "
-       "the reference, in LSB (1/255).\n\n"
+    << "Frames, each bounded by glFinish: at the scene's size, median and min of " << o.frames
+    << " after " << o.warmup << " warm-up; at " << o.wide_width << "x" << o.wide_height
+    << ", each path in interleaved pairs with `flat` in the same session (at least " << o.frames
+    << " pairs and " << fmt(o.min_time_s) << " s of the path), after a warm-up that lasts until "
+    << "the frame time settles. `ratio` = median of the per-pair ratios; `95% interval` from "
+       "order statistics, marked *wide* beyond +-10%. llvmpipe threads: "
+    << o.llvmpipe_threads << ". Error: covered pixels against the reference, in LSB (1/255).\n\n"
     << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
     << o.wide_height
-    << ") median / min | ratio to flat | max LSB | mean LSB | p99 LSB | "
+    << ") median / min | ratio to flat | 95% interval | max LSB | mean LSB | p99 LSB | "
        "% > 1 LSB | cost | notes |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
     const std::string notes = stats_note(r);
     s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
       << fmt(r.at_scene_size.median_ms) << " / " << fmt(r.at_scene_size.min_ms) << " | "
       << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
-      << " | " << error_cell(r, true) << " | " << error_cell(r, false) << " | "
-      << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
+      << " | " << interval_cell(r.ratio) << " | " << error_cell(r, true) << " | "
+      << error_cell(r, false) << " | " << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
       << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | " << notes
       << " |\n";
   }
@@ -99,7 +108,7 @@ std::string csv(const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
        "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
-       "shading_mpixels_per_s,cost\n";
+       "shading_mpixels_per_s,cost,ratio_low,ratio_high,ratio_pairs\n";
   for (const BenchRow& r : rows) {
     s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
       << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
@@ -113,7 +122,8 @@ std::string csv(const std::vector<BenchRow>& rows) {
       s << ",,,,,,,";
     }
     if (r.shading_mpixels_per_s) s << *r.shading_mpixels_per_s;
-    s << ",\"" << r.cost << "\"\n";
+    s << ",\"" << r.cost << "\"," << r.ratio.low << "," << r.ratio.high << "," << r.ratio.pairs
+      << "\n";
   }
   return s.str();
 }
@@ -131,6 +141,8 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
   j["frames"] = o.frames;
   j["warmup"] = o.warmup;
   j["wide"] = {o.wide_width, o.wide_height};
+  j["min_time_s"] = o.min_time_s;
+  j["llvmpipe_threads"] = o.llvmpipe_threads;
   j["rows"] = nlohmann::json::array();
   auto finite = [](double v) -> nlohmann::json {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -144,6 +156,11 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                         {"ms_median_wide", r.at_wide.median_ms},
                         {"ms_min_wide", r.at_wide.min_ms},
                         {"ratio_to_flat", r.ratio_to_flat},
+                        {"ratio_interval",
+                         {{"low", r.ratio.low},
+                          {"high", r.ratio.high},
+                          {"pairs", r.ratio.pairs},
+                          {"wide", r.ratio.wide()}}},
                         {"image", r.image},
                         {"heatmap", r.heatmap},
                         {"stats", stats_json(r)},
