@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <new>
 #include <vector>
 
@@ -88,6 +89,15 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
     fs::remove(tmp, ec);  // its own code: `renamed` is the reason the user needs
     throw InputError(target.string(), "", "cannot write output: " + renamed.message());
   }
+}
+
+void write_text_file(const fs::path& target, const std::string& text) {
+  write_atomically(target, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw InputError(target.string(), "", "cannot write");
+  });
 }
 
 void ensure_not_an_input(const fs::path& output, const std::vector<fs::path>& inputs) {

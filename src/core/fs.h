@@ -21,6 +21,9 @@ namespace fs = std::filesystem;
 void write_atomically(const fs::path& target,
                       const std::function<void(const fs::path& tmp)>& write);
 
+// write_atomically of a text file (reports, XML, JSON). Throws InputError naming the target.
+void write_text_file(const fs::path& target, const std::string& text);
+
 // Every temporary's name holds this: ".out.png.ltrender-partial.1234.png" for out.png, pid 1234.
 inline constexpr const char* kPartialOutputTag = ".ltrender-partial.";
 
