@@ -9,9 +9,11 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/markup.h"
 #include "render/session.h"
 #include "report/bench.h"
 #include "report/contact_sheet.h"
+#include "report/label_placement.h"
 #include "report/report_page.h"
 
 namespace lt {
@@ -176,7 +178,9 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
     it->mean_sum += r.error->mean_lsb;
     ++it->n;
   }
-  const double W = 1000, H = 600, L = 70, R = 170, T = 40, B = 60;
+  // The list of numbered points beside the plot sets the height when it is the longer.
+  const double W = 1100, L = 70, R = 270, T = 40, B = 60;
+  const double H = std::max(600.0, T + 20 + 15.0 * static_cast<double>(points.size()) + B);
   const double y_floor = 0.1;
   double lx0 = 1e30, lx1 = -1e30, ymax = 1;
   for (const Point& p : points) {
@@ -234,24 +238,46 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   }
   s << "<text x='" << (L + W - R) / 2 - 40 << "' y='" << H - 15 << "'>ms per frame</text>\n"
     << "<text transform='translate(18," << H / 2 << ") rotate(-90)'>error (LSB)</text>\n";
+  // Each point is numbered; the numbers are placed clear of every marker and of each other
+  // (label_placement.h), and the list beside the plot names them. Hovering a point names it too
+  // (<title>, and data-label for the report page's tooltip).
+  const double dashed_label_w = 120, digit_w = 7, label_h = 12;
+  std::vector<Box> markers;
+  std::vector<LabelRequest> requests;
   for (const Point& p : points) {
+    const double x = X(p.log_ms_sum / p.n);
+    markers.push_back({x - 6, Y(p.worst_max) - 6, 12, 12});
+    markers.push_back({x - 5, Y(p.mean_sum / p.n) - 5, 10, 10});
+    const auto digits = static_cast<double>(std::to_string(requests.size() + 1).size());
+    requests.push_back({x, Y(p.worst_max), digits * digit_w + 2, label_h});
+  }
+  for (double v : {0.5, 2.0})
+    markers.push_back({W - R - 120, Y(v) - 14, dashed_label_w, label_h + 2});
+  const std::vector<Box> labels = place_labels(requests, markers, {L, T, W - L - R, H - T - B});
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
     const std::string& c = colour[p.path];
     const double x = X(p.log_ms_sum / p.n), mean = p.mean_sum / p.n;
-    const std::string title = "<title>" + p.path + " " + p.variant + ": " +
+    const std::string number = std::to_string(i + 1);
+    const std::string label = number + ": " + p.path + " " + p.variant + ": " +
                               fmt(std::pow(10.0, p.log_ms_sum / p.n)) + " ms, worst max " +
-                              fmt(p.worst_max) + ", average mean " + fmt(mean, 3) + " LSB</title>";
-    s << "<circle cx='" << x << "' cy='" << Y(p.worst_max) << "' r='5' fill='" << c << "'>" << title
-      << "</circle>\n"
+                              fmt(p.worst_max) + ", average mean " + fmt(mean, 3) + " LSB";
+    const Box& b = labels[i];
+    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
+    s << "<g data-label='" << markup_escape(label) << "'><title>" << markup_escape(label)
+      << "</title>";
+    // A leader line where the number had to move away from its point.
+    if (std::hypot(cx - x, cy - Y(p.worst_max)) > 16) {
+      s << "<line x1='" << x << "' y1='" << Y(p.worst_max) << "' x2='" << cx << "' y2='" << cy
+        << "' stroke='" << c << "' stroke-width='0.6'/>";
+    }
+    s << "<circle cx='" << x << "' cy='" << Y(p.worst_max) << "' r='5' fill='" << c << "'/>"
       << "<circle cx='" << x << "' cy='" << Y(mean) << "' r='4' fill='none' stroke='" << c
-      << "' stroke-width='1.5'>" << title << "</circle>\n"
-      << "<text x='" << x + 7 << "' y='" << Y(p.worst_max) + 4 << "' fill='" << c << "'>"
-      << p.variant << "</text>\n";
-  }
-  int i = 0;
-  for (const auto& [path, c] : colour) {
-    s << "<circle cx='" << W - R + 20 << "' cy='" << T + 20 + i * 20 << "' r='5' fill='" << c
-      << "'/><text x='" << W - R + 32 << "' y='" << T + 24 + i * 20 << "'>" << path << "</text>\n";
-    ++i;
+      << "' stroke-width='1.5'/>"
+      << "<text x='" << b.x + 1 << "' y='" << b.y + b.h - 2 << "' fill='" << c << "'>" << number
+      << "</text></g>\n";
+    s << "<text x='" << W - R + 16 << "' y='" << T + 14 + static_cast<double>(i) * 15 << "' fill='"
+      << c << "'>" << number << "  " << markup_escape(p.path + " " + p.variant) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
