@@ -109,7 +109,8 @@ std::string card_html(const PageCard& c, size_t order) {
         << c.width << "\" height=\"" << c.height << "\">";
     }
     s << "</div>\n<p class=\"showing\">showing: <span class=\"showing-what\">render</span>"
-      << (c.flip_image.empty() ? "" : " (click or f: " + esc(c.flip_label) + ")") << "</p>\n";
+      << (c.flip_image.empty() ? "" : " (click or f: flip with the " + esc(c.flip_label) + ")")
+      << "</p>\n";
   }
   s << "<dl class=\"figures\">";
   for (const auto& [label, value] : c.figures)
