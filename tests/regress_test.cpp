@@ -19,11 +19,6 @@
 namespace lt {
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Two quad scenes through three paths: six cases, each a real OSMesa render at 48x32.
 class Regress : public ::testing::Test {
  protected:
@@ -283,8 +278,8 @@ TEST_F(Regress, ThePageListsEveryCaseWithItsFigures) {
   o.json_file = dir / "r.json";
   const RegressRun run = run_regress(o);
   write_regress_outputs(o, run);
-  const std::string html = slurp(dir / "report" / "index.html");
-  const auto j = nlohmann::json::parse(slurp(dir / "r.json"));
+  const std::string html = test::read_file(dir / "report" / "index.html");
+  const auto j = nlohmann::json::parse(test::read_file(dir / "r.json"));
   ASSERT_EQ(j["cases"].size(), 6u);
   EXPECT_EQ(j["counts"]["fail"], 1);
   for (const auto& c : j["cases"]) {

@@ -19,11 +19,6 @@
 namespace lt {
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // The browser, or empty: Debian names it chromium.
 std::string find_chromium() {
   for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
@@ -55,7 +50,7 @@ class ReportPageInBrowser : public ::testing::Test {
     const auto run = test::run_ltrender(common + " -o " + (out / "report").string() + " --json " +
                                         (out / "regress.json").string());
     ASSERT_EQ(run.exit_code, 1) << run.out << run.err;
-    cases = nlohmann::json::parse(slurp(out / "regress.json"))["cases"];
+    cases = nlohmann::json::parse(test::read_file(out / "regress.json"))["cases"];
     page = "file://" + (out / "report" / "index.html").string();
   }
 
@@ -70,8 +65,8 @@ class ReportPageInBrowser : public ::testing::Test {
                             " --window-size=1280,1000 --virtual-time-budget=10000 " + what + " '" +
                             url + "' >" + stdout_file.string() + " 2>" +
                             (out / "chromium.err").string();
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd << "\n" << slurp(out / "chromium.err");
-    return slurp(stdout_file);
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd << "\n" << test::read_file(out / "chromium.err");
+    return test::read_file(stdout_file);
   }
 
   // One folder per test: ctest runs them side by side.

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 #include "metrics/heatmap.h"
 #include "render/session.h"
@@ -19,15 +20,9 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string figure(double v, int precision) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", precision, v);
-  return buf;
-}
-
 std::string figures_line(const ErrorStats& s, const Verdict& v) {
-  return "max " + figure(s.max_lsb, 2) + " LSB, mean " + figure(s.mean_lsb, 3) + " LSB, " +
-         std::to_string(v.failing_pixels) + " pixels (" + figure(v.failing_percent, 3) +
+  return "max " + fixed(s.max_lsb, 2) + " LSB, mean " + fixed(s.mean_lsb, 3) + " LSB, " +
+         std::to_string(v.failing_pixels) + " pixels (" + fixed(v.failing_percent, 3) +
          "%) over fail_lsb";
 }
 

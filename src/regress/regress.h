@@ -38,6 +38,10 @@ enum class CaseStatus {
   kUpdated,  // --update: the golden failed and is rewritten
   kKept,     // --update: the golden is within tolerance and left as it was
 };
+// Every status, failures first (the order the summary lists them in).
+inline constexpr CaseStatus kCaseStatuses[] = {
+    CaseStatus::kFail,    CaseStatus::kMissing, CaseStatus::kPass, CaseStatus::kSkipped,
+    CaseStatus::kCreated, CaseStatus::kUpdated, CaseStatus::kKept};
 const char* to_string(CaseStatus status);
 // kFail and kMissing: what makes the run exit 1.
 bool is_failure(CaseStatus status);

@@ -1,6 +1,7 @@
 // What a regress run leaves for machines and people: --json, --junit and the report page.
 #include <cstdio>
 
+#include "core/fixed.h"
 #include "core/fs.h"
 #include "regress/junit.h"
 #include "regress/regress.h"
@@ -10,12 +11,6 @@ namespace lt {
 
 namespace {
 
-std::string figure(double v, int precision, const char* unit = "") {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f%s", precision, v, unit);
-  return buf;
-}
-
 nlohmann::ordered_json run_json(const RegressOptions& o, const RegressRun& run) {
   nlohmann::ordered_json j;
   j["goldens"] = o.goldens.string();
@@ -23,9 +18,7 @@ nlohmann::ordered_json run_json(const RegressOptions& o, const RegressRun& run) 
   j["total_cases"] = run.total_cases;
   j["seconds"] = run.seconds;
   nlohmann::ordered_json counts;
-  for (CaseStatus s :
-       {CaseStatus::kPass, CaseStatus::kFail, CaseStatus::kMissing, CaseStatus::kSkipped,
-        CaseStatus::kCreated, CaseStatus::kUpdated, CaseStatus::kKept}) {
+  for (CaseStatus s : kCaseStatuses) {
     counts[to_string(s)] = run.count(s);
   }
   j["counts"] = counts;
@@ -63,16 +56,16 @@ PageCard case_card(const CaseResult& r) {
   card.height = r.height;
   if (r.figures) {
     card.error_lsb = r.figures->max_lsb;
-    card.figures = {{"max", figure(r.figures->max_lsb, 2, " LSB")},
-                    {"mean", figure(r.figures->mean_lsb, 3, " LSB")},
-                    {"p99", figure(r.figures->p99_lsb, 2, " LSB")},
+    card.figures = {{"max", fixed(r.figures->max_lsb, 2, " LSB")},
+                    {"mean", fixed(r.figures->mean_lsb, 3, " LSB")},
+                    {"p99", fixed(r.figures->p99_lsb, 2, " LSB")},
                     {"over fail_lsb", std::to_string(r.verdict.failing_pixels) + " px (" +
-                                          figure(r.verdict.failing_percent, 3, "%") + ")"},
-                    {"tolerance", figure(c.tolerance.fail_lsb, 2) + " LSB on " +
-                                      figure(c.tolerance.fail_percent, 2) + "%, none over " +
-                                      figure(c.tolerance.hard_fail_lsb, 2)}};
+                                          fixed(r.verdict.failing_percent, 3, "%") + ")"},
+                    {"tolerance", fixed(c.tolerance.fail_lsb, 2) + " LSB on " +
+                                      fixed(c.tolerance.fail_percent, 2) + "%, none over " +
+                                      fixed(c.tolerance.hard_fail_lsb, 2)}};
   }
-  card.figures.push_back({"time", figure(r.seconds, 3, " s")});
+  card.figures.push_back({"time", fixed(r.seconds, 3, " s")});
   for (const std::string& reason : r.verdict.reasons) card.notes.push_back(reason);
   if (!r.figures && !r.message.empty()) card.notes.push_back(r.message);
   return card;
@@ -85,14 +78,12 @@ std::string regress_summary(const RegressOptions& o, const RegressRun& run) {
                   " (shard " + run.shard.to_string() + " of " + std::to_string(run.total_cases) +
                   " cases): ";
   bool first = true;
-  for (CaseStatus st :
-       {CaseStatus::kFail, CaseStatus::kMissing, CaseStatus::kPass, CaseStatus::kSkipped,
-        CaseStatus::kCreated, CaseStatus::kUpdated, CaseStatus::kKept}) {
+  for (CaseStatus st : kCaseStatuses) {
     if (run.count(st) == 0) continue;
     s += (first ? "" : ", ") + std::to_string(run.count(st)) + " " + to_string(st);
     first = false;
   }
-  return s + " in " + figure(run.seconds, 1, " s");
+  return s + " in " + fixed(run.seconds, 1, " s");
 }
 
 void write_regress_outputs(const RegressOptions& o, const RegressRun& run) {
