@@ -159,6 +159,19 @@ TEST_F(Regress, BadSceneAmongGoodOnesWritesNothing) {
   }
 }
 
+TEST_F(Regress, AnOutputNeverOverwritesAnInputAndACaseRunsOnce) {
+  const std::string scene = test::read_file(dir / "quad_a.json");
+  const auto r =
+      test::run_ltrender("regress " + (dir / "quad_a.json").string() + " --goldens " +
+                         (dir / "goldens").string() + " --junit " + (dir / "quad_a.json").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("would overwrite an input"), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_file(dir / "quad_a.json"), scene);
+  RegressOptions o = options(true);
+  o.paths = "glsl,glsl:pow=exact,glsl:*";  // pow=exact three times, pow=exact:f32 once
+  EXPECT_EQ(run_regress(o).results.size(), 4u);
+}
+
 TEST_F(Regress, ShardsPartitionTheCases) {
   run_regress(options(true));
   std::set<std::string> all;

@@ -64,11 +64,12 @@ Plan make_plan(const RegressOptions& o) {
   for (const fs::path& f : plan.scene_files) plan.scenes.push_back(load_scene(f));
   const std::vector<PathRequest> requests = parse_path_list(o.paths);
   plan.cases = expand_cases(plan.scene_files, plan.scenes, requests);
+  // Every render's size before the first one: a scene too large to render is bad input, found
+  // before any golden is written.
+  const bool resized = o.width > 0 || o.height > 0;
   for (const Scene& s : plan.scenes) {
-    if (o.width > 0 || o.height > 0) {
-      check_image_size(o.width > 0 ? o.width : s.width, o.height > 0 ? o.height : s.height,
-                       "--width/--height", "");
-    }
+    check_image_size(o.width > 0 ? o.width : s.width, o.height > 0 ? o.height : s.height,
+                     resized ? "--width/--height" : s.file.string(), resized ? "" : "image");
   }
   std::vector<fs::path> inputs = plan.scene_files;
   for (const Scene& s : plan.scenes) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -92,6 +93,7 @@ std::vector<RegressCase> expand_cases(const std::vector<fs::path>& scene_files,
                                       const std::vector<PathRequest>& requests) {
   std::vector<RegressCase> cases;
   std::map<std::string, std::string> golden_owner;  // golden name -> case id
+  std::set<std::string> ids;
   for (size_t s = 0; s < scenes.size(); ++s) {
     for (const PathRequest& r : requests) {
       for (const std::string& variant : r.variants) {
@@ -104,9 +106,7 @@ std::vector<RegressCase> expand_cases(const std::vector<fs::path>& scene_files,
         if (r.path->refusal) c.skip_reason = r.path->refusal(scenes[s], variant);
         c.tolerance = regress_tolerance(scenes[s], *r.path);
         // The same case asked twice (glsl and glsl:pow=exact) runs once.
-        if (std::any_of(cases.begin(), cases.end(),
-                        [&](const RegressCase& o) { return o.id() == c.id(); }))
-          continue;
+        if (!ids.insert(c.id()).second) continue;
         const auto [it, fresh] = golden_owner.emplace(c.golden_name(), c.id());
         if (!fresh) {
           throw InputError(
