@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/ltrender
-mkdir -p out
+mkdir -p out out/regress
 # Local thickness for the demo scenes that read "thickness": "vertex" (issue 3): the same bake
 # anyone can rerun; it is deterministic for a seed, so the committed files come out unchanged.
 scripts/bake_demo_meshes.sh "$bin"
@@ -24,5 +24,10 @@ grep -E '^\| backlit_sphere_s[0-9] \| (combiners|gx) \| t=vertex \|' out/tessell
 # "Porting to the Wii").
 "$bin" export gx scenes/backlit_sphere.json -o out/backlit_sphere_gx.c
 "$bin" budget out/backlit_sphere_gx.c
+# The demo scenes as a studio's regression suite would run them: against ltrender's own goldens
+# (320x240), with the JUnit XML a CI reads and a report page of its own.
+"$bin" regress scenes --goldens tests/goldens --width 320 --height 240 --quiet \
+  --junit out/regress/junit.xml -o out/regress
 echo
 echo "demo: images and heatmaps in out/images/, chart in out/chart.svg, contact sheet out/contact.png"
+echo "demo: the report page: $PWD/out/index.html (regress against the goldens: $PWD/out/regress/index.html)"

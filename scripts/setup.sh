@@ -15,6 +15,8 @@ packages=(
   libembree-dev                              # ray casting for the thickness baker
   nlohmann-json3-dev libcli11-dev            # scene files, command line
   libgtest-dev libbenchmark-dev              # tests, micro-benchmarks
+  fonts-dejavu-core                          # the contact sheet's labels (DejaVu Sans)
+  chromium                                   # the report page's test in a real browser
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -91,6 +91,14 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     return std::string(std::istreambuf_iterator<char>(s), {});
   };
   const std::string md = slurp("report.md"), csv = slurp("report.csv");
+  // The report page has one card per row, each flipping with the scene's 8-bit reference.
+  const std::string html = slurp("index.html");
+  size_t cards = 0;
+  for (size_t p = 0; (p = html.find("<article class=\"card\"", p)) != std::string::npos; ++p)
+    ++cards;
+  EXPECT_EQ(cards, expected);
+  EXPECT_TRUE(fs::exists(o.out_dir / "images" / "quad__reference.png"));
+  EXPECT_NE(html.find("<figure class=\"chart\"><svg"), std::string::npos);
   EXPECT_EQ(static_cast<size_t>(std::count(csv.begin(), csv.end(), '\n')), expected + 1);
   // Scripts read the CSV by column: the old columns keep their order, new ones come last.
   EXPECT_EQ(csv.rfind("scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,"

@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -86,9 +85,8 @@ Action add_bench(CLI::App& app) {
       rows = run_bench(staged);
       write_bench_reports(staged, rows);
       if (before) {
-        write_atomically(staging / "compare.md", [&](const fs::path& tmp) {
-          std::ofstream(tmp) << comparison_markdown(*before, compare_bench(*before, rows));
-        });
+        write_text_file(staging / "compare.md",
+                        comparison_markdown(*before, compare_bench(*before, rows)));
       }
     });
     std::cout << "bench: " << rows.size() << " rows -> " << (o->out_dir / "report.md").string()

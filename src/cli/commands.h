@@ -18,5 +18,6 @@ Action add_bench(CLI::App& app);
 Action add_info(CLI::App& app);
 Action add_meshgen(CLI::App& app);
 Action add_export(CLI::App& app);
+Action add_regress(CLI::App& app);
 
 }  // namespace lt::cli

@@ -1,4 +1,4 @@
-// Program sources (legacy_shaders/, combiners/) embedded at build time by
+// Program sources (legacy_shaders/, combiners/) and the report page (src/report/page/) embedded at build time by
 // cmake/embed_sources.cmake, keyed by their path relative to the repository root.
 #pragma once
 

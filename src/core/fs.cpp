@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <new>
 #include <vector>
 
@@ -131,6 +132,15 @@ void write_directory_atomically(const fs::path& dir,
   }
   fs::remove_all(staging, ec);
   if (moved) throw InputError(dir.string(), "", "cannot write output: " + moved.message());
+}
+
+void write_text_file(const fs::path& target, const std::string& text) {
+  write_atomically(target, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw InputError(target.string(), "", "cannot write");
+  });
 }
 
 void ensure_not_an_input(const fs::path& output, const std::vector<fs::path>& inputs) {

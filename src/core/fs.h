@@ -30,6 +30,9 @@ void write_atomically(const fs::path& target,
 void write_directory_atomically(const fs::path& dir,
                                 const std::function<void(const fs::path& staging)>& write);
 
+// write_atomically of a text file (reports, XML, JSON). Throws InputError naming the target.
+void write_text_file(const fs::path& target, const std::string& text);
+
 // Every temporary's name holds this: ".out.png.ltrender-partial.1234.png" for out.png, pid 1234.
 inline constexpr const char* kPartialOutputTag = ".ltrender-partial.";
 

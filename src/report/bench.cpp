@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/file_name.h"
 #include "core/fs.h"
 #include "metrics/heatmap.h"
 #include "render/session.h"
@@ -57,14 +58,6 @@ std::string scene_name(const fs::path& p) {
   return p.stem().string();
 }
 
-std::string safe(const std::string& s) {
-  std::string r = s;
-  for (char& c : r) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
-  }
-  return r;
-}
-
 }  // namespace
 
 FrameTiming summarize_frames(std::vector<double> frame_ms) {
@@ -110,6 +103,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       ref->frame();
       ref_image = ref->result();
       write_image(o.out_dir / "images" / (sname + "__reference.exr"), ref_image);
+      // The same at 8 bits, for the report page (a browser shows no EXR): what each card flips to.
+      write_image(o.out_dir / "images" / (sname + "__reference.png"), ref_image);
       for (const PathInfo* p : paths) {
         for (const VariantInfo& v : p->variants) {
           // A variant that cannot be exact for this scene (gx t=texgen under perspective) is
@@ -129,8 +124,10 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           row.at_scene_size = time_frames(*path, o);
           row.cost = path->cost();
           const Image img = path->result();
-          const std::string base = sname + "__" + safe(p->name + "_" + v.name);
+          const std::string base = sname + "__" + file_name_safe(p->name + "_" + v.name);
           row.image = "images/" + base + ".png";
+          row.width = img.width;
+          row.height = img.height;
           write_image(o.out_dir / row.image, img);
           if (p->name != flat.name) {
             const TestEncoding enc =

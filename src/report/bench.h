@@ -42,6 +42,7 @@ struct BenchRow {
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
   std::string cost;                             // Path::cost(): instructions or stages
   std::string image, heatmap;                   // relative to out_dir
+  int width = 0, height = 0;                    // of the image
 };
 
 std::vector<BenchRow> run_bench(const BenchOptions& options);

@@ -1,8 +1,5 @@
 // The reports of `ltrender bench` (report.md, report.csv, report.json, chart.svg, contact.png,
 // index.html): writers only, from the rows run_bench measured (bench.cpp).
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -12,8 +9,12 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/markup.h"
 #include "render/session.h"
 #include "report/bench.h"
+#include "report/contact_sheet.h"
+#include "report/label_placement.h"
+#include "report/report_page.h"
 
 namespace lt {
 
@@ -24,14 +25,6 @@ std::string fmt(double v, int prec = 2) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(prec) << v;
   return s.str();
-}
-
-void write_text(const fs::path& p, const std::string& text) {
-  write_atomically(p, [&](const fs::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(p.string(), "", "cannot write");
-  });
 }
 
 std::string error_cell(const BenchRow& r, bool max) {
@@ -202,7 +195,9 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
     it->mean_sum += r.error->mean_lsb;
     ++it->n;
   }
-  const double W = 1000, H = 600, L = 70, R = 170, T = 40, B = 60;
+  // The list of numbered points beside the plot sets the height when it is the longer.
+  const double W = 1100, L = 70, R = 270, T = 40, B = 60;
+  const double H = std::max(600.0, T + 20 + 15.0 * static_cast<double>(points.size()) + B);
   const double y_floor = 0.1;
   double lx0 = 1e30, lx1 = -1e30, ymax = 1;
   for (const Point& p : points) {
@@ -260,104 +255,127 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   }
   s << "<text x='" << (L + W - R) / 2 - 40 << "' y='" << H - 15 << "'>ms per frame</text>\n"
     << "<text transform='translate(18," << H / 2 << ") rotate(-90)'>error (LSB)</text>\n";
+  // Each point is numbered; the numbers are placed clear of every marker and of each other
+  // (label_placement.h), and the list beside the plot names them. Hovering a point names it too
+  // (<title>, and data-label for the report page's tooltip).
+  const double dashed_label_w = 120, digit_w = 7, label_h = 12;
+  std::vector<Box> markers;
+  std::vector<LabelRequest> requests;
   for (const Point& p : points) {
+    const double x = X(p.log_ms_sum / p.n);
+    markers.push_back({x - 6, Y(p.worst_max) - 6, 12, 12});
+    markers.push_back({x - 5, Y(p.mean_sum / p.n) - 5, 10, 10});
+    const auto digits = static_cast<double>(std::to_string(requests.size() + 1).size());
+    requests.push_back({x, Y(p.worst_max), digits * digit_w + 2, label_h});
+  }
+  for (double v : {0.5, 2.0})
+    markers.push_back({W - R - 120, Y(v) - 14, dashed_label_w, label_h + 2});
+  const std::vector<Box> labels = place_labels(requests, markers, {L, T, W - L - R, H - T - B});
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
     const std::string& c = colour[p.path];
     const double x = X(p.log_ms_sum / p.n), mean = p.mean_sum / p.n;
-    const std::string title = "<title>" + p.path + " " + p.variant + ": " +
+    const std::string number = std::to_string(i + 1);
+    const std::string label = number + ": " + p.path + " " + p.variant + ": " +
                               fmt(std::pow(10.0, p.log_ms_sum / p.n)) + " ms, worst max " +
-                              fmt(p.worst_max) + ", average mean " + fmt(mean, 3) + " LSB</title>";
-    s << "<circle cx='" << x << "' cy='" << Y(p.worst_max) << "' r='5' fill='" << c << "'>" << title
-      << "</circle>\n"
+                              fmt(p.worst_max) + ", average mean " + fmt(mean, 3) + " LSB";
+    const Box& b = labels[i];
+    const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
+    s << "<g data-label='" << markup_escape(label) << "'><title>" << markup_escape(label)
+      << "</title>";
+    // A leader line where the number had to move away from its point.
+    if (std::hypot(cx - x, cy - Y(p.worst_max)) > 16) {
+      s << "<line x1='" << x << "' y1='" << Y(p.worst_max) << "' x2='" << cx << "' y2='" << cy
+        << "' stroke='" << c << "' stroke-width='0.6'/>";
+    }
+    s << "<circle cx='" << x << "' cy='" << Y(p.worst_max) << "' r='5' fill='" << c << "'/>"
       << "<circle cx='" << x << "' cy='" << Y(mean) << "' r='4' fill='none' stroke='" << c
-      << "' stroke-width='1.5'>" << title << "</circle>\n"
-      << "<text x='" << x + 7 << "' y='" << Y(p.worst_max) + 4 << "' fill='" << c << "'>"
-      << p.variant << "</text>\n";
-  }
-  int i = 0;
-  for (const auto& [path, c] : colour) {
-    s << "<circle cx='" << W - R + 20 << "' cy='" << T + 20 + i * 20 << "' r='5' fill='" << c
-      << "'/><text x='" << W - R + 32 << "' y='" << T + 24 + i * 20 << "'>" << path << "</text>\n";
-    ++i;
+      << "' stroke-width='1.5'/>"
+      << "<text x='" << b.x + 1 << "' y='" << b.y + b.h - 2 << "' fill='" << c << "'>" << number
+      << "</text></g>\n";
+    s << "<text x='" << W - R + 16 << "' y='" << T + 14 + static_cast<double>(i) * 15 << "' fill='"
+      << c << "'>" << number << "  " << markup_escape(p.path + " " + p.variant) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
 }
 
+// One row per scene: the reference, then each path's default variant with its heatmap (every
+// variant is in index.html; all of them here would make a sheet too wide to look at).
 void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
-  const int tw = 160, th = 120, pad = 4;
-  // One row per scene: the reference, then each path's default variant and its heatmap (every
-  // variant is in index.html; all of them here would make a sheet too wide to look at).
-  std::vector<std::pair<std::string, std::vector<std::string>>> grid;
+  ContactSheet sheet;
+  sheet.column_labels.push_back({path_with_role(PathRole::GroundTruth).name, "(float, clamped)"});
   for (const BenchRow& r : rows) {
-    if (grid.empty() || grid.back().first != r.scene) {
-      grid.push_back({r.scene, {"images/" + r.scene + "__reference.exr"}});
-    }
     const PathInfo& info = find_path(r.path);
     if (info.role == PathRole::GroundTruth || info.variants.front().name != r.variant) continue;
-    grid.back().second.push_back(r.image);
-    if (!r.heatmap.empty()) grid.back().second.push_back(r.heatmap);
+    const std::pair<std::string, std::string> column{r.path, r.variant};
+    if (std::find(sheet.column_labels.begin(), sheet.column_labels.end(), column) ==
+        sheet.column_labels.end())
+      sheet.column_labels.push_back(column);
   }
-  size_t cols = 0;
-  for (const auto& g : grid) cols = std::max(cols, g.second.size());
-  if (grid.empty()) return;
-  Image sheet(static_cast<int>(cols) * (tw + pad) + pad,
-              static_cast<int>(grid.size()) * (th + pad) + pad);
-  for (size_t i = 0; i < sheet.rgba.size(); ++i) sheet.rgba[i] = (i % 4 == 3) ? 1.0f : 1.0f;
-  for (size_t row = 0; row < grid.size(); ++row) {
-    for (size_t col = 0; col < grid[row].second.size(); ++col) {
-      const Image src = read_image(o.out_dir / grid[row].second[col]);
-      OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::FLOAT),
-                        const_cast<float*>(src.rgba.data()));
-      OIIO::ImageBuf small =
-          OIIO::ImageBufAlgo::fit(in, "", 0.0f, "letterbox", OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4));
-      std::vector<float> px(static_cast<size_t>(tw) * th * 4);
-      small.get_pixels(OIIO::ROI(0, tw, 0, th, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, px.data());
-      const int ox = pad + static_cast<int>(col) * (tw + pad);
-      const int oy = pad + static_cast<int>(row) * (th + pad);
-      for (int y = 0; y < th; ++y) {
-        for (int x = 0; x < tw; ++x) {
-          float* d = sheet.at(ox + x, oy + y);
-          const float* s = &px[(static_cast<size_t>(y) * tw + x) * 4];
-          d[0] = s[0], d[1] = s[1], d[2] = s[2], d[3] = 1;
-        }
-      }
+  for (const BenchRow& r : rows) {
+    if (sheet.row_labels.empty() || sheet.row_labels.back() != r.scene) {
+      sheet.row_labels.push_back(r.scene);
+      sheet.cells.emplace_back(sheet.column_labels.size());
+      sheet.cells.back()[0].image = o.out_dir / "images" / (r.scene + "__reference.exr");
     }
+    const auto column = std::find(sheet.column_labels.begin() + 1, sheet.column_labels.end(),
+                                  std::pair<std::string, std::string>{r.path, r.variant});
+    if (column == sheet.column_labels.end()) continue;
+    ContactCell& cell = sheet.cells.back()[column - sheet.column_labels.begin()];
+    cell.image = o.out_dir / r.image;
+    if (!r.heatmap.empty()) cell.heatmap = o.out_dir / r.heatmap;
   }
-  write_image(o.out_dir / "contact.png", sheet);
+  if (sheet.row_labels.empty()) return;
+  write_image(o.out_dir / "contact.png", draw_contact_sheet(sheet));
 }
 
-std::string html(const std::vector<BenchRow>& rows) {
-  std::ostringstream s;
-  s << "<!doctype html><meta charset='utf-8'><title>ltrender bench</title>"
-       "<style>body{font-family:sans-serif} td{vertical-align:top;font-size:12px}"
-       "img{width:240px;image-rendering:pixelated}</style><h1>ltrender bench</h1>"
-       "<p><img src='chart.svg' style='width:900px'></p><table>";
-  std::string scene;
+// The report page (report_page.h): one card per row, flipping with the scene's reference.
+ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+  ReportPage page;
+  page.title = "ltrender bench";
+  page.summary = std::to_string(rows.size()) +
+                 " renders; error against the reference over "
+                 "covered pixels in LSB of 8 bits; ms = median of " +
+                 std::to_string(o.frames) + " frames at " + std::to_string(o.wide_width) + "x" +
+                 std::to_string(o.wide_height);
+  page.chart_svg = svg_chart(o, rows);
   for (const BenchRow& r : rows) {
-    if (r.scene != scene) {
-      if (!scene.empty()) s << "</tr>";
-      scene = r.scene;
-      s << "<tr><th colspan='20' align='left'><h2>" << scene << "</h2></th></tr><tr>";
+    PageCard c;
+    c.scene = r.scene;
+    c.path = r.path;
+    c.variant = r.variant;
+    c.image = r.image;
+    if (find_path(r.path).role != PathRole::GroundTruth) {
+      c.flip_image = "images/" + r.scene + "__reference.png";
+      c.flip_label = "reference";
     }
-    s << "<td><b>" << r.path << "</b> " << r.variant << "<br>" << fmt(r.at_wide.median_ms) << " ms";
-    if (r.error)
-      s << ", max " << fmt(r.error->max_lsb) << " / mean " << fmt(r.error->mean_lsb, 3) << " LSB";
-    s << "<br><img src='" << r.image << "'>";
-    if (!r.heatmap.empty()) s << "<br><img src='" << r.heatmap << "'>";
-    s << "</td>";
+    c.heatmap = r.heatmap;
+    c.width = r.width;
+    c.height = r.height;
+    c.figures = {{"ms", fmt(r.at_wide.median_ms)}, {"ratio to flat", fmt(r.ratio_to_flat)}};
+    if (r.error) {
+      c.error_lsb = r.error->max_lsb;
+      c.figures.push_back({"max", fmt(r.error->max_lsb) + " LSB"});
+      c.figures.push_back({"mean", fmt(r.error->mean_lsb, 3) + " LSB"});
+      c.figures.push_back({"p99", fmt(r.error->p99_lsb) + " LSB"});
+      c.figures.push_back({"% > 1 LSB", fmt(r.error->percent_over_1_lsb, 3)});
+    }
+    if (!r.cost.empty()) c.figures.push_back({"cost", r.cost});
+    if (const std::string notes = stats_note(r); !notes.empty()) c.notes.push_back(notes);
+    page.cards.push_back(std::move(c));
   }
-  s << "</tr></table>";
-  return s.str();
+  return page;
 }
 
 }  // namespace
 
 void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& rows) {
-  write_text(o.out_dir / "report.md", markdown(o, rows));
-  write_text(o.out_dir / "report.csv", csv(rows));
-  write_text(o.out_dir / "report.json", json_rows(o, rows).dump(2) + "\n");
-  write_text(o.out_dir / "chart.svg", svg_chart(o, rows));
-  write_text(o.out_dir / "index.html", html(rows));
+  write_text_file(o.out_dir / "report.md", markdown(o, rows));
+  write_text_file(o.out_dir / "report.csv", csv(rows));
+  write_text_file(o.out_dir / "report.json", json_rows(o, rows).dump(2) + "\n");
+  write_text_file(o.out_dir / "chart.svg", svg_chart(o, rows));
+  write_report_page(o.out_dir, bench_page(o, rows));
   write_contact_sheet(o, rows);
 }
 

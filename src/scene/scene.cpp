@@ -199,6 +199,21 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, s
   }
 }
 
+// One tolerance of the "regress" block: idiff's thresholds, in LSB (255 is the largest error
+// there is) and percent of pixels.
+ToleranceOverride read_tolerance_override(ObjectReader& r) {
+  ToleranceOverride t;
+  if (r.has("fail_lsb")) t.fail_lsb = r.number("fail_lsb", {}, 0, 255);
+  if (r.has("fail_percent")) t.fail_percent = r.number("fail_percent", {}, 0, 100);
+  if (r.has("hard_fail_lsb")) t.hard_fail_lsb = r.number("hard_fail_lsb", {}, 0, 255);
+  if (r.has("region")) {
+    t.region = r.string("region");
+    if (t.region != "covered" && t.region != "image")
+      r.fail(r.key_path("region"), "must be \"covered\" or \"image\"");
+  }
+  return t;
+}
+
 }  // namespace
 
 glm::dmat4 Transform::matrix() const {
@@ -419,6 +434,20 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       o.finish();
       scene.objects.push_back(std::move(obj));
     }
+  }
+  if (top.has("regress")) {
+    ObjectReader r = top.object("regress");
+    scene.regress.every_path = read_tolerance_override(r);
+    if (r.has("paths")) {
+      const json& paths = r.get("paths");
+      if (!paths.is_object()) r.fail("regress.paths", "expected an object of path names");
+      for (auto it = paths.begin(); it != paths.end(); ++it) {
+        ObjectReader p(it.value(), "regress.paths." + it.key(), file);
+        scene.regress.per_path[it.key()] = read_tolerance_override(p);
+        p.finish();
+      }
+    }
+    r.finish();
   }
   top.finish();
 

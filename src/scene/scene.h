@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <glm/glm.hpp>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,6 +70,18 @@ struct SceneObject {
   TriangleMesh mesh;  // world space (transform applied in double, normals renormalised)
 };
 
+// The optional "regress" block (README, "Regression renders"): `ltrender regress`'s thresholds
+// for this scene, over the path's default; an unset field keeps the default. The names under
+// "paths" are checked by regress, which knows the paths (the scene does not).
+struct ToleranceOverride {
+  std::optional<double> fail_lsb, fail_percent, hard_fail_lsb;
+  std::optional<std::string> region;  // "covered" or "image"
+};
+struct RegressBlock {
+  ToleranceOverride every_path;
+  std::map<std::string, ToleranceOverride> per_path;
+};
+
 struct Scene {
   std::filesystem::path file;
   int width = 640, height = 480;
@@ -78,6 +91,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Light> lights;
   std::vector<SceneObject> objects;
+  RegressBlock regress;
 };
 
 // Parses, validates and loads every mesh. Throws InputError naming the file and the key

@@ -1,0 +1,82 @@
+#include "regress/junit.h"
+
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "core/markup.h"
+
+namespace lt {
+
+namespace {
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", s);
+  return buf;
+}
+
+struct Counts {
+  size_t tests = 0, failures = 0, skipped = 0;
+  double seconds = 0;
+  void add(const CaseResult& r) {
+    ++tests;
+    failures += is_failure(r.status);
+    skipped += r.status == CaseStatus::kSkipped;
+    seconds += r.seconds;
+  }
+  std::string attributes() const {
+    return "tests=\"" + std::to_string(tests) + "\" failures=\"" + std::to_string(failures) +
+           "\" errors=\"0\" skipped=\"" + std::to_string(skipped) + "\" time=\"" +
+           lt::seconds(seconds) + "\"";
+  }
+};
+
+void write_testcase(std::ostringstream& x, const CaseResult& r) {
+  const RegressCase& c = r.regress_case;
+  x << "    <testcase classname=\"regress." << markup_escape(c.scene) << "\" name=\""
+    << markup_escape(c.path->name + ":" + c.variant) << "\" time=\"" << seconds(r.seconds) << "\"";
+  if (!is_failure(r.status) && r.status != CaseStatus::kSkipped) {
+    x << "/>\n";
+    return;
+  }
+  x << ">\n";
+  if (r.status == CaseStatus::kSkipped) {
+    x << "      <skipped message=\"" << markup_escape(r.message) << "\"/>\n";
+  } else {
+    x << "      <failure type=\""
+      << (r.status == CaseStatus::kMissing ? "missing-golden" : "regress") << "\" message=\""
+      << markup_escape(r.message) << "\">"
+      << markup_escape("golden: " + r.golden.string() + "\n" + r.details) << "</failure>\n";
+  }
+  x << "    </testcase>\n";
+}
+
+}  // namespace
+
+std::string junit_xml(const RegressRun& run) {
+  Counts all;
+  std::map<std::string, Counts> per_scene;
+  std::vector<std::string> scene_order;
+  for (const CaseResult& r : run.results) {
+    all.add(r);
+    if (!per_scene.count(r.regress_case.scene)) scene_order.push_back(r.regress_case.scene);
+    per_scene[r.regress_case.scene].add(r);
+  }
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+    << "<testsuites name=\"ltrender regress (shard " << run.shard.to_string() << ")\" "
+    << all.attributes() << ">\n";
+  for (const std::string& scene : scene_order) {
+    x << "  <testsuite name=\"" << markup_escape(scene) << "\" " << per_scene[scene].attributes()
+      << ">\n";
+    for (const CaseResult& r : run.results) {
+      if (r.regress_case.scene == scene) write_testcase(x, r);
+    }
+    x << "  </testsuite>\n";
+  }
+  x << "</testsuites>\n";
+  return x.str();
+}
+
+}  // namespace lt

@@ -1,0 +1,87 @@
+// `ltrender regress`: offscreen regression renders of a studio's own scenes against goldens.
+// Every scene x path x variant is rendered, compared with its golden by the metrics library
+// (metrics/compare.h: the figures, then an idiff-style verdict against the case's tolerance),
+// and reported as one line each, and optionally as JUnit XML, JSON and the report page.
+// `--update` writes the goldens that are missing or fail. ltrender's own golden test
+// (tests/golden_test.cpp) and scripts/update_goldens.sh run through here.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "metrics/compare.h"
+#include "regress/regress_case.h"
+#include "regress/shard.h"
+
+namespace lt {
+
+struct RegressOptions {
+  std::vector<std::filesystem::path> inputs;  // scene files and folders of scenes
+  std::filesystem::path goldens;
+  std::string paths;  // the --paths list (regress_case.h); empty: every path but flat
+  bool update = false;
+  Shard shard;
+  int width = 0, height = 0;  // > 0: render at this size instead of the scene's
+  std::filesystem::path junit_file, json_file, report_dir;  // empty: not written
+  bool quiet = false;                                       // no line per passing case
+};
+
+enum class CaseStatus {
+  kPass,
+  kFail,     // over tolerance, or a golden of another size
+  kMissing,  // no golden: the message holds the command that creates it
+  kSkipped,  // the variant cannot be exact for this scene
+  kCreated,  // --update: the golden was missing and is written
+  kUpdated,  // --update: the golden failed and is rewritten
+  kKept,     // --update: the golden is within tolerance and left as it was
+};
+// Every status, failures first (the order the summary lists them in).
+inline constexpr CaseStatus kCaseStatuses[] = {
+    CaseStatus::kFail,    CaseStatus::kMissing, CaseStatus::kPass, CaseStatus::kSkipped,
+    CaseStatus::kCreated, CaseStatus::kUpdated, CaseStatus::kKept};
+const char* to_string(CaseStatus status);
+// kFail and kMissing: what makes the run exit 1.
+bool is_failure(CaseStatus status);
+
+struct CaseResult {
+  RegressCase regress_case;
+  CaseStatus status = CaseStatus::kPass;
+  std::filesystem::path golden;       // the golden file of the case
+  std::optional<ErrorStats> figures;  // the region the tolerance judges; none without a golden
+  Verdict verdict;
+  nlohmann::ordered_json comparison_json;  // metrics' to_json; null without a comparison
+  std::string message;  // one line: the figures, the reasons, or the command to run
+  std::string details;  // metrics' to_table; empty without a comparison
+  double seconds = 0;   // render and compare
+  int width = 0, height = 0;
+  // Relative to the report dir, written only with one: render, golden copy, heatmap.
+  std::string image, golden_image, heatmap;
+};
+
+struct RegressRun {
+  std::vector<CaseResult> results;  // this shard's cases, in list order
+  size_t total_cases = 0;           // over every shard
+  Shard shard;
+  double seconds = 0;
+  size_t count(CaseStatus status) const;
+  bool failed() const;
+};
+
+// Reads and checks every input first: a bad scene, path list or output path throws InputError
+// before anything is rendered or written. Prints one line per case (to stderr) unless quiet.
+RegressRun run_regress(const RegressOptions& options);
+
+// --junit, --json and the report page (-o), each written atomically; what the options name.
+void write_regress_outputs(const RegressOptions& options, const RegressRun& run);
+
+// One line: how many cases passed, failed, ... and how long the run took.
+std::string regress_summary(const RegressOptions& options, const RegressRun& run);
+
+// The command that creates or refreshes one case's golden.
+std::string update_command(const RegressOptions& options, const RegressCase& regress_case,
+                           const std::filesystem::path& scene_file);
+
+}  // namespace lt
