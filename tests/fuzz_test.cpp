@@ -56,11 +56,6 @@ struct Seed {
   std::string name, extension, bytes;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Scene seeds name their meshes relative to the scene's folder; the mutated copy lives in a
 // temporary folder, so the names become absolute first.
 std::string with_absolute_meshes(const std::string& text, const fs::path& scene_dir) {
@@ -88,7 +83,7 @@ std::vector<Seed> seeds_of(Kind kind, const fs::path& scratch) {
     }
     std::sort(files.begin(), files.end());
     for (const auto& f : files) {
-      std::string bytes = slurp(f);
+      std::string bytes = test::read_file(f);
       if (kind == Kind::Scene) bytes = with_absolute_meshes(bytes, f.parent_path());
       seeds.push_back({f.filename().string(), f.extension().string(), bytes});
     }
@@ -109,7 +104,7 @@ std::vector<Seed> seeds_of(Kind kind, const fs::path& scratch) {
       break;
     case Kind::Image: {
       for (const char* g : {"backlit_sphere__glsl.png", "coloured_cubes__gx.png"})
-        seeds.push_back({g, ".png", slurp(src / "tests" / "goldens" / g)});
+        seeds.push_back({g, ".png", test::read_file(src / "tests" / "goldens" / g)});
       // A float image as the reference writes them.
       Image img;
       img.width = 12;
@@ -119,7 +114,7 @@ std::vector<Seed> seeds_of(Kind kind, const fs::path& scratch) {
       for (const char* ext : {".exr"}) {
         const fs::path p = scratch / (std::string("seed") + ext);
         write_image(p, img);
-        seeds.push_back({p.filename().string(), ext, slurp(p)});
+        seeds.push_back({p.filename().string(), ext, test::read_file(p)});
       }
       break;
     }
@@ -130,7 +125,7 @@ std::vector<Seed> seeds_of(Kind kind, const fs::path& scratch) {
           test::run_ltrender("export gx " + (src / "scenes" / "coloured_cubes.json").string() +
                              " -o " + exported.string());
       EXPECT_EQ(r.exit_code, 0) << r.err;
-      seeds.push_back({"seed_gx.c", ".c", slurp(exported)});
+      seeds.push_back({"seed_gx.c", ".c", test::read_file(exported)});
       break;
     }
   }

@@ -54,11 +54,6 @@ inline void write_file(const fs::path& p, const std::string& text) {
   out << text;
 }
 
-inline std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 struct RunResult {
   int exit_code;
   std::string out, err;
