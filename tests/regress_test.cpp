@@ -63,6 +63,17 @@ TEST_F(Regress, PassesAgainstTheGoldensItWrote) {
       " --goldens " + (dir / "goldens").string() + " --paths reference,glsl,combiners");
   EXPECT_EQ(cli.exit_code, 0) << cli.out << cli.err;
   EXPECT_NE(cli.out.find("6 pass"), std::string::npos) << cli.out;
+
+  // The JUnit and JSON files may go into the report directory -o creates.
+  const fs::path report = dir / "new_report";
+  const auto into_report = test::run_ltrender(
+      "regress " + (dir / "quad_a.json").string() + " --goldens " + (dir / "goldens").string() +
+      " --paths reference -o " + report.string() + " --junit " + (report / "junit.xml").string() +
+      " --json " + (report / "regress.json").string());
+  EXPECT_EQ(into_report.exit_code, 0) << into_report.err;
+  EXPECT_TRUE(fs::exists(report / "junit.xml"));
+  EXPECT_TRUE(fs::exists(report / "regress.json"));
+  EXPECT_TRUE(fs::exists(report / "index.html"));
 }
 
 TEST_F(Regress, OnePixelOverTheHardLimitFails) {

@@ -27,12 +27,16 @@ std::string figures_line(const ErrorStats& s, const Verdict& v) {
 }
 
 // A directory every output needs before any work: its parent must exist (as for every output
-// of ltrender), and an output never names an input.
-void check_output_file(const fs::path& file, const std::vector<fs::path>& inputs) {
+// of ltrender) or be the report directory that -o creates (`-o out --junit out/junit.xml`), and
+// an output never names an input.
+void check_output_file(const fs::path& file, const std::vector<fs::path>& inputs,
+                       const fs::path& report_dir) {
   if (file.empty()) return;
   std::error_code ec;
   const fs::path dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-  if (!fs::is_directory(dir, ec))
+  const bool in_report_dir =
+      !report_dir.empty() && dir.lexically_normal() == report_dir.lexically_normal();
+  if (!in_report_dir && !fs::is_directory(dir, ec))
     throw InputError(file.string(), "", "its directory does not exist");
   ensure_not_an_input(file, inputs);
 }
@@ -75,8 +79,8 @@ Plan make_plan(const RegressOptions& o) {
   for (const Scene& s : plan.scenes) {
     for (const SceneObject& obj : s.objects) inputs.push_back(obj.mesh_path);
   }
-  check_output_file(o.junit_file, inputs);
-  check_output_file(o.json_file, inputs);
+  check_output_file(o.junit_file, inputs, o.report_dir);
+  check_output_file(o.json_file, inputs, o.report_dir);
   if (o.goldens.empty()) throw InputError("--goldens", "", "a folder of goldens is required");
   std::error_code ec;
   if (fs::exists(o.goldens, ec) && !fs::is_directory(o.goldens, ec))
