@@ -1,10 +1,15 @@
 // Counts what an ARB_vertex_program / ARB_fragment_program uses, as the specs define the limits:
 // ALU and TEX instructions, temporaries, parameters, attributes and (fragment programs) texture
-// indirections by the algorithm of ARB_fragment_program issue 24. Works on the program text, so
-// it needs no GL context and checks any program, generated or hand-written.
+// indirections by the algorithm of ARB_fragment_program issue 24. Works on the program text
+// (parsed by arb_text_parser.h), so it needs no GL context and checks any program, generated or
+// hand-written.
 #pragma once
 
 #include <string>
+
+namespace lt::arbfp::text {
+struct Program;
+}
 
 namespace lt::budget {
 
@@ -20,12 +25,20 @@ struct ProgramCounts {
                          // program.env/local/state bindings used directly in instructions
   int attributes = 0;    // distinct fragment.* / vertex.* inputs read
   int indirections = 1;  // texture indirections (fragment; 1 for a vertex program)
+  int address_registers = 0;        // ADDRESS declarations (vertex programs)
   bool position_invariant = false;  // OPTION ARB_position_invariant (the driver adds 4 DP4)
+  // The slots Mesa's parameter layout keeps (prog_parameter_layout.c): only referenced ones, a
+  // relatively addressed array whole, equal constants merged, scalar literals packed four to a
+  // slot; what GL_PROGRAM_NATIVE_PARAMETERS_ARB reports. -1 where not computed (the IR counter).
+  int referenced_parameters = -1;
 
   int instructions() const { return alu + tex; }
 };
 
-// Throws std::invalid_argument naming the statement it cannot read.
+// Throws text::SyntaxError (a std::invalid_argument) at the first line and column that is not a
+// valid program.
 ProgramCounts count_program(const std::string& source);
+// The same counts of an already parsed program.
+ProgramCounts count_parsed(const arbfp::text::Program& program);
 
 }  // namespace lt::budget

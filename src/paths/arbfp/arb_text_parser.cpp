@@ -1,0 +1,665 @@
+#include "paths/arbfp/arb_text_parser.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+#include "paths/arbfp/arb_text_bindings.h"
+#include "paths/arbfp/arb_text_cursor.h"
+
+namespace lt::arbfp::text {
+
+bool Program::has_option(const std::string& name) const {
+  return std::find(options.begin(), options.end(), name) != options.end();
+}
+
+namespace {
+
+// How an opcode reads its operands (the instruction tables of ARB_vertex_program 2.14.5 and
+// ARB_fragment_program 3.11.5).
+enum class Form {
+  Vector,   // vector sources: ABS ADD CMP DP3 ... XPD
+  Scalar,   // scalar sources (a one-component swizzle): COS EX2 LG2 POW RCP RSQ SCS SIN, EXP LOG
+  Swizzle,  // SWZ: a source register and an extended swizzle
+  Texture,  // TEX TXP TXB: a vector source, texture[n], a target
+  Kill,     // KIL: one vector source, no destination
+  Address,  // ARL: the address register, a scalar source
+};
+
+struct OpcodeInfo {
+  const char* name;
+  Form form;
+  int sources;
+  bool vertex, fragment;
+};
+
+const OpcodeInfo kOpcodes[] = {
+    {"ABS", Form::Vector, 1, true, true},   {"ADD", Form::Vector, 2, true, true},
+    {"ARL", Form::Address, 1, true, false}, {"CMP", Form::Vector, 3, false, true},
+    {"COS", Form::Scalar, 1, false, true},  {"DP3", Form::Vector, 2, true, true},
+    {"DP4", Form::Vector, 2, true, true},   {"DPH", Form::Vector, 2, true, true},
+    {"DST", Form::Vector, 2, true, true},   {"EX2", Form::Scalar, 1, true, true},
+    {"EXP", Form::Scalar, 1, true, false},  {"FLR", Form::Vector, 1, true, true},
+    {"FRC", Form::Vector, 1, true, true},   {"KIL", Form::Kill, 1, false, true},
+    {"LG2", Form::Scalar, 1, true, true},   {"LIT", Form::Vector, 1, true, true},
+    {"LOG", Form::Scalar, 1, true, false},  {"LRP", Form::Vector, 3, false, true},
+    {"MAD", Form::Vector, 3, true, true},   {"MAX", Form::Vector, 2, true, true},
+    {"MIN", Form::Vector, 2, true, true},   {"MOV", Form::Vector, 1, true, true},
+    {"MUL", Form::Vector, 2, true, true},   {"POW", Form::Scalar, 2, true, true},
+    {"RCP", Form::Scalar, 1, true, true},   {"RSQ", Form::Scalar, 1, true, true},
+    {"SCS", Form::Scalar, 1, false, true},  {"SGE", Form::Vector, 2, true, true},
+    {"SIN", Form::Scalar, 1, false, true},  {"SLT", Form::Vector, 2, true, true},
+    {"SUB", Form::Vector, 2, true, true},   {"SWZ", Form::Swizzle, 1, true, true},
+    {"TEX", Form::Texture, 1, false, true}, {"TXB", Form::Texture, 1, false, true},
+    {"TXP", Form::Texture, 1, false, true}, {"XPD", Form::Vector, 2, true, true},
+};
+
+const OpcodeInfo* find_opcode(const std::string& name) {
+  for (const OpcodeInfo& o : kOpcodes) {
+    if (name == o.name) return &o;
+  }
+  return nullptr;
+}
+
+// Names the grammar reserves: a program cannot declare them.
+bool reserved(const std::string& n) {
+  static const std::set<std::string> words = {"ATTRIB", "PARAM",   "TEMP",   "ADDRESS",  "OUTPUT",
+                                              "ALIAS",  "OPTION",  "END",    "fragment", "vertex",
+                                              "state",  "program", "result", "texture"};
+  if (words.count(n)) return true;
+  const std::string base =
+      n.size() > 4 && n.compare(n.size() - 4, 4, "_SAT") == 0 ? n.substr(0, n.size() - 4) : n;
+  return find_opcode(base) != nullptr;
+}
+
+const char* const kFragmentOptions[] = {"ARB_precision_hint_fastest",
+                                        "ARB_precision_hint_nicest",
+                                        "ARB_fog_exp",
+                                        "ARB_fog_exp2",
+                                        "ARB_fog_linear",
+                                        "ARB_fragment_program_shadow",
+                                        "ARB_draw_buffers"};
+const char* const kVertexOptions[] = {"ARB_position_invariant"};
+
+// Generic vertex attributes that alias a named one (ARB_vertex_program table X.2.1): a program
+// may not read both (Mesa: "illegal use of generic attribute and name attribute").
+std::string named_alias_of_generic(const std::string& binding) {
+  static const std::map<std::string, std::string> alias = {
+      {"vertex.attrib[0]", "vertex.position"},      {"vertex.attrib[2]", "vertex.normal"},
+      {"vertex.attrib[3]", "vertex.color.primary"}, {"vertex.attrib[4]", "vertex.color.secondary"},
+      {"vertex.attrib[5]", "vertex.fogcoord"},      {"vertex.attrib[8]", "vertex.texcoord[0]"},
+      {"vertex.attrib[9]", "vertex.texcoord[1]"},   {"vertex.attrib[10]", "vertex.texcoord[2]"},
+      {"vertex.attrib[11]", "vertex.texcoord[3]"},  {"vertex.attrib[12]", "vertex.texcoord[4]"},
+      {"vertex.attrib[13]", "vertex.texcoord[5]"},  {"vertex.attrib[14]", "vertex.texcoord[6]"},
+      {"vertex.attrib[15]", "vertex.texcoord[7]"}};
+  const auto it = alias.find(binding);
+  return it == alias.end() ? "" : it->second;
+}
+
+bool valid_components(const std::string& s, const std::string& set) {
+  return std::all_of(s.begin(), s.end(),
+                     [&](char ch) { return set.find(ch) != std::string::npos; });
+}
+
+class Parser {
+ public:
+  Parser(const std::string& source, const Limits& limits) : c_(tokenize(source)), limits_(limits) {}
+
+  Program run() {
+    header();
+    while (c_.peek().is("OPTION")) option();
+    while (!c_.peek().is("END")) {
+      if (c_.peek().kind == TokenKind::End) c_.expected("an instruction, a declaration or END");
+      statement();
+      c_.expect(";");
+    }
+    c_.take();
+    if (c_.peek().kind != TokenKind::End) c_.expected("nothing after END");
+    return std::move(p_);
+  }
+
+ private:
+  struct Symbol {
+    RegFile file;
+    int index = -1;
+    std::string binding;
+    Position at;
+  };
+
+  bool vertex() const { return p_.kind == ProgramKind::Vertex; }
+
+  void header() {
+    const Token& t = c_.peek();
+    if (t.is("!!ARBfp1.0")) {
+      p_.kind = ProgramKind::Fragment;
+    } else if (t.is("!!ARBvp1.0")) {
+      p_.kind = ProgramKind::Vertex;
+    } else {
+      c_.expected("the header !!ARBvp1.0 or !!ARBfp1.0 at the start of the program");
+    }
+    p_.header = c_.take().text;
+  }
+
+  void option() {
+    c_.take();
+    const Token& t = c_.expect_name("an option name");
+    bool known = false;
+    if (vertex()) {
+      for (const char* o : kVertexOptions) known |= t.text == o;
+    } else {
+      for (const char* o : kFragmentOptions) known |= t.text == o;
+    }
+    if (!known) {
+      Cursor::fail_at(t.at, std::string("expected an option of ") +
+                                (vertex() ? "ARB_vertex_program (ARB_position_invariant)"
+                                          : "ARB_fragment_program (ARB_precision_hint_fastest/"
+                                            "nicest, ARB_fog_exp/exp2/linear, "
+                                            "ARB_fragment_program_shadow, ARB_draw_buffers)") +
+                                ", found '" + t.text + "'");
+    }
+    // ARB_fragment_program 3.11.4.1-2: the two precision hints exclude each other, and so do the
+    // three fog options.
+    auto family = [](const std::string& o) {
+      if (o.rfind("ARB_precision_hint_", 0) == 0) return std::string("ARB_precision_hint_*");
+      if (o.rfind("ARB_fog_", 0) == 0) return std::string("ARB_fog_*");
+      return o;
+    };
+    for (const std::string& o : p_.options) {
+      if (family(o) == family(t.text)) {
+        Cursor::fail_at(t.at, "expected at most one " + family(t.text) + " option (" + o +
+                                  " was given before)");
+      }
+    }
+    p_.options.push_back(t.text);
+    c_.expect(";");
+  }
+
+  // ---- declarations ------------------------------------------------------------------------
+
+  const Token& new_name() {
+    const Token& t = c_.peek();
+    if (t.kind != TokenKind::Name || reserved(t.text)) c_.expected("a new name");
+    const auto it = names_.find(t.text);
+    if (it != names_.end()) {
+      c_.fail("expected a new name: '" + t.text + "' is already declared at line " +
+              std::to_string(it->second.at.line) + ", column " +
+              std::to_string(it->second.at.column));
+    }
+    return c_.take();
+  }
+
+  void declare(const Token& name, RegFile file, int index, const std::string& binding) {
+    names_[name.text] = Symbol{file, index, binding, name.at};
+  }
+  void declare(const Token& name, const Symbol& alias_of) {
+    declare(name, alias_of.file, alias_of.index, alias_of.binding);
+  }
+
+  void statement() {
+    const Token& t = c_.peek();
+    if (t.is("OPTION")) c_.fail("expected an instruction or a declaration: OPTION must come first");
+    if (t.is("TEMP") || t.is("ADDRESS")) return register_list();
+    if (t.is("ATTRIB")) {
+      c_.take();
+      const Token& n = new_name();
+      c_.expect("=");
+      if (!starts_attrib_binding(c_.peek()))
+        c_.expected(vertex() ? "a vertex.* input" : "a fragment.* input");
+      declare(n, RegFile::Attrib, -1, attrib_binding());
+      return;
+    }
+    if (t.is("OUTPUT")) {
+      c_.take();
+      const Token& n = new_name();
+      c_.expect("=");
+      if (!c_.peek().is("result")) c_.expected("a result.* output");
+      declare(n, RegFile::Output, -1, result_binding());
+      return;
+    }
+    if (t.is("ALIAS")) {
+      c_.take();
+      const Token& n = new_name();
+      c_.expect("=");
+      const Token& target = c_.expect_name("a declared name");
+      const auto it = names_.find(target.text);
+      if (it == names_.end()) {
+        Cursor::fail_at(target.at, "expected a declared name, found '" + target.text + "'");
+      }
+      declare(n, it->second);
+      return;
+    }
+    if (t.is("PARAM")) return param();
+    instruction();
+  }
+
+  void register_list() {
+    const Token& kw = c_.take();
+    const bool address = kw.is("ADDRESS");
+    if (address && !vertex()) {
+      Cursor::fail_at(kw.at,
+                      "expected an instruction or a declaration of fragment programs "
+                      "(ADDRESS is ARB_vertex_program's)");
+    }
+    do {
+      const Token& n = new_name();
+      auto& list = address ? p_.addresses : p_.temps;
+      declare(n, address ? RegFile::Address : RegFile::Temp, static_cast<int>(list.size()), "");
+      list.push_back(n.text);
+    } while (c_.accept(","));
+  }
+
+  float signed_number() {
+    const bool negative = c_.peek().is("-");
+    if (negative || c_.peek().is("+")) c_.take();
+    const Token& t = c_.peek();
+    if (t.kind != TokenKind::Integer && t.kind != TokenKind::Float) c_.expected("a number");
+    c_.take();
+    const float v = std::strtof(t.text.c_str(), nullptr);
+    return negative ? -v : v;
+  }
+
+  // '{' a [, b [, c [, d]]] '}': missing components are (0, 0, 1) as in ARB_vertex_program
+  // 2.14.3.4 ({x} is (x, 0, 0, 1)).
+  ParamSlot vector_constant() {
+    c_.expect("{");
+    ParamSlot s;
+    s.constant = true;
+    s.values = {0, 0, 0, 1};
+    int n = 0;
+    do {
+      if (n == 4) c_.expected("'}' (a vector has four components at most)");
+      s.values[static_cast<size_t>(n++)] = signed_number();
+    } while (c_.accept(","));
+    c_.expect("}", "',' or '}'");
+    return s;
+  }
+
+  bool starts_number(size_t ahead = 0) const {
+    const Token& t = c_.peek(ahead);
+    return t.kind == TokenKind::Integer || t.kind == TokenKind::Float;
+  }
+
+  // A PARAM's initialiser item: a constant, or a binding (`ranges`: may cover several slots).
+  std::vector<ParamSlot> param_item(bool ranges) {
+    const Token& t = c_.peek();
+    if (t.is("{")) return {vector_constant()};
+    if (starts_number() || ((t.is("-") || t.is("+")) && starts_number(1))) {
+      // A declared scalar is replicated: PARAM k = 0.5 is (0.5, 0.5, 0.5, 0.5).
+      ParamSlot s;
+      s.constant = true;
+      const float v = signed_number();
+      s.values = {v, v, v, v};
+      return {s};
+    }
+    if (starts_param_binding(t)) return parse_param_binding(c_, p_.kind, limits_, ranges);
+    c_.expected("a constant, a state.* or a program.* binding");
+  }
+
+  void param() {
+    c_.take();
+    const Token& n = new_name();
+    ParamDecl d;
+    d.name = n.text;
+    if (c_.accept("[")) {
+      d.array = true;
+      int size = -1;
+      Position size_at = c_.peek().at;
+      if (!c_.peek().is("]")) size = c_.expect_index(1 << 20, "an array size");
+      if (size == 0) Cursor::fail_at(size_at, "expected an array size of at least 1");
+      c_.expect("]");
+      c_.expect("=");
+      c_.expect("{", "'{' and the array's items");
+      do {
+        for (ParamSlot& s : param_item(true)) d.slots.push_back(std::move(s));
+      } while (c_.accept(","));
+      c_.expect("}", "',' or '}'");
+      if (size >= 0 && static_cast<int>(d.slots.size()) != size) {
+        Cursor::fail_at(size_at, "expected " + std::to_string(d.slots.size()) +
+                                     " as the array size: the initialiser has that many slots");
+      }
+    } else {
+      c_.expect("=", "'=' or '['");
+      d.slots = param_item(false);
+    }
+    declare(n, RegFile::Param, static_cast<int>(p_.params.size()), "");
+    p_.params.push_back(std::move(d));
+  }
+
+  std::string attrib_binding() {
+    const Position at = c_.peek().at;
+    std::string b = parse_attrib_binding(c_, p_.kind, limits_);
+    const std::string named = named_alias_of_generic(b);
+    const std::string other = named.empty() ? generic_of_named(b) : named;
+    if (!other.empty() && attribs_seen_.count(other)) {
+      Cursor::fail_at(at, "expected one name per vertex attribute: " + b + " and " + other +
+                              " are the same attribute (ARB_vertex_program table X.2.1)");
+    }
+    attribs_seen_.insert(b);
+    return b;
+  }
+
+  static std::string generic_of_named(const std::string& b) {
+    for (int i = 0; i < 16; ++i) {
+      const std::string g = "vertex.attrib[" + std::to_string(i) + "]";
+      if (named_alias_of_generic(g) == b) return g;
+    }
+    return "";
+  }
+
+  std::string result_binding() {
+    return parse_result_binding(c_, p_.kind, limits_, p_.has_option("ARB_draw_buffers"));
+  }
+
+  // ---- operands ----------------------------------------------------------------------------
+
+  // ".mask" of a destination: components in xyzw order, each once (rgba too in fragment
+  // programs).
+  std::string write_mask() {
+    if (!c_.accept(".")) return "";
+    const Token& t = c_.expect_name("a write mask (.x, .xy, .xyzw, ...)");
+    const std::string sets[] = {"xyzw", "rgba"};
+    for (const std::string& set : sets) {
+      if (set == "rgba" && vertex()) continue;
+      size_t last = 0;
+      bool ok = !t.text.empty() && t.text.size() <= 4;
+      for (size_t k = 0; ok && k < t.text.size(); ++k) {
+        const size_t at = set.find(t.text[k]);
+        ok = at != std::string::npos && (k == 0 || at > last);
+        last = at;
+      }
+      if (ok) return t.text;
+    }
+    Cursor::fail_at(t.at, "expected a write mask: components of " +
+                              std::string(vertex() ? "xyzw" : "xyzw or rgba") +
+                              " in that order, each once; found '" + t.text + "'");
+  }
+
+  // ".x" or ".xyzw" of a source (one or four components, ARB_vertex_program 2.14.2.2).
+  std::string swizzle(bool scalar) {
+    if (!c_.peek().is(".")) {
+      if (scalar) c_.expected("a scalar suffix (.x, .y, .z or .w)");
+      return "";
+    }
+    c_.take();
+    const Token& t = c_.expect_name(scalar ? "a scalar suffix (.x, .y, .z or .w)" : "a swizzle");
+    const bool xyzw = valid_components(t.text, "xyzw");
+    const bool rgba = !vertex() && valid_components(t.text, "rgba");
+    const size_t n = t.text.size();
+    if (!(xyzw || rgba) || (scalar ? n != 1 : (n != 1 && n != 4))) {
+      Cursor::fail_at(t.at, std::string("expected ") +
+                                (scalar ? "one component" : "one or four components") + " of " +
+                                (vertex() ? "xyzw" : "xyzw or rgba (not mixed)") + ", found '" +
+                                t.text + "'");
+    }
+    return t.text;
+  }
+
+  // c[n], c[A0.x], c[A0.x + n], c[A0.x - n]: the element, or -1 for relative addressing.
+  int array_element(const ParamDecl& d) {
+    c_.expect("[", "'[' and an index: '" + d.name + "' is an array");
+    int element = -1;
+    if (c_.peek().kind == TokenKind::Name) {
+      const Token& a = c_.take();
+      const auto it = names_.find(a.text);
+      if (!vertex() || it == names_.end() || it->second.file != RegFile::Address) {
+        Cursor::fail_at(
+            a.at, vertex() ? "expected an index or an ADDRESS register, found '" + a.text + "'"
+                           : "expected an index (relative addressing is "
+                             "ARB_vertex_program's)");
+      }
+      c_.expect(".", "'.x' after the address register");
+      if (!c_.peek().is("x")) c_.expected("the address register's only component, x");
+      c_.take();
+      if (c_.peek().is("+") || c_.peek().is("-")) {
+        c_.take();
+        c_.expect_index(limits_.address_offset + 1, "an address offset");
+      }
+    } else {
+      const Position at = c_.peek().at;
+      element = c_.expect_index(1 << 20, "an array index");
+      if (element >= static_cast<int>(d.slots.size())) {
+        Cursor::fail_at(at, "expected an index below " + std::to_string(d.slots.size()) +
+                                ", the size of '" + d.name + "'");
+      }
+    }
+    c_.expect("]");
+    return element;
+  }
+
+  // A source operand without its swizzle.
+  Operand source_register() {
+    Operand o;
+    const Token& t = c_.peek();
+    if (starts_number()) {
+      o.file = RegFile::InlineParam;
+      o.slot.constant = true;
+      const float v = std::strtof(c_.take().text.c_str(), nullptr);
+      o.slot.values = {v, v, v, v};
+      o.slot.size = 1;
+      return o;
+    }
+    if (t.is("{")) {
+      o.file = RegFile::InlineParam;
+      o.slot = vector_constant();
+      return o;
+    }
+    if (starts_attrib_binding(t)) {
+      o.file = RegFile::Attrib;
+      o.binding = attrib_binding();
+      return o;
+    }
+    if (starts_param_binding(t)) {
+      o.file = RegFile::InlineParam;
+      o.slot = parse_param_binding(c_, p_.kind, limits_, false).front();
+      return o;
+    }
+    if (t.is("result")) c_.fail("expected a source register: outputs cannot be read");
+    if (t.kind != TokenKind::Name) c_.expected("a source register");
+    const auto it = names_.find(t.text);
+    if (it == names_.end()) c_.fail("expected a declared name, found '" + t.text + "'");
+    const Symbol s = it->second;
+    c_.take();
+    switch (s.file) {
+      case RegFile::Output:
+        Cursor::fail_at(t.at, "expected a source register: '" + t.text +
+                                  "' is an output, which cannot be read");
+      case RegFile::Address:
+        Cursor::fail_at(t.at, "expected a source register: '" + t.text +
+                                  "' is an address register (used only inside a[...])");
+      case RegFile::Attrib:
+        o.file = RegFile::Attrib;
+        o.binding = s.binding;
+        // An ATTRIB name is a read of its binding: the alias check applies as for inline uses.
+        attribs_seen_.insert(s.binding);
+        return o;
+      case RegFile::Param: {
+        o.file = RegFile::Param;
+        o.index = s.index;
+        const ParamDecl& d = p_.params[static_cast<size_t>(s.index)];
+        if (d.array) {
+          o.element = array_element(d);
+        } else if (c_.peek().is("[")) {
+          c_.fail("expected no index: '" + t.text + "' is not an array");
+        }
+        return o;
+      }
+      default:
+        o.file = s.file;
+        o.index = s.index;
+        return o;
+    }
+  }
+
+  Operand source(bool scalar) {
+    bool negate = false;
+    if (c_.peek().is("-") || c_.peek().is("+")) negate = c_.take().is("-");
+    Operand o = source_register();
+    o.negate = negate;
+    o.swizzle = swizzle(scalar);
+    return o;
+  }
+
+  Operand destination() {
+    const Token& t = c_.peek();
+    Operand o;
+    if (t.is("result")) {
+      o.file = RegFile::Output;
+      o.binding = result_binding();
+    } else {
+      const auto it = t.kind == TokenKind::Name ? names_.find(t.text) : names_.end();
+      if (it == names_.end() ||
+          (it->second.file != RegFile::Temp && it->second.file != RegFile::Output)) {
+        c_.expected("a temporary or an output as the destination");
+      }
+      c_.take();
+      o.file = it->second.file;
+      o.index = it->second.index;
+      o.binding = it->second.binding;
+    }
+    o.swizzle = write_mask();
+    return o;
+  }
+
+  // SWZ's four components: 0, 1, or a component, each with an optional sign.
+  std::string extended_swizzle() {
+    std::string out;
+    bool xyzw = false, rgba = false;
+    for (int k = 0; k < 4; ++k) {
+      if (k) c_.expect(",", "',' and the next extended swizzle component");
+      if (c_.peek().is("-") || c_.peek().is("+")) out += c_.take().text;
+      const Token& t = c_.peek();
+      const bool constant = t.is("0") || t.is("1");
+      const bool comp = t.kind == TokenKind::Name && t.text.size() == 1 &&
+                        valid_components(t.text, vertex() ? "xyzw" : "xyzwrgba");
+      if (!constant && !comp) c_.expected("an extended swizzle component (0, 1, x, y, z, w)");
+      if (comp) (valid_components(t.text, "xyzw") ? xyzw : rgba) = true;
+      if (xyzw && rgba) c_.fail("expected components of xyzw or of rgba, not both");
+      out += c_.take().text;
+    }
+    return out;
+  }
+
+  void texture_operands(Instruction& in) {
+    c_.expect(",");
+    c_.expect("texture", "texture[n]");
+    in.unit = 0;
+    if (c_.accept("[")) {
+      in.unit = c_.expect_index(limits_.texture_image_units, "a texture image unit");
+      c_.expect("]");
+    }
+    c_.expect(",");
+    const Token& t = c_.peek();
+    std::vector<std::string> targets = {"1D", "2D", "3D", "CUBE", "RECT"};
+    if (p_.has_option("ARB_fragment_program_shadow")) {
+      for (const char* s : {"SHADOW1D", "SHADOW2D", "SHADOWRECT"}) targets.push_back(s);
+    }
+    if (t.kind != TokenKind::Name ||
+        std::find(targets.begin(), targets.end(), t.text) == targets.end()) {
+      c_.expected("a texture target (1D, 2D, 3D, CUBE, RECT" +
+                  std::string(p_.has_option("ARB_fragment_program_shadow")
+                                  ? ", SHADOW1D, SHADOW2D, SHADOWRECT)"
+                                  : "; SHADOW* with OPTION ARB_fragment_program_shadow)"));
+    }
+    // ARB_fragment_program 3.11.6: one texture image unit is sampled with one target.
+    const auto it = unit_targets_.find(in.unit);
+    if (it != unit_targets_.end() && it->second != t.text) {
+      c_.fail("expected target " + it->second + " for texture[" + std::to_string(in.unit) +
+              "], as it is used before: one unit, one target");
+    }
+    unit_targets_[in.unit] = t.text;
+    in.target = c_.take().text;
+  }
+
+  void instruction() {
+    const Token& t = c_.peek();
+    if (t.kind != TokenKind::Name) c_.expected("an instruction or a declaration");
+    Instruction in;
+    in.at = t.at;
+    std::string name = t.text;
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, "_SAT") == 0) {
+      name = name.substr(0, name.size() - 4);
+      in.saturate = true;
+    }
+    const OpcodeInfo* op = find_opcode(name);
+    if (!op || (in.saturate && vertex()) || !(vertex() ? op->vertex : op->fragment)) {
+      const bool other_kind = op && !(in.saturate && vertex());
+      c_.expected(
+          std::string("an instruction or a declaration of ") + (vertex() ? "vertex" : "fragment") +
+          " programs" +
+          (other_kind
+               ? " (" + name + " is ARB_" + (vertex() ? "fragment" : "vertex") + "_program's)"
+               : (in.saturate && vertex() && op ? " (no _SAT in vertex programs)" : "")));
+    }
+    c_.take();
+    in.opcode = op->name;
+    in.texture = op->form == Form::Texture || op->form == Form::Kill;
+    switch (op->form) {
+      case Form::Kill:
+        in.has_dst = false;
+        in.srcs.push_back(source(false));
+        break;
+      case Form::Address: {
+        const Token& a = c_.peek();
+        const auto it = names_.find(a.text);
+        if (a.kind != TokenKind::Name || it == names_.end() ||
+            it->second.file != RegFile::Address) {
+          c_.expected("an ADDRESS register as ARL's destination");
+        }
+        c_.take();
+        in.dst.file = RegFile::Address;
+        in.dst.index = it->second.index;
+        c_.expect(".", "'.x': ARL writes the address register's x");
+        if (!c_.peek().is("x")) c_.expected("x, the address register's only component");
+        c_.take();
+        in.dst.swizzle = "x";
+        c_.expect(",");
+        in.srcs.push_back(source(true));
+        break;
+      }
+      case Form::Swizzle: {
+        in.dst = destination();
+        c_.expect(",");
+        bool negate = false;
+        if (c_.peek().is("-") || c_.peek().is("+")) negate = c_.take().is("-");
+        Operand s = source_register();
+        s.negate = negate;
+        c_.expect(",", "',' and the extended swizzle");
+        s.swizzle = extended_swizzle();
+        in.srcs.push_back(s);
+        break;
+      }
+      case Form::Texture:
+        in.dst = destination();
+        c_.expect(",");
+        in.srcs.push_back(source(false));
+        texture_operands(in);
+        break;
+      case Form::Vector:
+      case Form::Scalar:
+        in.dst = destination();
+        for (int k = 0; k < op->sources; ++k) {
+          c_.expect(",", k == 0 ? "','" : "',' and source " + std::to_string(k + 1));
+          in.srcs.push_back(source(op->form == Form::Scalar));
+        }
+        break;
+    }
+    p_.code.push_back(std::move(in));
+  }
+
+  Cursor c_;
+  Limits limits_;
+  Program p_;
+  std::map<std::string, Symbol> names_;
+  std::set<std::string> attribs_seen_;
+  std::map<int, std::string> unit_targets_;
+};
+
+}  // namespace
+
+Program parse(const std::string& source, const Limits& limits) {
+  return Parser(source, limits).run();
+}
+
+}  // namespace lt::arbfp::text
