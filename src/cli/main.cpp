@@ -11,23 +11,8 @@
 
 namespace {
 
-// cli.md promises one line: library messages (OpenImageIO, OpenMesh) may hold newlines, and a
-// NUL would end the printed line early.
-std::string one_line(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  std::string out;
-  for (char c : s) {
-    if (c == '\0') {
-      out += "\\0";
-    } else {
-      out += (c == '\n' || c == '\r') ? ' ' : c;
-    }
-  }
-  return out;
-}
-
 int usage_error(const std::string& what) {
-  std::fprintf(stderr, "ltrender: error: %s\n", one_line(what).c_str());
+  lt::print_input_error(what);
   return 2;
 }
 
@@ -67,7 +52,7 @@ int main(int argc, char** argv) {
     } catch (const lt::InputError& e) {
       return usage_error(e.what());
     } catch (const lt::CheckFailed& e) {
-      std::fprintf(stderr, "ltrender: check failed: %s\n", one_line(e.what()).c_str());
+      std::fprintf(stderr, "ltrender: check failed: %s\n", lt::one_line(e.what()).c_str());
       return 1;
     } catch (const std::exception& e) {
       // Anything else is still reported as one line with a non-zero code, never a crash.
