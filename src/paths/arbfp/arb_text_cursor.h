@@ -41,6 +41,15 @@ class Cursor {
     if (peek().kind != TokenKind::Name) expected(what);
     return take();
   }
+  // The name right after the '.' just taken, with nothing between: Mesa's lexer reads ".xyzw"
+  // as one token, so "r. x" or "r.\nx" is not a swizzle.
+  const Token& expect_attached_name(const Token& dot, const std::string& what) {
+    const Token& t = peek();
+    if (t.kind != TokenKind::Name || t.at.line != dot.at.line || t.at.column != dot.at.column + 1) {
+      expected(what + " right after '.'");
+    }
+    return take();
+  }
   // A non-negative integer in brackets' place: "[3]" reads 3; bounded by `limit` (exclusive).
   int expect_index(int limit, const std::string& what) {
     const Token& t = peek();

@@ -18,6 +18,14 @@ bool digit(char c) {
   return std::isdigit(static_cast<unsigned char>(c)) != 0;
 }
 
+// Outside a comment, Mesa's lexer reads a NUL or a byte >= 0x80 as the end of the input
+// (glProgramStringARB accepts "END\xdd" and "END\0junk", and refuses "MOV\xdd..." as
+// "unexpected end of file"); inside one, every byte but the newline is the comment's. This lexer
+// does the same, so both accept and refuse the same texts (checked by arb_text_fuzz_test.cpp).
+bool ends_text(char c) {
+  return c == '\0' || static_cast<unsigned char>(c) >= 0x80;
+}
+
 class Lexer {
  public:
   explicit Lexer(const std::string& s) : s_(s) {}
@@ -27,14 +35,20 @@ class Lexer {
     skip_space();
     if (s_.compare(i_, 2, "!!") == 0) {
       const Position at = pos_;
+      // The header is its ten characters whatever follows ("!!ARBfp1.0MAD" is the header and
+      // MAD, as Mesa reads it); anything else is shown up to the next white space.
       size_t n = 2;
-      while (i_ + n < s_.size() && (name_char(s_[i_ + n]) || s_[i_ + n] == '.')) ++n;
+      if (s_.compare(i_, 10, "!!ARBfp1.0") == 0 || s_.compare(i_, 10, "!!ARBvp1.0") == 0) {
+        n = 10;
+      } else {
+        while (i_ + n < s_.size() && (name_char(s_[i_ + n]) || s_[i_ + n] == '.')) ++n;
+      }
       out.push_back({TokenKind::Name, s_.substr(i_, n), at});
       advance(n);
     }
     while (true) {
       skip_space();
-      if (i_ >= s_.size()) break;
+      if (i_ >= s_.size() || ends_text(s_[i_])) break;
       out.push_back(next());
     }
     out.push_back({TokenKind::End, "", pos_});
@@ -60,7 +74,8 @@ class Lexer {
       const char c = s_[i_];
       if (c == '#') {
         while (i_ < s_.size() && s_[i_] != '\n') advance(1);
-      } else if (std::isspace(static_cast<unsigned char>(c))) {
+      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+        // Mesa's white space; \v and \f are no token there, so they are none here.
         advance(1);
       } else {
         break;

@@ -167,6 +167,11 @@ class Parser {
       return o;
     };
     for (const std::string& o : p_.options) {
+      // The same option twice is harmless (Mesa accepts it).
+      if (o == t.text) {
+        c_.expect(";");
+        return;
+      }
       if (family(o) == family(t.text)) {
         Cursor::fail_at(t.at, "expected at most one " + family(t.text) + " option (" + o +
                                   " was given before)");
@@ -323,6 +328,7 @@ class Parser {
       c_.expect("=", "'=' or '['");
       d.slots = param_item(false);
     }
+    d.after_instructions = p_.code.size();
     declare(n, RegFile::Param, static_cast<int>(p_.params.size()), "");
     p_.params.push_back(std::move(d));
   }
@@ -357,8 +363,9 @@ class Parser {
   // ".mask" of a destination: components in xyzw order, each once (rgba too in fragment
   // programs).
   std::string write_mask() {
-    if (!c_.accept(".")) return "";
-    const Token& t = c_.expect_name("a write mask (.x, .xy, .xyzw, ...)");
+    if (!c_.peek().is(".")) return "";
+    const Token& dot = c_.take();
+    const Token& t = c_.expect_attached_name(dot, "a write mask (.x, .xy, .xyzw, ...)");
     const std::string sets[] = {"xyzw", "rgba"};
     for (const std::string& set : sets) {
       if (set == "rgba" && vertex()) continue;
@@ -382,8 +389,9 @@ class Parser {
       if (scalar) c_.expected("a scalar suffix (.x, .y, .z or .w)");
       return "";
     }
-    c_.take();
-    const Token& t = c_.expect_name(scalar ? "a scalar suffix (.x, .y, .z or .w)" : "a swizzle");
+    const Token& dot = c_.take();
+    const Token& t =
+        c_.expect_attached_name(dot, scalar ? "a scalar suffix (.x, .y, .z or .w)" : "a swizzle");
     const bool xyzw = valid_components(t.text, "xyzw");
     const bool rgba = !vertex() && valid_components(t.text, "rgba");
     const size_t n = t.text.size();
@@ -409,9 +417,10 @@ class Parser {
                            : "expected an index (relative addressing is "
                              "ARB_vertex_program's)");
       }
-      c_.expect(".", "'.x' after the address register");
-      if (!c_.peek().is("x")) c_.expected("the address register's only component, x");
-      c_.take();
+      const Token& dot = c_.expect(".", "'.x' after the address register");
+      if (!c_.expect_attached_name(dot, "x, the address register's only component").is("x")) {
+        Cursor::fail_at(dot.at, "expected .x, the address register's only component");
+      }
       if (c_.peek().is("+") || c_.peek().is("-")) {
         c_.take();
         c_.expect_index(limits_.address_offset + 1, "an address offset");
@@ -530,13 +539,20 @@ class Parser {
       if (k) c_.expect(",", "',' and the next extended swizzle component");
       if (c_.peek().is("-") || c_.peek().is("+")) out += c_.take().text;
       const Token& t = c_.peek();
-      const bool constant = t.is("0") || t.is("1");
+      // An integer of value 0 or 1 ("01" too: Mesa's extSwizSel reads an INTEGER's value).
+      std::string value;
+      if (t.kind == TokenKind::Integer) {
+        const size_t nonzero = t.text.find_first_not_of('0');
+        value = nonzero == std::string::npos ? "0" : t.text.substr(nonzero);
+      }
+      const bool constant = value == "0" || value == "1";
       const bool comp = t.kind == TokenKind::Name && t.text.size() == 1 &&
                         valid_components(t.text, vertex() ? "xyzw" : "xyzwrgba");
       if (!constant && !comp) c_.expected("an extended swizzle component (0, 1, x, y, z, w)");
       if (comp) (valid_components(t.text, "xyzw") ? xyzw : rgba) = true;
       if (xyzw && rgba) c_.fail("expected components of xyzw or of rgba, not both");
-      out += c_.take().text;
+      out += constant ? value : t.text;
+      c_.take();
     }
     return out;
   }
@@ -610,9 +626,10 @@ class Parser {
         c_.take();
         in.dst.file = RegFile::Address;
         in.dst.index = it->second.index;
-        c_.expect(".", "'.x': ARL writes the address register's x");
-        if (!c_.peek().is("x")) c_.expected("x, the address register's only component");
-        c_.take();
+        const Token& dot = c_.expect(".", "'.x': ARL writes the address register's x");
+        if (!c_.expect_attached_name(dot, "x, the address register's only component").is("x")) {
+          Cursor::fail_at(dot.at, "expected .x, the address register's only component");
+        }
         in.dst.swizzle = "x";
         c_.expect(",");
         in.srcs.push_back(source(true));

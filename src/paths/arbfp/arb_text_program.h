@@ -41,6 +41,7 @@ struct ParamDecl {
   std::string name;
   std::vector<ParamSlot> slots;
   bool array = false;
+  size_t after_instructions = 0;  // instructions before the declaration (Mesa's list order)
 };
 
 enum class RegFile { Temp, Param, InlineParam, Attrib, Output, Address };
