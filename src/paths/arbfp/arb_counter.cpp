@@ -31,33 +31,6 @@ std::string constant_key(const ParamSlot& s) {
   return k;
 }
 
-// Texture indirections by the algorithm of ARB_fragment_program issue 24: a texture instruction
-// starts a new indirection when its coordinate is a temporary written since the last one began,
-// or when it overwrites a temporary an ALU instruction used since then.
-int indirections(const std::vector<Instruction>& code) {
-  int n = 1;
-  std::set<int> written, alu_used;
-  auto temp = [](const Operand& o) { return o.file == RegFile::Temp ? o.index : -1; };
-  for (const Instruction& in : code) {
-    const int dst = in.has_dst ? temp(in.dst) : -1;
-    if (in.texture) {
-      const int coord = temp(in.srcs.front());
-      if ((coord >= 0 && written.count(coord)) || (dst >= 0 && alu_used.count(dst))) {
-        ++n;
-        written.clear();
-        alu_used.clear();
-      }
-    } else {
-      for (const Operand& s : in.srcs) {
-        if (temp(s) >= 0) alu_used.insert(temp(s));
-      }
-      if (dst >= 0) alu_used.insert(dst);
-    }
-    if (dst >= 0) written.insert(dst);
-  }
-  return n;
-}
-
 // Mesa's parameter list, replayed in its two steps (measured against NATIVE_PARAMETERS by the
 // fuzz test). Parsing (program_parse.y) adds, in statement order: a single PARAM's constant
 // merged into an earlier constant that holds all its components (any swizzle:
@@ -168,6 +141,27 @@ class MesaParameterList {
 
 }  // namespace
 
+int texture_indirections(const std::vector<TemporaryUse>& code) {
+  int n = 1;
+  std::set<int> written, alu_used;
+  for (const TemporaryUse& in : code) {
+    if (in.texture) {
+      if ((in.coord >= 0 && written.count(in.coord)) || (in.dst >= 0 && alu_used.count(in.dst))) {
+        ++n;
+        written.clear();
+        alu_used.clear();
+      }
+    } else {
+      for (int t : in.srcs) {
+        if (t >= 0) alu_used.insert(t);
+      }
+      if (in.dst >= 0) alu_used.insert(in.dst);
+    }
+    if (in.dst >= 0) written.insert(in.dst);
+  }
+  return n;
+}
+
 ProgramCounts count_parsed(const arbfp::text::Program& p) {
   ProgramCounts c;
   c.kind = p.kind;
@@ -192,7 +186,15 @@ ProgramCounts count_parsed(const arbfp::text::Program& p) {
   c.referenced_parameters = MesaParameterList().count(p);
   // Inputs the program reads (an ATTRIB that is declared and never read binds nothing).
   c.attributes = static_cast<int>(attributes.size());
-  c.indirections = p.kind == ProgramKind::Fragment ? indirections(p.code) : 1;
+  std::vector<TemporaryUse> uses;
+  auto temp = [](const Operand& o) { return o.file == RegFile::Temp ? o.index : -1; };
+  for (const Instruction& in : p.code) {
+    TemporaryUse u{in.texture, in.has_dst ? temp(in.dst) : -1, -1, {}};
+    for (const Operand& s : in.srcs) u.srcs.push_back(temp(s));
+    if (in.texture) u.coord = u.srcs.front();
+    uses.push_back(u);
+  }
+  c.indirections = p.kind == ProgramKind::Fragment ? texture_indirections(uses) : 1;
   c.position_invariant = p.has_option("ARB_position_invariant");
   return c;
 }

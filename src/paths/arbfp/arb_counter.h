@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace lt::arbfp::text {
 struct Program;
@@ -34,6 +35,20 @@ struct ProgramCounts {
 
   int instructions() const { return alu + tex; }
 };
+
+// What the texture-indirection count reads of one instruction: the temporaries by any numbering
+// (-1 for none or not a temporary).
+struct TemporaryUse {
+  bool texture = false;   // TEX, TXP, TXB, KIL
+  int dst = -1;           // the destination temporary (none for KIL)
+  int coord = -1;         // texture instructions: the coordinate's temporary
+  std::vector<int> srcs;  // ALU instructions: the sources' temporaries
+};
+// Texture indirections by the algorithm of ARB_fragment_program issue 24: a texture instruction
+// starts a new indirection when its coordinate is a temporary written since the last one began,
+// or when it overwrites a temporary an ALU instruction used since then. Both counters (text and
+// IR) count through this.
+int texture_indirections(const std::vector<TemporaryUse>& code);
 
 // Throws text::SyntaxError (a std::invalid_argument) at the first line and column that is not a
 // valid program.

@@ -174,45 +174,33 @@ std::string state_binding(Cursor& c, ProgramKind kind, const Limits& limits) {
 }  // namespace
 
 std::string parse_attrib_binding(Cursor& c, ProgramKind kind, const Limits& limits) {
-  const Token& root = c.peek();
   const bool vertex = kind == ProgramKind::Vertex;
-  if (!root.is(vertex ? "vertex" : "fragment")) {
-    c.expected(vertex ? "a vertex.* input" : "a fragment.* input");
-  }
+  const std::string root = vertex ? "vertex" : "fragment";
+  if (!c.peek().is(root.c_str())) c.expected("a " + root + ".* input");
   c.take();
   const Position at = c.peek(1).at;
-  if (!vertex) {
-    const std::string p =
-        dot_choice(c, {"color", "texcoord", "fogcoord", "position"}, "a fragment attribute");
-    if (p == "color") {
-      const std::string which = optional_dot_choice(c, {"primary", "secondary"});
-      return "fragment.color." + (which.empty() ? "primary" : which);
-    }
-    if (p == "texcoord") {
-      return indexed("fragment.texcoord",
-                     optional_bracket_index(c, limits.texture_coords, "a texture coordinate", 0));
-    }
-    return "fragment." + p;
-  }
-  const std::string p = dot_choice(
-      c, {"position", "weight", "normal", "color", "fogcoord", "texcoord", "matrixindex", "attrib"},
-      "a vertex attribute");
+  const std::string p =
+      vertex ? dot_choice(c,
+                          {"position", "weight", "normal", "color", "fogcoord", "texcoord",
+                           "matrixindex", "attrib"},
+                          "a vertex attribute")
+             : dot_choice(c, {"color", "texcoord", "fogcoord", "position"}, "a fragment attribute");
   if (p == "weight" || p == "matrixindex") {
     Cursor::fail_at(at, "expected a vertex attribute Mesa supports (vertex." + p + " is " +
                             (p == "weight" ? "ARB_vertex_blend's" : "ARB_matrix_palette's") + ")");
   }
   if (p == "color") {
     const std::string which = optional_dot_choice(c, {"primary", "secondary"});
-    return "vertex.color." + (which.empty() ? "primary" : which);
+    return root + ".color." + (which.empty() ? "primary" : which);
   }
   if (p == "texcoord") {
-    return indexed("vertex.texcoord",
+    return indexed(root + ".texcoord",
                    optional_bracket_index(c, limits.texture_coords, "a texture coordinate", 0));
   }
   if (p == "attrib") {
     return indexed("vertex.attrib", bracket_index(c, limits.vertex_attribs, "a generic attribute"));
   }
-  return "vertex." + p;
+  return root + "." + p;
 }
 
 std::string parse_result_binding(Cursor& c, ProgramKind kind, const Limits& limits,

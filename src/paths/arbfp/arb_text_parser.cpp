@@ -206,21 +206,16 @@ class Parser {
     const Token& t = c_.peek();
     if (t.is("OPTION")) c_.fail("expected an instruction or a declaration: OPTION must come first");
     if (t.is("TEMP") || t.is("ADDRESS")) return register_list();
-    if (t.is("ATTRIB")) {
-      c_.take();
+    if (t.is("ATTRIB") || t.is("OUTPUT")) {
+      // The binding parsers check the binding's root (fragment.* / vertex.*, result.*).
+      const bool input = c_.take().is("ATTRIB");
       const Token& n = new_name();
       c_.expect("=");
-      if (!starts_attrib_binding(c_.peek()))
-        c_.expected(vertex() ? "a vertex.* input" : "a fragment.* input");
-      declare(n, RegFile::Attrib, -1, attrib_binding());
-      return;
-    }
-    if (t.is("OUTPUT")) {
-      c_.take();
-      const Token& n = new_name();
-      c_.expect("=");
-      if (!c_.peek().is("result")) c_.expected("a result.* output");
-      declare(n, RegFile::Output, -1, result_binding());
+      if (input) {
+        declare(n, RegFile::Attrib, -1, attrib_binding());
+      } else {
+        declare(n, RegFile::Output, -1, result_binding());
+      }
       return;
     }
     if (t.is("ALIAS")) {
