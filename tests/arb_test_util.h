@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "core/error.h"
+#include "gl/program.h"
+#include "paths/path.h"
 #include "scene/scene.h"
 #include "test_util.h"
 
@@ -56,5 +58,19 @@ inline fs::path test_scene_path(const std::string& relative) {
   } catch (const InputError&) {
     return generated_scene_root() / relative;
   }
+}
+}  // namespace lt::test
+
+namespace lt::test {
+// One frame of `path` into a float target (no 8-bit rounding): RGBA, bottom row first.
+inline std::vector<float> frame_in_float_target(Path& path, int width, int height) {
+  gl::FloatTarget target(width, height, 1);
+  target.bind();
+  path.frame();
+  glFinish();
+  std::vector<float> px;
+  target.read(0, px);
+  target.unbind();
+  return px;
 }
 }  // namespace lt::test

@@ -9,7 +9,8 @@ namespace lt::cli {
 
 namespace {
 
-// The path whose program files end in `file`'s extension, or nullptr.
+// The path whose program files `file` is: by extension, else (not a scene) by the header its
+// text starts with; nullptr for a scene.
 const PathInfo* path_of_program_file(const std::string& file) {
   const std::string ext = fs::path(file).extension().string();
   for (const PathInfo& p : all_paths()) {
@@ -17,53 +18,79 @@ const PathInfo* path_of_program_file(const std::string& file) {
       if (e == ext) return &p;
     }
   }
+  if (ext == ".json") return nullptr;
+  const std::string text = read_text_file(file);
+  const size_t start = text.find_first_not_of(" \t\r\n");
+  for (const PathInfo& p : all_paths()) {
+    for (const std::string& h : p.program_headers) {
+      if (start != std::string::npos && text.compare(start, h.size(), h) == 0) return &p;
+    }
+  }
   return nullptr;
+}
+
+// One file's budget; true when it fits.
+bool budget_one(const std::string& file, const std::string& path, BudgetRequest r) {
+  if (const PathInfo* owner = path_of_program_file(file)) return owner->budget_file(file, r);
+  const PathInfo& info = find_path(path);
+  if (!info.budget) {
+    std::string with;
+    for (const PathInfo& p : all_paths()) {
+      if (p.budget) with += (with.empty() ? "" : ", ") + p.name;
+    }
+    throw InputError("--path", path,
+                     "path " + info.name + " has no budget (paths with one: " + with + ")");
+  }
+  return info.budget(load_scene(file), r);
 }
 
 }  // namespace
 
-// `ltrender budget SCENE [--path P] [--variant V] [--profile NAME] [--json]`: what path P builds
-// for the scene, counted against the profile; `ltrender budget FILE` counts a program file of
-// the path whose files end that way. Each path owns its counter and profiles (PathInfo::budget).
-// Exit 1 when something is over, naming the limit.
+// `ltrender budget FILE... [--path P] [--variant V] [--profile NAME] [--json]`: for a scene, what
+// path P builds for it, counted against the profile; for a program file, the file itself,
+// counted by the path whose files end that way (or start with its header). Each path owns its
+// counter and profiles (PathInfo::budget, budget_file). Every file is checked; then exit 2 if
+// one was not valid (each named on its own line), else 1 if one is over, naming the limit.
 Action add_budget(CLI::App& app) {
   auto* sub = app.add_subcommand("budget", "Check program/stage budgets against hardware profiles");
-  auto scene = std::make_shared<std::string>();
+  auto files = std::make_shared<std::vector<std::string>>();
   auto path = std::make_shared<std::string>("arbfp");
   auto request = std::make_shared<BudgetRequest>();
-  sub->add_option("SCENE", *scene, "Scene file, or a program file (.c, .gx: a GX program)")
+  sub->add_option("FILE", *files,
+                  "Scene files, or program files: .fp/.vp/.arb or !!ARBfp1.0/!!ARBvp1.0 text (ARB "
+                  "programs), .c/.gx (GX programs)")
       ->required();
   sub->add_option("--path", *path,
-                  "arbfp (programs), combiners (GL stages, units, passes) or gx (TEV stages, "
-                  "texgens, channels, lights, passes)");
+                  "For scenes: arbfp (programs), combiners (GL stages, units, passes) or gx (TEV "
+                  "stages, texgens, channels, lights, passes)");
   sub->add_option("--variant", request->variant, "Path variant (default: the path's default)");
   sub->add_option("--profile", request->profile,
                   "arbfp: ps_2_0 (default), ps_2_x, arbfp1-min, vs_2_0, arbvp1-min (the partner "
                   "profile checks the other program kind); combiners: gl13-2units (default), "
                   "gl13-3units, gl-8units; gx: wii-tev (default)");
-  sub->add_flag("--json", request->json, "Print the counts as one JSON object");
+  sub->add_flag("--json", request->json,
+                "Print the counts as JSON, one object per file (README, budget)");
   return [=]() -> int {
     std::string over;
-    BudgetRequest r = *request;
-    r.out = &std::cout;
-    r.first_overrun = &over;
-    bool fits = false;
-    if (const PathInfo* owner = path_of_program_file(*scene)) {
-      fits = owner->budget_file(*scene, r);
-    } else {
-      const PathInfo& info = find_path(*path);
-      if (!info.budget) {
-        std::string with;
-        for (const PathInfo& p : all_paths()) {
-          if (p.budget) with += (with.empty() ? "" : ", ") + p.name;
-        }
-        throw InputError("--path", *path,
-                         "path " + info.name + " has no budget (paths with one: " + with + ")");
+    std::vector<InputError> invalid;
+    for (const std::string& file : *files) {
+      std::string first_overrun;
+      BudgetRequest r = *request;
+      r.out = &std::cout;
+      r.first_overrun = &first_overrun;
+      try {
+        if (!budget_one(file, *path, r) && over.empty()) over = first_overrun;
+      } catch (const InputError& e) {
+        invalid.push_back(e);
       }
-      fits = info.budget(load_scene(*scene), r);
     }
     std::cout.flush();
-    if (!fits) throw CheckFailed("budget: " + over);
+    if (!invalid.empty()) {
+      // The last one goes through main's handler like any other bad input (exit 2).
+      for (size_t i = 0; i + 1 < invalid.size(); ++i) print_input_error(invalid[i].what());
+      throw invalid.back();
+    }
+    if (!over.empty()) throw CheckFailed("budget: " + over);
     return 0;
   };
 }

@@ -12,31 +12,8 @@
 
 namespace {
 
-// cli.md promises one line of bounded length: library messages (OpenImageIO, OpenMesh) may hold
-// newlines, a NUL would end the printed line early, and a message quoting a generated program or
-// a corrupt file's bytes can run to kilobytes.
-constexpr std::size_t kMaxMessage = 1000;
-
-std::string one_line(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  std::string out;
-  for (char c : s) {
-    if (c == '\0') {
-      out += "\\0";
-    } else {
-      out += (c == '\n' || c == '\r') ? ' ' : c;
-    }
-  }
-  if (out.size() > kMaxMessage) {
-    const std::size_t cut = out.size() - kMaxMessage;
-    out.resize(kMaxMessage);
-    out += "... (" + std::to_string(cut) + " more characters)";
-  }
-  return out;
-}
-
 int usage_error(const std::string& what) {
-  std::fprintf(stderr, "ltrender: error: %s\n", one_line(what).c_str());
+  lt::print_input_error(what);
   return 2;
 }
 
@@ -50,9 +27,9 @@ int main(int argc, char** argv) {
 
   using Registration = lt::cli::Action (*)(CLI::App&);
   const std::vector<Registration> registrations = {
-      lt::cli::add_render, lt::cli::add_compare, lt::cli::add_info,    lt::cli::add_bench,
-      lt::cli::add_bake,   lt::cli::add_budget,  lt::cli::add_meshgen, lt::cli::add_export,
-      lt::cli::add_regress,
+      lt::cli::add_render,  lt::cli::add_compare, lt::cli::add_info,
+      lt::cli::add_bench,   lt::cli::add_bake,    lt::cli::add_budget,
+      lt::cli::add_meshgen, lt::cli::add_export,  lt::cli::add_regress,
   };
   std::vector<lt::cli::Action> actions;
   for (auto reg : registrations) actions.push_back(reg(app));
@@ -77,7 +54,7 @@ int main(int argc, char** argv) {
     } catch (const lt::InputError& e) {
       return usage_error(e.what());
     } catch (const lt::CheckFailed& e) {
-      std::fprintf(stderr, "ltrender: check failed: %s\n", one_line(e.what()).c_str());
+      std::fprintf(stderr, "ltrender: check failed: %s\n", lt::one_line(e.what()).c_str());
       return 1;
     } catch (const std::exception& e) {
       // Anything else is still reported as one line with a non-zero code, never a crash.

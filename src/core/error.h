@@ -30,6 +30,13 @@ class CheckFailed : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// cli.md promises one line per error: newlines become spaces, a NUL prints as \0, and a message
+// over 1,000 characters is cut, saying how many it left out.
+std::string one_line(std::string s);
+// Prints `ltrender: error: <what>` as one line on stderr (what main does for an InputError); for
+// commands that go on after a bad input (budget of several files).
+void print_input_error(const std::string& what);
+
 [[noreturn]] void check_failed(const char* expr, const char* file, int line,
                                const std::string& msg);
 

@@ -94,8 +94,10 @@ struct PathInfo {
   // profile (empty: the path's default), prints a table or JSON, and returns true when it fits.
   // The path owns its counter and profiles; the command names no path.
   std::function<bool(const Scene& scene, const BudgetRequest& request)> budget = {};
-  // `ltrender budget FILE`: a program file of this path's kind, recognised by its extension.
+  // `ltrender budget FILE`: a program file of this path's kind, recognised by its extension or,
+  // failing that, by the first characters of its text (after white space).
   std::vector<std::string> program_extensions = {};
+  std::vector<std::string> program_headers = {};
   std::function<bool(const std::string& file, const BudgetRequest& request)> budget_file = {};
 };
 

@@ -1,12 +1,9 @@
 #include "paths/arbfp/arb_counter.h"
 
-#include <algorithm>
-#include <cctype>
-#include <map>
+#include <cstring>
 #include <set>
-#include <sstream>
-#include <stdexcept>
-#include <vector>
+
+#include "paths/arbfp/arb_text_parser.h"
 
 namespace lt::budget {
 
@@ -16,195 +13,194 @@ const char* to_string(ProgramKind k) {
 
 namespace {
 
-std::string trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r\n");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
+using arbfp::text::Instruction;
+using arbfp::text::Operand;
+using arbfp::text::ParamSlot;
+using arbfp::text::RegFile;
+
+// A constant's identity for counting: its components and its size, compared as bits (as Mesa
+// does, so -0 and 0 differ).
+std::string constant_key(const ParamSlot& s) {
+  std::string k = "const";
+  k.append(std::to_string(s.size));
+  for (float v : s.values) {
+    unsigned bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    k.append(":").append(std::to_string(bits));
+  }
+  return k;
 }
 
-// Splits at commas outside {} and [].
-std::vector<std::string> split_operands(const std::string& s) {
-  std::vector<std::string> out;
-  int depth = 0;
-  std::string cur;
-  for (char c : s) {
-    if (c == '{' || c == '[') ++depth;
-    if (c == '}' || c == ']') --depth;
-    if (c == ',' && depth == 0) {
-      out.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur += c;
+// Mesa's parameter list, replayed in its two steps (measured against NATIVE_PARAMETERS by the
+// fuzz test). Parsing (program_parse.y) adds, in statement order: a single PARAM's constant
+// merged into an earlier constant that holds all its components (any swizzle:
+// _mesa_lookup_parameter_constant), an array's constants as new slots, state and program bindings
+// once each, an instruction's constant merged like a single PARAM's, or a new scalar packed into
+// the first constant slot with a free component (_mesa_add_typed_unnamed_constant). The layout
+// (prog_parameter_layout.c) then keeps what instructions reference, in their order and with the
+// same merging: a relatively addressed array whole, once.
+class MesaParameterList {
+ public:
+  int count(const arbfp::text::Program& p) {
+    std::vector<std::vector<int>> decl_slots(p.params.size());
+    std::vector<std::vector<int>> operand_slots(p.code.size());
+    size_t next_decl = 0;
+    for (size_t i = 0; i <= p.code.size(); ++i) {
+      for (; next_decl < p.params.size() && p.params[next_decl].after_instructions <= i;
+           ++next_decl) {
+        const auto& d = p.params[next_decl];
+        for (const ParamSlot& s : d.slots) {
+          decl_slots[next_decl].push_back(parsed_.add(s, /*merge=*/!d.array));
+        }
+      }
+      if (i == p.code.size()) break;
+      for (const Operand& o : p.code[i].srcs) {
+        operand_slots[i].push_back(o.file == RegFile::InlineParam ? parsed_.add(o.slot, true) : -1);
+      }
     }
+    List layout;
+    std::set<int> arrays_copied;
+    for (size_t i = 0; i < p.code.size(); ++i) {
+      for (size_t k = 0; k < p.code[i].srcs.size(); ++k) {
+        const Operand& o = p.code[i].srcs[k];
+        if (o.file == RegFile::InlineParam) {
+          layout.add(parsed_.as_slot(operand_slots[i][k]), true);
+        } else if (o.file == RegFile::Param && o.element >= 0) {
+          layout.add(parsed_.as_slot(
+                         decl_slots[static_cast<size_t>(o.index)][static_cast<size_t>(o.element)]),
+                     true);
+        } else if (o.file == RegFile::Param && arrays_copied.insert(o.index).second) {
+          for (int e : decl_slots[static_cast<size_t>(o.index)]) {
+            layout.add(parsed_.as_slot(e), false);
+          }
+        }
+      }
+    }
+    return layout.size();
   }
-  if (!trim(cur).empty()) out.push_back(trim(cur));
-  return out;
-}
 
-bool is_swizzle(const std::string& s) {
-  return !s.empty() && s.size() <= 4 && std::all_of(s.begin(), s.end(), [](char c) {
-    return std::string("xyzwrgba").find(c) != std::string::npos;
-  });
-}
+ private:
+  class List {
+   public:
+    // The slot's index; `merge` looks for an earlier slot to share (constants) first.
+    int add(const ParamSlot& s, bool merge) {
+      if (!s.constant) {
+        for (size_t e = 0; merge && e < slots_.size(); ++e) {
+          if (!slots_[e].constant && slots_[e].binding == s.binding) return static_cast<int>(e);
+        }
+        slots_.push_back({false, {}, s.binding});
+        return static_cast<int>(slots_.size() - 1);
+      }
+      const std::vector<float> v(s.values.begin(), s.values.begin() + s.size);
+      for (size_t e = 0; merge && e < slots_.size(); ++e) {
+        const Slot& have = slots_[e];
+        if (have.constant && have.values.size() >= v.size() && holds_all(have.values, v)) {
+          return static_cast<int>(e);
+        }
+      }
+      for (size_t e = 0; merge && v.size() == 1 && e < slots_.size(); ++e) {
+        if (slots_[e].constant && slots_[e].values.size() < 4) {
+          slots_[e].values.push_back(v[0]);
+          return static_cast<int>(e);
+        }
+      }
+      slots_.push_back({true, v, ""});
+      return static_cast<int>(slots_.size() - 1);
+    }
+    // Slot e as it stands now (a packed slot holds every scalar packed into it).
+    ParamSlot as_slot(int e) const {
+      const Slot& have = slots_[static_cast<size_t>(e)];
+      ParamSlot s;
+      s.constant = have.constant;
+      s.binding = have.binding;
+      s.size = static_cast<int>(have.values.size());
+      for (size_t k = 0; k < have.values.size(); ++k) s.values[k] = have.values[k];
+      return s;
+    }
+    int size() const { return static_cast<int>(slots_.size()); }
 
-// "-lobe0.xyz" -> "lobe0"; "fragment.texcoord[1].x" -> "fragment.texcoord[1]".
-std::string operand_base(std::string op) {
-  op = trim(op);
-  while (!op.empty() && (op[0] == '-' || op[0] == '+')) op = trim(op.substr(1));
-  if (op.empty() || op[0] == '{' || std::isdigit(static_cast<unsigned char>(op[0])) || op[0] == '.')
-    return op;
-  const size_t dot = op.rfind('.');
-  if (dot != std::string::npos && is_swizzle(op.substr(dot + 1)) && op.find('.') != dot) {
-    return op.substr(0, dot);  // binding with a swizzle
-  }
-  if (dot != std::string::npos && is_swizzle(op.substr(dot + 1)) && op.find('.') == dot &&
-      op.find('[') == std::string::npos && op.rfind("fragment", 0) != 0 &&
-      op.rfind("vertex", 0) != 0 && op.rfind("result", 0) != 0 && op.rfind("state", 0) != 0 &&
-      op.rfind("program", 0) != 0) {
-    return op.substr(0, dot);  // name.swizzle
-  }
-  return op;
-}
+   private:
+    struct Slot {
+      bool constant;
+      std::vector<float> values;  // the components in use
+      std::string binding;
+    };
+    static bool holds_all(const std::vector<float>& have, const std::vector<float>& want) {
+      for (float w : want) {
+        bool found = false;
+        for (float h : have) found |= std::memcmp(&h, &w, sizeof h) == 0;
+        if (!found) return false;
+      }
+      return true;
+    }
+    std::vector<Slot> slots_;
+  };
 
-bool is_texture_opcode(const std::string& op) {
-  return op == "TEX" || op == "TXP" || op == "TXB" || op == "KIL";
-}
+  List parsed_;
+};
 
 }  // namespace
 
-ProgramCounts count_program(const std::string& source) {
-  ProgramCounts c;
-  // Strip comments, find the header.
-  std::string text;
-  {
-    std::istringstream in(source);
-    std::string line;
-    while (std::getline(in, line)) text += line.substr(0, line.find('#')) + "\n";
-  }
-  const size_t bang = text.find("!!ARB");
-  if (bang == std::string::npos) throw std::invalid_argument("no !!ARBvp1.0 / !!ARBfp1.0 header");
-  if (text.compare(bang, 10, "!!ARBvp1.0") == 0) {
-    c.kind = ProgramKind::Vertex;
-  } else if (text.compare(bang, 10, "!!ARBfp1.0") == 0) {
-    c.kind = ProgramKind::Fragment;
-  } else {
-    throw std::invalid_argument("unknown program header");
-  }
-  text = text.substr(bang + 10);
-
-  std::set<std::string> temps, params, inline_params, attributes;
-  std::map<std::string, std::string> attrib_aliases;  // ATTRIB name = binding
-  // Issue 24: temporaries written since the last indirection (tempsOutput), and temporaries an
-  // ALU instruction read or wrote since then (aluTemps).
-  std::set<std::string> temps_output, alu_temps;
-
-  std::istringstream statements(text);
-  std::string st;
-  while (std::getline(statements, st, ';')) {
-    st = trim(st);
-    if (st.empty()) continue;
-    if (st == "END" || st.rfind("END", 0) == 0) break;
-    std::istringstream words(st);
-    std::string opcode;
-    words >> opcode;
-    std::string rest;
-    std::getline(words, rest);
-    rest = trim(rest);
-    if (opcode == "OPTION") {
-      if (rest == "ARB_position_invariant") c.position_invariant = true;
-      continue;
-    }
-    if (opcode == "TEMP") {
-      for (const std::string& n : split_operands(rest)) temps.insert(n);
-      continue;
-    }
-    if (opcode == "ADDRESS" || opcode == "OUTPUT" || opcode == "ALIAS") continue;
-    if (opcode == "ATTRIB") {
-      const size_t eq = rest.find('=');
-      if (eq == std::string::npos) throw std::invalid_argument("ATTRIB without '=': " + st);
-      attrib_aliases[trim(rest.substr(0, eq))] = trim(rest.substr(eq + 1));
-      continue;
-    }
-    if (opcode == "PARAM") {
-      const size_t eq = rest.find('=');
-      if (eq == std::string::npos) throw std::invalid_argument("PARAM without '=': " + st);
-      std::string name = trim(rest.substr(0, eq));
-      int size = 1;
-      const size_t br = name.find('[');
-      if (br != std::string::npos) {
-        const std::string n = name.substr(br + 1, name.find(']') - br - 1);
-        name = trim(name.substr(0, br));
-        if (!n.empty()) {
-          size = std::stoi(n);
-        } else {  // PARAM a[] = { {..}, {..} }: count the top-level entries
-          std::string init = trim(rest.substr(eq + 1));
-          if (init.size() >= 2 && init.front() == '{') init = init.substr(1, init.size() - 2);
-          size = static_cast<int>(split_operands(init).size());
-        }
-      }
-      params.insert(name);
-      c.parameters += size;
-      continue;
-    }
-    // An instruction.
-    std::string op = opcode;
-    if (op.size() > 4 && op.substr(op.size() - 4) == "_SAT") op = op.substr(0, op.size() - 4);
-    const std::vector<std::string> operands = split_operands(rest);
-    if (operands.empty()) throw std::invalid_argument("instruction without operands: " + st);
-    const bool texture = c.kind == ProgramKind::Fragment && is_texture_opcode(op);
-    // KIL has only a source; everything else has a destination first.
-    const bool has_dst = op != "KIL";
-    size_t n_src = operands.size() - (has_dst ? 1 : 0);
-    if (texture && op != "KIL") n_src = 1;  // texture[n] and the target are not operands
-    std::string dst_temp;
-    if (has_dst) {
-      const std::string d = operand_base(operands[0]);
-      if (temps.count(d)) dst_temp = d;
-    }
-    std::vector<std::string> src_temps;
-    for (size_t k = 0; k < n_src; ++k) {
-      const std::string& raw = operands[(has_dst ? 1 : 0) + k];
-      std::string b = operand_base(raw);
-      if (attrib_aliases.count(b)) b = attrib_aliases[b];
-      // An element of a declared PARAM array (c[0]) is part of that declaration.
-      const size_t br = b.find('[');
-      if (br != std::string::npos && params.count(b.substr(0, br))) b = b.substr(0, br);
-      if (temps.count(b)) {
-        src_temps.push_back(b);
-      } else if (params.count(b)) {
-        // a declared PARAM: already counted
-      } else if (b.rfind("fragment.", 0) == 0 || b.rfind("vertex.", 0) == 0) {
-        attributes.insert(b);
-      } else if (!b.empty()) {
-        inline_params.insert(b);  // literal or program.*/state.* binding used directly
-      }
-    }
-    if (texture) {
-      ++c.tex;
-      const bool reads_new = !src_temps.empty() && temps_output.count(src_temps[0]);
-      const bool overwrites_alu = !dst_temp.empty() && alu_temps.count(dst_temp);
-      if (reads_new || overwrites_alu) {
-        ++c.indirections;
-        temps_output.clear();
-        alu_temps.clear();
+int texture_indirections(const std::vector<TemporaryUse>& code) {
+  int n = 1;
+  std::set<int> written, alu_used;
+  for (const TemporaryUse& in : code) {
+    if (in.texture) {
+      if ((in.coord >= 0 && written.count(in.coord)) || (in.dst >= 0 && alu_used.count(in.dst))) {
+        ++n;
+        written.clear();
+        alu_used.clear();
       }
     } else {
-      ++c.alu;
-      for (const std::string& t : src_temps) alu_temps.insert(t);
-      if (!dst_temp.empty()) alu_temps.insert(dst_temp);
+      for (int t : in.srcs) {
+        if (t >= 0) alu_used.insert(t);
+      }
+      if (in.dst >= 0) alu_used.insert(in.dst);
     }
-    if (op != "KIL" && !dst_temp.empty()) temps_output.insert(dst_temp);
+    if (in.dst >= 0) written.insert(in.dst);
   }
-  c.temporaries = static_cast<int>(temps.size());
+  return n;
+}
+
+ProgramCounts count_parsed(const arbfp::text::Program& p) {
+  ProgramCounts c;
+  c.kind = p.kind;
+  std::set<std::string> attributes, inline_params;
+  for (const Instruction& in : p.code) {
+    // A vertex program has no texture instructions (the parser refuses them): all of it is ALU.
+    ++(in.texture ? c.tex : c.alu);
+    for (const Operand& o : in.srcs) {
+      if (o.file == RegFile::Attrib) attributes.insert(o.binding);
+      if (o.file == RegFile::InlineParam) {
+        inline_params.insert(o.slot.constant ? constant_key(o.slot) : o.slot.binding);
+      }
+    }
+  }
+  c.temporaries = static_cast<int>(p.temps.size());
+  c.address_registers = static_cast<int>(p.addresses.size());
+  // Every declared slot (an array counts its size, used or not) plus each distinct constant or
+  // binding written in an instruction: the ARB specs' PROGRAM_PARAMETERS bindings, an upper
+  // bound of what any driver keeps.
+  for (const auto& d : p.params) c.parameters += static_cast<int>(d.slots.size());
   c.parameters += static_cast<int>(inline_params.size());
-  for (const auto& [name, binding] : attrib_aliases) attributes.insert(binding);
+  c.referenced_parameters = MesaParameterList().count(p);
+  // Inputs the program reads (an ATTRIB that is declared and never read binds nothing).
   c.attributes = static_cast<int>(attributes.size());
-  if (c.kind == ProgramKind::Vertex) {
-    c.alu += c.tex;
-    c.tex = 0;
-    c.indirections = 1;
+  std::vector<TemporaryUse> uses;
+  auto temp = [](const Operand& o) { return o.file == RegFile::Temp ? o.index : -1; };
+  for (const Instruction& in : p.code) {
+    TemporaryUse u{in.texture, in.has_dst ? temp(in.dst) : -1, -1, {}};
+    for (const Operand& s : in.srcs) u.srcs.push_back(temp(s));
+    if (in.texture) u.coord = u.srcs.front();
+    uses.push_back(u);
   }
+  c.indirections = p.kind == ProgramKind::Fragment ? texture_indirections(uses) : 1;
+  c.position_invariant = p.has_option("ARB_position_invariant");
   return c;
+}
+
+ProgramCounts count_program(const std::string& source) {
+  return count_parsed(arbfp::text::parse(source));
 }
 
 }  // namespace lt::budget

@@ -121,6 +121,10 @@ void emit_normal(ir::Block& code, const Shading& s, const Reg& n) {
   const Reg& r = s.r;
   code.op(Op::DP3, r.masked("x"), {n, n});
   code.op(Op::RSQ, r.masked("y"), {r.swz("x")});
+  if (!s.zero_normal_guard) {
+    code.op(Op::MUL, s.N.masked("xyz"), {n, r.swz("y")}, "no zero normal in this scene");
+    return;
+  }
   // RSQ(0) = +inf, clamped so the mask below multiplies finite values.
   code.op(Op::MIN, r.masked("y"), {r.swz("y"), s.guard.inv_normal_max});
   code.op(Op::SGE, r.masked("z"), {r.swz("x"), s.guard.normal_length_sq_min});
@@ -141,7 +145,8 @@ void emit_normalize(ir::Block& code, const Reg& dst, const Reg& src, bool clamp,
   code.op(Op::MUL, dst.masked("xyz"), {src, dst.swz("w")});
 }
 
-void emit_point_light_direction(ir::Block& code, const Shading& s, const Reg& position) {
+void emit_point_light_direction(ir::Block& code, const Shading& s, const Reg& position,
+                                bool distance_zero_guard) {
   const bool vertex = code.kind() == ir::ProgramKind::Vertex;
   const Reg &L = s.L, &r = s.r;
   code.op(Op::SUB, L.masked("xyz"), {position, s.P});
@@ -154,6 +159,8 @@ void emit_point_light_direction(ir::Block& code, const Shading& s, const Reg& po
     code.op(Op::MUL, L.masked("xyz"), {L, r.swz("x")});
     code.op(Op::SGE, r.masked("y"), {-L.swz("w"), s.material.zero});
     code.op(Op::MAD, L.masked("xyz"), {s.N, r.swz("y"), L});
+  } else if (!distance_zero_guard) {
+    code.op(Op::MUL, L.masked("xyz"), {L, r.swz("x")}, "the light touches no surface");
   } else {
     code.op(Op::MUL, L.masked("xyz"), {L, r.swz("x")});
     code.text(
@@ -175,7 +182,7 @@ void emit_view_vector(ir::Block& code, const Shading& s) {
 }
 
 Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, size_t light,
-                         const Reg& light_vector) {
+                         const Reg& light_vector, bool distance_zero_guard) {
   const std::string name = "# light " + std::to_string(light);
   if (scene.lights[light].type == Light::Type::Directional) {
     code.text(name + ": directional\n");
@@ -188,7 +195,7 @@ Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, 
   } else {
     code.text(name + ": point. L = (position - P) / dist, and L = N at distance 0.\n");
   }
-  emit_point_light_direction(code, s, light_vector);
+  emit_point_light_direction(code, s, light_vector, distance_zero_guard);
   return s.L;
 }
 

@@ -64,18 +64,23 @@ struct Shading {
   ir::Reg P;  // camera-relative position (an attribute)
   Guards guard;
   MaterialParams material;
+  // The zero-normal guard of emit_normal; false where no interpolated normal can vanish
+  // (arb_guards.h).
+  bool zero_normal_guard = true;
 };
 
-// N = n / |n|, or 0 when |n| < kMinNormalLength; r.xyz is scratch.
+// N = n / |n|, or 0 when |n| < kMinNormalLength (without s.zero_normal_guard: n / |n|); r.xyz
+// is scratch.
 void emit_normal(ir::Block& code, const Shading& s, const ir::Reg& n);
 // V = normalize(-P). A vertex program clamps 1/|P| so a vertex at the eye gets V = 0.
 void emit_view_vector(ir::Block& code, const Shading& s);
 // Light i's comment and its L: the directional light's PARAM, or for a point light s.L =
 // (position - P) / dist, and L = N at distance 0 (CMP in a fragment program, a mask in a vertex
-// program). A point light leaves 1/dist in r.x, which the fragment program's attenuation reads;
-// scratch: r.x (and r.y in a vertex program).
+// program; the fragment program's CMP only with `distance_zero_guard`). A point light leaves
+// 1/dist in r.x, which the fragment program's attenuation reads; scratch: r.x (and r.y in a
+// vertex program).
 ir::Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, size_t light,
-                             const ir::Reg& light_vector);
+                             const ir::Reg& light_vector, bool distance_zero_guard = true);
 // H = L + N * d, normalised on request, and t = dot(V, -H) into `t` (one lane). A fragment
 // program saturates t here; a vertex program saturates whole groups afterwards.
 void emit_t(ir::Block& code, const Shading& s, const ir::Reg& L, bool normalize_h,

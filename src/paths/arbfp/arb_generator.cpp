@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "paths/arbfp/arb_emitters.h"
+#include "paths/arbfp/arb_guards.h"
 #include "paths/arbfp/arb_lobe.h"
 
 namespace lt::arbfp {
@@ -65,6 +66,7 @@ struct Key {
   bool ortho = false, ambient = false, any_point = false;
   size_t lights = 0, groups = 0;
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
+  GuardNeeds guards = {};               // the fragment program's, for this scene
   std::vector<std::string> notes = {};
 };
 
@@ -95,6 +97,8 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
     k.method = PowMethod::Exact;
   }
   if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
+  k.guards = guard_needs(scene, material, variant.all_guards);
+  for (const std::string& n : k.guards.notes) k.notes.push_back(n);
   if (k.vertex_lobe) {
     k.notes.push_back(std::string("pow=mul:vertex: t and the lobe per vertex, Gouraud-") +
                       "interpolated" + (k.any_point ? " (point lights: L at the vertex too)" : ""));
@@ -213,6 +217,7 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
   d.text("# albedo.w = 1 is the output alpha (coverage for the comparison).\n");
   f.albedo = d.param("albedo", vec4(material.albedo, 1));
   f.s.guard = declare_guards(d);
+  f.s.zero_normal_guard = k.guards.zero_normal;
   f.s.P = attrib("fragment.texcoord[0]");
   f.s.r = p.temp("r");
   f.s.N = p.temp("N");
@@ -257,13 +262,13 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
 
 // att = 1 / max(kc + kl dist + kq dist^2, kMinAttenuationDenominator), from the r.x = 1/dist
 // that emit_point_light_direction left.
-void emit_attenuation(ir::Block& code, const Shading& s, const Reg& k, const Reg& att) {
+void emit_attenuation(ir::Block& code, const Shading& s, const Reg& k, const Reg& att, bool floor) {
   const Reg& r = s.r;
   code.text("# dist = 1 / RSQ(dist^2): RCP(+inf) = 0, so no NaN at distance 0.\n");
   code.op(Op::RCP, r.masked("y"), {r.swz("x")});
   code.op(Op::MAD, r.masked("z"), {r.swz("y"), k.swz("y"), k.swz("x")});
   code.op(Op::MAD, r.masked("z"), {s.L.swz("w"), k.swz("z"), r.swz("z")});
-  code.op(Op::MAX, r.masked("z"), {r.swz("z"), s.guard.attenuation_min});
+  if (floor) code.op(Op::MAX, r.masked("z"), {r.swz("z"), s.guard.attenuation_min});
   code.op(Op::RCP, att, {r.swz("z")});
 }
 
@@ -274,9 +279,11 @@ void fragment_lights(Fragment& f, const Key& k) {
       "\n# Per light: diffuse (and attenuation), then t = saturate(dot(V, -H)) with H = L + "
       "N*d.\n");
   for (size_t i = 0; i < k.lights; ++i) {
-    const Reg L = emit_light_direction(code, f.s, k.scene, i, f.light_vector[i]);
+    const Reg L =
+        emit_light_direction(code, f.s, k.scene, i, f.light_vector[i], k.guards.distance_zero[i]);
     if (k.scene.lights[i].type == Light::Type::Point) {
-      emit_attenuation(code, f.s, f.light_k[i], write_lane(f.att, i));
+      emit_attenuation(code, f.s, f.light_k[i], write_lane(f.att, i),
+                       k.guards.attenuation_floor[i]);
     }
     code.op_sat(Op::DP3, write_lane(f.diffuse, i), {f.s.N, L});
     if (k.fragment_lobe) emit_t(code, f.s, L, k.tr.normalize_distorted_light, write_lane(f.tv, i));

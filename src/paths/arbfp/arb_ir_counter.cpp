@@ -5,38 +5,6 @@
 
 namespace lt::arbfp::ir {
 
-namespace {
-
-// Texture indirections by the algorithm of ARB_fragment_program issue 24: a texture instruction
-// starts a new indirection when its coordinate is a temporary written since the last one began,
-// or when it overwrites a temporary an ALU instruction used since then.
-int indirections(const std::vector<Instr>& code) {
-  int n = 1;
-  std::set<int> written, alu_used;  // temporaries, by declaration index
-  auto temp = [](const Reg& r) { return r.file == File::Temp ? r.index : -1; };
-  for (const Instr& in : code) {
-    const bool has_dst = in.op != Op::KIL;
-    const int dst = has_dst ? temp(in.dst) : -1;
-    if (info(in.op).texture) {
-      const int coord = temp(in.srcs.front());
-      if ((coord >= 0 && written.count(coord)) || (dst >= 0 && alu_used.count(dst))) {
-        ++n;
-        written.clear();
-        alu_used.clear();
-      }
-    } else {
-      for (const Reg& s : in.srcs) {
-        if (temp(s) >= 0) alu_used.insert(temp(s));
-      }
-      if (dst >= 0) alu_used.insert(dst);
-    }
-    if (dst >= 0) written.insert(dst);
-  }
-  return n;
-}
-
-}  // namespace
-
 budget::ProgramCounts count(const Program& p) {
   budget::ProgramCounts c;
   c.kind = p.kind();
@@ -53,7 +21,15 @@ budget::ProgramCounts count(const Program& p) {
   // One slot per PARAM: the IR has no arrays, inline literals or direct state bindings.
   c.parameters = static_cast<int>(p.params().size());
   c.attributes = static_cast<int>(attributes.size());
-  c.indirections = p.kind() == ProgramKind::Fragment ? indirections(code) : 1;
+  std::vector<budget::TemporaryUse> uses;
+  auto temp = [](const Reg& r) { return r.file == File::Temp ? r.index : -1; };
+  for (const Instr& in : code) {
+    budget::TemporaryUse u{info(in.op).texture, in.op != Op::KIL ? temp(in.dst) : -1, -1, {}};
+    for (const Reg& s : in.srcs) u.srcs.push_back(temp(s));
+    if (u.texture) u.coord = u.srcs.front();
+    uses.push_back(u);
+  }
+  c.indirections = p.kind() == ProgramKind::Fragment ? budget::texture_indirections(uses) : 1;
   const auto& o = p.options();
   c.position_invariant = std::find(o.begin(), o.end(), "ARB_position_invariant") != o.end();
   return c;

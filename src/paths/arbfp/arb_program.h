@@ -8,6 +8,15 @@
 
 namespace lt::arbfp {
 
+// What glProgramStringARB made of a text: the program object, or Mesa's error (the byte offset
+// of GL_PROGRAM_ERROR_POSITION_ARB and GL_PROGRAM_ERROR_STRING_ARB). Leaves the program bound.
+struct ArbLoad {
+  GLuint id = 0;  // 0 when refused (the object is deleted)
+  GLint error_position = -1;
+  std::string error;
+};
+ArbLoad load_arb_program(GLenum target, const std::string& source);
+
 class ArbProgram {
  public:
   // `target` is GL_VERTEX_PROGRAM_ARB or GL_FRAGMENT_PROGRAM_ARB. Throws std::runtime_error with

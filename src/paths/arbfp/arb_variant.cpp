@@ -30,18 +30,38 @@ std::string valid_names() {
   return s + "pow=lut:N:u8|f16|f32 with 2 <= N <= 4096";
 }
 
-}  // namespace
+const char kAllGuards[] = ":guards=all";
 
-std::string PowVariant::name() const {
-  if (method == PowMethod::Lut)
-    return "pow=lut:" + std::to_string(lut_size) + ":" + model::to_string(lut_format);
+std::string method_name(const PowVariant& v) {
+  if (v.method == PowMethod::Lut)
+    return "pow=lut:" + std::to_string(v.lut_size) + ":" + model::to_string(v.lut_format);
   for (const MethodName& m : kMethods) {
-    if (m.method == method && m.per_vertex == per_vertex) return std::string("pow=") + m.name;
+    if (m.method == v.method && m.per_vertex == v.per_vertex) return std::string("pow=") + m.name;
   }
   return "?";
 }
 
+PowVariant parse_method(const std::string& name);
+
+}  // namespace
+
+std::string PowVariant::name() const {
+  return method_name(*this) + (all_guards ? kAllGuards : "");
+}
+
 PowVariant parse_variant(const std::string& name) {
+  const size_t n = sizeof kAllGuards - 1;
+  if (name.size() > n && name.compare(name.size() - n, n, kAllGuards) == 0) {
+    PowVariant v = parse_method(name.substr(0, name.size() - n));
+    v.all_guards = true;
+    return v;
+  }
+  return parse_method(name);
+}
+
+namespace {
+
+PowVariant parse_method(const std::string& name) {
   PowVariant v;
   const std::string prefix = "pow=";
   if (name.rfind(prefix, 0) != 0) {
@@ -71,7 +91,11 @@ PowVariant parse_variant(const std::string& name) {
       throw InputError("--variant", name, "LUT format must be u8, f16 or f32");
     if (v.name() == name) return v;
   }
-  throw InputError("--variant", name, "unknown arbfp variant (" + valid_names() + ")");
+  throw InputError(
+      "--variant", name,
+      "unknown arbfp variant (" + valid_names() + ", each with an optional " + kAllGuards + ")");
 }
+
+}  // namespace
 
 }  // namespace lt::arbfp

@@ -25,13 +25,16 @@ struct PowVariant {
   // passes them four lights to a texcoord; the fragment program keeps diffuse and attenuation
   // per pixel. The cheapest fragment program, at the price of Gouraud-interpolating the lobe.
   bool per_vertex = false;
+  // ":guards=all": every hard-case guard in the fragment program, also those the scene cannot
+  // trigger (arb_guards.h drops those by default); the same image, a longer program.
+  bool all_guards = false;
 
   std::string name() const;  // as given to --variant, e.g. "pow=lut:256:u8"
 };
 
 // Parses a --variant name ("pow=exact", "pow=lut:N:u8|f16|f32", "pow=sg", "pow=sg-simplified",
-// "pow=sg-fitted", "pow=mul", "pow=mul:vertex"). Throws InputError("--variant", name, ...) when
-// malformed.
+// "pow=sg-fitted", "pow=mul", "pow=mul:vertex"), each with an optional ":guards=all". Throws
+// InputError("--variant", name, ...) when malformed.
 PowVariant parse_variant(const std::string& name);
 
 }  // namespace lt::arbfp

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "paths/arbfp/arb_budget.h"
+#include "paths/arbfp/arb_file_budget.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_program.h"
@@ -187,6 +188,16 @@ PathInfo arbfp_path_info() {
     *rq.out << (rq.json ? budget::to_json(r).dump(2) + "\n" : budget::format_table(r));
     *rq.first_overrun = r.first_overrun();
     return r.fits();
+  };
+  // Hand-written ARB_vertex_program / ARB_fragment_program text, checked by our counter and by
+  // Mesa (arb_file_budget.h).
+  info.program_extensions = {".fp", ".vp", ".arb"};
+  info.program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
+  info.budget_file = [](const std::string& file, const BudgetRequest& rq) {
+    const arbfp::FileBudget b = arbfp::budget_arb_file(file, rq.profile);
+    *rq.out << (rq.json ? arbfp::to_json(b).dump(2) + "\n" : arbfp::to_text(b));
+    *rq.first_overrun = b.first_overrun();
+    return b.fits();
   };
   return info;
 }

@@ -1,0 +1,34 @@
+// Which of the fragment program's hard-case guards a scene can trigger (issue 10): the
+// zero-normal guard (MIN/SGE/MUL of emit_normal, for an interpolated normal below
+// kMinNormalLength) only when some triangle's interpolated normal can vanish, that is when the
+// origin lies in (or within a margin of) the triangle of its three vertex normals, whose convex
+// hull every interpolated normal lies in; a point light's distance-0 guard (the CMP that makes
+// L = N at distance 0) only when the light can touch a surface of the material, tested against
+// the bounds of its meshes; its attenuation floor (the MAX with kMinAttenuationDenominator) only
+// when kc + kl d + kq d^2 can fall below the floor at the distance d the bounds allow. What a
+// scene cannot trigger is dropped (the image is the same: each guard changes a pixel only where
+// its case occurs), and `info` says why.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace lt::arbfp {
+
+struct GuardNeeds {
+  bool zero_normal = true;
+  std::vector<bool> distance_zero;      // per light (false for directional lights)
+  std::vector<bool> attenuation_floor;  // per light (false for directional lights)
+  std::vector<std::string> notes;       // one per dropped guard, with the figure that allows it
+};
+
+// Every guard for `all` (the variant's :guards=all); otherwise those the objects drawn with
+// `material` can trigger.
+GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all);
+
+// The smallest distance from the origin to the triangle (a, b, c), in double.
+double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+
+}  // namespace lt::arbfp
