@@ -9,6 +9,9 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "mesh/mesh_io.h"
+#include "scene/gltf/gltf_document.h"
+#include "scene/gltf/gltf_scene.h"
+#include "scene/scene_limits.h"
 
 namespace lt {
 
@@ -149,36 +152,14 @@ int line_of_offset(const std::string& text, size_t offset) {
   return line;
 }
 
-constexpr double kMaxImageSide = 16384;
+}  // namespace
 
-// Magnitude limits. They keep every product of the equation finite in float, the precision of
-// the GL paths (albedo * color * intensity * (lobe * scale + ambient) * attenuation * thickness
-// * tint stays below 1e30 < FLT_MAX = 3.4e38), so no Inf or NaN can reach an image, and they are
-// far beyond anything a scene means: HDR colours up to 1e4, coordinates up to 1e9 (the 1e6 hard
-// case is inside), powers up to 1e6 (t^p underflows to 0 long before).
-constexpr double kMaxColour = 1e4;  // albedo, colour, intensity, scale, ambient, thickness, tint
-constexpr double kMaxCoordinate = 1e9;  // positions, eye, target, translate
-constexpr double kMaxPower = 1e6;
-constexpr double kMaxDistortion = 1e3;
-constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
-constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
+std::string over_limit_message(std::size_t count, const char* noun, std::size_t limit) {
+  return std::to_string(count) + " " + noun + ", more than the limit of " + std::to_string(limit);
+}
 
-// Count limits (README, "Scene limits"): what a scene may ask for, far above what the targets
-// draw, and low enough that no accepted scene stalls a command. The GL paths unroll the light
-// loop, and llvmpipe's compile time grows with it (64 lights: ~6 s for glsl; 1,000: minutes);
-// fixed-function GL and the Wii's XF light 8 at a time.
-constexpr std::size_t kMaxLights = 64;
-constexpr std::size_t kMaxMaterials = 256;
-constexpr std::size_t kMaxObjects = 1024;
-// Every vertex is uploaded (float) and shaded per path; 2^24 vertices is ~10 binary PLYs at the
-// mesh size cap, and a GL index buffer of 2^24 entries per attribute stays addressable.
-constexpr std::size_t kMaxSceneVertices = std::size_t{1} << 24;
-
-// Vertex colours that are a material's thickness take the scalar's bounds (kMaxColour): a float
-// colour of 3e38, or a negative one, would carry Inf or a negative lobe into every path. Checked
-// where the colour becomes a number of the equation; a mesh's colours mean nothing before.
-void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, size_t object,
-                            const fs::path& mesh_path) {
+void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file,
+                            const std::string& where, const std::string& mesh_name) {
   for (size_t v = 0; v < mesh.colors.size(); ++v) {
     for (int c = 0; c < 3; ++c) {
       const double x = mesh.colors[v][c];
@@ -186,7 +167,7 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, s
       std::string what = "vertex ";
       what.append(std::to_string(v))
           .append(" of ")
-          .append(mesh_path.string())
+          .append(mesh_name)
           .append(" has colour component ")
           .append(json(x).dump())
           .append(", out of range for \"thickness\": \"vertex\" (allowed [")
@@ -194,12 +175,10 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, s
           .append(", ")
           .append(json(kMaxColour).dump())
           .append("])");
-      throw InputError(file, "objects[" + std::to_string(object) + "].mesh", what);
+      throw InputError(file, where, what);
     }
   }
 }
-
-}  // namespace
 
 glm::dmat4 Transform::matrix() const {
   glm::dmat4 m(1.0);
@@ -282,8 +261,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       top.fail("materials", "expected a non-empty object of named materials");
     }
     if (mats.size() > kMaxMaterials) {
-      top.fail("materials", std::to_string(mats.size()) + " materials, more than the limit of " +
-                                std::to_string(kMaxMaterials));
+      top.fail("materials", over_limit_message(mats.size(), "materials", kMaxMaterials));
     }
     for (auto it = mats.begin(); it != mats.end(); ++it) {
       ObjectReader m(it.value(), "materials." + it.key(), file);
@@ -326,8 +304,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     const json& lights = top.get("lights");
     if (!lights.is_array()) top.fail("lights", "expected an array");
     if (lights.size() > kMaxLights) {
-      top.fail("lights", std::to_string(lights.size()) + " lights, more than the limit of " +
-                             std::to_string(kMaxLights));
+      top.fail("lights", over_limit_message(lights.size(), "lights", kMaxLights));
     }
     for (size_t i = 0; i < lights.size(); ++i) {
       ObjectReader l(lights[i], "lights[" + std::to_string(i) + "]", file);
@@ -366,8 +343,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     const json& objs = top.get("objects");
     if (!objs.is_array() || objs.empty()) top.fail("objects", "expected a non-empty array");
     if (objs.size() > kMaxObjects) {
-      top.fail("objects", std::to_string(objs.size()) + " objects, more than the limit of " +
-                              std::to_string(kMaxObjects));
+      top.fail("objects", over_limit_message(objs.size(), "objects", kMaxObjects));
     }
     for (size_t i = 0; i < objs.size(); ++i) {
       const std::string kp = "objects[" + std::to_string(i) + "]";
@@ -443,27 +419,26 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
                            " has no vertex colours (bake them with `ltrender bake`)");
     }
     if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
-      check_vertex_thickness(mesh, file, i, obj.mesh_path);
+      check_vertex_thickness(mesh, file, "objects[" + std::to_string(i) + "].mesh",
+                             obj.mesh_path.string());
     }
     // World space in double: what the reference shades and what the GL paths upload
     // (camera-relative) as float.
-    const glm::dmat4 m = obj.transform.matrix();
-    const glm::dmat3 nm = glm::transpose(glm::inverse(glm::dmat3(m)));
-    for (auto& p : mesh.positions) p = glm::dvec3(m * glm::dvec4(p, 1.0));
-    for (auto& n : mesh.normals) {
-      const glm::dvec3 w = nm * n;
-      const double len = glm::length(w);
-      n = len > 0 ? w / len : glm::dvec3(0);
-    }
+    transform_to_world(mesh, obj.transform.matrix());
     obj.mesh = std::move(mesh);
   }
   return scene;
 }
 
-Scene load_scene(const fs::path& path) {
-  const std::string text = read_input_file(path, InputKind::Scene);
+Scene load_scene(const fs::path& path, const SceneOptions& options) {
+  const bool gltf_file = gltf::is_gltf_path(path);
+  if (!gltf_file && !options.camera.empty()) {
+    throw InputError("--camera", options.camera,
+                     "only a glTF scene (.gltf, .glb) has named cameras");
+  }
   try {
-    return parse_scene(text, path, path.parent_path());
+    if (gltf_file) return gltf::load_gltf_scene(path, options.camera);
+    return parse_scene(read_input_file(path, InputKind::Scene), path, path.parent_path());
   } catch (const std::bad_alloc&) {
     // Within the size cap, but too large for this machine: the scene's failure, named as such
     // (its meshes name themselves).

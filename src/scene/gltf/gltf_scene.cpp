@@ -1,0 +1,259 @@
+#include "scene/gltf/gltf_scene.h"
+
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <limits>
+#include <map>
+
+#include "core/error.h"
+#include "scene/gltf/gltf_document.h"
+#include "scene/gltf/gltf_geometry.h"
+#include "scene/gltf/gltf_lights.h"
+#include "scene/gltf/gltf_materials.h"
+#include "scene/gltf/gltf_notes.h"
+#include "scene/scene_limits.h"
+
+namespace lt::gltf {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// A camera's far plane when zfar is absent (an infinite projection, glTF 2.0 §3.10.3): this many
+// times znear, which keeps a 24-bit depth buffer usable.
+constexpr double kInfiniteFarOverNear = 1e5;
+
+// glTF 2.0 §3.5.3: a node's local transform is `matrix` (column-major) or T * R * S, with the
+// rotation a unit quaternion (x, y, z, w).
+glm::dmat4 local_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+  if (node.rotation.size() == 4) {
+    const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    m = m * glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3) m = glm::scale(m, glm::make_vec3(node.scale.data()));
+  return m;
+}
+
+struct CameraInstance {
+  int camera, node;
+  glm::dmat4 world;
+};
+
+struct Importer {
+  const Document& doc;
+  Scene& scene;
+  std::map<int, int> material_of;  // glTF material (-1: default) -> Scene::materials index
+  std::vector<CameraInstance> cameras;
+  std::size_t vertices = 0;
+
+  int material(int index) {
+    auto it = material_of.find(index);
+    if (it != material_of.end()) return it->second;
+    if (scene.materials.size() >= kMaxMaterials) {
+      doc.fail("/materials",
+               over_limit_message(scene.materials.size() + 1, "materials", kMaxMaterials));
+    }
+    if (index >= static_cast<int>(doc.model.materials.size())) {
+      doc.fail("/materials/" + std::to_string(index), "no such material");
+    }
+    scene.materials.push_back(index < 0 ? default_material()
+                                        : map_material(doc, index, scene.import_notes));
+    return material_of[index] = static_cast<int>(scene.materials.size() - 1);
+  }
+
+  void add_mesh(int mesh_index, const glm::dmat4& world) {
+    const tinygltf::Mesh& mesh = doc.model.meshes[static_cast<std::size_t>(mesh_index)];
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const std::string ptr =
+          "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(p);
+      if (scene.objects.size() >= kMaxObjects) {
+        doc.fail(ptr,
+                 over_limit_message(scene.objects.size() + 1, "objects (primitives)", kMaxObjects));
+      }
+      PrimitiveMesh prim = read_primitive(doc, mesh_index, static_cast<int>(p));
+      vertices += prim.mesh.positions.size();
+      if (vertices > kMaxSceneVertices)
+        doc.fail(ptr, over_limit_message(vertices, "vertices", kMaxSceneVertices));
+      scene.import_notes.insert(scene.import_notes.end(), prim.notes.begin(), prim.notes.end());
+      SceneObject obj;
+      obj.mesh_path = doc.path;
+      obj.material = material(mesh.primitives[p].material);
+      const Material& mat = scene.materials[static_cast<std::size_t>(obj.material)];
+      if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
+        if (!prim.mesh.has_colors())
+          doc.fail(ptr, "material \"" + mat.name +
+                            "\" takes its thickness from COLOR_0, which this primitive lacks");
+        check_vertex_thickness(prim.mesh, doc.path.string(), ptr + "/attributes/COLOR_0",
+                               "the primitive");
+      } else if (prim.mesh.has_colors()) {
+        scene.import_notes.push_back("ignored " + ptr +
+                                     "/attributes/COLOR_0 as base colour: read and kept, the "
+                                     "thickness only with extras.ltrender.thickness \"vertex\"");
+      }
+      transform_to_world(prim.mesh, world);
+      obj.mesh = std::move(prim.mesh);
+      scene.objects.push_back(std::move(obj));
+    }
+    note_unmapped_keys(at_pointer(doc.json, "/meshes/" + std::to_string(mesh_index)),
+                       "/meshes/" + std::to_string(mesh_index), {"primitives"},
+                       "not part of the term", scene.import_notes);
+  }
+
+  void visit(int node_index, const glm::dmat4& parent, int depth) {
+    const std::string ptr = "/nodes/" + std::to_string(node_index);
+    if (node_index < 0 || static_cast<std::size_t>(node_index) >= doc.model.nodes.size())
+      doc.fail(ptr, "no such node");
+    // §3.5.1: the node hierarchy is a set of disjoint trees; a cycle would recurse forever.
+    if (depth > 1024) doc.fail(ptr, "the node hierarchy is deeper than 1024 (a cycle?)");
+    const tinygltf::Node& node = doc.model.nodes[static_cast<std::size_t>(node_index)];
+    const glm::dmat4 world = parent * local_matrix(node);
+    if (node.mesh >= static_cast<int>(doc.model.meshes.size())) doc.fail(ptr + "/mesh", "no such mesh");
+    if (node.camera >= static_cast<int>(doc.model.cameras.size())) doc.fail(ptr + "/camera", "no such camera");
+    if (node.mesh >= 0) add_mesh(node.mesh, world);
+    if (node.camera >= 0) cameras.push_back({node.camera, node_index, world});
+    const json& light = at_pointer(doc.json, ptr + "/extensions/KHR_lights_punctual/light");
+    if (light.is_number_integer()) {
+      if (scene.lights.size() >= kMaxLights)
+        doc.fail(ptr, over_limit_message(scene.lights.size() + 1, "lights", kMaxLights));
+      scene.lights.push_back(map_light(doc, light.get<int>(), world, scene.import_notes));
+    }
+    note_unmapped_keys(at_pointer(doc.json, ptr), ptr,
+                       {"children", "matrix", "translation", "rotation", "scale", "mesh", "camera",
+                        "KHR_lights_punctual"},
+                       "not part of the term (no skinning or animation)", scene.import_notes);
+    for (int child : node.children) visit(child, world, depth + 1);
+  }
+
+  void camera_from(const CameraInstance& inst) {
+    const tinygltf::Camera& cam = doc.model.cameras[static_cast<std::size_t>(inst.camera)];
+    const std::string ptr = "/cameras/" + std::to_string(inst.camera);
+    Camera& c = scene.camera;
+    // §3.10.1: a camera looks down its node's -Z with +Y up.
+    c.eye = glm::dvec3(inst.world * glm::dvec4(0, 0, 0, 1));
+    c.target = c.eye + glm::normalize(glm::dvec3(inst.world * glm::dvec4(0, 0, -1, 0)));
+    c.up = glm::dvec3(inst.world * glm::dvec4(0, 1, 0, 0));
+    if (cam.type == "perspective") {
+      c.projection = Camera::Projection::Perspective;
+      c.fov_y_deg = cam.perspective.yfov * 180 / M_PI;
+      c.near = cam.perspective.znear;
+      c.far = cam.perspective.zfar > 0 ? cam.perspective.zfar : c.near * kInfiniteFarOverNear;
+      if (!(c.fov_y_deg >= 1e-3 && c.fov_y_deg <= 179))
+        doc.fail(ptr + "/perspective/yfov", "out of range (0.001 to 179 degrees)");
+      if (!(c.near > 0)) doc.fail(ptr + "/perspective/znear", "must be > 0");
+      if (cam.perspective.aspectRatio > 0) {
+        scene.width = static_cast<int>(std::clamp(
+            std::round(kDefaultHeight * cam.perspective.aspectRatio), 1.0, kMaxImageSide));
+      }
+      scene.import_notes.push_back(
+          "mapped " + ptr + " (perspective, node " + std::to_string(inst.node) + ") -> fov_y_deg " +
+          json(c.fov_y_deg).dump() + ", near " + json(c.near).dump() + ", far " +
+          json(c.far).dump() + (cam.perspective.zfar > 0 ? "" : " (no zfar: near x 1e5)") +
+          ", image " + std::to_string(scene.width) + "x" + std::to_string(scene.height));
+    } else {
+      c.projection = Camera::Projection::Orthographic;
+      // §3.10.3: ymag is half the orthographic view's height.
+      c.height = 2 * cam.orthographic.ymag;
+      c.near = cam.orthographic.znear;
+      c.far = cam.orthographic.zfar;
+      if (!(c.height > 0)) doc.fail(ptr + "/orthographic/ymag", "must be > 0");
+      scene.import_notes.push_back("mapped " + ptr + " (orthographic, node " +
+                                   std::to_string(inst.node) + ") -> height " +
+                                   json(c.height).dump() + " (2 x ymag), near " +
+                                   json(c.near).dump() + ", far " + json(c.far).dump());
+      scene.import_notes.push_back("ignored " + ptr +
+                                   "/orthographic/xmag: the image's aspect sets the width");
+    }
+    if (!(c.far > c.near)) doc.fail(ptr, "zfar must be greater than znear");
+    if (!(glm::length(glm::cross(c.forward(), c.up)) > 1e-9))
+      doc.fail("/nodes/" + std::to_string(inst.node), "its transform collapses the camera's axes");
+  }
+
+  // No camera in the file: look down -Z at the meshes' bounding box, from far enough away that
+  // its bounding sphere fits the default 40 degree view.
+  void framing_camera() {
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const SceneObject& o : scene.objects) {
+      for (const glm::dvec3& p : o.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    if (scene.objects.empty() || lo.x > hi.x) lo = hi = glm::dvec3(0);
+    const glm::dvec3 centre = (lo + hi) * 0.5;
+    const double radius = std::max(glm::length(hi - lo) * 0.5, 1e-3);
+    Camera& c = scene.camera;
+    const double distance = radius / std::sin(glm::radians(c.fov_y_deg) * 0.5);
+    c.target = centre;
+    c.eye = centre + glm::dvec3(0, 0, distance);
+    c.near = std::max(distance - radius, distance * 1e-3);
+    c.far = distance + radius * 2;
+    scene.import_notes.push_back(
+        "default camera: no camera in the file, framing the meshes from +Z (eye " +
+        json({c.eye.x, c.eye.y, c.eye.z}).dump() + ")");
+  }
+};
+
+bool camera_named(const Document& doc, const CameraInstance& c, const std::string& name) {
+  return doc.model.cameras[static_cast<std::size_t>(c.camera)].name == name ||
+         doc.model.nodes[static_cast<std::size_t>(c.node)].name == name;
+}
+
+}  // namespace
+
+Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
+  const Document doc = read_document(path);
+  Scene scene;
+  scene.file = path;
+  scene.width = kDefaultWidth;
+  scene.height = kDefaultHeight;
+  Importer im{doc, scene, {}, {}, 0};
+
+  // §3.5.2: the scene to render is `scene`; without it, the first (the spec leaves it to the
+  // application).
+  if (doc.model.scenes.empty()) doc.fail("/scenes", "the file has no scene to render");
+  const int scene_index = doc.model.defaultScene >= 0 ? doc.model.defaultScene : 0;
+  if (scene_index >= static_cast<int>(doc.model.scenes.size())) doc.fail("/scene", "no such scene");
+  for (int root : doc.model.scenes[static_cast<std::size_t>(scene_index)].nodes)
+    im.visit(root, glm::dmat4(1.0), 0);
+  for (std::size_t s = 0; s < doc.model.scenes.size(); ++s) {
+    if (static_cast<int>(s) != scene_index)
+      scene.import_notes.push_back("ignored /scenes/" + std::to_string(s) +
+                                   ": not the scene to render");
+  }
+  if (scene.objects.empty())
+    doc.fail("/scenes/" + std::to_string(scene_index), "the scene has no mesh to render");
+
+  if (!camera.empty()) {
+    auto it = std::find_if(im.cameras.begin(), im.cameras.end(),
+                           [&](const CameraInstance& c) { return camera_named(doc, c, camera); });
+    if (it == im.cameras.end()) {
+      std::string names;
+      for (const CameraInstance& c : im.cameras) {
+        names += (names.empty() ? "" : ", ") +
+                 doc.model.cameras[static_cast<std::size_t>(c.camera)].name;
+      }
+      throw InputError("--camera", camera,
+                       "no camera of that name in " + path.string() +
+                           " (cameras: " + (names.empty() ? "none" : names) + ")");
+    }
+    im.camera_from(*it);
+  } else if (!im.cameras.empty()) {
+    im.camera_from(im.cameras.front());
+  } else {
+    im.framing_camera();
+  }
+  if (scene.lights.empty())
+    scene.import_notes.push_back(
+        "no KHR_lights_punctual light in the scene: it renders black (ambient_light is 0)");
+
+  note_unmapped_keys(
+      doc.json, "",
+      {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
+       "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+      "not used by the term", scene.import_notes);
+  return scene;
+}
+
+}  // namespace lt::gltf
