@@ -291,6 +291,16 @@ TEST_F(GltfMapping, SceneLimitsApply) {
     EXPECT_NE(e.what_only().find("65 lights, more than the limit of 64"), std::string::npos)
         << e.what();
   }
+  test::GltfWriter far = test::volume_quad();
+  far.doc["nodes"][0]["scale"] = {1e9, 1, 1};  // vertex x = -1e9 * 1 is inside, the matrix too
+  far.doc["nodes"][0]["translation"] = {1, 0, 0};
+  try {
+    load(far);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/nodes/0");
+    EXPECT_NE(e.what_only().find("beyond the coordinate limit"), std::string::npos) << e.what();
+  }
   test::GltfWriter big = test::volume_quad();
   big.doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {2e4, 1, 1, 1};
   EXPECT_THROW(load(big), InputError);  // kMaxColour

@@ -39,6 +39,19 @@ glm::dmat4 local_matrix(const tinygltf::Node& node) {
   return m;
 }
 
+// A node's transform can carry a point beyond the scene's coordinate bound (kMaxCoordinate)
+// although the file's numbers are each within it: checked in world space, where the bound means
+// something (scene_limits.h).
+void check_world_point(const Document& doc, const std::string& node_ptr, const glm::dvec3& p,
+                       const std::string& what) {
+  for (int c = 0; c < 3; ++c) {
+    if (!(std::abs(p[c]) <= kMaxCoordinate)) {
+      doc.fail(node_ptr, "its transform puts " + what + " at " + json({p.x, p.y, p.z}).dump() +
+                             ", beyond the coordinate limit 1e9");
+    }
+  }
+}
+
 struct CameraInstance {
   int camera, node;
   glm::dmat4 world;
@@ -66,7 +79,7 @@ struct Importer {
     return material_of[index] = static_cast<int>(scene.materials.size() - 1);
   }
 
-  void add_mesh(int mesh_index, const glm::dmat4& world) {
+  void add_mesh(int mesh_index, const glm::dmat4& world, const std::string& node_ptr) {
     const tinygltf::Mesh& mesh = doc.model.meshes[static_cast<std::size_t>(mesh_index)];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
       const std::string ptr =
@@ -96,6 +109,10 @@ struct Importer {
                                      "thickness only with extras.ltrender.thickness \"vertex\"");
       }
       transform_to_world(prim.mesh, world);
+      for (std::size_t v = 0; v < prim.mesh.positions.size(); ++v) {
+        check_world_point(doc, node_ptr, prim.mesh.positions[v],
+                          "vertex " + std::to_string(v) + " of " + ptr);
+      }
       obj.mesh = std::move(prim.mesh);
       scene.objects.push_back(std::move(obj));
     }
@@ -112,15 +129,18 @@ struct Importer {
     if (depth > 1024) doc.fail(ptr, "the node hierarchy is deeper than 1024 (a cycle?)");
     const tinygltf::Node& node = doc.model.nodes[static_cast<std::size_t>(node_index)];
     const glm::dmat4 world = parent * local_matrix(node);
-    if (node.mesh >= static_cast<int>(doc.model.meshes.size())) doc.fail(ptr + "/mesh", "no such mesh");
-    if (node.camera >= static_cast<int>(doc.model.cameras.size())) doc.fail(ptr + "/camera", "no such camera");
-    if (node.mesh >= 0) add_mesh(node.mesh, world);
+    if (node.mesh >= static_cast<int>(doc.model.meshes.size()))
+      doc.fail(ptr + "/mesh", "no such mesh");
+    if (node.camera >= static_cast<int>(doc.model.cameras.size()))
+      doc.fail(ptr + "/camera", "no such camera");
+    if (node.mesh >= 0) add_mesh(node.mesh, world, ptr);
     if (node.camera >= 0) cameras.push_back({node.camera, node_index, world});
     const json& light = at_pointer(doc.json, ptr + "/extensions/KHR_lights_punctual/light");
     if (light.is_number_integer()) {
       if (scene.lights.size() >= kMaxLights)
         doc.fail(ptr, over_limit_message(scene.lights.size() + 1, "lights", kMaxLights));
       scene.lights.push_back(map_light(doc, light.get<int>(), world, scene.import_notes));
+      check_world_point(doc, ptr, scene.lights.back().position, "its light");
     }
     note_unmapped_keys(at_pointer(doc.json, ptr), ptr,
                        {"children", "matrix", "translation", "rotation", "scale", "mesh", "camera",
@@ -135,6 +155,7 @@ struct Importer {
     Camera& c = scene.camera;
     // §3.10.1: a camera looks down its node's -Z with +Y up.
     c.eye = glm::dvec3(inst.world * glm::dvec4(0, 0, 0, 1));
+    check_world_point(doc, "/nodes/" + std::to_string(inst.node), c.eye, "its camera");
     c.target = c.eye + glm::normalize(glm::dvec3(inst.world * glm::dvec4(0, 0, -1, 0)));
     c.up = glm::dvec3(inst.world * glm::dvec4(0, 1, 0, 0));
     if (cam.type == "perspective") {
