@@ -339,6 +339,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     }
   }
 
+  std::vector<gltf::ObjectImport> gltf_objects;
   {
     const json& objs = top.get("objects");
     if (!objs.is_array() || objs.empty()) top.fail("objects", "expected a non-empty array");
@@ -349,13 +350,19 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       const std::string kp = "objects[" + std::to_string(i) + "]";
       ObjectReader o(objs[i], kp, file);
       SceneObject obj;
-      const std::string mesh = o.string("mesh");
+      // An object is a mesh file, or the meshes of a glTF file (one node's subtree, or its
+      // scene), placed by `transform` after the file's own node transforms.
+      const bool gltf_object = o.has("gltf");
+      const std::string key = gltf_object ? "gltf" : "mesh";
+      if (gltf_object && o.has("mesh"))
+        o.fail(o.key_path("mesh"), "an object has \"mesh\" or \"gltf\", not both");
+      const std::string mesh = o.string(key);
       // JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL
       // (and read another file), and so would the printed message.
       if (mesh.find('\0') != std::string::npos) {
         std::string shown;
         for (char c : mesh) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
-        o.fail(o.key_path("mesh"), "a path cannot contain a NUL byte: \"" + shown + "\"");
+        o.fail(o.key_path(key), "a path cannot contain a NUL byte: \"" + shown + "\"");
       }
       obj.mesh_path = base_dir / mesh;
       // A missing mesh, or one that is no file to read (a directory, a FIFO), is the scene's
@@ -363,19 +370,23 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       // (read_mesh).
       std::error_code ec;
       if (!fs::exists(obj.mesh_path, ec)) {
-        o.fail(o.key_path("mesh"), "mesh file not found: " + obj.mesh_path.string());
+        o.fail(o.key_path(key), key + " file not found: " + obj.mesh_path.string());
       }
       try {
-        check_input_file(obj.mesh_path, InputKind::Mesh);
+        check_input_file(obj.mesh_path, gltf_object ? InputKind::Gltf : InputKind::Mesh);
       } catch (const InputError& e) {
-        o.fail(o.key_path("mesh"), "mesh file " + obj.mesh_path.string() + " " + e.what_only());
+        o.fail(o.key_path(key), key + " file " + obj.mesh_path.string() + " " + e.what_only());
       }
-      const std::string mat = o.string("material");
-      auto found = std::find(material_names.begin(), material_names.end(), mat);
-      if (found == material_names.end()) {
-        o.fail(o.key_path("material"), "unknown material \"" + mat + "\"");
+      int material = -1;  // a glTF object without one keeps the file's materials
+      if (!gltf_object || o.has("material")) {
+        const std::string mat = o.string("material");
+        auto found = std::find(material_names.begin(), material_names.end(), mat);
+        if (found == material_names.end()) {
+          o.fail(o.key_path("material"), "unknown material \"" + mat + "\"");
+        }
+        material = static_cast<int>(found - material_names.begin());
       }
-      obj.material = static_cast<int>(found - material_names.begin());
+      obj.material = std::max(material, 0);
       if (o.has("transform")) {
         ObjectReader t = o.object("transform");
         obj.transform.translate =
@@ -391,6 +402,12 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
               t.vec3("scale", glm::dvec3(1), 1 / kMaxScaleFactor, kMaxScaleFactor);
         }
         t.finish();
+      }
+      if (gltf_object) {
+        gltf_objects.push_back(
+            {kp, obj.mesh_path, o.string("node", std::string()), material, obj.transform.matrix()});
+        o.finish();
+        continue;
       }
       o.finish();
       scene.objects.push_back(std::move(obj));
@@ -427,6 +444,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     transform_to_world(mesh, obj.transform.matrix());
     obj.mesh = std::move(mesh);
   }
+  for (const gltf::ObjectImport& g : gltf_objects) gltf::import_objects(g, file, scene);
   return scene;
 }
 

@@ -63,8 +63,11 @@ struct Importer {
   std::map<int, int> material_of;  // glTF material (-1: default) -> Scene::materials index
   std::vector<CameraInstance> cameras;
   std::size_t vertices = 0;
+  bool import_lights = true;  // false for a JSON scene's object: the scene has its own
+  int material_override = -1;
 
   int material(int index) {
+    if (material_override >= 0) return material_override;
     auto it = material_of.find(index);
     if (it != material_of.end()) return it->second;
     if (scene.materials.size() >= kMaxMaterials) {
@@ -134,9 +137,18 @@ struct Importer {
     if (node.camera >= static_cast<int>(doc.model.cameras.size()))
       doc.fail(ptr + "/camera", "no such camera");
     if (node.mesh >= 0) add_mesh(node.mesh, world, ptr);
-    if (node.camera >= 0) cameras.push_back({node.camera, node_index, world});
+    if (node.camera >= 0) {
+      cameras.push_back({node.camera, node_index, world});
+      if (!import_lights)
+        scene.import_notes.push_back("ignored " + ptr +
+                                     "/camera: a JSON scene's object brings no camera");
+    }
     const json& light = at_pointer(doc.json, ptr + "/extensions/KHR_lights_punctual/light");
-    if (light.is_number_integer()) {
+    if (light.is_number_integer() && !import_lights) {
+      scene.import_notes.push_back(
+          "ignored " + ptr +
+          "/extensions/KHR_lights_punctual: a JSON scene's object brings no lights");
+    } else if (light.is_number_integer()) {
       if (scene.lights.size() >= kMaxLights)
         doc.fail(ptr, over_limit_message(scene.lights.size() + 1, "lights", kMaxLights));
       scene.lights.push_back(map_light(doc, light.get<int>(), world, scene.import_notes));
@@ -221,7 +233,63 @@ bool camera_named(const Document& doc, const CameraInstance& c, const std::strin
          doc.model.nodes[static_cast<std::size_t>(c.node)].name == name;
 }
 
+// The product of a node's ancestors' transforms (glTF 2.0 §3.5.3: world = parent's world x
+// local), found through the children lists.
+glm::dmat4 ancestors_matrix(const Document& doc, int node) {
+  glm::dmat4 m(1.0);
+  for (int depth = 0; depth < 1024; ++depth) {
+    int parent = -1;
+    for (std::size_t p = 0; p < doc.model.nodes.size() && parent < 0; ++p) {
+      const auto& ch = doc.model.nodes[p].children;
+      if (std::find(ch.begin(), ch.end(), node) != ch.end()) parent = static_cast<int>(p);
+    }
+    if (parent < 0) return m;
+    m = local_matrix(doc.model.nodes[static_cast<std::size_t>(parent)]) * m;
+    node = parent;
+  }
+  doc.fail("/nodes/" + std::to_string(node), "the node hierarchy is deeper than 1024 (a cycle?)");
+}
+
+// The roots of the scene to render: §3.5.2 names it by `scene`; without it the spec leaves the
+// choice to the application, and the first is taken.
+const std::vector<int>& scene_roots(const Document& doc, int& scene_index) {
+  if (doc.model.scenes.empty()) doc.fail("/scenes", "the file has no scene to render");
+  scene_index = doc.model.defaultScene >= 0 ? doc.model.defaultScene : 0;
+  if (scene_index >= static_cast<int>(doc.model.scenes.size())) doc.fail("/scene", "no such scene");
+  return doc.model.scenes[static_cast<std::size_t>(scene_index)].nodes;
+}
+
 }  // namespace
+
+void import_objects(const ObjectImport& object, const std::string& scene_file, Scene& scene) {
+  const Document doc = read_document(object.path);
+  Importer im{doc, scene, {}, {}, 0};
+  for (const SceneObject& o : scene.objects) im.vertices += o.mesh.positions.size();
+  im.import_lights = false;
+  im.material_override = object.material;
+  const std::size_t first = scene.objects.size();
+  if (object.node.empty()) {
+    int scene_index = 0;
+    for (int root : scene_roots(doc, scene_index)) im.visit(root, object.placement, 0);
+  } else {
+    int found = -1;
+    for (std::size_t n = 0; n < doc.model.nodes.size() && found < 0; ++n) {
+      if (doc.model.nodes[n].name == object.node) found = static_cast<int>(n);
+    }
+    if (found < 0)
+      throw InputError(scene_file, object.key + ".node",
+                       "no node named \"" + object.node + "\" in " + object.path.string());
+    im.visit(found, object.placement * ancestors_matrix(doc, found), 0);
+  }
+  if (scene.objects.size() == first)
+    throw InputError(
+        scene_file, object.key,
+        "no mesh under " +
+            (object.node.empty() ? std::string("the scene") : "node \"" + object.node + "\"") +
+            " of " + object.path.string());
+  for (std::size_t i = first; i < scene.objects.size(); ++i)
+    scene.objects[i].transform = Transform{};
+}
 
 Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
   const Document doc = read_document(path);
@@ -231,13 +299,8 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
   scene.height = kDefaultHeight;
   Importer im{doc, scene, {}, {}, 0};
 
-  // §3.5.2: the scene to render is `scene`; without it, the first (the spec leaves it to the
-  // application).
-  if (doc.model.scenes.empty()) doc.fail("/scenes", "the file has no scene to render");
-  const int scene_index = doc.model.defaultScene >= 0 ? doc.model.defaultScene : 0;
-  if (scene_index >= static_cast<int>(doc.model.scenes.size())) doc.fail("/scene", "no such scene");
-  for (int root : doc.model.scenes[static_cast<std::size_t>(scene_index)].nodes)
-    im.visit(root, glm::dmat4(1.0), 0);
+  int scene_index = 0;
+  for (int root : scene_roots(doc, scene_index)) im.visit(root, glm::dmat4(1.0), 0);
   for (std::size_t s = 0; s < doc.model.scenes.size(); ++s) {
     if (static_cast<int>(s) != scene_index)
       scene.import_notes.push_back("ignored /scenes/" + std::to_string(s) +

@@ -22,4 +22,20 @@ inline constexpr int kDefaultWidth = 640;
 // the file does not have. Scene::import_notes lists what was mapped and what was ignored.
 Scene load_gltf_scene(const std::filesystem::path& path, const std::string& camera = "");
 
+// A JSON scene's object {"gltf": FILE, "node": NAME, "material": M, "transform": T}.
+struct ObjectImport {
+  std::string key;  // "objects[3]", for errors of the scene file
+  std::filesystem::path path;
+  std::string node;           // empty: the file's scene
+  int material = -1;          // an index into Scene::materials; -1: the file's own materials
+  glm::dmat4 placement{1.0};  // the object's transform, applied after the file's
+};
+
+// Appends the meshes of the node (its subtree, in the node's world transform in the file) or of
+// the whole scene to `scene`, with the file's materials (mapped as above, appended) unless one
+// is given. The file's lights and cameras are not imported (noted): the JSON scene has its own.
+// The scene limits count these objects, vertices and materials with the scene's. Throws
+// InputError naming `scene_file` and the key for a node the file does not have.
+void import_objects(const ObjectImport& object, const std::string& scene_file, Scene& scene);
+
 }  // namespace lt::gltf
