@@ -265,12 +265,14 @@ TEST_F(GltfMapping, EveryIgnoredPropertyIsNamed) {
   w.doc["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] =
       w.floats(std::vector<float>(16, 0), "VEC4", 4);
   w.doc["animations"] = json::array();
+  w.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"] = json::object();
   w.doc["nodes"][0]["weights"] = {0.5};
   const Scene s = load(w);
   for (const char* p : {"ignored /materials/0/emissiveFactor", "ignored /materials/0/doubleSided",
                         "ignored /materials/0/pbrMetallicRoughness/roughnessFactor",
                         "ignored /materials/0/extensions/KHR_materials_clearcoat",
                         "ignored /meshes/0/primitives/0/attributes/TANGENT", "ignored /animations",
+                        "ignored /meshes/0/primitives/0/extensions/KHR_materials_variants",
                         "ignored /nodes/0/weights", "ignored /cameras/0/orthographic/xmag",
                         "mapped /materials/0/pbrMetallicRoughness/baseColorFactor",
                         "mapped /materials/0/extensions/KHR_materials_volume",

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstring>
 #include <set>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -196,6 +197,10 @@ Document read_document(const fs::path& path) {
     if (!reads.failed_file.empty())
       doc.fail(pointer, reads.failed_file + " " + reads.failed_reason);
     doc.fail(pointer, message.empty() ? "tinygltf could not read the file" : message);
+  }
+  std::istringstream lines(warn);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty()) doc.warnings.push_back("tinygltf: " + line);
   }
   return doc;
 }

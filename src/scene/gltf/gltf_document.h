@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace lt::gltf {
 
@@ -17,6 +18,8 @@ struct Document {
   // The document's JSON as written: extension objects (KHR_materials_volume, ...) are read from
   // it, and every property the importer does not map is listed from it (`ltrender info`).
   nlohmann::json json;
+  // What tinygltf warned about while reading a file it accepted, one line each (`info`).
+  std::vector<std::string> warnings;
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& what) const;
 };

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene/gltf/gltf_accessor.h"
+#include "scene/gltf/gltf_notes.h"
 #include "scene/scene_limits.h"
 
 namespace lt::gltf {
@@ -158,8 +159,8 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
       out.notes.push_back("ignored " + ptr + "/attributes/" + name + ": not part of the term");
     }
   }
-  if (!prim.targets.empty())
-    out.notes.push_back("ignored " + ptr + "/targets: morph targets are not animated");
+  note_unmapped_keys(at_pointer(doc.json, ptr), ptr, {"attributes", "indices", "material", "mode"},
+                     "not part of the term (targets: morph targets are not animated)", out.notes);
   return out;
 }
 

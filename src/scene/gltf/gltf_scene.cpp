@@ -264,6 +264,7 @@ const std::vector<int>& scene_roots(const Document& doc, int& scene_index) {
 void import_objects(const ObjectImport& object, const std::string& scene_file, Scene& scene) {
   const Document doc = read_document(object.path);
   Importer im{doc, scene, {}, {}, 0};
+  scene.import_notes.insert(scene.import_notes.end(), doc.warnings.begin(), doc.warnings.end());
   for (const SceneObject& o : scene.objects) im.vertices += o.mesh.positions.size();
   im.import_lights = false;
   im.material_override = object.material;
@@ -298,6 +299,7 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
   scene.width = kDefaultWidth;
   scene.height = kDefaultHeight;
   Importer im{doc, scene, {}, {}, 0};
+  scene.import_notes.insert(scene.import_notes.end(), doc.warnings.begin(), doc.warnings.end());
 
   int scene_index = 0;
   for (int root : scene_roots(doc, scene_index)) im.visit(root, glm::dmat4(1.0), 0);
