@@ -14,6 +14,7 @@ packages=(
   libimath-dev                               # half (binary16) for the fp16 path
   libembree-dev                              # ray casting for the thickness baker
   nlohmann-json3-dev libcli11-dev            # scene files, command line
+  libtinygltf-dev                            # glTF 2.0 scenes (.gltf, .glb)
   libgtest-dev libbenchmark-dev              # tests, micro-benchmarks
   fonts-dejavu-core                          # the contact sheet's labels (DejaVu Sans)
   chromium                                   # the report page's test in a real browser

@@ -19,7 +19,7 @@ Action add_export(CLI::App& app) {
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
   sub->add_option("TARGET", *target, "gx (libogc C for the Wii / GameCube)")->required();
-  sub->add_option("SCENE", *scene_path, "Scene file (JSON)")->required();
+  sub->add_option("SCENE", *scene_path, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_option("--variant", *variant, "The gx variant (default t=vertex)");
   sub->add_option("-o,--output", *output, "FILE.c")->required();
   return [=]() -> int {

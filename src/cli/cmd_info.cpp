@@ -15,7 +15,7 @@ Action add_info(CLI::App& app) {
   auto scene_path = std::make_shared<std::string>();
   auto show_source = std::make_shared<bool>(false);
   auto* sub = app.add_subcommand("info", "What a scene needs and what each path builds for it");
-  sub->add_option("SCENE", *scene_path, "Scene file (JSON)")->required();
+  sub->add_option("SCENE", *scene_path, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_flag("--source", *show_source, "Also print every generated program");
   return [scene_path, show_source]() -> int {
     const Scene scene = load_scene(*scene_path);
@@ -36,6 +36,10 @@ Action add_info(CLI::App& app) {
       << yes_no(n.any_translucency) << ", vertex thickness " << yes_no(n.any_vertex_thickness)
       << ", normalised H " << yes_no(n.any_normalized_h) << ", ambient light "
       << yes_no(n.ambient_light) << "\n";
+    // A glTF import: what each property of the file became, and what was left out.
+    if (!scene.import_notes.empty())
+      o << "glTF import (" << scene.import_notes.size() << " notes):\n";
+    for (const std::string& note : scene.import_notes) o << "  " << note << "\n";
     for (const Material& m : scene.materials) {
       o << "  material " << m.name << ": ";
       if (!m.translucency) {

@@ -10,7 +10,7 @@ namespace lt::cli {
 
 namespace {
 struct RenderArgs {
-  std::string scene, path, variant, output, program;
+  std::string scene, path, variant, output, program, camera;
   int width = 0, height = 0;
 };
 
@@ -28,12 +28,14 @@ std::string path_help() {
 Action add_render(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   auto* sub = app.add_subcommand("render", "Render a scene through one path");
-  sub->add_option("SCENE", a->scene, "Scene file (JSON)")->required();
+  sub->add_option("SCENE", a->scene, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_option("--path", a->path, "reference | glsl | flat | ...")->required();
   sub->add_option("--variant", a->variant, "The path's approximation (see below)");
   sub->add_option("--width", a->width, "Override the scene's width")->check(CLI::Range(1, 16384));
   sub->add_option("--height", a->height, "Override the scene's height")
       ->check(CLI::Range(1, 16384));
+  sub->add_option("--camera", a->camera,
+                  "glTF scenes: the camera (or the node holding it) to look through, by name");
   sub->add_option("-o,--output", a->output, "OUT.png (8-bit) or OUT.exr (float, A = coverage)")
       ->required();
   sub->add_option("--program", a->program,
@@ -52,7 +54,7 @@ Action add_render(CLI::App& app) {
     // side is the scene's. Their error names the options, not the scene's `image` key.
     const char* const size_options = "--width/--height";
     if (a->width > 0 && a->height > 0) check_image_size(a->width, a->height, size_options, "");
-    const Scene scene = load_scene(a->scene);
+    const Scene scene = load_scene(a->scene, SceneOptions{a->camera});
     if (a->width > 0 || a->height > 0) {
       check_image_size(a->width > 0 ? a->width : scene.width,
                        a->height > 0 ? a->height : scene.height, size_options, "");

@@ -166,6 +166,8 @@ const char* kind_noun(InputKind kind) {
       return "image file";
     case InputKind::Program:
       return "program file";
+    case InputKind::Gltf:
+      return "glTF file";
   }
   return "file";
 }
@@ -233,6 +235,7 @@ std::uintmax_t input_size_cap(InputKind kind) {
     case InputKind::Program:
       return 16 * kMiB;
     case InputKind::Mesh:
+    case InputKind::Gltf:  // a .glb holds its meshes: the mesh cap
       return 256 * kMiB;
     case InputKind::Image:
       return 512 * kMiB;

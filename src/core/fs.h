@@ -53,6 +53,7 @@ enum class InputKind {
   Mesh,     // PLY, OBJ, OFF, STL, OM: 256 MiB
   Image,    // PNG, EXR, ... (compare, goldens): 512 MiB
   Program,  // GX program files and any other text input: 16 MiB
+  Gltf,     // a .gltf or .glb and every buffer or image file it names: 256 MiB each
 };
 
 // The cap in bytes of one kind.

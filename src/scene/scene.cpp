@@ -9,6 +9,9 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "mesh/mesh_io.h"
+#include "scene/gltf/gltf_document.h"
+#include "scene/gltf/gltf_scene.h"
+#include "scene/scene_limits.h"
 
 namespace lt {
 
@@ -149,36 +152,14 @@ int line_of_offset(const std::string& text, size_t offset) {
   return line;
 }
 
-constexpr double kMaxImageSide = 16384;
+}  // namespace
 
-// Magnitude limits. They keep every product of the equation finite in float, the precision of
-// the GL paths (albedo * color * intensity * (lobe * scale + ambient) * attenuation * thickness
-// * tint stays below 1e30 < FLT_MAX = 3.4e38), so no Inf or NaN can reach an image, and they are
-// far beyond anything a scene means: HDR colours up to 1e4, coordinates up to 1e9 (the 1e6 hard
-// case is inside), powers up to 1e6 (t^p underflows to 0 long before).
-constexpr double kMaxColour = 1e4;  // albedo, colour, intensity, scale, ambient, thickness, tint
-constexpr double kMaxCoordinate = 1e9;  // positions, eye, target, translate
-constexpr double kMaxPower = 1e6;
-constexpr double kMaxDistortion = 1e3;
-constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
-constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
+std::string over_limit_message(std::size_t count, const char* noun, std::size_t limit) {
+  return std::to_string(count) + " " + noun + ", more than the limit of " + std::to_string(limit);
+}
 
-// Count limits (README, "Scene limits"): what a scene may ask for, far above what the targets
-// draw, and low enough that no accepted scene stalls a command. The GL paths unroll the light
-// loop, and llvmpipe's compile time grows with it (64 lights: ~6 s for glsl; 1,000: minutes);
-// fixed-function GL and the Wii's XF light 8 at a time.
-constexpr std::size_t kMaxLights = 64;
-constexpr std::size_t kMaxMaterials = 256;
-constexpr std::size_t kMaxObjects = 1024;
-// Every vertex is uploaded (float) and shaded per path; 2^24 vertices is ~10 binary PLYs at the
-// mesh size cap, and a GL index buffer of 2^24 entries per attribute stays addressable.
-constexpr std::size_t kMaxSceneVertices = std::size_t{1} << 24;
-
-// Vertex colours that are a material's thickness take the scalar's bounds (kMaxColour): a float
-// colour of 3e38, or a negative one, would carry Inf or a negative lobe into every path. Checked
-// where the colour becomes a number of the equation; a mesh's colours mean nothing before.
-void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, size_t object,
-                            const fs::path& mesh_path) {
+void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file,
+                            const std::string& where, const std::string& mesh_name) {
   for (size_t v = 0; v < mesh.colors.size(); ++v) {
     for (int c = 0; c < 3; ++c) {
       const double x = mesh.colors[v][c];
@@ -186,7 +167,7 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, s
       std::string what = "vertex ";
       what.append(std::to_string(v))
           .append(" of ")
-          .append(mesh_path.string())
+          .append(mesh_name)
           .append(" has colour component ")
           .append(json(x).dump())
           .append(", out of range for \"thickness\": \"vertex\" (allowed [")
@@ -194,10 +175,12 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file, s
           .append(", ")
           .append(json(kMaxColour).dump())
           .append("])");
-      throw InputError(file, "objects[" + std::to_string(object) + "].mesh", what);
+      throw InputError(file, where, what);
     }
   }
 }
+
+namespace {
 
 // One tolerance of the "regress" block: idiff's thresholds, in LSB (255 is the largest error
 // there is) and percent of pixels.
@@ -297,8 +280,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       top.fail("materials", "expected a non-empty object of named materials");
     }
     if (mats.size() > kMaxMaterials) {
-      top.fail("materials", std::to_string(mats.size()) + " materials, more than the limit of " +
-                                std::to_string(kMaxMaterials));
+      top.fail("materials", over_limit_message(mats.size(), "materials", kMaxMaterials));
     }
     for (auto it = mats.begin(); it != mats.end(); ++it) {
       ObjectReader m(it.value(), "materials." + it.key(), file);
@@ -341,8 +323,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     const json& lights = top.get("lights");
     if (!lights.is_array()) top.fail("lights", "expected an array");
     if (lights.size() > kMaxLights) {
-      top.fail("lights", std::to_string(lights.size()) + " lights, more than the limit of " +
-                             std::to_string(kMaxLights));
+      top.fail("lights", over_limit_message(lights.size(), "lights", kMaxLights));
     }
     for (size_t i = 0; i < lights.size(); ++i) {
       ObjectReader l(lights[i], "lights[" + std::to_string(i) + "]", file);
@@ -377,24 +358,30 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     }
   }
 
+  std::vector<gltf::ObjectImport> gltf_objects;
   {
     const json& objs = top.get("objects");
     if (!objs.is_array() || objs.empty()) top.fail("objects", "expected a non-empty array");
     if (objs.size() > kMaxObjects) {
-      top.fail("objects", std::to_string(objs.size()) + " objects, more than the limit of " +
-                              std::to_string(kMaxObjects));
+      top.fail("objects", over_limit_message(objs.size(), "objects", kMaxObjects));
     }
     for (size_t i = 0; i < objs.size(); ++i) {
       const std::string kp = "objects[" + std::to_string(i) + "]";
       ObjectReader o(objs[i], kp, file);
       SceneObject obj;
-      const std::string mesh = o.string("mesh");
+      // An object is a mesh file, or the meshes of a glTF file (one node's subtree, or its
+      // scene), placed by `transform` after the file's own node transforms.
+      const bool gltf_object = o.has("gltf");
+      const std::string key = gltf_object ? "gltf" : "mesh";
+      if (gltf_object && o.has("mesh"))
+        o.fail(o.key_path("mesh"), "an object has \"mesh\" or \"gltf\", not both");
+      const std::string mesh = o.string(key);
       // JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL
       // (and read another file), and so would the printed message.
       if (mesh.find('\0') != std::string::npos) {
         std::string shown;
         for (char c : mesh) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
-        o.fail(o.key_path("mesh"), "a path cannot contain a NUL byte: \"" + shown + "\"");
+        o.fail(o.key_path(key), "a path cannot contain a NUL byte: \"" + shown + "\"");
       }
       obj.mesh_path = base_dir / mesh;
       // A missing mesh, or one that is no file to read (a directory, a FIFO), is the scene's
@@ -402,19 +389,23 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       // (read_mesh).
       std::error_code ec;
       if (!fs::exists(obj.mesh_path, ec)) {
-        o.fail(o.key_path("mesh"), "mesh file not found: " + obj.mesh_path.string());
+        o.fail(o.key_path(key), key + " file not found: " + obj.mesh_path.string());
       }
       try {
-        check_input_file(obj.mesh_path, InputKind::Mesh);
+        check_input_file(obj.mesh_path, gltf_object ? InputKind::Gltf : InputKind::Mesh);
       } catch (const InputError& e) {
-        o.fail(o.key_path("mesh"), "mesh file " + obj.mesh_path.string() + " " + e.what_only());
+        o.fail(o.key_path(key), key + " file " + obj.mesh_path.string() + " " + e.what_only());
       }
-      const std::string mat = o.string("material");
-      auto found = std::find(material_names.begin(), material_names.end(), mat);
-      if (found == material_names.end()) {
-        o.fail(o.key_path("material"), "unknown material \"" + mat + "\"");
+      int material = -1;  // a glTF object without one keeps the file's materials
+      if (!gltf_object || o.has("material")) {
+        const std::string mat = o.string("material");
+        auto found = std::find(material_names.begin(), material_names.end(), mat);
+        if (found == material_names.end()) {
+          o.fail(o.key_path("material"), "unknown material \"" + mat + "\"");
+        }
+        material = static_cast<int>(found - material_names.begin());
       }
-      obj.material = static_cast<int>(found - material_names.begin());
+      obj.material = std::max(material, 0);
       if (o.has("transform")) {
         ObjectReader t = o.object("transform");
         obj.transform.translate =
@@ -430,6 +421,12 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
               t.vec3("scale", glm::dvec3(1), 1 / kMaxScaleFactor, kMaxScaleFactor);
         }
         t.finish();
+      }
+      if (gltf_object) {
+        gltf_objects.push_back(
+            {kp, obj.mesh_path, o.string("node", std::string()), material, obj.transform.matrix()});
+        o.finish();
+        continue;
       }
       o.finish();
       scene.objects.push_back(std::move(obj));
@@ -472,27 +469,27 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
                            " has no vertex colours (bake them with `ltrender bake`)");
     }
     if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
-      check_vertex_thickness(mesh, file, i, obj.mesh_path);
+      check_vertex_thickness(mesh, file, "objects[" + std::to_string(i) + "].mesh",
+                             obj.mesh_path.string());
     }
     // World space in double: what the reference shades and what the GL paths upload
     // (camera-relative) as float.
-    const glm::dmat4 m = obj.transform.matrix();
-    const glm::dmat3 nm = glm::transpose(glm::inverse(glm::dmat3(m)));
-    for (auto& p : mesh.positions) p = glm::dvec3(m * glm::dvec4(p, 1.0));
-    for (auto& n : mesh.normals) {
-      const glm::dvec3 w = nm * n;
-      const double len = glm::length(w);
-      n = len > 0 ? w / len : glm::dvec3(0);
-    }
+    transform_to_world(mesh, obj.transform.matrix());
     obj.mesh = std::move(mesh);
   }
+  for (const gltf::ObjectImport& g : gltf_objects) gltf::import_objects(g, file, scene);
   return scene;
 }
 
-Scene load_scene(const fs::path& path) {
-  const std::string text = read_input_file(path, InputKind::Scene);
+Scene load_scene(const fs::path& path, const SceneOptions& options) {
+  const bool gltf_file = gltf::is_gltf_path(path);
+  if (!gltf_file && !options.camera.empty()) {
+    throw InputError("--camera", options.camera,
+                     "only a glTF scene (.gltf, .glb) has named cameras");
+  }
   try {
-    return parse_scene(text, path, path.parent_path());
+    if (gltf_file) return gltf::load_gltf_scene(path, options.camera);
+    return parse_scene(read_input_file(path, InputKind::Scene), path, path.parent_path());
   } catch (const std::bad_alloc&) {
     // Within the size cap, but too large for this machine: the scene's failure, named as such
     // (its meshes name themselves).

@@ -92,11 +92,19 @@ struct Scene {
   std::vector<Light> lights;
   std::vector<SceneObject> objects;
   RegressBlock regress;
+  // A glTF scene's import: one line per property mapped, defaulted or ignored (`ltrender info`).
+  std::vector<std::string> import_notes;
+};
+
+struct SceneOptions {
+  std::string camera;  // glTF scenes: the camera (or its node) to look through, by name
 };
 
 // Parses, validates and loads every mesh. Throws InputError naming the file and the key
-// (e.g. "materials.marble.translucency.power") or the line of a JSON syntax error.
-Scene load_scene(const std::filesystem::path& path);
+// (e.g. "materials.marble.translucency.power") or the line of a JSON syntax error. A .gltf or
+// .glb is imported as a whole scene (scene/gltf/gltf_scene.h), its errors naming the JSON
+// pointer; every command that takes a scene goes through here.
+Scene load_scene(const std::filesystem::path& path, const SceneOptions& options = {});
 
 // Parses a scene from text (for tests); meshes are resolved relative to `base_dir`.
 Scene parse_scene(const std::string& text, const std::filesystem::path& file_for_errors,

@@ -1,0 +1,167 @@
+#include "scene/gltf/gltf_geometry.h"
+
+#include <cmath>
+
+#include "scene/gltf/gltf_accessor.h"
+#include "scene/gltf/gltf_notes.h"
+#include "scene/scene_limits.h"
+
+namespace lt::gltf {
+
+namespace {
+
+const char* mode_name(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS:
+      return "POINTS";
+    case TINYGLTF_MODE_LINE:
+      return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP:
+      return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+      return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+      return "TRIANGLE_FAN";
+  }
+  return "unknown";
+}
+
+// The attributes the importer reads; any other (TANGENT, TEXCOORD_1, JOINTS_0, ...) is listed
+// as ignored.
+bool is_read_attribute(const std::string& name) {
+  return name == "POSITION" || name == "NORMAL" || name == "COLOR_0" || name == "TEXCOORD_0";
+}
+
+}  // namespace
+
+PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_index) {
+  const std::string ptr =
+      "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(primitive_index);
+  const tinygltf::Primitive& prim = doc.model.meshes[static_cast<std::size_t>(mesh_index)]
+                                        .primitives[static_cast<std::size_t>(primitive_index)];
+  // §3.7.2.1: mode defaults to 4 (TRIANGLES); the paths draw triangle lists only.
+  if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+    doc.fail(ptr + "/mode", std::string("primitive mode ") + std::to_string(prim.mode) + " (" +
+                                mode_name(prim.mode) + ") is not read: only TRIANGLES (4) is");
+  }
+  PrimitiveMesh out;
+  TriangleMesh& mesh = out.mesh;
+  auto attribute = [&](const char* name) {
+    auto it = prim.attributes.find(name);
+    return it == prim.attributes.end() ? -1 : it->second;
+  };
+  const int position = attribute("POSITION");
+  if (position < 0) doc.fail(ptr + "/attributes", "no POSITION attribute");
+  const AccessorValues p = read_accessor(doc, position, "POSITION", {3});
+  mesh.positions.resize(p.count());
+  for (std::size_t v = 0; v < p.count(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      const double x = p.values[v * 3 + c];
+      if (!std::isfinite(x) || std::abs(x) > kMaxCoordinate) {
+        doc.fail(accessor_pointer(position),
+                 "POSITION of vertex " + std::to_string(v) + " is " + std::to_string(x) +
+                     (std::isfinite(x) ? ", beyond the coordinate limit 1e9" : " (not finite)"));
+      }
+      mesh.positions[v][c] = x;
+    }
+  }
+  const std::size_t n = mesh.positions.size();
+  auto same_count = [&](const AccessorValues& a, int index, const char* name) {
+    if (a.count() != n) {
+      doc.fail(accessor_pointer(index), std::string(name) + " has " + std::to_string(a.count()) +
+                                            " elements, POSITION " + std::to_string(n));
+    }
+  };
+
+  if (prim.indices >= 0 && static_cast<std::size_t>(prim.indices) < doc.model.accessors.size()) {
+    const tinygltf::Accessor& ia = doc.model.accessors[static_cast<std::size_t>(prim.indices)];
+    // §3.7.2.1: indices are UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT scalars, never
+    // normalised.
+    if (ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+      doc.fail(accessor_pointer(prim.indices) + "/componentType",
+               "indices must be unsigned integers (5121, 5123, 5125)");
+    }
+  }
+  std::vector<std::uint32_t> indices;
+  if (prim.indices >= 0) {
+    const AccessorValues idx = read_accessor(doc, prim.indices, "indices", {1});
+    indices.reserve(idx.values.size());
+    for (std::size_t i = 0; i < idx.values.size(); ++i) {
+      if (idx.values[i] >= static_cast<double>(n)) {
+        doc.fail(accessor_pointer(prim.indices),
+                 "index " + std::to_string(i) + " is " +
+                     std::to_string(static_cast<long long>(idx.values[i])) +
+                     ", the primitive has " + std::to_string(n) + " vertices");
+      }
+      indices.push_back(static_cast<std::uint32_t>(idx.values[i]));
+    }
+  } else {
+    // §3.7.2.1: without indices, vertices are drawn in order.
+    for (std::size_t v = 0; v < n; ++v) indices.push_back(static_cast<std::uint32_t>(v));
+  }
+  if (indices.size() % 3 != 0) {
+    doc.fail(ptr, std::to_string(indices.size()) + " indices, not a multiple of 3 for TRIANGLES");
+  }
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    mesh.triangles.emplace_back(indices[t], indices[t + 1], indices[t + 2]);
+  }
+  out.notes.push_back("mapped " + ptr + ": " + std::to_string(mesh.triangles.size()) +
+                      " triangles, " + std::to_string(n) + " vertices" +
+                      (prim.indices >= 0 ? ", indexed" : ", not indexed"));
+
+  // NORMAL: unit vectors by §3.7.2.1; anything not finite or of zero length is recomputed, as
+  // the mesh reader does.
+  const int normal = attribute("NORMAL");
+  bool normals_usable = normal >= 0;
+  if (normal >= 0) {
+    const AccessorValues a = read_accessor(doc, normal, "NORMAL", {3});
+    same_count(a, normal, "NORMAL");
+    mesh.normals.resize(n);
+    for (std::size_t v = 0; v < n && normals_usable; ++v) {
+      const glm::dvec3 w(a.values[v * 3], a.values[v * 3 + 1], a.values[v * 3 + 2]);
+      const double len = glm::length(w);
+      normals_usable = std::isfinite(len) && len > 0;
+      if (normals_usable) mesh.normals[v] = w / len;
+    }
+  }
+  if (!normals_usable) {
+    compute_area_weighted_normals(mesh);
+    out.notes.push_back("computed " + ptr + "/attributes/NORMAL: " +
+                        std::string(normal >= 0 ? "not finite or zero somewhere" : "absent") +
+                        ", computed from the triangles (area-weighted)");
+  }
+
+  // COLOR_0: vec3 or vec4, float or normalised u8/u16 (§3.7.2.1); alpha is not part of the term.
+  const int color = attribute("COLOR_0");
+  if (color >= 0) {
+    const AccessorValues a = read_accessor(doc, color, "COLOR_0", {3, 4});
+    same_count(a, color, "COLOR_0");
+    mesh.colors.resize(n);
+    for (std::size_t v = 0; v < n; ++v) {
+      for (int c = 0; c < 3; ++c) mesh.colors[v][c] = a.values[v * a.components + c];
+    }
+  }
+  const int uv = attribute("TEXCOORD_0");
+  if (uv >= 0) {
+    const AccessorValues a = read_accessor(doc, uv, "TEXCOORD_0", {2});
+    same_count(a, uv, "TEXCOORD_0");
+    mesh.uvs.resize(n);
+    for (std::size_t v = 0; v < n; ++v) mesh.uvs[v] = {a.values[v * 2], a.values[v * 2 + 1]};
+    out.notes.push_back("kept " + ptr +
+                        "/attributes/TEXCOORD_0 (for thickness maps, not used yet)");
+  }
+  for (const auto& [name, index] : prim.attributes) {
+    if (!is_read_attribute(name)) {
+      out.notes.push_back("ignored " + ptr + "/attributes/" + name + ": not part of the term");
+    }
+  }
+  note_unmapped_keys(at_pointer(doc.json, ptr), ptr, {"attributes", "indices", "material", "mode"},
+                     "not part of the term (targets: morph targets are not animated)", out.notes);
+  return out;
+}
+
+}  // namespace lt::gltf

@@ -1,0 +1,24 @@
+// Mesh primitives (glTF 2.0 §3.7.2) as TriangleMesh: POSITION, NORMAL (computed where missing),
+// COLOR_0, TEXCOORD_0 and the indices; triangles only.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/gltf/gltf_document.h"
+#include "scene/triangle_mesh.h"
+
+namespace lt::gltf {
+
+struct PrimitiveMesh {
+  TriangleMesh mesh;               // object space of its node
+  std::vector<std::string> notes;  // what was read, what was computed, what was ignored
+};
+
+// Reads /meshes/{mesh}/primitives/{primitive}. Throws InputError naming the pointer for: a mode
+// other than TRIANGLES (4), a missing POSITION, NaN, Inf or |x| > kMaxCoordinate positions,
+// indices that are not unsigned integers or reach past the vertices, attributes of different
+// lengths, and any accessor error (gltf_accessor.h).
+PrimitiveMesh read_primitive(const Document& doc, int mesh, int primitive);
+
+}  // namespace lt::gltf

@@ -1,0 +1,41 @@
+// A whole glTF 2.0 file (.gltf or .glb) as a Scene: its default scene's node hierarchy, meshes,
+// materials, KHR_lights_punctual lights and a camera. load_scene (scene/scene.h) calls it for
+// these extensions, so every command that takes a scene takes a glTF file.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace lt::gltf {
+
+// The image size of a glTF scene (glTF has none): 480 rows, and as many columns as the camera's
+// aspectRatio asks for (640 without one). `--width/--height` override both.
+inline constexpr int kDefaultHeight = 480;
+inline constexpr int kDefaultWidth = 640;
+
+// `camera`: the name of a camera (or of the node that holds it) to look through; empty: the
+// first camera of the scene's nodes, or, in a file without cameras, one that frames the meshes
+// from +Z (noted). Throws InputError naming the file and JSON pointer (gltf_document.h,
+// gltf_accessor.h, gltf_geometry.h, gltf_materials.h, gltf_lights.h), or "--camera" for a name
+// the file does not have. Scene::import_notes lists what was mapped and what was ignored.
+Scene load_gltf_scene(const std::filesystem::path& path, const std::string& camera = "");
+
+// A JSON scene's object {"gltf": FILE, "node": NAME, "material": M, "transform": T}.
+struct ObjectImport {
+  std::string key;  // "objects[3]", for errors of the scene file
+  std::filesystem::path path;
+  std::string node;           // empty: the file's scene
+  int material = -1;          // an index into Scene::materials; -1: the file's own materials
+  glm::dmat4 placement{1.0};  // the object's transform, applied after the file's
+};
+
+// Appends the meshes of the node (its subtree, in the node's world transform in the file) or of
+// the whole scene to `scene`, with the file's materials (mapped as above, appended) unless one
+// is given. The file's lights and cameras are not imported (noted): the JSON scene has its own.
+// The scene limits count these objects, vertices and materials with the scene's. Throws
+// InputError naming `scene_file` and the key for a node the file does not have.
+void import_objects(const ObjectImport& object, const std::string& scene_file, Scene& scene);
+
+}  // namespace lt::gltf
