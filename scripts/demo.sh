@@ -15,6 +15,9 @@ scripts/bake_demo_meshes.sh "$bin"
 # Per-vertex error against tessellation (issues 5 and 9): the backlit sphere at 42 to 10242
 # vertices, through the GL 1.3 combiners and the Wii's GX.
 "$bin" bench scenes/tessellation/*.json --paths combiners,gx -o out/tessellation --quiet "$@"
+# A glTF asset as the whole scene (issue 14): the baked blob with KHR_materials_volume,
+# diffuse transmission and punctual lights (scripts/make_gltf_demo.py made it).
+"$bin" bench scenes/gltf/blob.glb -o out/gltf --quiet "$@"
 echo
 cat out/report.md
 echo
