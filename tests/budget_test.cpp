@@ -303,3 +303,37 @@ TEST(BudgetCli, CombinersStagesAgainstProfiles) {
 
 }  // namespace
 }  // namespace lt
+
+namespace lt {
+namespace {
+
+// budget FILE.comb (issue 10): a hand-written combiner program is one pass, counted against the
+// profile with the stages, units and constants its file declares.
+TEST(BudgetCli, HandWrittenCombinerProgramsAgainstProfiles) {
+  const std::string file = (test::source_dir() / "combiners" / "lobe_vertex.comb").string();
+  const auto fits = test::run_ltrender("budget " + file + " --json");
+  ASSERT_EQ(fits.exit_code, 0) << fits.err;
+  const auto j = nlohmann::json::parse(fits.out);
+  EXPECT_EQ(j["used"]["stages"], 2);  // stage 0 and stage 1 of the file
+  EXPECT_EQ(j["used"]["texture_units"], 2);
+  EXPECT_EQ(j["used"]["passes"], 1);
+
+  test::TempDir dir;
+  std::string three = test::read_file(file);
+  three += "\nstage 2\n  texture white\n  rgb MODULATE previous primary\n";
+  test::write_file(dir / "three.comb", three);
+  const auto over = test::run_ltrender("budget " + (dir / "three.comb").string());
+  EXPECT_EQ(over.exit_code, 1) << over.out << over.err;
+  EXPECT_NE(over.err.find("stages: 3 > 2"), std::string::npos) << over.err;
+  EXPECT_EQ(test::run_ltrender("budget " + (dir / "three.comb").string() + " --profile gl13-3units")
+                .exit_code,
+            0);
+
+  test::write_file(dir / "bad.comb", "program x\nstage 0\n  rgb FROB texture\n");
+  const auto bad = test::run_ltrender("budget " + (dir / "bad.comb").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.comb:3"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace lt

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/fs.h"
+#include "paths/combiners/combiner_program.h"
 #include "paths/combiners/combiners_path.h"
 
 namespace lt {
@@ -21,8 +23,9 @@ const std::vector<CombinerBudgetProfile>& combiner_budget_profiles() {
   return profiles;
 }
 
-CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& profile,
-                                     const std::string& variant) {
+namespace {
+
+const CombinerBudgetProfile& find_profile(const std::string& profile) {
   const auto& profiles = combiner_budget_profiles();
   const auto it = std::find_if(profiles.begin(), profiles.end(),
                                [&](const CombinerBudgetProfile& p) { return p.name == profile; });
@@ -34,32 +37,27 @@ CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& prof
     throw InputError("--profile", profile,
                      "unknown combiner profile (valid: " + names + ")" + hint);
   }
-  CombinerBudgetReport r;
-  r.profile = *it;
-  r.variant = variant.empty() ? "t=vertex" : variant;
-  r.lights = static_cast<int>(scene.lights.size());
-  for (const CombinerMaterialPlan& plan : plan_combiners(scene, r.variant)) {
-    if (!plan.used) continue;
-    CombinerBudgetMaterial m;
-    m.material = scene.materials[plan.material].name;
-    // A pass is one program: the limits apply to the largest program the material uses.
-    for (const auto& [kind, program] : plan.programs) {
-      if (!m.program.empty()) m.program += '+';
-      m.program += program_file(kind);
-      // GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs
-      // a unit; the colour sum after the combiners is free.
-      const int program_stages = static_cast<int>(program.stages.size());
-      m.stages = std::max(m.stages, program_stages);
-      m.texture_units = std::max(m.texture_units, program_stages);
-      m.constant_colors = std::max(m.constant_colors, program.constant_colors());
-    }
-    m.passes = plan.passes();
-    r.stages = std::max(r.stages, m.stages);
-    r.texture_units = std::max(r.texture_units, m.texture_units);
-    r.constant_colors = std::max(r.constant_colors, m.constant_colors);
-    r.passes = std::max(r.passes, m.passes);
-    r.materials.push_back(m);
-  }
+  return *it;
+}
+
+// GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs a
+// unit; the colour sum after the combiners is free.
+void add_program(CombinerBudgetMaterial& m, const combiners::CombinerProgram& program) {
+  const int program_stages = static_cast<int>(program.stages.size());
+  m.stages = std::max(m.stages, program_stages);
+  m.texture_units = std::max(m.texture_units, program_stages);
+  m.constant_colors = std::max(m.constant_colors, program.constant_colors());
+}
+
+void add_material(CombinerBudgetReport& r, const CombinerBudgetMaterial& m) {
+  r.stages = std::max(r.stages, m.stages);
+  r.texture_units = std::max(r.texture_units, m.texture_units);
+  r.constant_colors = std::max(r.constant_colors, m.constant_colors);
+  r.passes = std::max(r.passes, m.passes);
+  r.materials.push_back(m);
+}
+
+void check_limits(CombinerBudgetReport& r) {
   auto check = [&](const char* what, int used, int limit) {
     if (used > limit) {
       r.over.push_back(std::string(what) + ": " + std::to_string(used) + " > " +
@@ -71,6 +69,46 @@ CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& prof
   check("constant colours", r.constant_colors, r.profile.constant_colors);
   // Per-vertex lighting runs on the CPU here, but a port would hand it to the hardware lights.
   check("lights", r.lights, r.profile.lights);
+}
+
+}  // namespace
+
+CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& profile,
+                                     const std::string& variant) {
+  CombinerBudgetReport r;
+  r.profile = find_profile(profile);
+  r.variant = variant.empty() ? "t=vertex" : variant;
+  r.lights = static_cast<int>(scene.lights.size());
+  for (const CombinerMaterialPlan& plan : plan_combiners(scene, r.variant)) {
+    if (!plan.used) continue;
+    CombinerBudgetMaterial m;
+    m.material = scene.materials[plan.material].name;
+    // A pass is one program: the limits apply to the largest program the material uses.
+    for (const auto& [kind, program] : plan.programs) {
+      if (!m.program.empty()) m.program += '+';
+      m.program += program_file(kind);
+      add_program(m, program);
+    }
+    m.passes = plan.passes();
+    add_material(r, m);
+  }
+  check_limits(r);
+  return r;
+}
+
+CombinerBudgetReport combiner_budget_file(const std::string& file, const std::string& profile) {
+  CombinerBudgetReport r;
+  r.profile = find_profile(profile);
+  r.variant = "(program file)";
+  const combiners::CombinerProgram program =
+      combiners::parse_combiner_program(read_input_file(file, InputKind::Program), file);
+  CombinerBudgetMaterial m;
+  m.material = program.name;
+  m.program = file;
+  add_program(m, program);
+  m.passes = 1;  // one file is one pass's state
+  add_material(r, m);
+  check_limits(r);
   return r;
 }
 

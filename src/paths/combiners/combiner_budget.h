@@ -44,6 +44,10 @@ struct CombinerBudgetReport {
 CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& profile,
                                      const std::string& variant = "");
 
+// `ltrender budget FILE.comb`: one hand-written combiner program (combiners/README.md) as one
+// pass against the profile. Throws InputError naming the file and line for a bad program.
+CombinerBudgetReport combiner_budget_file(const std::string& file, const std::string& profile);
+
 // Human-readable table and one JSON object (for --json).
 std::string to_text(const CombinerBudgetReport& report);
 std::string to_json(const CombinerBudgetReport& report);

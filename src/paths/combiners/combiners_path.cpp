@@ -351,12 +351,19 @@ PathInfo combiners_path_info() {
                   return std::make_unique<CombinersPath>(ctx, variant);
                 }};
   // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
-  info.budget = [](const Scene& scene, const BudgetRequest& rq) {
-    const CombinerBudgetReport r =
-        combiner_budget(scene, rq.profile.empty() ? "gl13-2units" : rq.profile, rq.variant);
+  auto print = [](const CombinerBudgetReport& r, const BudgetRequest& rq) {
     *rq.out << (rq.json ? to_json(r) + "\n" : to_text(r));
     if (!r.fits()) *rq.first_overrun = r.over.front();
     return r.fits();
+  };
+  info.budget = [print](const Scene& scene, const BudgetRequest& rq) {
+    return print(
+        combiner_budget(scene, rq.profile.empty() ? "gl13-2units" : rq.profile, rq.variant), rq);
+  };
+  // A hand-written .comb file (combiners/README.md) as one pass.
+  info.program_extensions = {".comb"};
+  info.budget_file = [print](const std::string& file, const BudgetRequest& rq) {
+    return print(combiner_budget_file(file, rq.profile.empty() ? "gl13-2units" : rq.profile), rq);
   };
   return info;
 }
