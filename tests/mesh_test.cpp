@@ -1,9 +1,6 @@
 // Mesh I/O and the procedural meshes: every malformed input is one InputError naming the file,
 // round trips keep what they promise, generated meshes are closed, outward and measure what
 // geometry says they should.
-#include "mesh/mesh_io.h"
-#include "mesh/normals.h"
-
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,7 +19,9 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "mesh/mesh_io.h"
 #include "mesh/meshgen.h"
+#include "mesh/normals.h"
 #include "test_util.h"
 
 namespace lt {

@@ -33,9 +33,8 @@ TEST(SandboxedChild, ReturnsThePayloadAndTheExitCode) {
 }
 
 TEST(SandboxedChild, AnExceptionIsItsMessage) {
-  const auto got = run_in_sandboxed_child(one_second(), [](std::string&) -> int {
-    throw std::runtime_error("reader gave up");
-  });
+  const auto got = run_in_sandboxed_child(
+      one_second(), [](std::string&) -> int { throw std::runtime_error("reader gave up"); });
   EXPECT_EQ(got.end, End::Exited);
   EXPECT_EQ(got.code, kSandboxWorkThrew);
   EXPECT_EQ(got.payload, "reader gave up");

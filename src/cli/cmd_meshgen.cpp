@@ -7,8 +7,8 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
-#include "mesh/meshgen.h"
 #include "mesh/mesh_io.h"
+#include "mesh/meshgen.h"
 
 namespace lt::cli {
 
