@@ -78,6 +78,13 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+std::string quoted(std::string_view token) {
+  std::string s;
+  s.reserve(token.size() + 2);
+  s.append(1, '\'').append(token).append(1, '\'');
+  return s;
+}
+
 [[noreturn]] void fail(const std::string& file, std::size_t line, const std::string& what) {
   throw InputError(file, line ? std::to_string(line) : "", what);
 }

@@ -32,6 +32,10 @@ std::vector<std::string_view> split_lines(const std::string& text);
 
 std::string_view trim(std::string_view s);
 
+// "'token'", for messages. Built by append: GCC 12 warns (-Wrestrict, a false positive, GCC bug
+// 105329) on "'" + std::string(token) + "'" once inlined.
+std::string quoted(std::string_view token);
+
 // Throws InputError for `file`, at `line` when it is not 0.
 [[noreturn]] void fail(const std::string& file, std::size_t line, const std::string& what);
 

@@ -38,9 +38,9 @@ std::pair<std::size_t, std::size_t> median_interval_ranks(std::size_t n, double 
   double cdf = 0;
   std::size_t j = 0;  // the largest j with P(X <= j - 1) <= tail, as a 0-based rank
   for (std::size_t k = 0; k < n; ++k) {
-    const double log_p = std::lgamma(static_cast<double>(n) + 1) -
-                         std::lgamma(static_cast<double>(k) + 1) -
-                         std::lgamma(static_cast<double>(n - k) + 1) - n * std::log(2.0);
+    const double log_p =
+        std::lgamma(static_cast<double>(n) + 1) - std::lgamma(static_cast<double>(k) + 1) -
+        std::lgamma(static_cast<double>(n - k) + 1) - static_cast<double>(n) * std::log(2.0);
     cdf += std::exp(log_p);
     if (cdf > tail) break;
     j = k + 1;

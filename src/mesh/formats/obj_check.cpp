@@ -45,7 +45,7 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
       double xyz[3];
       for (int k = 0; k < 3; ++k) {
         if (!parse_double(t[k + 1], xyz[k])) {
-          fail(file, line_no, "'" + std::string(t[k + 1]) + "' is not a number");
+          fail(file, line_no, quoted(t[k + 1]) + " is not a number");
         }
         if (!fits_openmesh_float(xyz[k])) {
           fail(file, line_no,

@@ -173,7 +173,7 @@ FileFacts check_off(const std::string& data, const std::string& file) {
            "vertex " + std::to_string(i) + " needs " + std::to_string(fixed) + " numbers");
     for (std::size_t k = 0; k < fixed; ++k) {
       double v;
-      if (!parse_double(t[k], v)) fail(file, li, "'" + std::string(t[k]) + "' is not a number");
+      if (!parse_double(t[k], v)) fail(file, li, quoted(t[k]) + " is not a number");
       if (!fits_openmesh_float(v)) {
         fail(file, li,
              "vertex " + std::to_string(i) +
@@ -250,8 +250,7 @@ FileFacts check_off(const std::string& data, const std::string& file) {
     for (long long k = 1; k <= n; ++k) {
       long long x;
       if (!parse_int(t[static_cast<std::size_t>(k)], x))
-        fail(file, li,
-             "'" + std::string(t[static_cast<std::size_t>(k)]) + "' is not a vertex index");
+        fail(file, li, quoted(t[static_cast<std::size_t>(k)]) + " is not a vertex index");
       if (x < 0 || x >= nv) {
         fail(file, li,
              "face " + std::to_string(i) + ": vertex index " + std::to_string(x) +

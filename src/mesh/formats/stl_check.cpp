@@ -48,8 +48,7 @@ void check_stl(const std::string& data, const std::string& file) {
     for (int k = 1; k <= 3; ++k) {
       double v;
       if (!parse_double(t[static_cast<std::size_t>(k)], v) || !fits_openmesh_float(v)) {
-        fail(file, li + 1,
-             "'" + std::string(t[static_cast<std::size_t>(k)]) + "' is not a finite number");
+        fail(file, li + 1, quoted(t[static_cast<std::size_t>(k)]) + " is not a finite number");
       }
     }
   }
