@@ -59,7 +59,8 @@ TEST_F(GltfMapping, ThicknessTextureFallsBackToTheFactorWithAWarning) {
 }
 
 TEST_F(GltfMapping, DiffuseTransmissionIsTheAmbientAndTheTint) {
-  const Translucency& t = *load(test::volume_quad()).materials.at(0).translucency;
+  // A copy: the scene load() returns is a temporary.
+  const Translucency t = *load(test::volume_quad()).materials.at(0).translucency;
   EXPECT_EQ(t.ambient, 0.1);
   EXPECT_EQ(t.tint, glm::dvec3(1, 0.8, 0.6));
 }

@@ -32,9 +32,14 @@ bool draw_text(Image& image, int x, int y, const std::string& text, int size, co
 }
 
 int text_width(const std::string& text, int size) {
+  if (text.empty()) return 0;
   if (label_font().empty()) return static_cast<int>(text.size() * size * 6 / 10);
   const OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, size, label_font().string());
-  return r.defined() ? r.width() : 0;
+  // text_size can return extents with xend < xbegin (nothing drawn, e.g. only spaces), whose
+  // ROI::width() overflows int (UBSan): take the width in 64 bits and clamp.
+  if (!r.defined()) return 0;
+  const long long w = static_cast<long long>(r.xend) - r.xbegin;
+  return w > 0 && w < (1LL << 30) ? static_cast<int>(w) : 0;
 }
 
 }  // namespace lt
