@@ -77,8 +77,8 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     EXPECT_TRUE(fs::exists(o.out_dir / r.image)) << r.image;
   }
   write_bench_reports(o, rows);
-  for (const char* f :
-       {"report.md", "report.csv", "report.json", "chart.svg", "contact.png", "index.html"}) {
+  for (const char* f : {"report.md", "report.csv", "report.json", "chart.svg", "chart_work.svg",
+                        "contact.png", "index.html"}) {
     EXPECT_TRUE(fs::exists(o.out_dir / f)) << f;
   }
   std::ifstream in(o.out_dir / "report.json");
@@ -105,7 +105,9 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
                       "ratio_to_flat,",
                       0),
             0u);
-  EXPECT_NE(csv.find(",cost,ratio_low,ratio_high,ratio_pairs\n"), std::string::npos);
+  EXPECT_NE(csv.find(",cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
+                     "work_vertex_ops\n"),
+            std::string::npos);
   for (size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& r = rows[i];
     EXPECT_NE(md.find("| quad | " + r.path + " | " + r.variant + " | "), std::string::npos)
@@ -123,7 +125,29 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
       EXPECT_NE(md.find("M stage-pixels"), std::string::npos);
     }
     if (r.path == "reference") EXPECT_GT(j["rows"][i]["stats"]["shading_mpixels_per_s"], 0);
+    // The work axis: every path that counts has a figure (GLSL says why it has none); where a
+    // path also counts as it draws (gx, the CPU paths' covered pixels), the two agree.
+    if (r.path == "glsl") {
+      EXPECT_FALSE(r.work) << r.path;
+      EXPECT_FALSE(j["rows"][i]["work"]["not_counted"].get<std::string>().empty());
+      continue;
+    }
+    ASSERT_TRUE(r.work) << r.path << " " << r.variant;
+    EXPECT_GT(r.work->pixel_ops, 0) << r.path;
+    EXPECT_DOUBLE_EQ(j["rows"][i]["work"]["ops"].get<double>(), r.work->total());
+    if (r.path == "gx") {
+      EXPECT_EQ(r.work->pixel_ops, r.stats.tev_stage_pixels.value()) << r.variant;
+      EXPECT_EQ(r.work->vertex_ops, r.stats.xf_light_vertices.value()) << r.variant;
+    }
+    // One light: one evaluation a covered pixel (the CPU paths count those pixels as they shade);
+    // flat writes one colour a covered pixel.
+    const auto reference = std::find_if(rows.begin(), rows.end(),
+                                        [](const BenchRow& x) { return x.path == "reference"; });
+    ASSERT_NE(reference, rows.end());
+    if (r.path == "reference" || r.path == "half" || r.path == "flat")
+      EXPECT_EQ(r.work->pixel_ops, reference->stats.covered_pixels.value()) << r.path;
   }
+  EXPECT_NE(md.find("work (M ops)"), std::string::npos);
 }
 
 }  // namespace

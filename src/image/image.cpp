@@ -1,8 +1,5 @@
 #include "image/image.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cctype>
 #include <memory>
@@ -11,6 +8,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/stderr_capture.h"
+#include "image/image_codec.h"
 
 namespace lt {
 
@@ -33,28 +31,19 @@ void write_image(const std::filesystem::path& path, const Image& image) {
   check_output_extension(path);
   const std::string ext = lower_extension(path);
   write_atomically(path, [&](const fs::path& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw InputError(path.string(), "", "cannot create image writer");
+    std::string error;
     bool ok = false;
     if (ext == ".exr") {
-      OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-      spec.channelnames = {"R", "G", "B", "A"};
-      spec.alpha_channel = 3;
-      // Linear values, no transfer function: the reference is compared as-is.
-      spec.attribute("oiio:ColorSpace", "Linear");
-      ok = out->open(tmp.string(), spec) &&
-           out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data());
+      ok = image_codec().write_rgba_float(tmp.string(), image.width, image.height,
+                                          image.rgba.data(), error);
     } else {
-      OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
       std::vector<uint8_t> bytes(image.pixel_count() * 3);
       for (size_t i = 0; i < image.pixel_count(); ++i) {
         for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_unorm8(image.rgba[i * 4 + c]);
       }
-      ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+      ok = image_codec().write_rgb8(tmp.string(), image.width, image.height, bytes.data(), error);
     }
-    if (!ok || !out->close()) {
-      throw InputError(path.string(), "", "cannot write image: " + out->geterror());
-    }
+    if (!ok) throw InputError(path.string(), "", "cannot write image: " + error);
   });
 }
 
@@ -62,7 +51,7 @@ namespace {
 
 // "WxH", or "WxHxD" for a volume. Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a
 // chained operator+ starting with a short literal.
-std::string size_text(const OIIO::ImageSpec& spec) {
+std::string size_text(const ImageFileSpec& spec) {
   std::string s = std::to_string(spec.width);
   s.append("x").append(std::to_string(spec.height));
   if (spec.depth > 1) s.append("x").append(std::to_string(spec.depth));
@@ -77,10 +66,11 @@ class CheckedInput {
     // Before OpenImageIO sees the name: given a FIFO or /dev/zero, its format probing (every
     // reader in turn once the one the extension names has failed) never returns.
     check_input_file(path, InputKind::Image);
-    in_ = OIIO::ImageInput::open(path.string());
-    if (!in_) fail("cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in_->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) fail("image has no pixels");
+    std::string error;
+    in_ = image_codec().open(path.string(), false, error);
+    if (!in_) fail("cannot read image: " + error);
+    const ImageFileSpec& spec = in_->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0) fail("image has no pixels");
     // The header's size is checked before any pixel is allocated: 65 bytes of PNG can claim
     // 40000 x 40000 pixels (13.7 GB as float RGB).
     const long long pixels = static_cast<long long>(spec.width) * spec.height;
@@ -95,15 +85,14 @@ class CheckedInput {
   CheckedInput(const CheckedInput&) = delete;
   CheckedInput& operator=(const CheckedInput&) = delete;
 
-  const OIIO::ImageSpec& spec() const { return in_->spec(); }
+  const ImageFileSpec& spec() const { return in_->spec(); }
 
   // Channels [begin, end) of every pixel as float (8-bit v becomes v/255 exactly, which is what
   // the LSB metrics assume).
   std::vector<float> read_channels(int begin, int end) {
     std::vector<float> data(static_cast<size_t>(spec().width) * spec().height * (end - begin));
-    if (!in_->read_image(0, 0, begin, end, OIIO::TypeDesc::FLOAT, data.data())) {
-      fail("cannot decode image: " + in_->geterror());
-    }
+    std::string error;
+    if (!in_->read_channels(begin, end, data.data(), error)) fail("cannot decode image: " + error);
     return data;
   }
 
@@ -114,7 +103,7 @@ class CheckedInput {
  private:
   const fs::path& path_;
   StderrCapture capture_;  // declared before in_: it outlives the reader's close
-  std::unique_ptr<OIIO::ImageInput> in_;
+  std::unique_ptr<ImageFileReader> in_;
 };
 
 }  // namespace
@@ -123,14 +112,14 @@ namespace {
 
 Image read_image_unguarded(const std::filesystem::path& path) {
   CheckedInput in(path);
-  const OIIO::ImageSpec& spec = in.spec();
+  const ImageFileSpec& spec = in.spec();
   // At most four channels are read (grey or RGB, then alpha): memory stays 16 bytes a pixel
   // whatever number of channels the file declares.
-  const int channels = std::min(spec.nchannels, 4);
+  const int channels = std::min(spec.channels, 4);
   const std::vector<float> data = in.read_channels(0, channels);
   const int alpha = spec.alpha_channel;
   std::vector<float> far_alpha;  // an alpha channel beyond the first four, read on its own
-  if (alpha >= channels && alpha < spec.nchannels) far_alpha = in.read_channels(alpha, alpha + 1);
+  if (alpha >= channels && alpha < spec.channels) far_alpha = in.read_channels(alpha, alpha + 1);
   Image img(spec.width, spec.height);
   for (size_t i = 0; i < img.pixel_count(); ++i) {
     const float* s = &data[i * channels];
@@ -162,10 +151,7 @@ Image read_image(const std::filesystem::path& path) {
 
 bool image_file_is_8bit(const std::filesystem::path& path) {
   CheckedInput in(path);
-  // Per-channel formats (EXR can mix) report the widest in spec.format; an 8-bit file has one
-  // format for all its channels.
-  const OIIO::TypeDesc format = in.spec().format;
-  return format.basetype == OIIO::TypeDesc::UINT8 || format.basetype == OIIO::TypeDesc::INT8;
+  return in.spec().is_8bit;
 }
 
 void flip_vertically(Image& image) {

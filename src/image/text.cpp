@@ -1,9 +1,8 @@
 #include "image/text.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <vector>
+
+#include "image/image_codec.h"
 
 namespace lt {
 
@@ -22,23 +21,19 @@ const std::filesystem::path& label_font() {
 
 bool draw_text(Image& image, int x, int y, const std::string& text, int size, const float rgb[3]) {
   if (label_font().empty() || text.empty()) return !label_font().empty();
-  // The image's own pixels as an ImageBuf: render_text draws straight into them.
-  OIIO::ImageBuf buf(OIIO::ImageSpec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT),
-                     image.rgba.data());
   const float colour[4] = {rgb[0], rgb[1], rgb[2], 1.0f};
-  return OIIO::ImageBufAlgo::render_text(buf, x, y, text, size, label_font().string(), colour,
-                                         OIIO::ImageBufAlgo::TextAlignX::Left,
-                                         OIIO::ImageBufAlgo::TextAlignY::Top);
+  return image_codec().draw_text(image.rgba.data(), image.width, image.height, x, y, text, size,
+                                 label_font().string(), colour);
 }
 
 int text_width(const std::string& text, int size) {
   if (text.empty()) return 0;
   if (label_font().empty()) return static_cast<int>(text.size() * size * 6 / 10);
-  const OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, size, label_font().string());
+  long long x_begin = 0, x_end = 0;
   // text_size can return extents with xend < xbegin (nothing drawn, e.g. only spaces), whose
   // ROI::width() overflows int (UBSan): take the width in 64 bits and clamp.
-  if (!r.defined()) return 0;
-  const long long w = static_cast<long long>(r.xend) - r.xbegin;
+  if (!image_codec().text_extent(text, size, label_font().string(), x_begin, x_end)) return 0;
+  const long long w = x_end - x_begin;
   return w > 0 && w < (1LL << 30) ? static_cast<int>(w) : 0;
 }
 

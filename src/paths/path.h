@@ -39,6 +39,22 @@ struct BuiltStage {
   std::string source;  // the generated program text, if any
 };
 
+// What a path executes for one material, counted from its built programs (not timed): the bench
+// multiplies it by the material's covered pixels and drawn vertices into the work axis, the cost
+// figure that is the same on every machine (issue 11). Each path counts in its hardware's own
+// operation: fragment ALU + TEX instructions, combiner stages, TEV stages, XF lights, CPU light
+// evaluations. Summed over the passes the material is drawn in.
+struct MaterialWork {
+  double per_pixel = 0;   // operations a covered pixel of the material costs
+  double per_vertex = 0;  // operations a vertex of the material costs
+};
+
+struct WorkModel {
+  std::string pixel_operation, vertex_operation;  // what one operation is, for the report
+  std::vector<MaterialWork> by_material;          // scene.materials order; empty: not counted
+  std::string not_counted;                        // why, when by_material is empty
+};
+
 class Path {
  public:
   virtual ~Path() = default;
@@ -55,6 +71,8 @@ class Path {
   virtual std::string cost() const { return ""; }
   // Figures of the last frame a path can report (e.g. the reference's CPU shading time).
   virtual FrameStats frame_stats() const { return {}; }
+  // The operations each material costs (see MaterialWork).
+  virtual WorkModel work() const { return {{}, {}, {}, "this path counts no operations"}; }
 };
 
 // What `ltrender budget` asks of a path's budget: print to `out`, as JSON when `json`; the

@@ -29,8 +29,12 @@ class RenderSession {
   // Builds a path for this scene (variant already resolved).
   std::unique_ptr<Path> build(const PathInfo& path, const std::string& variant,
                               const PathOptions& options = {}) {
-    return path.create(PathContext{scene_, gl_, geometry_, gl_.width(), gl_.height(), options},
-                       variant);
+    return path.create(context(options), variant);
+  }
+
+  // What a path gets: the scene, this context and geometry, at this size.
+  PathContext context(const PathOptions& options = {}) {
+    return PathContext{scene_, gl_, geometry_, gl_.width(), gl_.height(), options};
   }
 
   const Scene& scene() const { return scene_; }

@@ -13,6 +13,7 @@
 #include "core/file_name.h"
 #include "core/fs.h"
 #include "metrics/heatmap.h"
+#include "paths/common/gbuffer.h"
 #include "render/session.h"
 
 namespace lt {
@@ -145,7 +146,14 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
     // session (report/interleaved_timing.h), so every ratio is the median of per-pair ratios.
     {
       RenderSession session(scene, o.wide_width, o.wide_height);
+      const SceneCoverage coverage =
+          scene_coverage(scene, covered_pixels_by_material(session.context()));
       auto base = session.build(flat, flat.variants.front().name);
+      auto count_work = [&](BenchRow& row, const Path& path) {
+        const WorkModel model = path.work();
+        row.work = frame_work(model, coverage);
+        row.work_not_counted = model.not_counted;
+      };
       InterleaveOptions io;
       io.min_pairs = o.frames;
       io.min_seconds = o.min_time_s;
@@ -155,6 +163,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         if (row.path == flat.name) continue;
         const PathInfo& p = find_path(row.path);
         auto path = session.build(p, row.variant);
+        count_work(row, *path);
         StatSamples stats;
         const InterleavedTiming t = time_interleaved(
             [&](bool timed) {
@@ -183,6 +192,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       }
       for (BenchRow& row : scene_rows) {
         if (row.path != flat.name) continue;
+        count_work(row, *base);
         row.at_wide = summarize_frames(all_flat_ms);
         row.ratio = estimate_ratio(std::vector<double>(all_flat_ms.size(), 1.0));
         row.ratio_to_flat = 1.0;

@@ -12,6 +12,7 @@
 
 #include "metrics/compare.h"
 #include "paths/frame_stats.h"
+#include "report/frame_work.h"
 #include "report/interleaved_timing.h"
 
 namespace lt {
@@ -41,8 +42,10 @@ struct BenchRow {
   FrameStats stats;                 // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
   std::string cost;                             // Path::cost(): instructions or stages
-  std::string image, heatmap;                   // relative to out_dir
-  int width = 0, height = 0;                    // of the image
+  std::optional<FrameWork> work;  // at 1280x720: operations a frame executes (frame_work.h)
+  std::string work_not_counted;   // why `work` is empty
+  std::string image, heatmap;     // relative to out_dir
+  int width = 0, height = 0;      // of the image
 };
 
 std::vector<BenchRow> run_bench(const BenchOptions& options);

@@ -1,11 +1,9 @@
 #include "report/contact_sheet.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cstdio>
 
+#include "image/image_codec.h"
 #include "image/text.h"
 #include "metrics/heatmap.h"
 
@@ -28,12 +26,8 @@ void fill_rect(Image& img, int x0, int y0, int w, int h, const float rgb[3]) {
 
 // The image letterboxed into w x h at ox, oy.
 void paste_thumbnail(Image& sheet, const Image& src, int ox, int oy, int w, int h) {
-  OIIO::ImageBuf in(OIIO::ImageSpec(src.width, src.height, 4, OIIO::TypeDesc::FLOAT),
-                    const_cast<float*>(src.rgba.data()));
-  const OIIO::ROI roi(0, w, 0, h, 0, 1, 0, 4);
-  OIIO::ImageBuf small = OIIO::ImageBufAlgo::fit(in, "", 0.0f, "letterbox", roi);
   std::vector<float> px(static_cast<size_t>(w) * h * 4);
-  small.get_pixels(roi, OIIO::TypeDesc::FLOAT, px.data());
+  image_codec().fit_letterbox(src.rgba.data(), src.width, src.height, px.data(), w, h);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       float* d = sheet.at(ox + x, oy + y);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -65,6 +66,13 @@ std::string interval_cell(const RatioEstimate& e) {
          (e.wide() ? ", *wide*" : "") + ")";
 }
 
+// "12.3 (11.1 + 1.2)": millions of operations a frame, pixel + vertex parts.
+std::string work_cell(const BenchRow& r) {
+  if (!r.work) return "-";
+  return fmt(r.work->total() / 1e6) + " (" + fmt(r.work->pixel_ops / 1e6) + " + " +
+         fmt(r.work->vertex_ops / 1e6) + ")";
+}
+
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
@@ -78,8 +86,8 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
     << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
     << o.wide_height
     << ") median / min | ratio to flat | 95% interval | max LSB | mean LSB | p99 LSB | "
-       "% > 1 LSB | cost | notes |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "% > 1 LSB | cost | work (M ops) | notes |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
     const std::string notes = stats_note(r);
     s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
@@ -87,10 +95,15 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
       << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
       << " | " << interval_cell(r.ratio) << " | " << error_cell(r, true) << " | "
       << error_cell(r, false) << " | " << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
-      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | " << notes
-      << " |\n";
+      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | "
+      << work_cell(r) << " | " << notes << " |\n";
   }
-  s << "\n![speed against error](chart.svg)\n\nContact sheet: `contact.png` (one row per scene: "
+  s << "\n`work`: the operations a frame executes at " << o.wide_width << "x" << o.wide_height
+    << ", counted from the built programs and the pixels and vertices drawn (the same on every "
+       "machine): pixels x fragment ALU+TEX (arbfp), combiner stages (combiners), TEV stages and "
+       "vertices x XF lights (gx), CPU light evaluations (reference, half). GLSL has no count.\n";
+  s << "\n![speed against error](chart.svg)\n\n![work against error](chart_work.svg)\n\n"
+       "Contact sheet: `contact.png` (one row per scene: "
        "the reference, then each path's render followed by its error heatmap, in the table's "
        "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background) and "
        "`index.html` with labels.\n";
@@ -101,7 +114,8 @@ std::string csv(const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
        "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
-       "shading_mpixels_per_s,cost,ratio_low,ratio_high,ratio_pairs\n";
+       "shading_mpixels_per_s,cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
+       "work_vertex_ops\n";
   for (const BenchRow& r : rows) {
     s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
       << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
@@ -116,7 +130,12 @@ std::string csv(const std::vector<BenchRow>& rows) {
     }
     if (r.shading_mpixels_per_s) s << *r.shading_mpixels_per_s;
     s << ",\"" << r.cost << "\"," << r.ratio.low << "," << r.ratio.high << "," << r.ratio.pairs
-      << "\n";
+      << ",";
+    if (r.work)
+      s << r.work->total() << "," << r.work->pixel_ops << "," << r.work->vertex_ops;
+    else
+      s << ",,";
+    s << "\n";
   }
   return s.str();
 }
@@ -158,6 +177,15 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                         {"heatmap", r.heatmap},
                         {"stats", stats_json(r)},
                         {"cost", r.cost}};
+    if (r.work) {
+      x["work"] = {{"ops", r.work->total()},
+                   {"pixel_ops", r.work->pixel_ops},
+                   {"vertex_ops", r.work->vertex_ops},
+                   {"pixel_operation", r.work->pixel_operation},
+                   {"vertex_operation", r.work->vertex_operation}};
+    } else {
+      x["work"] = {{"not_counted", r.work_not_counted}};
+    }
     if (r.error) {
       x["error"] = {{"max_lsb", r.error->max_lsb},
                     {"mean_lsb", r.error->mean_lsb},
@@ -172,12 +200,20 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
   return j;
 }
 
+// What a chart's x axis shows: its words, and the figure of a row (none: the row is left out).
+struct ChartAxis {
+  std::string title, caption, name;  // "Speed"; "ms per frame at 1280x720"; "ms per frame"
+  std::string label_unit;            // after a point's value in its label
+  double label_scale;                // the point's value is divided by this in its label
+  std::function<std::optional<double>(const BenchRow&)> value;
+};
+
 // One point per path and variant, over all scenes of the run (the table has every scene):
 // x = geometric mean of the ms per frame at the wide size, y = the worst max LSB (filled) and the
 // average mean LSB (ring). Both axes are logarithmic: times span orders of magnitude (the CPU
 // paths), and so do errors, from the 0.5 LSB floor of 8-bit output to 100+ for sg-simplified.
 // Errors under 0.1 LSB (the float outputs) sit on the bottom line.
-std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) {
+std::string svg_chart(const std::vector<BenchRow>& rows, const ChartAxis& axis) {
   struct Point {
     std::string path, variant;
     double log_ms_sum = 0, worst_max = 0, mean_sum = 0;
@@ -185,12 +221,13 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   };
   std::vector<Point> points;
   for (const BenchRow& r : rows) {
-    if (!r.error || r.at_wide.median_ms <= 0) continue;
+    const std::optional<double> x = axis.value(r);
+    if (!r.error || !x || *x <= 0) continue;
     auto it = std::find_if(points.begin(), points.end(), [&](const Point& p) {
       return p.path == r.path && p.variant == r.variant;
     });
     if (it == points.end()) it = points.insert(points.end(), Point{r.path, r.variant});
-    it->log_ms_sum += std::log10(r.at_wide.median_ms);
+    it->log_ms_sum += std::log10(*x);
     it->worst_max = std::max(it->worst_max, r.error->max_lsb);
     it->mean_sum += r.error->mean_lsb;
     ++it->n;
@@ -223,11 +260,10 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
     << "' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' "
        "fill='white'/>\n"
-    << "<text x='" << L
-    << "' y='18' font-size='14'>Speed against error, per path and variant "
-       "over all scenes</text>\n<text x='"
-    << L << "' y='33'>x: geometric mean ms per frame at " << o.wide_width << "x" << o.wide_height
-    << " (log); y: worst max LSB (filled) and average mean LSB (ring), log</text>\n";
+    << "<text x='" << L << "' y='18' font-size='14'>" << axis.title
+    << " against error, per path and variant over all scenes</text>\n<text x='" << L
+    << "' y='33'>x: geometric mean " << axis.caption << " (log); y: worst max LSB (filled) and "
+    << "average mean LSB (ring), log</text>\n";
   for (double e = lx0; e <= lx1; e += 1) {
     for (int m = 1; m < 10; ++m) {
       const double v = e + std::log10(m);
@@ -253,7 +289,7 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
       << "' stroke='#888' stroke-dasharray='4 3'/><text x='" << W - R - 120 << "' y='" << Y(v) - 3
       << "' fill='#666'>" << label << "</text>\n";
   }
-  s << "<text x='" << (L + W - R) / 2 - 40 << "' y='" << H - 15 << "'>ms per frame</text>\n"
+  s << "<text x='" << (L + W - R) / 2 - 40 << "' y='" << H - 15 << "'>" << axis.name << "</text>\n"
     << "<text transform='translate(18," << H / 2 << ") rotate(-90)'>error (LSB)</text>\n";
   // Each point is numbered; the numbers are placed clear of every marker and of each other
   // (label_placement.h), and the list beside the plot names them. Hovering a point names it too
@@ -277,8 +313,9 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
     const double x = X(p.log_ms_sum / p.n), mean = p.mean_sum / p.n;
     const std::string number = std::to_string(i + 1);
     const std::string label = number + ": " + p.path + " " + p.variant + ": " +
-                              fmt(std::pow(10.0, p.log_ms_sum / p.n)) + " ms, worst max " +
-                              fmt(p.worst_max) + ", average mean " + fmt(mean, 3) + " LSB";
+                              fmt(std::pow(10.0, p.log_ms_sum / p.n) / axis.label_scale) +
+                              axis.label_unit + ", worst max " + fmt(p.worst_max) +
+                              ", average mean " + fmt(mean, 3) + " LSB";
     const Box& b = labels[i];
     const double cx = b.x + b.w / 2, cy = b.y + b.h / 2;
     s << "<g data-label='" << markup_escape(label) << "'><title>" << markup_escape(label)
@@ -298,6 +335,29 @@ std::string svg_chart(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   }
   s << "</svg>\n";
   return s.str();
+}
+
+ChartAxis time_axis(const BenchOptions& o) {
+  return {"Speed",
+          "ms per frame at " + std::to_string(o.wide_width) + "x" + std::to_string(o.wide_height),
+          "ms per frame",
+          " ms",
+          1.0,
+          [](const BenchRow& r) -> std::optional<double> { return r.at_wide.median_ms; }};
+}
+
+// The machine-independent twin of the time chart (frame_work.h).
+ChartAxis work_axis(const BenchOptions& o) {
+  return {"Work",
+          "operations per frame at " + std::to_string(o.wide_width) + "x" +
+              std::to_string(o.wide_height) + ", counted",
+          "operations per frame",
+          " M ops",
+          1e6,
+          [](const BenchRow& r) -> std::optional<double> {
+            if (!r.work) return std::nullopt;
+            return r.work->total();
+          }};
 }
 
 // One row per scene: the reference, then each path's default variant with its heatmap (every
@@ -339,7 +399,7 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
                  "covered pixels in LSB of 8 bits; ms = median of " +
                  std::to_string(o.frames) + " frames at " + std::to_string(o.wide_width) + "x" +
                  std::to_string(o.wide_height);
-  page.chart_svg = svg_chart(o, rows);
+  page.chart_svg = svg_chart(rows, time_axis(o)) + svg_chart(rows, work_axis(o));
   for (const BenchRow& r : rows) {
     PageCard c;
     c.scene = r.scene;
@@ -374,7 +434,8 @@ void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& row
   write_text_file(o.out_dir / "report.md", markdown(o, rows));
   write_text_file(o.out_dir / "report.csv", csv(rows));
   write_text_file(o.out_dir / "report.json", json_rows(o, rows).dump(2) + "\n");
-  write_text_file(o.out_dir / "chart.svg", svg_chart(o, rows));
+  write_text_file(o.out_dir / "chart.svg", svg_chart(rows, time_axis(o)));
+  write_text_file(o.out_dir / "chart_work.svg", svg_chart(rows, work_axis(o)));
   write_report_page(o.out_dir, bench_page(o, rows));
   write_contact_sheet(o, rows);
 }

@@ -110,6 +110,21 @@ class ArbfpPath final : public Path {
            " TEX, vertex " + std::to_string(vert.alu) + " ALU";
   }
 
+  // Each fragment instruction runs once a covered pixel, each vertex instruction once a vertex,
+  // the 4 DP4 that ARB_position_invariant adds included (what vs_2_0 counts as slots).
+  WorkModel work() const override {
+    WorkModel w{"fragment ALU + TEX instruction", "vertex instruction", {}, {}};
+    w.by_material.resize(materials_.size());
+    for (size_t i = 0; i < materials_.size(); ++i) {
+      if (!materials_[i]) continue;
+      const budget::ProgramCounts f = arbfp::ir::count(materials_[i]->source.fragment_program);
+      const budget::ProgramCounts v = arbfp::ir::count(materials_[i]->source.vertex_program);
+      w.by_material[i] = {static_cast<double>(f.instructions()),
+                          static_cast<double>(v.instructions() + (v.position_invariant ? 4 : 0))};
+    }
+    return w;
+  }
+
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;
     for (size_t i = 0; i < materials_.size(); ++i) {

@@ -203,6 +203,22 @@ class CombinersPath final : public Path {
            std::to_string(passes) + (passes == 1 ? " pass" : " passes");
   }
 
+  // A combiner stage runs once a covered pixel in each pass the material is drawn in; on the CPU,
+  // vertex_terms evaluates every light once a vertex (t, attenuation, diffuse, thickness).
+  WorkModel work() const override {
+    WorkModel w{"combiner stage", "CPU light evaluation", {}, {}};
+    w.by_material.resize(plans_.size());
+    for (const CombinerMaterialPlan& p : plans_) {
+      if (!p.used) continue;
+      double stages = 0;
+      for (int pass = 0; pass < p.passes(); ++pass)
+        stages += static_cast<double>(p.program(pass).stages.size());
+      w.by_material[static_cast<size_t>(p.material)] = {
+          stages, static_cast<double>(ctx_.scene.lights.size())};
+    }
+    return w;
+  }
+
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;
     for (const CombinerMaterialPlan& p : plans_) {

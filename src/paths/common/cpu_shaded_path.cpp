@@ -31,4 +31,11 @@ FrameStats CpuShadedPath::frame_stats() const {
   return s;
 }
 
+WorkModel CpuShadedPath::work() const {
+  WorkModel w{"CPU light evaluation", "", {}, {}};
+  const MaterialWork each{static_cast<double>(ctx_.scene.lights.size()), 0};
+  w.by_material.assign(ctx_.scene.materials.size(), each);
+  return w;
+}
+
 }  // namespace lt

@@ -24,6 +24,8 @@ class CpuShadedPath : public Path {
   std::vector<BuiltStage> stages() const final;
   // Shading time, covered pixels and threads; a path adds its own figures.
   FrameStats frame_stats() const override;
+  // model::shade evaluates each light of the scene once a covered pixel.
+  WorkModel work() const final;
 
  protected:
   // Shades every covered pixel of gbuffer_ into image_ and sets covered_.

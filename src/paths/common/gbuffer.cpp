@@ -50,4 +50,18 @@ std::vector<BuiltStage> GBuffer::stages() const {
           {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
 }
 
+std::vector<double> covered_pixels_by_material(const PathContext& ctx) {
+  GBuffer g(ctx, "the bench's coverage count");
+  g.rasterise();
+  std::vector<double> pixels(ctx.scene.materials.size(), 0.0);
+  for (int gy = 0; gy < g.height(); ++gy) {
+    for (int x = 0; x < g.width(); ++x) {
+      const size_t i = g.index(x, gy);
+      const int m = g.material(i);
+      if (g.covered(i) && m >= 0 && static_cast<size_t>(m) < pixels.size()) pixels[m] += 1;
+    }
+  }
+  return pixels;
+}
+
 }  // namespace lt

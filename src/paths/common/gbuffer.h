@@ -18,6 +18,10 @@ namespace lt {
 // copying every mesh per path would cost a full scene's memory for nothing).
 Scene camera_relative_lights(const PathContext& ctx);
 
+// The pixels each material covers in the final image (scene.materials order), from one G-buffer
+// rasterisation: what the bench's work axis multiplies a path's per-pixel operations by.
+std::vector<double> covered_pixels_by_material(const PathContext& ctx);
+
 class GBuffer {
  public:
   // Builds the G-buffer program and targets; `user` names the path in extension errors.

@@ -27,6 +27,13 @@ class FlatPath final : public Path {
 
   Image result() override { return read_framebuffer(ctx_.gl); }
 
+  // One constant colour a covered pixel, no lighting: the floor every path's work is above.
+  WorkModel work() const override {
+    WorkModel w{"fixed-function fragment", "", {}, {}};
+    w.by_material.assign(ctx_.scene.materials.size(), MaterialWork{1, 0});
+    return w;
+  }
+
   std::vector<BuiltStage> stages() const override {
     return {{"fixed-function: constant colour per material, no lighting", "fixed-function", ""}};
   }

@@ -117,6 +117,12 @@ class GlslPath final : public Path {
 
   bool float_output() const override { return target_ != nullptr; }
 
+  // Mesa reports no instruction count for GLSL (GL_ARB_fragment_program's NATIVE queries cover
+  // only ARB programs), and counting source operators would not be what runs.
+  WorkModel work() const override {
+    return {{}, {}, {}, "GLSL: the driver reports no instruction count"};
+  }
+
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;
     for (size_t i = 0; i < programs_.size(); ++i) {

@@ -159,6 +159,21 @@ class GxPath final : public Path {
     return img;
   }
 
+  // Each TEV stage runs once a covered pixel, each enabled XF light once a vertex, in every pass
+  // the material is drawn in: what frame_stats() counts as tev_stage_pixels and
+  // xf_light_vertices as it draws.
+  WorkModel work() const override {
+    WorkModel w{"TEV stage", "XF light", {}, {}};
+    w.by_material.resize(programs_.by_material.size());
+    for (size_t m = 0; m < programs_.by_material.size(); ++m) {
+      for (const PassProgram& p : programs_.by_material[m]) {
+        w.by_material[m].per_pixel += p.state.tev.num_stages;
+        w.by_material[m].per_vertex += static_cast<double>(lights_in(p.state));
+      }
+    }
+    return w;
+  }
+
   std::vector<BuiltStage> stages() const override {
     std::vector<BuiltStage> out;
     const Scene& s = ctx_.scene;
