@@ -716,17 +716,23 @@ TEST(BakeKeepsProperties, UvAndOtherVertexPropertiesGoThroughUnchanged) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const LoadedMesh in = read_mesh(dir / "in.ply");
   const LoadedMesh out = read_mesh(dir / "out.ply");
-  ASSERT_EQ(out.extra_vertex_properties.size(), 4u);
-  const char* names[] = {"u", "v", "quality", "id"};
-  const char* types[] = {"float", "float", "uchar", "int"};
-  for (std::size_t k = 0; k < 4; ++k) {
+  // u, v are the mesh's texture coordinates (issue 13), written back as float u, v.
+  EXPECT_TRUE(out.read_options.vertex_has_texcoord());
+  EXPECT_EQ(to_triangle_mesh(out).uvs, to_triangle_mesh(in).uvs);
+  EXPECT_EQ(to_triangle_mesh(in).uvs[2], glm::dvec2(0.3333333f, 0.1f));
+  EXPECT_NE(test::read_file(dir / "out.ply").find("property float u\nproperty float v\n"),
+            std::string::npos);
+  ASSERT_EQ(out.extra_vertex_properties.size(), 2u);
+  const char* names[] = {"quality", "id"};
+  const char* types[] = {"uchar", "int"};
+  for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(out.extra_vertex_properties[k].name, names[k]);
     EXPECT_EQ(out.extra_vertex_properties[k].ply_type, types[k]);
     // Float values read back bit-exact (9 significant digits), integers exactly.
     EXPECT_EQ(out.extra_vertex_properties[k].values, in.extra_vertex_properties[k].values)
         << names[k];
   }
-  EXPECT_EQ(in.extra_vertex_properties[3].values[3], 2147483647.0);
+  EXPECT_EQ(in.extra_vertex_properties[1].values[3], 2147483647.0);
   EXPECT_TRUE(out.read_options.vertex_has_color());  // and the bake's own colours
 }
 
