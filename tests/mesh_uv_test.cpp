@@ -36,11 +36,8 @@ TEST(MeshUvs, PlyFloatUvAreExactAndOtherPropertiesStayExtras) {
   ASSERT_EQ(loaded.extra_vertex_properties.size(), 1u);
   EXPECT_EQ(loaded.extra_vertex_properties[0].name, "quality");
   const TriangleMesh m = to_triangle_mesh(loaded);
-  ASSERT_EQ(m.uvs.size(), 4u);
-  EXPECT_EQ(m.uvs[0], glm::dvec2(0.125, 0.0));
-  EXPECT_EQ(m.uvs[1], glm::dvec2(0.625, 0.0));
-  EXPECT_EQ(m.uvs[2], glm::dvec2(0.625, 0.25));
-  EXPECT_EQ(m.uvs[3], glm::dvec2(0.125, 0.25));
+  EXPECT_EQ(m.uvs,
+            (std::vector<glm::dvec2>{{0.125, 0.0}, {0.625, 0.0}, {0.625, 0.25}, {0.125, 0.25}}));
 }
 
 TEST(MeshUvs, PlyDoubleStKeepTheirDoubles) {
@@ -96,11 +93,7 @@ TEST(MeshUvs, ObjSeamSplitsTheVertexKeepingItsNormal) {
 
 TEST(MeshUvs, OffSt) {
   const TriangleMesh m = load_triangle_mesh(kUv / "quad_st.off");
-  ASSERT_EQ(m.uvs.size(), 4u);
-  EXPECT_EQ(m.uvs[0], glm::dvec2(0.25, 0.5));
-  EXPECT_EQ(m.uvs[1], glm::dvec2(0.75, 0.5));
-  EXPECT_EQ(m.uvs[2], glm::dvec2(0.75, 1.0));
-  EXPECT_EQ(m.uvs[3], glm::dvec2(0.25, 1.0));
+  EXPECT_EQ(m.uvs, (std::vector<glm::dvec2>{{0.25, 0.5}, {0.75, 0.5}, {0.75, 1.0}, {0.25, 1.0}}));
 }
 
 TEST(MeshUvs, OmTexcoords) {

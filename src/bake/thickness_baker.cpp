@@ -1,15 +1,9 @@
 #include "bake/thickness_baker.h"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <mutex>
-#include <numbers>
-#include <stdexcept>
 #include <string>
-#include <thread>
 #include <tuple>
 
 #include "bake/occlusion_tracer.h"

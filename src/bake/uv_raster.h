@@ -2,7 +2,8 @@
 // covers each texel centre, with the centre's barycentric coordinates; and the bake margin that
 // grows the covered texels outwards across seams.
 //
-// The texel grid follows glTF and OpenGL: v = 0 is the BOTTOM row of the image. Texel (x, y),
+// The texel grid follows OpenGL (glTexImage2D's first row is t = 0): v = 0 is the BOTTOM row
+// of the image. (glTF puts v = 0 at the top; its TEXCOORD_0 would need v -> 1 - v.) Texel (x, y),
 // image row y counted from the top, has its centre at u = (x + 0.5) / W, v = 1 - (y + 0.5) / H;
 // equivalently a point (u, v) lies in column u * W and row (1 - v) * H.
 #pragma once

@@ -91,6 +91,7 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     mesh.release_vertex_status();
     // OBJ gives texture coordinates per face corner: one position with several is a seam.
     if (ext == ".obj") split_uv_seams(loaded, facts);
+    if (mesh.has_halfedge_texcoords2D()) mesh.release_halfedge_texcoords2D();
   }
   finish_loaded_mesh(loaded, file, facts);
   return loaded;
