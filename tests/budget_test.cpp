@@ -159,6 +159,8 @@ TEST(ProgramCounter, EveryGeneratedProgramAgreesWithMesa) {
   gl::Context ctx(8, 8);
   std::vector<std::string> scenes = test::json_files("scenes");
   for (const std::string& s : test::json_files("scenes/hard")) scenes.push_back(s);
+  // The packed light groups of issue 10: four point lights, eight directional ones, twelve mixed.
+  for (const std::string& s : test::json_files("scenes/budget")) scenes.push_back(s);
   for (const std::string& file : scenes) {
     const Scene scene = test::load_test_scene(file);
     for (const VariantInfo& v : arbfp_path_info().variants) {

@@ -93,9 +93,9 @@ Reg declare_orthographic_view(ir::Block& decls, const Scene& scene) {
   return decls.param("V", vec4(-scene.camera.forward(), 0));
 }
 
-LightList scene_lights(const Scene& scene) {
+LightList scene_lights(const Scene& scene, size_t first_light) {
   LightList out{scene.lights, {}, scene.camera.eye};
-  for (size_t i = 0; i < scene.lights.size(); ++i) out.scene_index.push_back(i);
+  for (size_t i = 0; i < scene.lights.size(); ++i) out.scene_index.push_back(first_light + i);
   return out;
 }
 

@@ -57,8 +57,9 @@ struct LightList {
   const Light& operator[](size_t i) const { return lights[i]; }
   std::string name(size_t i) const { return "light" + std::to_string(scene_index[i]); }
 };
-// The scene's lights in the scene's order.
-LightList scene_lights(const Scene& scene);
+// The scene's lights in the scene's order, named from `first_light` on (a pass's lights keep
+// their numbers in the scene, arb_passes.h).
+LightList scene_lights(const Scene& scene, size_t first_light = 0);
 
 // Light i's L (directional: PARAM lightI_L = -direction) or camera-relative position (point).
 ir::Reg declare_light_vector(ir::Block& decls, const LightList& lights, size_t light);

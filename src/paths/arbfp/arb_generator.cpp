@@ -80,6 +80,7 @@ struct Key {
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
   GuardNeeds guards = {};               // the fragment program's, for this scene, in lane order
   std::vector<std::string> notes = {};
+  size_t first_light = 0;       // the number of the scene's first light (a pass's, arb_passes.h)
   LightList list = {};          // the lights in lane order
   std::vector<bool> packed = {};     // per group: the light loop four lanes at a time (arb_pack.h)
   std::vector<bool> dot_sums = {};   // per group: the colour sums as dot products
@@ -95,15 +96,15 @@ size_t lanes_of_group(size_t g, size_t lights) {
 }
 
 // The lights in lane order: the scene's, or point lights first (stable).
-LightList ordered_lights(const Scene& scene, bool by_kind) {
-  LightList list = scene_lights(scene);
+LightList ordered_lights(const Scene& scene, bool by_kind, size_t first_light) {
+  LightList list = scene_lights(scene, first_light);
   if (!by_kind) return list;
   LightList out{{}, {}, list.eye};
   for (Light::Type t : {Light::Type::Point, Light::Type::Directional}) {
     for (size_t i = 0; i < list.size(); ++i) {
       if (list[i].type != t) continue;
       out.lights.push_back(list[i]);
-      out.scene_index.push_back(i);
+      out.scene_index.push_back(list.scene_index[i]);
     }
   }
   return out;
@@ -111,11 +112,12 @@ LightList ordered_lights(const Scene& scene, bool by_kind) {
 
 // Which groups are packed and which sum their colours by dot products, for `layout`.
 void apply_layout(Key& k, const Layout& layout) {
-  k.list = ordered_lights(k.scene, layout.by_kind);
+  k.list = ordered_lights(k.scene, layout.by_kind, k.first_light);
   GuardNeeds lane_order = k.guards;
   for (size_t i = 0; i < k.lights; ++i) {
-    lane_order.distance_zero[i] = k.guards.distance_zero[k.list.scene_index[i]];
-    lane_order.attenuation_floor[i] = k.guards.attenuation_floor[k.list.scene_index[i]];
+    const size_t j = k.list.scene_index[i] - k.first_light;
+    lane_order.distance_zero[i] = k.guards.distance_zero[j];
+    lane_order.attenuation_floor[i] = k.guards.attenuation_floor[j];
   }
   k.guards = lane_order;
   // Not packed: the LUT (its TEX results take the per-light registers H and L, lobe_lut) and a
@@ -149,7 +151,7 @@ void apply_layout(Key& k, const Layout& layout) {
 }
 
 Key make_key(const Scene& scene, const Material& material, const PowVariant& variant,
-             bool translucency_term, const Layout& layout) {
+             bool translucency_term, const Layout& layout, size_t first_light) {
   Key k{scene, material.translucency.value_or(Translucency{}), variant};
   k.term = translucency_term && material.translucency.has_value();
   k.lights = scene.lights.size();
@@ -175,7 +177,8 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
     k.method = PowMethod::Exact;
   }
   if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
-  k.guards = guard_needs(scene, material, variant.all_guards);
+  k.first_light = first_light;
+  k.guards = guard_needs(scene, material, variant.all_guards, first_light);
   for (const std::string& n : k.guards.notes) k.notes.push_back(n);
   apply_layout(k, layout);
   if (k.vertex_lobe) {
@@ -675,8 +678,8 @@ ir::Program fragment_program(Key& k, const Material& material,
 namespace {
 
 ArbPrograms generate_with(const Scene& scene, const Material& material, const PowVariant& variant,
-                          bool translucency_term, const Layout& layout) {
-  Key k = make_key(scene, material, variant, translucency_term, layout);
+                          bool translucency_term, const Layout& layout, size_t first_light) {
+  Key k = make_key(scene, material, variant, translucency_term, layout, first_light);
   ArbPrograms out;
   out.fragment_program = fragment_program(k, material, out.lut);
   out.vertex_program = vertex_program(k);
@@ -684,43 +687,63 @@ ArbPrograms generate_with(const Scene& scene, const Material& material, const Po
   return out;
 }
 
-// The layout with the shortest fragment program (ALU + TEX, then temporaries; the first of equals,
-// so a scene packing does not shorten keeps the light-by-light program). Chosen on the program
-// with the term and only the guards the scene needs, so `:guards=all` lays the lights out the
-// same way and renders the same bits wherever no guard triggers (arb_guards_test), and the
-// program without the term is the same program minus the term (the budget's term cost).
-Layout best_layout(const Scene& scene, const Material& material, PowVariant variant) {
-  variant.all_guards = false;
-  const bool translucency_term = true;
+// The layouts worth trying for `lights` lights: by kind only when both kinds are there; a packing
+// threshold only where it changes which groups are packed (every group but the last has four
+// lights: 5 packs none, 4 the full groups, the last group's size all of them); dot sums only
+// where a packed group has three or four lights. The scale fold saves one instruction per group
+// wherever it applies, so it is always on.
+std::vector<Layout> candidate_layouts(const Scene& scene) {
   bool point = false, directional = false;
   for (const Light& l : scene.lights) (l.type == Light::Type::Point ? point : directional) = true;
-  Layout best;
-  budget::ProgramCounts least;
-  bool first = true;
+  const size_t n = scene.lights.size();
+  const size_t last = n == 0 ? 0 : n - 4 * (group_count(n) - 1);
+  std::vector<size_t> thresholds = {5};
+  if (n >= 4) thresholds.push_back(4);
+  if (last >= 2 && last < 4) thresholds.push_back(last);
+  std::vector<Layout> out;
   for (bool by_kind : {false, true}) {
     if (by_kind && !(point && directional)) continue;
-    for (size_t pack_min : {5, 4, 3, 2}) {
-      for (int options = 0; options < 4; ++options) {
-        const Layout l{by_kind, static_cast<size_t>(pack_min), (options & 1) != 0,
-                       (options & 2) != 0};
-        const budget::ProgramCounts c = ir::count(
-            generate_with(scene, material, variant, translucency_term, l).fragment_program);
-        const auto key = [](const budget::ProgramCounts& x) {
-          return std::pair(x.alu + x.tex, x.temporaries);
-        };
-        if (first || key(c) < key(least)) best = l, least = c, first = false;
-      }
+    for (size_t pack_min : thresholds) {
+      out.push_back({by_kind, pack_min, false, true});
+      if (pack_min <= 4 && (n >= 4 || last >= 3)) out.push_back({by_kind, pack_min, true, true});
     }
   }
-  return best;
+  return out;
+}
+
+// The programs of the layout with the shortest fragment program (ALU + TEX, then temporaries;
+// the first of equals, so a scene packing does not shorten keeps the light-by-light program).
+// Chosen on the program with the term and only the guards the scene needs, so `:guards=all`
+// lays the lights out the same way and renders the same bits wherever no guard triggers
+// (arb_guards_test), and the program without the term is the same program minus the term (the
+// budget's term cost).
+ArbPrograms generate_best(const Scene& scene, const Material& material, const PowVariant& variant,
+                          bool translucency_term, size_t first_light) {
+  PowVariant chooser = variant;
+  chooser.all_guards = false;
+  std::optional<ArbPrograms> best;
+  Layout best_layout;
+  std::pair<int, int> least;
+  for (const Layout& l : candidate_layouts(scene)) {
+    ArbPrograms p = generate_with(scene, material, chooser, true, l, first_light);
+    const budget::ProgramCounts c = ir::count(p.fragment_program);
+    const std::pair<int, int> key(c.alu + c.tex, c.temporaries);
+    if (best && !(key < least)) continue;
+    best = std::move(p);
+    best_layout = l;
+    least = key;
+  }
+  if (variant.all_guards || !translucency_term) {
+    return generate_with(scene, material, variant, translucency_term, best_layout, first_light);
+  }
+  return std::move(*best);
 }
 
 }  // namespace
 
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
-                         bool translucency_term) {
-  const Layout layout = best_layout(scene, material, variant);
-  ArbPrograms out = generate_with(scene, material, variant, translucency_term, layout);
+                         bool translucency_term, size_t first_light) {
+  ArbPrograms out = generate_best(scene, material, variant, translucency_term, first_light);
   out.vertex = ir::print(out.vertex_program);
   out.fragment = ir::print(out.fragment_program);
   return out;

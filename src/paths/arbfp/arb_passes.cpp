@@ -17,7 +17,7 @@ Pass make_pass(Scene& sub, const Scene& scene, const Material& material, const P
   sub.lights.assign(scene.lights.begin() + static_cast<long>(first),
                     scene.lights.begin() + static_cast<long>(first + count));
   sub.ambient_light = first == 0 ? scene.ambient_light : glm::dvec3(0);
-  p.programs = generate_arb(sub, material, variant);
+  p.programs = generate_arb(sub, material, variant, true, first);
   p.vertex_counts = ir::count(p.programs.vertex_program);
   p.fragment_counts = ir::count(p.programs.fragment_program);
   return p;
