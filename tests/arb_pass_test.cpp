@@ -24,8 +24,8 @@ namespace {
 
 budget::ProgramCounts fragment_counts(const Scene& scene, const std::string& variant) {
   const Material& m = scene.materials.front();
-  return arbfp::ir::count(arbfp::generate_arb(scene, m, arbfp::parse_variant(variant))
-                              .fragment_program);
+  return arbfp::ir::count(
+      arbfp::generate_arb(scene, m, arbfp::parse_variant(variant)).fragment_program);
 }
 
 // The issue's goals for the default variant, in one ps_2_0 pass (64 ALU, 12 temporaries).
@@ -34,9 +34,9 @@ TEST(ArbPacking, ProgramsMeetTheIssuesGoals) {
     const char* scene;
     int alu;
   };
-  for (const Goal& g : {Goal{"scenes/three_point_blob.json", 48},
-                        Goal{"scenes/budget/four_point_lights.json", 56},
-                        Goal{"scenes/budget/eight_directional.json", 50}}) {
+  for (const Goal& g :
+       {Goal{"scenes/three_point_blob.json", 48}, Goal{"scenes/budget/four_point_lights.json", 56},
+        Goal{"scenes/budget/eight_directional.json", 50}}) {
     const budget::ProgramCounts c = fragment_counts(test::load_test_scene(g.scene), "pow=mul");
     EXPECT_LE(c.alu, g.alu) << g.scene;
     EXPECT_LE(c.temporaries, 12) << g.scene;
@@ -48,8 +48,8 @@ TEST(ArbPacking, ProgramsMeetTheIssuesGoals) {
 // opcodes), everything else once per group; the colour sums are dot products.
 TEST(ArbPacking, FourPointLightsArePackedIntoOneGroup) {
   const Scene scene = test::load_test_scene("scenes/budget/four_point_lights.json");
-  const auto p = arbfp::generate_arb(scene, scene.materials.front(),
-                                     arbfp::parse_variant("pow=mul"));
+  const auto p =
+      arbfp::generate_arb(scene, scene.materials.front(), arbfp::parse_variant("pow=mul"));
   const auto& fp = p.fragment_program;
   EXPECT_EQ(test::count_op(fp, arbfp::ir::Op::RCP), 4) << "the attenuation, one per light";
   EXPECT_EQ(test::count_op(fp, arbfp::ir::Op::RSQ), 2 + 4) << "N, V and 1/dist per light";
@@ -93,8 +93,8 @@ TEST(ArbPasses, EveryPassFitsTheProfileByTheCounterAndByMesa) {
   const Scene scene = test::load_test_scene(kOver);
   const Material& m = scene.materials.front();
   const arbfp::PowVariant v = arbfp::parse_variant("pow=mul");
-  ASSERT_FALSE(budget::check(fragment_counts(scene, "pow=mul"), budget::find_profile("ps_2_0"))
-                   .empty())
+  ASSERT_FALSE(
+      budget::check(fragment_counts(scene, "pow=mul"), budget::find_profile("ps_2_0")).empty())
       << "the scene must be over ps_2_0 in one pass";
   const arbfp::PassPlan plan = arbfp::plan_passes(scene, m, v, "ps_2_0");
   ASSERT_GE(plan.passes.size(), 2u);
@@ -214,9 +214,8 @@ TEST(ArbPasses, ALightThatFitsNoPassIsRefused) {
   EXPECT_THROW(arbfp::plan_passes(scene, scene.materials.front(), arbfp::parse_variant("pow=mul"),
                                   "arbfp1-min"),
                InputError);
-  const test::RunResult r = test::run_ltrender("render " + file +
-                                               " --path arbfp --profile arbfp1-min -o " +
-                                               (dir / "out.png").string());
+  const test::RunResult r = test::run_ltrender(
+      "render " + file + " --path arbfp --profile arbfp1-min -o " + (dir / "out.png").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("light 0 alone does not fit arbfp1-min"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out.png"));
@@ -234,9 +233,8 @@ TEST(ArbPassesCli, InfoBudgetAndRenderReportThePasses) {
   ASSERT_GE(j["passes"].size(), 2u);
   for (const nlohmann::json& p : j["passes"]) EXPECT_LE(p["fragment"]["alu"].get<int>(), 64);
   const test::TempDir dir;
-  const test::RunResult glsl = test::run_ltrender("render " + scene +
-                                                  " --path glsl --profile ps_2_0 -o " +
-                                                  (dir / "x.png").string());
+  const test::RunResult glsl = test::run_ltrender(
+      "render " + scene + " --path glsl --profile ps_2_0 -o " + (dir / "x.png").string());
   EXPECT_EQ(glsl.exit_code, 2);
   EXPECT_NE(glsl.err.find("takes no profile"), std::string::npos) << glsl.err;
 }

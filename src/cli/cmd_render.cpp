@@ -71,9 +71,8 @@ Action add_render(CLI::App& app) {
       const std::string why = info.refusal(scene, variant);
       if (!why.empty()) throw InputError("--variant", variant, info.name + ": " + why);
     }
-    const Image img =
-        render_scene(scene, info.name, variant, a->width, a->height,
-                     PathOptions{a->program, a->profile});
+    const Image img = render_scene(scene, info.name, variant, a->width, a->height,
+                                   PathOptions{a->program, a->profile});
     write_image(a->output, img);
     return 0;
   };

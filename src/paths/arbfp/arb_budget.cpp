@@ -217,15 +217,17 @@ nlohmann::json to_json(const BudgetReport& r) {
   }
   j["passes"] = nlohmann::json::array();
   for (const PlannedPass& p : r.pass_plan) {
-    j["passes"].push_back({{"material", p.material},
-                           {"lights", p.lights},
-                           {"fragment", {{"alu", p.fragment.alu},
-                                         {"tex", p.fragment.tex},
-                                         {"temporaries", p.fragment.temporaries},
-                                         {"parameters", p.fragment.parameters}}},
-                           {"vertex", {{"instruction_slots", p.vertex.instructions() +
-                                                                 (p.vertex.position_invariant ? 4 : 0)},
-                                       {"temporaries", p.vertex.temporaries}}}});
+    j["passes"].push_back(
+        {{"material", p.material},
+         {"lights", p.lights},
+         {"fragment",
+          {{"alu", p.fragment.alu},
+           {"tex", p.fragment.tex},
+           {"temporaries", p.fragment.temporaries},
+           {"parameters", p.fragment.parameters}}},
+         {"vertex",
+          {{"instruction_slots", p.vertex.instructions() + (p.vertex.position_invariant ? 4 : 0)},
+           {"temporaries", p.vertex.temporaries}}}});
   }
   if (!r.pass_plan_error.empty()) j["passes_error"] = r.pass_plan_error;
   return j;

@@ -58,8 +58,8 @@ bool is_integer_power(double p) {
 // How the fragment program lays out the lights (generate_arb tries each and keeps the shortest
 // program: packing pays for groups of three or four lights, not for one).
 struct Layout {
-  bool by_kind = false;  // point lights first, then directional ones: groups of one kind
-  size_t pack_min = 5;   // a group of one kind with at least this many lights is packed (5: none)
+  bool by_kind = false;   // point lights first, then directional ones: groups of one kind
+  size_t pack_min = 5;    // a group of one kind with at least this many lights is packed (5: none)
   bool dot_sums = false;  // packed groups of three or four lights sum their colours by DP4/DP3
   bool fold_scale = false;  // Key::fold_scale where it applies
 };
@@ -80,12 +80,12 @@ struct Key {
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
   GuardNeeds guards = {};               // the fragment program's, for this scene, in lane order
   std::vector<std::string> notes = {};
-  size_t first_light = 0;       // the number of the scene's first light (a pass's, arb_passes.h)
-  LightList list = {};          // the lights in lane order
-  std::vector<bool> packed = {};     // per group: the light loop four lanes at a time (arb_pack.h)
-  std::vector<bool> dot_sums = {};   // per group: the colour sums as dot products
-  bool per_light_h = false;     // some light computes its own H (the register H is declared)
-  bool per_light_point = false; // some point light computes its own L (the register L)
+  size_t first_light = 0;         // the number of the scene's first light (a pass's, arb_passes.h)
+  LightList list = {};            // the lights in lane order
+  std::vector<bool> packed = {};  // per group: the light loop four lanes at a time (arb_pack.h)
+  std::vector<bool> dot_sums = {};  // per group: the colour sums as dot products
+  bool per_light_h = false;         // some light computes its own H (the register H is declared)
+  bool per_light_point = false;     // some point light computes its own L (the register L)
   // pow=mul: lobe * s + a is (lobe + a / s) * s, the addend on the chain's last MUL and s in
   // the per-light s * T (constant T) or in the colours of the dot products; needs every s > 0.
   bool fold_scale = false;
@@ -122,7 +122,8 @@ void apply_layout(Key& k, const Layout& layout) {
   k.guards = lane_order;
   // Not packed: the LUT (its TEX results take the per-light registers H and L, lobe_lut) and a
   // normalised H (|H| per light).
-  const bool packable = k.method != PowMethod::Lut && !(k.fragment_lobe && k.tr.normalize_distorted_light);
+  const bool packable =
+      k.method != PowMethod::Lut && !(k.fragment_lobe && k.tr.normalize_distorted_light);
   // The dot products read a group's lobe register, which the fragment program's own packed lobe
   // methods have (the LUT's, the vertex lobe's and the flat lobe's are not temporaries).
   const bool lobe_register = !k.term || (k.fragment_lobe && k.method != PowMethod::Lut);
@@ -145,7 +146,8 @@ void apply_layout(Key& k, const Layout& layout) {
   }
   k.fold_scale = layout.fold_scale && k.fragment_lobe && k.method == PowMethod::Mul;
   for (size_t g = 0; g < k.groups; ++g) {
-    k.fold_scale &= k.dot_sums[g] || !k.vertex_thickness;
+    // A light summed alone folds s into a PARAM s * T: only a constant T can.
+    k.fold_scale &= k.dot_sums[g] || k.tr.thickness_source == ThicknessSource::Constant;
   }
   for (size_t i = 0; i < k.lights; ++i) k.fold_scale &= k.list[i].translucency_scale > 0;
 }
@@ -357,7 +359,8 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
       // The vertex program multiplied the tint in (see there).
       d.text("# T = fragment.texcoord[2]: vertex colour * tint\n");
       f.T = attrib("fragment.texcoord[2]");
-    } else {
+    } else if (!k.fold_scale || any_of(k.dot_sums)) {
+      // (With the scale folded, a light summed alone reads its own s * T instead.)
       d.text("# constant thickness * tint\n");
       f.T = d.param("T", vec4(k.tr.thickness * k.tr.tint, 0));
     }
@@ -382,8 +385,8 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
       const std::string prefix = k.list.name(i) + "_";
       if (!k.dot_sums[g]) f.color[i] = d.param(prefix + "color", vec4(l.color, 0));
       if (!k.dot_sums[g] && k.fold_scale) {
-        f.scaled_T[i] = d.param(prefix + "sT", vec4(l.translucency_scale * k.tr.thickness * k.tr.tint, 0),
-                                "s * T");
+        f.scaled_T[i] = d.param(
+            prefix + "sT", vec4(l.translucency_scale * k.tr.thickness * k.tr.tint, 0), "s * T");
       }
       if (k.packed[g]) continue;
       f.light_vector[i] = declare_light_vector(d, k.list, i);
@@ -528,7 +531,7 @@ FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut)
     for (size_t i = 0; i < k.lights; ++i) lanes.push_back(read_lane(f.lobe, i));
     return out;
   }
-  LobeInput in{f.decls, f.code, f.s,       k.variant, k.tr,    k.lights,
+  LobeInput in{f.decls, f.code, f.s,         k.variant, k.tr, k.lights,
                f.tv,    f.lobe, k.any_point, k.notes,   {}};
   if (k.fold_scale && k.tr.ambient != 0) {
     // lobe * s + a = (lobe + a / s) * s: a / s rides on the chain's last MUL, s on T or on

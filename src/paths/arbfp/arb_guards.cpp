@@ -68,8 +68,7 @@ double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::d
   return glm::length(a + ab * (vb / denom) + ac * (vc / denom));
 }
 
-GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
-                       size_t first_light) {
+GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all, size_t first_light) {
   GuardNeeds g;
   const size_t n = scene.lights.size();
   g.distance_zero.assign(n, false);

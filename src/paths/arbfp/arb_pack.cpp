@@ -58,9 +58,8 @@ PackedRows declare_packed_rows(ir::Block& decls, const LightList& lights, size_t
   PackedRows r;
   if (point) {
     const glm::dvec3 e = lights.eye;
-    r.x = decls.param("pos_x" + g, lanes_of(lights, group, [&](const Light& l) {
-                        return l.position.x - e.x;
-                      }),
+    r.x = decls.param("pos_x" + g,
+                      lanes_of(lights, group, [&](const Light& l) { return l.position.x - e.x; }),
                       "camera-relative positions of " + what);
     r.y = decls.param("pos_y" + g,
                       lanes_of(lights, group, [&](const Light& l) { return l.position.y - e.y; }));

@@ -22,8 +22,8 @@ struct PackedRows {
 PackedRows declare_packed_rows(ir::Block& decls, const LightList& lights, size_t group);
 // The lights' colours transposed: red, green and blue of group g's lights; `scaled`: each
 // times the light's translucency scale s.
-std::array<ir::Reg, 3> declare_colour_rows(ir::Block& decls, const LightList& lights,
-                                           size_t group, bool scaled);
+std::array<ir::Reg, 3> declare_colour_rows(ir::Block& decls, const LightList& lights, size_t group,
+                                           bool scaled);
 
 // True when every light of group g is of one kind (the packed code has one form per kind).
 bool group_has_one_kind(const LightList& lights, size_t group);

@@ -31,8 +31,8 @@ std::string overrun(const Pass& p, const budget::Profile& fragment, const budget
     if (over.empty()) continue;
     const budget::Overrun& o = over.front();
     return std::string(counts->kind == budget::ProgramKind::Fragment ? "fragment" : "vertex") +
-           " program: " + std::to_string(o.count) + " " + o.limit + " > " +
-           std::to_string(o.max) + " (" + profile->name + ")";
+           " program: " + std::to_string(o.count) + " " + o.limit + " > " + std::to_string(o.max) +
+           " (" + profile->name + ")";
   }
   return "";
 }
@@ -51,8 +51,7 @@ PassPlan plan_passes(const Scene& scene, const Material& material, const PowVari
   }
   const budget::Profile& chosen = budget::find_profile(profile);
   const budget::Profile& partner = budget::find_profile(chosen.partner);
-  const budget::Profile& fragment =
-      chosen.kind == budget::ProgramKind::Fragment ? chosen : partner;
+  const budget::Profile& fragment = chosen.kind == budget::ProgramKind::Fragment ? chosen : partner;
   const budget::Profile& vertex = chosen.kind == budget::ProgramKind::Vertex ? chosen : partner;
   Pass whole = make_pass(sub, scene, material, variant, 0, n);
   if (overrun(whole, fragment, vertex).empty() || n == 0) {
