@@ -85,6 +85,25 @@ TEST(ArbPacking, PackedScenesRenderWithinTheArbfpBounds) {
   }
 }
 
+// The hard case of a point light at a mesh vertex, its light four times over: one packed group
+// whose every lane needs the distance-0 guard (L = N by CMP in the lanes), against the
+// reference within the arbfp bounds.
+TEST(ArbPacking, APackedGroupKeepsTheDistanceZeroGuard) {
+  Scene scene = test::load_test_scene("scenes/hard/point_light_at_vertex.json");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  while (scene.lights.size() < 4) scene.lights.push_back(scene.lights.front());
+  const auto p =
+      arbfp::generate_arb(scene, scene.materials.front(), arbfp::parse_variant("pow=mul"));
+  EXPECT_TRUE(test::declares_param(p.fragment_program, "pos_x0")) << "the lights are packed";
+  EXPECT_EQ(test::count_op(p.fragment_program, arbfp::ir::Op::CMP), 4) << "L = N, 1/dist = 1";
+  const nlohmann::json row = bounds_row("pow=mul");
+  const Image ref = render_scene(scene, "reference", "", 160, 120);
+  const Comparison c =
+      compare_images(render_scene(scene, "arbfp", "", 160, 120), ref, TestEncoding::kUnorm8);
+  EXPECT_LE(c.covered.max_lsb, row["max"].get<double>());
+  EXPECT_LE(c.covered.mean_lsb, row["mean"].get<double>());
+}
+
 const char kOver[] = "scenes/budget/twelve_mixed.json";
 
 // Every pass of the over-budget scene fits ps_2_0 and vs_2_0, by our counter and by Mesa's
