@@ -69,7 +69,8 @@ Action add_info(CLI::App& app) {
       if (t.ramp) {
         o << ", lobe from the ramp " << t.ramp->file.string() << " (" << t.ramp->texture.width
           << " texels" << (t.ramp->grey ? ", grey" : ", rgb")
-          << "; the LUT paths sample it as their table, whatever the pow variant)";
+          << "; replaces t^power on reference, half and glsl, whatever the pow variant; arbfp, "
+             "combiners and gx refuse it)";
       }
       o << "\n";
     }
