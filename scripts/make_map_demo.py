@@ -59,23 +59,20 @@ for r in range(rings):
         if r != rings - 1: idx += [a, a + 1, b + 1]
         if r != 0: idx += [a, b + 1, b]
 nv = len(pos) // 3
-bin_ = b''
-views, accs = [], []
-def add(fmt, vals, ctype, typ, count, mn=None, mx=None):
-    global bin_
-    while len(bin_) % 4: bin_ += b'\0'
-    o = len(bin_)
-    bin_ += struct.pack('<%d%s' % (len(vals), fmt), *vals)
-    views.append({"buffer": 0, "byteOffset": o, "byteLength": len(bin_) - o})
-    a = {"bufferView": len(views) - 1, "componentType": ctype, "type": typ, "count": count}
-    if mn: a["min"], a["max"] = mn, mx
-    accs.append(a)
-    return len(accs) - 1
-mn = [min(pos[i::3]) for i in range(3)]; mx = [max(pos[i::3]) for i in range(3)]
-P = add('f', pos, 5126, "VEC3", nv, mn, mx)
-N = add('f', nrm, 5126, "VEC3", nv)
-T = add('f', uv, 5126, "VEC2", nv)
-I = add('I', idx, 5125, "SCALAR", len(idx))
+# One buffer view and accessor per attribute, each 4-byte aligned (glTF 2.0 §3.6.2.4).
+attributes = [('f', pos, 5126, "VEC3"), ('f', nrm, 5126, "VEC3"), ('f', uv, 5126, "VEC2"),
+              ('I', idx, 5125, "SCALAR")]
+bin_, views, accs = b'', [], []
+for fmt, vals, ctype, typ in attributes:
+    bin_ += b'\0' * (-len(bin_) % 4)
+    packed = struct.pack('<%d%s' % (len(vals), fmt), *vals)
+    views.append({"buffer": 0, "byteOffset": len(bin_), "byteLength": len(packed)})
+    count = len(vals) // {"VEC3": 3, "VEC2": 2, "SCALAR": 1}[typ]
+    accs.append({"bufferView": len(views) - 1, "componentType": ctype, "type": typ, "count": count})
+    bin_ += packed
+accs[0]["min"] = [min(pos[i::3]) for i in range(3)]
+accs[0]["max"] = [max(pos[i::3]) for i in range(3)]
+P, N, T, I = range(4)
 doc = {"asset": {"version": "2.0", "generator": "scripts/make_map_demo.py"},
        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "name": "sphere"}],
        "meshes": [{"primitives": [{"attributes": {"POSITION": P, "NORMAL": N, "TEXCOORD_0": T},
