@@ -2,8 +2,8 @@
 // (rows: path, variant, scene or "*", max / mean / p99 LSB bounds, a reason). One parameterised
 // test renders each (scene, path, variant) the bench would run and holds it to its row; another
 // fails when a variant has no row, so a new path or variant cannot land without a stated bound.
-// The bounds are measured (`ltrender bench scenes/*.json scenes/ortho/*.json`) with a margin, and
-// the reason says why the error is what it is.
+// The bounds are measured (`ltrender bench scenes/*.json scenes/ortho/*.json scenes/maps/*.json`)
+// with a margin, and the reason says why the error is what it is.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -73,6 +73,7 @@ std::vector<BoundCase> bound_cases() {
   std::vector<BoundCase> out;
   std::vector<std::string> scenes = test::json_files("scenes");
   for (const std::string& s : test::json_files("scenes/ortho")) scenes.push_back(s);
+  for (const std::string& s : test::json_files("scenes/maps")) scenes.push_back(s);
   for (const std::string& s : scenes) {
     const Scene scene = load_scene(test::source_dir() / s);
     for (const PathInfo& p : all_paths()) {

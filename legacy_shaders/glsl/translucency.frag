@@ -14,13 +14,22 @@ uniform vec3 u_view_dir;  // -forward: every view ray is parallel
 uniform float u_power;
 uniform float u_distortion;
 uniform float u_lt_ambient;
-uniform vec3 u_thickness;  // constant thickness * tint, or the tint alone for vertex thickness
+uniform vec3 u_thickness;  // constant thickness * tint, or the tint alone (vertex, map)
+#endif
+#if LT_THICKNESS_MAP
+uniform sampler2D u_thickness_map;  // GL_LINEAR, CLAMP_TO_EDGE (gl/map_texture.h)
+#endif
+#if LT_RAMP
+uniform sampler2D u_ramp;  // the artist's W x 1 ramp: its value at t replaces pow(t, p)
 #endif
 {{LIGHT_UNIFORMS}}
 varying vec3 v_position;
 varying vec3 v_normal;
 #if LT_VERTEX_THICKNESS
 varying vec3 v_thickness;
+#endif
+#if LT_THICKNESS_MAP
+varying vec2 v_uv;
 #endif
 
 // model.md hard case: a normal that interpolates to ~0 is "no normal" (same 1e-6 as the reference).
@@ -39,7 +48,7 @@ void point_light(vec3 P, vec3 N, vec3 position, vec3 k, out vec3 L, out float at
 }
 #endif
 
-#if LT_TRANSLUCENCY
+#if LT_TRANSLUCENCY && !LT_RAMP
 float lobe(float t) {
 #if LT_POWER_ZERO
   return 1.0;  // 0^0 := 1: the material's lobe is flat
@@ -59,7 +68,11 @@ vec3 light_term(vec3 N, vec3 V, vec3 L, float att, vec3 color, float scale, vec3
   H = h > 0.0 ? H / h : vec3(0.0);
 #endif
   float t = clamp(dot(V, -H), 0.0, 1.0);
+#if LT_RAMP
+  result += (texture2D(u_ramp, vec2(t, 0.5)).rgb * scale + u_lt_ambient) * T;
+#else
   result += (lobe(t) * scale + u_lt_ambient) * T;
+#endif
 #endif
   return att * color * result;
 }
@@ -74,6 +87,8 @@ void main() {
 #if LT_TRANSLUCENCY
 #if LT_VERTEX_THICKNESS
   vec3 T = v_thickness * u_thickness;
+#elif LT_THICKNESS_MAP
+  vec3 T = texture2D(u_thickness_map, v_uv).rgb * u_thickness;
 #else
   vec3 T = u_thickness;
 #endif

@@ -52,6 +52,16 @@ SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
       g.colors = upload(GL_ARRAY_BUFFER, col.data(), col.size() * sizeof(float));
       g.has_colors = true;
     }
+    const Material& mat = scene.materials[static_cast<size_t>(obj.material)];
+    if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Texture) {
+      std::vector<float> uv(m.uvs.size() * 2);
+      for (size_t i = 0; i < m.uvs.size(); ++i) {
+        uv[i * 2] = static_cast<float>(m.uvs[i].x);
+        uv[i * 2 + 1] = static_cast<float>(m.uvs[i].y);
+      }
+      g.uvs = upload(GL_ARRAY_BUFFER, uv.data(), uv.size() * sizeof(float));
+      g.has_uvs = true;
+    }
     g.indices = upload(GL_ELEMENT_ARRAY_BUFFER, m.triangles.data(),
                        m.triangles.size() * sizeof(glm::uvec3));
     g.index_count = static_cast<GLsizei>(m.triangles.size() * 3);
@@ -62,7 +72,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
 
 SceneGeometry::~SceneGeometry() {
   for (const GpuMesh& g : meshes_) {
-    const GLuint b[] = {g.positions, g.normals, g.colors, g.indices};
+    const GLuint b[] = {g.positions, g.normals, g.colors, g.uvs, g.indices};
     for (GLuint id : b) {
       if (id) glDeleteBuffers(1, &id);
     }
@@ -92,6 +102,13 @@ void SceneGeometry::bind(const GpuMesh& g) const {
     glDisableClientState(GL_COLOR_ARRAY);
     glColor4f(1, 1, 1, 1);
   }
+  if (g.has_uvs) {
+    glClientActiveTexture(GL_TEXTURE0 + kUvTexCoordSet);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, g.uvs);
+    glTexCoordPointer(2, GL_FLOAT, 0, nullptr);
+    glClientActiveTexture(GL_TEXTURE0);
+  }
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices);
 }
@@ -107,6 +124,9 @@ void SceneGeometry::unbind() const {
   glDisableClientState(GL_VERTEX_ARRAY);
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisableClientState(GL_COLOR_ARRAY);
+  glClientActiveTexture(GL_TEXTURE0 + kUvTexCoordSet);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glClientActiveTexture(GL_TEXTURE0);
 }
 
 size_t SceneGeometry::total_triangles() const {

@@ -16,11 +16,17 @@
 
 namespace lt::gl {
 
+// The texture coordinate set that carries a mesh's UVs (gl_MultiTexCoord1, vertex.texcoord[1]):
+// unit 0's set is the combiners' per-vertex t, so a thickness map's stage takes unit 1 and its
+// coordinates with it.
+inline constexpr int kUvTexCoordSet = 1;
+
 struct GpuMesh {
-  GLuint positions = 0, normals = 0, colors = 0, indices = 0;
+  GLuint positions = 0, normals = 0, colors = 0, uvs = 0, indices = 0;
   GLsizei index_count = 0;
   int material = 0;
   bool has_colors = false;
+  bool has_uvs = false;  // uploaded only where the material samples a thickness map
   size_t vertex_count = 0;
 };
 
@@ -39,7 +45,8 @@ class SceneGeometry {
 
   // Loads PROJECTION and MODELVIEW (camera-relative view) into fixed-function state.
   void load_matrices() const;
-  // Binds the conventional vertex arrays of one mesh; colours only where the mesh has them.
+  // Binds the conventional vertex arrays of one mesh; colours only where the mesh has them, UVs
+  // (texture coordinate set kUvTexCoordSet) only where its material reads a thickness map.
   void bind(const GpuMesh& mesh) const;
   void draw(const GpuMesh& mesh) const;
   void unbind() const;

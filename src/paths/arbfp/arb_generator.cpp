@@ -10,6 +10,7 @@
 #include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_lobe.h"
 #include "paths/arbfp/arb_pack.h"
+#include "paths/arbfp/arb_thickness_map.h"
 
 namespace lt::arbfp {
 
@@ -32,7 +33,8 @@ const char kFragmentHeader[] =
 # Inputs from translucency.vp:
 #   fragment.texcoord[0]  camera-relative position P (the eye is the origin)
 #   fragment.texcoord[1]  interpolated normal (not unit)
-#   fragment.texcoord[2]  vertex thickness (only when the material reads it)
+#   fragment.texcoord[2]  vertex thickness (only when the material reads it), or the UVs of
+#                          a thickness map (texture[1])
 #   fragment.texcoord[3+g] pow=mul:vertex only: (lobe * s + a) of light group g, per vertex
 #                          (then the fragment program has no t, V, H or lobe of its own)
 #
@@ -75,6 +77,7 @@ struct Key {
   bool vertex_lobe = false;       // pow=mul:vertex: the vertex program computes the lobe
   bool fragment_lobe = false;     // the fragment program computes t and the lobe
   bool vertex_thickness = false;  // T comes from the vertex colour
+  bool map_thickness = false;     // T comes from a thickness map (arb_thickness_map.h)
   bool ortho = false, ambient = false, any_point = false;
   size_t lights = 0, groups = 0;
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
@@ -159,6 +162,7 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
   k.lights = scene.lights.size();
   k.groups = group_count(k.lights);
   k.vertex_thickness = k.term && k.tr.thickness_source == ThicknessSource::Vertex;
+  k.map_thickness = k.term && k.tr.thickness_source == ThicknessSource::Texture;
   k.ortho = scene.camera.projection == Camera::Projection::Orthographic;
   k.ambient = scene.ambient_light != glm::dvec3(0);
   k.flat_lobe = k.term && k.tr.power == 0;
@@ -269,6 +273,8 @@ ir::Program vertex_program(Key& k) {
     b.text("# Vertex thickness: the mesh colour times the material's tint.\n");
     const Reg tint = b.param("tint", vec4(k.tr.tint, 0));
     b.op(Op::MUL, output("result.texcoord[2]"), {attrib("vertex.color"), tint});
+  } else if (k.map_thickness) {
+    emit_map_uv(b);
   } else {
     b.text("# (constant thickness: nothing more to pass)\n");
   }
@@ -359,6 +365,8 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
       // The vertex program multiplied the tint in (see there).
       d.text("# T = fragment.texcoord[2]: vertex colour * tint\n");
       f.T = attrib("fragment.texcoord[2]");
+    } else if (k.map_thickness) {
+      f.T = emit_map_thickness(p, d, f.code, k.tr.tint);
     } else if (!k.fold_scale || any_of(k.dot_sums)) {
       // (With the scale folded, a light summed alone reads its own s * T instead.)
       d.text("# constant thickness * tint\n");

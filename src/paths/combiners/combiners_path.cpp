@@ -7,11 +7,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/context.h"
+#include "gl/map_texture.h"
 #include "gl/program.h"
 #include "model/power_lut.h"
 #include "model/translucency.h"
 #include "paths/combiners/combiner_budget.h"
 #include "paths/combiners/cube_lobe.h"
+#include "paths/combiners/map_stage.h"
 #include "paths/combiners/texgen_matrix.h"
 #include "paths/combiners/vertex_terms.h"
 #include "paths/common/frame.h"
@@ -30,6 +32,8 @@ const char* program_file(PassKind kind) {
       return "lobe_cube.comb";
     case PassKind::LobeCubeFull:
       return "lobe_cube_full.comb";
+    case PassKind::LobeVertexMap:
+      return "lobe_vertex_map.comb";
   }
   return "";
 }
@@ -48,7 +52,10 @@ std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::
       // vertex has one primary colour (see combiners/README.md, "Why one pass per light").
       const bool texgen = variant == "t=texgen" && texgen_applicable(scene, m);
       for (const Light& l : scene.lights) {
-        if (variant == "lobe=cube" && l.type == Light::Type::Directional) {
+        if (samples_thickness_map(m)) {
+          // The map is a texture stage of its own, whatever the variant (map_stage.h).
+          p.pass_kinds.push_back(PassKind::LobeVertexMap);
+        } else if (variant == "lobe=cube" && l.type == Light::Type::Directional) {
           // Constant thickness: the whole term depends on N only and fits in the cube's rgb.
           const bool constant = m.translucency->thickness_source == ThicknessSource::Constant;
           p.pass_kinds.push_back(constant ? PassKind::LobeCubeFull : PassKind::LobeCube);
@@ -73,6 +80,21 @@ GLuint make_buffer() {
   return b;
 }
 
+// An 8-bit 1D LUT, linear, CLAMP_TO_EDGE: the clamp saturates t per pixel (coordinates beyond
+// the end texel centres read the end texels).
+GLuint upload_lut(const std::vector<float>& texels) {
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_1D, tex);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE8, static_cast<GLsizei>(texels.size()), 0,
+               GL_LUMINANCE, GL_FLOAT, texels.data());
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_1D, 0);
+  return tex;
+}
+
 void stream(GLuint buffer, const std::vector<float>& data) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
@@ -95,6 +117,8 @@ class CombinersPath final : public Path {
 
     luts_.resize(s.materials.size());
     lut_textures_.resize(s.materials.size(), 0);
+    maps_.resize(s.materials.size());
+    map_luts_.resize(s.materials.size());
     cubes_.assign(s.materials.size(), std::vector<CubeLobe>(s.lights.size()));
     for (const CombinerMaterialPlan& p : plans_) {
       const Material& m = s.materials[p.material];
@@ -103,17 +127,14 @@ class CombinersPath final : public Path {
       luts_[p.material] =
           model::PowerLut::build(kCombinerLutSize, model::LutFormat::U8, {m.translucency->power});
       const model::PowerLut& lut = luts_[p.material];
-      GLuint tex = 0;
-      glGenTextures(1, &tex);
-      glBindTexture(GL_TEXTURE_1D, tex);
-      glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE8, lut.size, 0, GL_LUMINANCE, GL_FLOAT,
-                   lut.texels.data());
-      glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      // Saturates t per pixel: coordinates beyond the end texel centres read lobe(0) or lobe(1).
-      glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glBindTexture(GL_TEXTURE_1D, 0);
-      lut_textures_[p.material] = tex;
+      lut_textures_[p.material] = upload_lut(lut.texels);
+      if (samples_thickness_map(m)) {
+        // Per light: its (t^p s + a) / (s + a), and the map (map_stage.h).
+        maps_[p.material] =
+            std::make_unique<gl::MapTexture>(ctx.gl, *m.translucency->thickness_map);
+        for (const Light& l : s.lights)
+          map_luts_[p.material].push_back(upload_lut(map_lut_texels(lut, *m.translucency, l)));
+      }
       for (int pass = 0; pass < p.passes(); ++pass) {
         if (!uses_cube(p.kind(pass))) continue;
         const auto t0 = std::chrono::steady_clock::now();
@@ -134,6 +155,9 @@ class CombinersPath final : public Path {
     for (const auto& b : buffers_) glDeleteBuffers(3, b.data());
     for (GLuint t : lut_textures_) {
       if (t) glDeleteTextures(1, &t);
+    }
+    for (const auto& per_light : map_luts_) {
+      for (GLuint t : per_light) glDeleteTextures(1, &t);
     }
     for (const auto& per_light : cubes_) {
       for (const CubeLobe& c : per_light) {
@@ -236,6 +260,11 @@ class CombinersPath final : public Path {
         if (variant_ == "lobe=cube" && kind == PassKind::LobeVertex) {
           note = " (point light: no cube, t per vertex)";
         }
+        if (kind == PassKind::LobeVertexMap) {
+          note = " (thickness map on unit 1: " +
+                 maps_[static_cast<size_t>(p.material)]->description() +
+                 "; t per vertex whatever the variant)";
+        }
         if (uses_cube(kind)) {
           const CubeLobe& c = cubes_[p.material][static_cast<size_t>(pass)];
           note = " (cube " + std::to_string(kCombinerCubeSize) + "^2 x 6, RGBA8" +
@@ -281,9 +310,16 @@ class CombinersPath final : public Path {
       stream(buf[0], vt.diffuse);
     } else {
       const Light& light = s.lights[l];
-      in.textures["power_lut"] = {GL_TEXTURE_1D, lut_textures_[static_cast<size_t>(mesh.material)]};
-      in.constants["lobe_color"] = glm::dvec4(
-          mat.albedo * light.color * light.translucency_scale / fold_factors(s, mat)[l], 1);
+      const size_t mi = static_cast<size_t>(mesh.material);
+      if (kind == PassKind::LobeVertexMap) {
+        in.textures["power_lut"] = {GL_TEXTURE_1D, map_luts_[mi][l]};
+        in.textures["thickness_map"] = {GL_TEXTURE_2D, maps_[mi]->id()};
+        in.constants["term_gain"] = glm::dvec4(map_term_gain(mat, light), 1);
+      } else {
+        in.textures["power_lut"] = {GL_TEXTURE_1D, lut_textures_[mi]};
+        in.constants["lobe_color"] = glm::dvec4(
+            mat.albedo * light.color * light.translucency_scale / fold_factors(s, mat)[l], 1);
+      }
       stream(buf[0], vt.primary[l]);
       stream(buf[2], vt.secondary[l]);
       secondary = true;
@@ -340,8 +376,10 @@ class CombinersPath final : public Path {
   std::vector<CombinerMaterialPlan> plans_;
   std::vector<model::PowerLut> luts_;
   std::vector<GLuint> lut_textures_;
-  std::vector<std::vector<CubeLobe>> cubes_;    // [material][light], lobe=cube passes only
-  std::vector<std::array<GLuint, 3>> buffers_;  // per object: primary, texcoord, secondary
+  std::vector<std::unique_ptr<gl::MapTexture>> maps_;  // [material], thickness-map materials
+  std::vector<std::vector<GLuint>> map_luts_;          // [material][light], their LUTs
+  std::vector<std::vector<CubeLobe>> cubes_;           // [material][light], lobe=cube passes only
+  std::vector<std::array<GLuint, 3>> buffers_;         // per object: primary, texcoord, secondary
   GLuint white_ = 0;
   double cpu_seconds_ = 0, cube_seconds_ = 0;
   int passes_drawn_ = 0;
@@ -366,6 +404,10 @@ PathInfo combiners_path_info() {
                 [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
                   return std::make_unique<CombinersPath>(ctx, variant);
                 }};
+  // An rgb ramp would replace the luminance LUT with an rgb one at u = t (not built yet).
+  info.refusal = [](const Scene& scene, const std::string&) -> std::string {
+    return scene_needs(scene).any_ramp ? "no lobe ramps on combiners yet" : "";
+  };
   // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
   auto print = [](const CombinerBudgetReport& r, const BudgetRequest& rq) {
     *rq.out << (rq.json ? to_json(r) + "\n" : to_text(r));

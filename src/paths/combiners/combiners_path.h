@@ -17,11 +17,12 @@ PathInfo combiners_path_info();
 
 // What one pass draws, chosen once by plan_combiners; every later decision reads the kind.
 enum class PassKind {
-  DiffuseOnly,   // a material without translucency: the diffuse sum per vertex
-  LobeVertex,    // the LUT at a per-vertex t
-  LobeTexgen,    // the LUT at t from texgen NORMAL_MAP and the texture matrix
-  LobeCube,      // the lobe from a cube map of the normal, thickness per vertex
-  LobeCubeFull,  // the whole term in the cube map (constant thickness)
+  DiffuseOnly,    // a material without translucency: the diffuse sum per vertex
+  LobeVertex,     // the LUT at a per-vertex t
+  LobeTexgen,     // the LUT at t from texgen NORMAL_MAP and the texture matrix
+  LobeCube,       // the lobe from a cube map of the normal, thickness per vertex
+  LobeCubeFull,   // the whole term in the cube map (constant thickness)
+  LobeVertexMap,  // a thickness map's material: the LUT at a per-vertex t, the map on unit 1
 };
 // Its program in combiners/ ("lobe_vertex.comb").
 const char* program_file(PassKind kind);

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "model/translucency.h"
+#include "paths/combiners/combiner_program.h"
+#include "paths/combiners/map_stage.h"
 
 namespace lt {
 
@@ -30,14 +32,22 @@ VertexTerms vertex_terms(const Scene& s, const glm::dvec3& eye, size_t object,
   vt.diffuse.assign(n * 4, 1.0f);
   const std::vector<double> fold = fold_factors(s, mat);
   const glm::dvec3 ambient = mat.albedo * s.ambient_light;
+  // A map material (map_stage.h): T is the map's stage, a is in the LUT, K / g in the primary.
+  const bool map = samples_thickness_map(mat);
+  std::vector<glm::dvec3> map_primary(lights);
+  for (size_t l = 0; l < lights && map; ++l) {
+    const glm::dvec3 k = map_term_gain(mat, s.lights[l]);
+    map_primary[l] = k / static_cast<double>(combiners::fit_scale(std::max({k.r, k.g, k.b})));
+  }
   for (size_t v = 0; v < n; ++v) {
     const glm::dvec3& P = mesh.positions[v];
     const glm::dvec3 N = mesh.normals[v];  // unit or zero (model.md "no normal")
     const glm::dvec3 V = model::view_vector(s.camera, P - eye);
-    const glm::dvec3 T = mat.translucency
-                             ? model::thickness(*mat.translucency,
-                                                mesh.has_colors() ? mesh.colors[v] : glm::dvec3(1))
-                             : glm::dvec3(0);
+    const glm::dvec3 T = !mat.translucency ? glm::dvec3(0)
+                         : map
+                             ? glm::dvec3(1)
+                             : model::thickness(*mat.translucency,
+                                                mesh.has_colors() ? mesh.colors[v] : glm::dvec3(1));
     glm::dvec3 diffuse_sum = ambient;
     for (size_t l = 0; l < lights; ++l) {
       const Light& light = s.lights[l];
@@ -47,11 +57,11 @@ VertexTerms vertex_terms(const Scene& s, const glm::dvec3& eye, size_t object,
       if (!mat.translucency) continue;
       const Translucency& tr = *mat.translucency;
       const glm::dvec3 own =
-          mat.albedo * light.color * (diffuse + ls.attenuation * tr.ambient * T) +
+          mat.albedo * light.color * (diffuse + (map ? 0.0 : ls.attenuation * tr.ambient) * T) +
           (l == 0 ? ambient : glm::dvec3(0));
       vt.texcoord[l][v] =
           static_cast<float>(lut->coordinate(model::translucency_dot_unsaturated(V, ls.L, N, tr)));
-      const glm::dvec3 prim = ls.attenuation * T * fold[l];
+      const glm::dvec3 prim = ls.attenuation * (map ? map_primary[l] : T * fold[l]);
       for (int c = 0; c < 3; ++c) {
         vt.primary[l][v * 4 + c] = static_cast<float>(prim[c]);
         vt.secondary[l][v * 3 + c] = static_cast<float>(own[c]);

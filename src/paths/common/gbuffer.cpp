@@ -34,6 +34,7 @@ void GBuffer::rasterise() {
   ctx_.geometry.load_matrices();
   for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
     glUniform1f(program_.uniform("u_material"), static_cast<float>(m.material));
+    glUniform1f(program_.uniform("u_uv_thickness"), m.has_uvs ? 1.0f : 0.0f);
     ctx_.geometry.draw(m);
   }
   glUseProgram(0);

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <sstream>
 
+#include "gl/map_texture.h"
 #include "gl/program.h"
 #include "paths/common/frame.h"
 
@@ -51,7 +52,9 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
       define("LT_NORMALIZE_H", translucent && tr.normalize_distorted_light) +
       define("LT_POWER_ZERO", translucent && tr.power == 0) + define("LT_POINT_LIGHTS", any_point) +
       define("LT_AMBIENT_LIGHT", scene.ambient_light != glm::dvec3(0)) +
-      define("LT_ORTHOGRAPHIC", scene.camera.projection == Camera::Projection::Orthographic);
+      define("LT_ORTHOGRAPHIC", scene.camera.projection == Camera::Projection::Orthographic) +
+      define("LT_THICKNESS_MAP", translucent && tr.thickness_source == ThicknessSource::Texture) +
+      define("LT_RAMP", translucent && tr.ramp != nullptr);
   GlslSources s;
   s.vertex = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.vert"),
                                {{"DEFINES", defines}}, "translucency.vert");
@@ -63,6 +66,57 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
 }
 
 namespace {
+
+// The textures of the materials that have programs: the thickness map on unit 1 (its UVs are
+// texture coordinate set 1, gl/scene_geometry.h), the ramp on unit 0.
+constexpr int kRampTextureUnit = 0, kMapTextureUnit = 1;
+class MaterialTextures {
+ public:
+  MaterialTextures() = default;
+  MaterialTextures(const PathContext& ctx,
+                   const std::vector<std::unique_ptr<gl::GlslProgram>>& programs) {
+    maps_.resize(programs.size());
+    ramps_.resize(programs.size());
+    for (size_t i = 0; i < programs.size(); ++i) {
+      if (!programs[i] || !ctx.scene.materials[i].translucency) continue;
+      const Translucency& tr = *ctx.scene.materials[i].translucency;
+      if (tr.thickness_map) maps_[i] = std::make_shared<gl::MapTexture>(ctx.gl, *tr.thickness_map);
+      if (tr.ramp) ramps_[i] = std::make_shared<gl::MapTexture>(ctx.gl, *tr.ramp);
+    }
+  }
+  void bind(int material) const {
+    bind_unit(kMapTextureUnit, maps_[material].get());
+    bind_unit(kRampTextureUnit, ramps_[material].get());
+  }
+  void unbind() const {
+    bind_unit(kMapTextureUnit, nullptr);
+    bind_unit(kRampTextureUnit, nullptr);
+  }
+  void describe(const Scene& scene, std::vector<BuiltStage>& out) const {
+    for (size_t i = 0; i < maps_.size(); ++i) {
+      const std::string name = "material " + scene.materials[i].name;
+      if (maps_[i]) {
+        out.push_back(
+            {name + ": thickness map, one texture2D on unit 1: " + maps_[i]->description(),
+             "texture", ""});
+      }
+      if (ramps_[i]) {
+        out.push_back({name + ": lobe ramp, one texture2D per light on unit 0 (replaces pow): " +
+                           ramps_[i]->description(),
+                       "texture", ""});
+      }
+    }
+  }
+
+ private:
+  static void bind_unit(int unit, const gl::MapTexture* t) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, t ? t->id() : 0);
+    glActiveTexture(GL_TEXTURE0);
+  }
+  // shared_ptr: the path moves this into place after building it.
+  std::vector<std::shared_ptr<gl::MapTexture>> maps_, ramps_;
+};
 
 void set3(const gl::GlslProgram& p, const std::string& name, const glm::dvec3& v) {
   glUniform3f(p.uniform(name.c_str()), static_cast<float>(v.x), static_cast<float>(v.y),
@@ -93,6 +147,7 @@ class GlslPath final : public Path {
       set_uniforms(*p, mat);
       programs_[m.material] = std::move(p);
     }
+    textures_ = MaterialTextures(ctx, programs_);
     gl::check_error("building glsl programs");
   }
 
@@ -101,8 +156,10 @@ class GlslPath final : public Path {
     begin_frame(ctx_);
     for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
       glUseProgram(programs_[m.material]->id());
+      textures_.bind(m.material);
       ctx_.geometry.draw(m);
     }
+    textures_.unbind();
     glUseProgram(0);
     if (target_) target_->unbind();
   }
@@ -131,6 +188,7 @@ class GlslPath final : public Path {
       out.push_back({name + ": vertex shader", "glsl-vertex", programs_[i]->vertex_source()});
       out.push_back({name + ": fragment shader", "glsl-fragment", programs_[i]->fragment_source()});
     }
+    textures_.describe(ctx_.scene, out);
     return out;
   }
 
@@ -148,7 +206,11 @@ class GlslPath final : public Path {
       set1(p, "u_lt_ambient", tr.ambient);
       // Vertex thickness is multiplied by the tint in the shader; a constant is premultiplied.
       set3(p, "u_thickness",
-           tr.thickness_source == ThicknessSource::Vertex ? tr.tint : tr.thickness * tr.tint);
+           tr.thickness_source == ThicknessSource::Constant ? tr.thickness * tr.tint : tr.tint);
+      if (tr.thickness_source == ThicknessSource::Texture) {
+        glUniform1i(p.uniform("u_thickness_map"), kMapTextureUnit);
+      }
+      if (tr.ramp) glUniform1i(p.uniform("u_ramp"), kRampTextureUnit);
     }
     for (size_t i = 0; i < s.lights.size(); ++i) {
       const Light& l = s.lights[i];
@@ -165,6 +227,7 @@ class GlslPath final : public Path {
   PathContext ctx_;
   std::unique_ptr<gl::FloatTarget> target_;
   std::vector<std::unique_ptr<gl::GlslProgram>> programs_;
+  MaterialTextures textures_;
 };
 
 }  // namespace

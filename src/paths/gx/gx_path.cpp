@@ -290,6 +290,8 @@ PathInfo gx_path_info() {
   };
   info.parse_variant = [](const std::string& v) { return gx::to_string(gx::parse_gx_variant(v)); };
   info.refusal = [](const Scene& scene, const std::string& v) {
+    if (scene_needs(scene).any_thickness_map || scene_needs(scene).any_ramp)
+      return std::string("no thickness maps or lobe ramps on gx yet");
     return gx::refusal(scene, gx::parse_gx_variant(v));
   };
   info.takes_program_file = true;

@@ -27,6 +27,7 @@
 #include <cmath>
 
 #include "model/pow_curves.h"
+#include "model/texture_sampling.h"
 #include "model/translucency.h"
 
 namespace lt::fp16 {
@@ -95,6 +96,13 @@ half to_half(double v) {
   return half(static_cast<float>(v));
 }
 
+TextureH to_half(const model::Texture& t) {
+  TextureH h{t.width, t.height, {}};
+  h.texels.reserve(t.texels.size() / 3);
+  for (size_t i = 0; i < t.texels.size(); i += 3) h.texels.push_back(to_half(&t.texels[i]));
+  return h;
+}
+
 // t^p per mode (the seed's pow(saturate(...), iLTPower)).
 half lobe(const Fp16& f, const MaterialH& m, PowMode mode, half t) {
   if (mode == PowMode::Unguarded) return f.exp2(f.mul(m.power, f.log2(t)));  // 0^0 = NaN here
@@ -144,11 +152,34 @@ SceneH prepare_scene(const Scene& scene, PowMode mode) {
       // The blog's n = n * 1.4427f + 1.4427f, in half like the rest of the shader.
       const half k = to_half(model::kSeedLog2e);
       h.sg_exponent = f.add(f.mul(h.power, k), k);
-      h.thickness = h.vertex_thickness ? to_half(tr.tint) : to_half(tr.thickness * tr.tint);
+      h.map_thickness = tr.thickness_source == ThicknessSource::Texture;
+      if (h.map_thickness) h.map = to_half(tr.thickness_map->texture);
+      h.ramp_lobe = tr.ramp != nullptr;
+      if (h.ramp_lobe) h.ramp = to_half(tr.ramp->texture);
+      h.thickness = h.vertex_thickness || h.map_thickness ? to_half(tr.tint)
+                                                          : to_half(tr.thickness * tr.tint);
     }
     out.materials.push_back(h);
   }
   return out;
+}
+
+namespace {
+// The sampling arithmetic: texture units round as the guarded shader does (no Inf texels: the
+// scene's texels are at most 1e4).
+Vec3h sample_with(const Fp16& f, const TextureH& t, glm::dvec2 uv) {
+  const model::BilinearTaps k = model::bilinear_taps(t.width, t.height, uv);
+  const half fx = to_half(k.fx), fy = to_half(k.fy);
+  const half gx = f.sub(half(1.0f), fx), gy = f.sub(half(1.0f), fy);
+  auto texel = [&](int x, int y) { return t.texels[static_cast<size_t>(y) * t.width + x]; };
+  const Vec3h bottom = f.add(f.mul(texel(k.x0, k.y0), gx), f.mul(texel(k.x1, k.y0), fx));
+  const Vec3h top = f.add(f.mul(texel(k.x0, k.y1), gx), f.mul(texel(k.x1, k.y1), fx));
+  return f.add(f.mul(bottom, gy), f.mul(top, fy));
+}
+}  // namespace
+
+Vec3h sample_half(const TextureH& texture, glm::dvec2 uv) {
+  return sample_with(Fp16(true), texture, uv);
 }
 
 glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, const float* position,
@@ -161,8 +192,13 @@ glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, con
   const Vec3h N = f.normalize(to_half(normal), zero);
   const Vec3h V = scene.orthographic ? scene.view_dir : f.normalize(Fp16::neg(P), scene.view_dir);
   Vec3h T = zero;
-  if (m.translucent)
-    T = m.vertex_thickness ? f.mul(to_half(vertex_thickness), m.thickness) : m.thickness;
+  if (m.translucent) {
+    if (m.map_thickness) {
+      T = f.mul(sample_with(f, m.map, {vertex_thickness[0], vertex_thickness[1]}), m.thickness);
+    } else {
+      T = m.vertex_thickness ? f.mul(to_half(vertex_thickness), m.thickness) : m.thickness;
+    }
+  }
 
   Vec3h sum = zero;
   for (const LightH& l : scene.lights) {
@@ -187,9 +223,14 @@ glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, con
       if (m.normalize_h) H = f.normalize(H, zero);
       // half fLTDot = pow(saturate(dot(vEye, -vLTLight)), iLTPower) * fLTScale;
       const half t = Fp16::saturate(f.dot(V, Fp16::neg(H)));
-      const half lt_dot = f.mul(lobe(f, m, mode, t), l.scale);
+      // A ramp material: tex2D(ramp, float2(t, 0.5)).rgb instead of the pow, per channel.
+      const half p = m.ramp_lobe ? half(0.0f) : lobe(f, m, mode, t);
+      const Vec3h lobe3 = m.ramp_lobe ? sample_with(f, m.ramp, {float(t), 0.5}) : Vec3h{p, p, p};
+      const Vec3h lt_dot = f.mul(lobe3, l.scale);
       // half3 fLT = fLightAttenuation * (fLTDot + fLTAmbient) * fLTThickness;
-      const Vec3h lt = f.mul(T, f.mul(att, f.add(lt_dot, m.ambient)));
+      const Vec3h lt = f.mul(
+          T, Vec3h{f.mul(att, f.add(lt_dot.x, m.ambient)), f.mul(att, f.add(lt_dot.y, m.ambient)),
+                   f.mul(att, f.add(lt_dot.z, m.ambient))});
       term = f.add(term, lt);
     }
     // outColor.rgb += cDiffuseAlbedo * cLightDiffuse * fLT; (albedo applied once, below, in the

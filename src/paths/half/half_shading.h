@@ -39,12 +39,22 @@ struct LightH {
   half kc, kl, kq;
 };
 
+// A texture as an fp16 texture unit holds it: half texels (the float texels rounded once, as a
+// GL float->half upload does), row 0 = v = 0.
+struct TextureH {
+  int width = 0, height = 0;
+  std::vector<Vec3h> texels;
+};
+
 // A material's constants in half. `thickness` is constant * tint, or the tint alone when the
-// thickness comes from the vertex colour (it is multiplied in per pixel, like the glsl path).
+// thickness comes from the vertex colour or a map (multiplied in per pixel, like the glsl path).
 struct MaterialH {
   Vec3h albedo;
   bool translucent = false;
   bool vertex_thickness = false;
+  bool map_thickness = false;  // `map` is sampled at the G-buffer's UV
+  bool ramp_lobe = false;      // `ramp` at t replaces t^p, per channel
+  TextureH map, ramp;
   bool normalize_h = false;
   half power, distortion, ambient;
   half sg_exponent;  // n' = 1.4427 p + 1.4427, itself computed in half
@@ -63,7 +73,14 @@ struct SceneH {
 // `scene` must already hold camera-relative light positions (the G-buffer's space).
 SceneH prepare_scene(const Scene& scene, PowMode mode);
 
-// One covered pixel from its float G-buffer values (position, normal and vertex thickness: xyz).
+// Bilinear (GL_LINEAR, CLAMP_TO_EDGE) as an fp16 pipeline does it: the coordinate is a float
+// interpolant and the texel-space position, taps and fractions are the texture unit's addressing
+// (model::bilinear_taps); each weight (fx, 1 - fx, fy, 1 - fy) is rounded to half, and the blend
+// ((1-fy)((1-fx) t00 + fx t10) + fy((1-fx) t01 + fx t11)) rounds every product and sum to half.
+Vec3h sample_half(const TextureH& texture, glm::dvec2 uv);
+
+// One covered pixel from its float G-buffer values (position, normal and vertex thickness, or a
+// map material's (u, v, 0): xyz).
 // Returns the half result widened to float. With PowMode::Unguarded it may be NaN or Inf; the
 // guarded modes are finite by construction.
 glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& material, PowMode mode,

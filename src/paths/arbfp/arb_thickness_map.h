@@ -1,0 +1,27 @@
+// A thickness map in the ARB programs: the vertex program passes the mesh's UVs on, the fragment
+// program fetches T with one TEX (2D, texture unit 1) as its first instruction. Kept apart from
+// the generator's light loop: the generator calls these two where it decides T.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "paths/arbfp/arb_ir.h"
+
+namespace lt::arbfp {
+
+// texture[1]: unit 0 is the power LUT's. The UVs arrive as vertex.texcoord[1]
+// (gl/scene_geometry.h) and travel in result.texcoord[2], the vertex thickness's varying, which
+// a map material does not read.
+inline constexpr int kThicknessMapUnit = 1;
+
+// Vertex program: MOV result.texcoord[2], vertex.texcoord[1].
+void emit_map_uv(ir::Block& code);
+
+// Fragment program: TEX T, fragment.texcoord[2], texture[1], 2D, then MUL T.xyz by the tint
+// unless it is 1. Emitted before any ALU instruction, the fetch reads an input directly, so it
+// is in the first texture indirection (ARB_fragment_program issue 24) and adds none: the LUT's
+// TEX, which reads a computed t, stays the second.
+ir::Reg emit_map_thickness(ir::Program& p, ir::Block& decls, ir::Block& code,
+                           const glm::dvec3& tint);
+
+}  // namespace lt::arbfp
