@@ -38,8 +38,14 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
     out.source = program_file;
   }
   out.by_material = scene_programs(out.file, scene);
-  for (const auto& passes : out.by_material) {
-    for (const PassProgram& p : passes) check_renderable(p, out.file.file, true);
+  for (size_t m = 0; m < out.by_material.size(); ++m) {
+    // A material's programs may read UVs when every mesh drawn with it has them.
+    bool has_uvs = true;
+    for (const SceneObject& o : scene.objects) {
+      if (static_cast<size_t>(o.material) == m && o.mesh.uvs.empty()) has_uvs = false;
+    }
+    for (const PassProgram& p : out.by_material[m])
+      check_renderable(p, out.file.file, true, has_uvs);
   }
   return out;
 }
