@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "model/power_lut.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"
+#include "paths/gx/lobe_lut.h"
 #include "paths/gx/program/gx_names.h"
 #include "paths/gx/program/pass_programs.h"
 #include "paths/gx/texture_unit.h"
@@ -318,20 +318,14 @@ class Generator {
     return a;
   }
 
-  // The power LUT as an I8 texture of one row in GX tile order: texel i holds
-  // round(255 * lobe(i / (W-1))) (texel-centre addressing, model/power_lut.h).
+  // The power LUT as an I8 texture of one row in GX tile order (lobe_lut.h).
   std::string lut_array(const Material& mat, ProgramFile& file) {
     const int w = variant_.lut_size;
-    const model::PowerLut lut =
-        model::PowerLut::build(w, model::LutFormat::U8, {mat.translucency->power});
-    std::vector<u8> row(static_cast<size_t>(w));
-    for (int i = 0; i < w; ++i)
-      row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
-    const std::vector<u8> tiles = to_tiles(1, w, 1, row);
+    const TextureObject lut = lobe_lut(mat, w);
     Declaration d;
     d.type = Declaration::Type::ByteArray;
     d.name = "ltrender_lut_" + c_identifier(mat.name);
-    d.values.assign(tiles.begin(), tiles.end());
+    d.values.assign(lut.data.begin(), lut.data.end());
     file.top_level.push_back(Statement::of(
         d, "Power LUT of material " + mat.name + ": lobe(t) = t^" + fmt(mat.translucency->power) +
                ", " + std::to_string(w) +

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <map>
 
-#include "model/power_lut.h"
 #include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
+#include "paths/gx/lobe_lut.h"
 #include "paths/gx/pixel_stage.h"
 #include "paths/gx/program/parser.h"
 #include "paths/gx/program/printer.h"
@@ -58,22 +58,6 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// GX_TEXMAP0's texture where a program loads none (gx.md §1): the material's power LUT as I8
-// of the variant's width; a material without translucency gets the flat lobe of power 0.
-TextureObject lut_texture(const Material& m, int width) {
-  const double power = m.translucency ? m.translucency->power : 0.0;
-  const model::PowerLut lut = model::PowerLut::build(width, model::LutFormat::U8, {power});
-  std::vector<u8> row(static_cast<size_t>(width));
-  for (int i = 0; i < width; ++i)
-    row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
-  TextureObject t;
-  t.width = width;
-  t.height = 1;
-  t.format = 1;  // GX_TF_I8
-  t.data = to_tiles(1, width, 1, row);
-  return t;
-}
-
 // The printed C of one pass function, for `info --source`.
 std::string pass_source(const ProgramFile& file, const std::string& function) {
   ProgramFile one;
@@ -97,7 +81,8 @@ class GxPath final : public Path {
       for (const PassProgram& p : passes) texgens = std::max(texgens, p.state.texgen.num_texgens);
     }
     rasteriser_ = std::make_unique<AttributeRasteriser>(ctx, texgens);
-    for (const Material& m : s.materials) luts_.push_back(lut_texture(m, variant_.lut_size));
+    for (const Material& m : s.materials)
+      luts_.push_back(lobe_lut(m, variant_.lut_size));  // GX_TEXMAP0's fallback (gx.md §1)
     for (const SceneObject& o : s.objects) streams_.push_back(make_vertex_stream(s, o, view_));
     // Per pass and material, the state and its textures (resolved once: the scene is static).
     pixel_programs_.resize(static_cast<size_t>(programs_.passes()));
