@@ -6,6 +6,22 @@
 namespace lt::cli {
 
 namespace {
+
+std::string thickness_description(const Translucency& t) {
+  switch (t.thickness_source) {
+    case ThicknessSource::Vertex:
+      return "vertex";
+    case ThicknessSource::Constant:
+      return "constant";
+    case ThicknessSource::Texture: {
+      const TextureMap& m = *t.thickness_map;
+      return "map " + m.file.string() + " (" + m.channels + ", " + std::to_string(m.texture.width) +
+             "x" + std::to_string(m.texture.height) + ", " + std::to_string(m.source_bits) +
+             "-bit " + (m.source_float ? "float" : "linear") + (m.grey ? ", grey" : "") + ")";
+    }
+  }
+  return "?";
+}
 const char* yes_no(bool b) {
   return b ? "yes" : "no";
 }
@@ -48,8 +64,14 @@ Action add_info(CLI::App& app) {
       }
       const Translucency& t = *m.translucency;
       o << "power " << t.power << ", distortion " << t.distortion << ", ambient " << t.ambient
-        << ", thickness " << (t.thickness_source == ThicknessSource::Vertex ? "vertex" : "constant")
-        << (t.normalize_distorted_light ? ", normalised H" : "") << "\n";
+        << ", thickness " << thickness_description(t)
+        << (t.normalize_distorted_light ? ", normalised H" : "");
+      if (t.ramp) {
+        o << ", lobe from the ramp " << t.ramp->file.string() << " (" << t.ramp->texture.width
+          << " texels" << (t.ramp->grey ? ", grey" : ", rgb")
+          << "; the LUT paths sample it as their table, whatever the pow variant)";
+      }
+      o << "\n";
     }
     // Build every path once (1x1 is enough to build programs) and list what it made.
     RenderSession session(scene, 1, 1);

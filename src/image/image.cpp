@@ -73,11 +73,16 @@ std::string size_text(const OIIO::ImageSpec& spec) {
 // Every failure folds that text into the one InputError (cli.md's one line).
 class CheckedInput {
  public:
-  explicit CheckedInput(const fs::path& path) : path_(path) {
+  // `unassociated_alpha`: the colour channels as the file stores them. Without it OpenImageIO
+  // multiplies a PNG's or TGA's colour by its alpha (its "associated alpha" convention), which a
+  // data texture (a thickness map with a mask in alpha) must not have.
+  explicit CheckedInput(const fs::path& path, bool unassociated_alpha = false) : path_(path) {
     // Before OpenImageIO sees the name: given a FIFO or /dev/zero, its format probing (every
     // reader in turn once the one the extension names has failed) never returns.
     check_input_file(path, InputKind::Image);
-    in_ = OIIO::ImageInput::open(path.string());
+    OIIO::ImageSpec config;
+    if (unassociated_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
+    in_ = OIIO::ImageInput::open(path.string(), &config);
     if (!in_) fail("cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in_->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) fail("image has no pixels");
@@ -121,9 +126,17 @@ class CheckedInput {
 
 namespace {
 
-Image read_image_unguarded(const std::filesystem::path& path) {
-  CheckedInput in(path);
+Image read_image_unguarded(const std::filesystem::path& path, ImageFileFormat* format) {
+  CheckedInput in(path, format != nullptr);
   const OIIO::ImageSpec& spec = in.spec();
+  if (format) {
+    const auto base = static_cast<OIIO::TypeDesc::BASETYPE>(spec.format.basetype);
+    format->bits = static_cast<int>(spec.format.size()) * 8;
+    format->floating = base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::FLOAT ||
+                       base == OIIO::TypeDesc::DOUBLE;
+    format->has_alpha = spec.alpha_channel >= 0 && spec.alpha_channel < spec.nchannels;
+    format->colour_channels = spec.nchannels >= 3 ? 3 : 1;  // as the copy below reads them
+  }
   // At most four channels are read (grey or RGB, then alpha): memory stays 16 bytes a pixel
   // whatever number of channels the file declares.
   const int channels = std::min(spec.nchannels, 4);
@@ -151,13 +164,23 @@ Image read_image_unguarded(const std::filesystem::path& path) {
 
 }  // namespace
 
-Image read_image(const std::filesystem::path& path) {
+namespace {
+Image read_image_checked(const std::filesystem::path& path, ImageFileFormat* format) {
   try {
-    return read_image_unguarded(path);
+    return read_image_unguarded(path, format);
   } catch (const std::bad_alloc&) {
     // Within the pixel limit but too large for the memory left: name the file.
     throw InputError(path.string(), "", "out of memory reading this image");
   }
+}
+}  // namespace
+
+Image read_image(const std::filesystem::path& path) {
+  return read_image_checked(path, nullptr);
+}
+
+Image read_image(const std::filesystem::path& path, ImageFileFormat& format) {
+  return read_image_checked(path, &format);
 }
 
 bool image_file_is_8bit(const std::filesystem::path& path) {

@@ -49,6 +49,18 @@ inline constexpr long long kMaxImagePixels = 4096LL * 4096LL;
 // size cap, or whose header claims more than kMaxImagePixels (checked before allocating).
 Image read_image(const std::filesystem::path& path);
 
+// What a file held before read_image made RGBA of it: for inputs that are data (thickness maps,
+// lobe ramps), which must know whether a channel exists and how precise the texels were. This
+// form reads the colour channels as stored even beside an alpha channel (OpenImageIO would
+// otherwise multiply a PNG's colour by its alpha).
+struct ImageFileFormat {
+  int colour_channels = 3;  // 1 (grey) or 3: the channels before alpha, at most 3 read
+  bool has_alpha = false;
+  int bits = 8;           // bits per sample of the file: 8, 16 or 32
+  bool floating = false;  // half or float samples (EXR) rather than integers
+};
+Image read_image(const std::filesystem::path& path, ImageFileFormat& format);
+
 // Whether the file stores 8-bit samples (PNG) rather than float or half (EXR); the same checks
 // and errors as read_image.
 bool image_file_is_8bit(const std::filesystem::path& path);

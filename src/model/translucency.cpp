@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/texture_sampling.h"
+
 namespace lt::model {
 
 double lobe(double t, double p) {
@@ -35,10 +37,20 @@ double translucency_dot(const glm::dvec3& V, const glm::dvec3& L, const glm::dve
   return std::clamp(translucency_dot_unsaturated(V, L, N, tr), 0.0, 1.0);
 }
 
-glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness) {
-  const glm::dvec3 source =
-      tr.thickness_source == ThicknessSource::Vertex ? vertex_thickness : tr.thickness;
-  return source * tr.tint;
+glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness, glm::dvec2 uv) {
+  switch (tr.thickness_source) {
+    case ThicknessSource::Vertex:
+      return vertex_thickness * tr.tint;
+    case ThicknessSource::Texture:
+      return sample_bilinear(tr.thickness_map->texture, uv) * tr.tint;
+    case ThicknessSource::Constant:
+      break;
+  }
+  return tr.thickness * tr.tint;
+}
+
+glm::dvec3 material_lobe(const Translucency& tr, double t) {
+  return tr.ramp ? sample_ramp(tr.ramp->texture, t) : glm::dvec3(lobe(t, tr.power));
 }
 
 glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoint& sp) {
@@ -46,7 +58,7 @@ glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoin
   const glm::dvec3 N = len >= kMinNormalLength ? sp.N / len : glm::dvec3(0);
   glm::dvec3 sum(0);
   const glm::dvec3 T = material.translucency
-                           ? thickness(*material.translucency, sp.vertex_thickness)
+                           ? thickness(*material.translucency, sp.vertex_thickness, sp.uv)
                            : glm::dvec3(0);
   for (const Light& light : scene.lights) {
     const LightSample ls = sample_light(light, sp.P, N);
@@ -54,7 +66,7 @@ glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoin
     if (material.translucency) {
       const Translucency& tr = *material.translucency;
       const double t = translucency_dot(sp.V, ls.L, N, tr);
-      term += ls.attenuation * (lobe(t, tr.power) * light.translucency_scale + tr.ambient) * T;
+      term += ls.attenuation * (material_lobe(tr, t) * light.translucency_scale + tr.ambient) * T;
     }
     sum += light.color * term;
   }

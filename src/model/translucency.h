@@ -48,10 +48,17 @@ struct SurfacePoint {
   glm::dvec3 N;
   glm::dvec3 V;
   glm::dvec3 vertex_thickness{1, 1, 1};  // interpolated vertex colour (used for "vertex")
+  glm::dvec2 uv{0, 0};                   // interpolated UV (used for a thickness map)
 };
 
-// The thickness T of model.md: (vertex colour or constant) times tint.
-glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness);
+// The thickness T of model.md: (vertex colour, the map bilinearly sampled at uv in double, or the
+// constant) times tint.
+glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness,
+                     glm::dvec2 uv = {0, 0});
+
+// The lobe of one light at t = saturate(...): t^power (lobe above), or the material's ramp at t
+// (model/texture_sampling.h: linear between texel centres, clamped), per channel.
+glm::dvec3 material_lobe(const Translucency& tr, double t);
 
 // c = albedo * (ambient_light + sum over lights of color * (diffuse + trans)).
 glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoint& sp);

@@ -145,6 +145,15 @@ class ObjectReader {
   std::set<std::string> used_;
 };
 
+// JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL (and
+// read another file), and so would the printed message.
+void refuse_nul(const ObjectReader& r, const std::string& key, const std::string& file_name) {
+  if (file_name.find('\0') == std::string::npos) return;
+  std::string shown;
+  for (char c : file_name) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
+  r.fail(r.key_path(key), "a path cannot contain a NUL byte: \"" + shown + "\"");
+}
+
 // JSON syntax errors carry a byte offset; users want a line.
 int line_of_offset(const std::string& text, size_t offset) {
   int line = 1;
@@ -178,6 +187,18 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file,
       throw InputError(file, where, what);
     }
   }
+}
+
+void check_uvs_for_material(const TriangleMesh& mesh, const Material& material,
+                            const std::string& file, const std::string& where,
+                            const std::string& mesh_name) {
+  if (!material.translucency ||
+      material.translucency->thickness_source != ThicknessSource::Texture || !mesh.uvs.empty())
+    return;
+  throw InputError(file, where,
+                   "material \"" + material.name + "\" samples the thickness map " +
+                       material.translucency->thickness_map->file.string() + " but " + mesh_name +
+                       " has no texture coordinates (UVs)");
 }
 
 namespace {
@@ -274,6 +295,14 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 
   // Materials: an object of named materials.
   std::vector<std::string> material_names;
+  // Thickness maps and ramps, read after the JSON like the meshes.
+  struct TextureLoad {
+    std::size_t material;
+    bool ramp;
+    fs::path file;
+    std::string channels, key;
+  };
+  std::vector<TextureLoad> texture_loads;
   {
     const json& mats = top.get("materials");
     if (!mats.is_object() || mats.empty()) {
@@ -298,9 +327,23 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
         if (t.has("thickness")) {
           const json& th = t.get("thickness");
           const std::string kp = t.key_path("thickness");
-          if (th.is_string()) {
+          if (th.is_object()) {
+            // {"texture": "map.png", "channels": "rgb"}: loaded once the JSON is read.
+            ObjectReader map = t.object("thickness");
+            const std::string texture = map.string("texture");
+            refuse_nul(map, "texture", texture);
+            const std::string channels = map.string("channels", std::string("rgb"));
+            if (!is_thickness_channels(channels)) {
+              map.fail(map.key_path("channels"),
+                       "must be \"rgb\", \"r\", \"g\", \"b\" or \"a\", not \"" + channels + "\"");
+            }
+            map.finish();
+            tr.thickness_source = ThicknessSource::Texture;
+            texture_loads.push_back({scene.materials.size(), false, base_dir / texture, channels,
+                                     map.key_path("texture")});
+          } else if (th.is_string()) {
             if (th.get<std::string>() != "vertex") {
-              t.fail(kp, "must be \"vertex\", a number or an rgb triple");
+              t.fail(kp, "must be \"vertex\", a number, an rgb triple or {\"texture\": ...}");
             }
             tr.thickness_source = ThicknessSource::Vertex;
           } else if (th.is_number()) {
@@ -309,6 +352,12 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
           } else {
             tr.thickness = t.vec3_value(th, kp, 0, kMaxColour);
           }
+        }
+        if (t.has("ramp")) {
+          const std::string ramp = t.string("ramp");
+          refuse_nul(t, "ramp", ramp);
+          texture_loads.push_back(
+              {scene.materials.size(), true, base_dir / ramp, "rgb", t.key_path("ramp")});
         }
         t.finish();
         mat.translucency = tr;
@@ -378,11 +427,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       const std::string mesh = o.string(key);
       // JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL
       // (and read another file), and so would the printed message.
-      if (mesh.find('\0') != std::string::npos) {
-        std::string shown;
-        for (char c : mesh) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
-        o.fail(o.key_path(key), "a path cannot contain a NUL byte: \"" + shown + "\"");
-      }
+      refuse_nul(o, key, mesh);
       obj.mesh_path = base_dir / mesh;
       // A missing mesh, or one that is no file to read (a directory, a FIFO), is the scene's
       // mistake: name the scene's key. Errors inside a mesh name the mesh file and line instead
@@ -448,7 +493,13 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
   }
   top.finish();
 
-  // Meshes last, so a typo in the JSON is reported before any file I/O.
+  // Textures and meshes last, so a typo in the JSON is reported before any file I/O.
+  for (const TextureLoad& l : texture_loads) {
+    Translucency& tr = *scene.materials[l.material].translucency;
+    (l.ramp ? tr.ramp : tr.thickness_map) =
+        l.ramp ? load_lobe_ramp(l.file, file, l.key)
+               : load_thickness_map(l.file, l.channels, file, l.key);
+  }
   std::size_t scene_vertices = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     SceneObject& obj = scene.objects[i];
@@ -472,6 +523,8 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       check_vertex_thickness(mesh, file, "objects[" + std::to_string(i) + "].mesh",
                              obj.mesh_path.string());
     }
+    check_uvs_for_material(mesh, mat, file, "objects[" + std::to_string(i) + "].mesh",
+                           obj.mesh_path.string());
     // World space in double: what the reference shades and what the GL paths upload
     // (camera-relative) as float.
     transform_to_world(mesh, obj.transform.matrix());
@@ -507,6 +560,8 @@ SceneNeeds scene_needs(const Scene& scene) {
     if (!m.translucency) continue;
     n.any_translucency = true;
     n.any_vertex_thickness |= m.translucency->thickness_source == ThicknessSource::Vertex;
+    n.any_thickness_map |= m.translucency->thickness_source == ThicknessSource::Texture;
+    n.any_ramp |= m.translucency->ramp != nullptr;
     n.any_normalized_h |= m.translucency->normalize_distorted_light;
   }
   n.ambient_light = scene.ambient_light != glm::dvec3(0);

@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "scene/thickness_map.h"
 #include "scene/triangle_mesh.h"
 
 namespace lt {
@@ -27,16 +29,20 @@ struct Camera {
   glm::dmat4 view_from_origin() const;
 };
 
-enum class ThicknessSource { Vertex, Constant };
+// Texture: a thickness map sampled at the mesh's UVs (scene/thickness_map.h).
+enum class ThicknessSource { Vertex, Constant, Texture };
 
 struct Translucency {
   double power = 1;       // p >= 0
   double distortion = 0;  // d, any real
   double ambient = 0;     // a >= 0
   ThicknessSource thickness_source = ThicknessSource::Constant;
-  glm::dvec3 thickness{1, 1, 1};  // the constant (Constant), unused for Vertex
+  glm::dvec3 thickness{1, 1, 1};  // the constant (Constant), unused for Vertex and Texture
   glm::dvec3 tint{1, 1, 1};
   bool normalize_distorted_light = false;
+  // Shared, not copied: scenes are copied per path (camera_relative_lights), maps are large.
+  std::shared_ptr<const TextureMap> thickness_map;  // Texture
+  std::shared_ptr<const TextureMap> ramp;           // set: the ramp's value at t replaces t^power
 };
 
 struct Material {
@@ -116,6 +122,8 @@ struct SceneNeeds {
   int point_lights = 0;
   bool any_translucency = false;
   bool any_vertex_thickness = false;
+  bool any_thickness_map = false;  // a material samples a thickness map (UVs are uploaded)
+  bool any_ramp = false;           // a material's lobe is an artist's ramp
   bool any_normalized_h = false;
   bool ambient_light = false;  // scene ambient_light non-zero
 };

@@ -45,4 +45,11 @@ std::string over_limit_message(std::size_t count, const char* noun, std::size_t 
 void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file,
                             const std::string& where, const std::string& mesh_name);
 
+// A material with a thickness map needs the mesh's UVs: InputError(file, where, naming the
+// material, the map and `mesh_name`) when the mesh has none. Nothing for other materials.
+struct Material;
+void check_uvs_for_material(const TriangleMesh& mesh, const Material& material,
+                            const std::string& file, const std::string& where,
+                            const std::string& mesh_name);
+
 }  // namespace lt

@@ -150,9 +150,13 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
     const AccessorValues a = read_accessor(doc, uv, "TEXCOORD_0", {2});
     same_count(a, uv, "TEXCOORD_0");
     mesh.uvs.resize(n);
-    for (std::size_t v = 0; v < n; ++v) mesh.uvs[v] = {a.values[v * 2], a.values[v * 2 + 1]};
+    // glTF's UV origin is the image's top-left (glTF 2.0 §3.8.4.3: v grows downwards);
+    // TriangleMesh::uvs follow OpenGL (v = 0 at the bottom row, model/texture_sampling.h), as
+    // OBJ's vt and the UV baker do: v flips here, once.
+    for (std::size_t v = 0; v < n; ++v) mesh.uvs[v] = {a.values[v * 2], 1 - a.values[v * 2 + 1]};
     out.notes.push_back("kept " + ptr +
-                        "/attributes/TEXCOORD_0 (for thickness maps, not used yet)");
+                        "/attributes/TEXCOORD_0 (for thickness maps; v flipped to OpenGL's "
+                        "bottom-up convention)");
   }
   for (const auto& [name, index] : prim.attributes) {
     if (!is_read_attribute(name)) {

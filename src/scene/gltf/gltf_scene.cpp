@@ -111,6 +111,7 @@ struct Importer {
                                      "/attributes/COLOR_0 as base colour: read and kept, the "
                                      "thickness only with extras.ltrender.thickness \"vertex\"");
       }
+      check_uvs_for_material(prim.mesh, mat, doc.path.string(), ptr, "the primitive");
       transform_to_world(prim.mesh, world);
       for (std::size_t v = 0; v < prim.mesh.positions.size(); ++v) {
         check_world_point(doc, node_ptr, prim.mesh.positions[v],
