@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bake/thickness_baker.h"
+#include "bake_bounds.h"
 #include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "mesh/meshgen.h"
@@ -49,48 +50,7 @@ double mean(const std::vector<double>& v) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The analytic sphere.
-//
-// On a sphere of radius R, a ray leaving a surface point at angle theta from the inward normal
-// travels the chord 2 R cos(theta). It hits within D when cos(theta) < D / 2R =: a. With cosine
-// sampling, P(cos(theta) < a) = a^2; with uniform sampling it is a.
-//
-// The baked sphere is a polyhedron, and rays start eps inside it: the true occlusion is
-// sandwiched between two spheres. From a start point at radius rho (= R - eps) the far
-// intersection with a sphere of radius s is within D iff cos(theta) <= x*(s) =
-// (D^2 + rho^2 - s^2) / (2 D rho). Every polyhedral chord is at most the outer sphere's (s = R)
-// and at least the inscribed sphere's (s = R - sagitta, the smallest distance from the centre to
-// a face plane), so the expected occlusion lies in [F(x*(R)), F(x*(R - sagitta))], F(x) = x^2
-// (cosine) or x (uniform).
-
-double sagitta(const Surface& s, const glm::dvec3& centre, double radius) {
-  double inscribed = radius;
-  for (const auto& t : s.triangles) {
-    const glm::dvec3 n = glm::normalize(
-        glm::cross(s.positions[t.y] - s.positions[t.x], s.positions[t.z] - s.positions[t.x]));
-    inscribed = std::min(inscribed, std::abs(glm::dot(n, s.positions[t.x] - centre)));
-  }
-  return radius - inscribed;
-}
-
-struct Expected {
-  double lo, hi;
-};
-
-Expected sphere_occlusion(double radius, double d, double eps, double sag, Distribution dist) {
-  const double rho = radius - eps;
-  auto threshold = [&](double s) {
-    return std::clamp((d * d + rho * rho - s * s) / (2.0 * d * rho), 0.0, 1.0);
-  };
-  auto cdf = [&](double x) { return dist == Distribution::Cosine ? x * x : x; };
-  return {cdf(threshold(radius)), cdf(threshold(radius - sag))};
-}
-
-// Binomial standard deviation of a fraction estimated from `n` independent rays. The stratified
-// sampler's variance is lower (its rays are evenly spread), so this bound is conservative there.
-double binomial_sigma(double p, double n) {
-  return std::sqrt(std::max(p * (1.0 - p), 1e-4) / n);
-}
+// The analytic sphere: see bake_bounds.h for the chord argument and its sandwich bounds.
 
 struct SphereCase {
   double radius, d;
@@ -128,9 +88,7 @@ TEST_P(AnalyticSphere, OcclusionMatchesChordLength) {
 
   const Expected e = sphere_occlusion(c.radius, c.d, r.epsilon,
                                       sagitta(s, glm::dvec3(0.0), c.radius), c.distribution);
-  const double analytic = c.distribution == Distribution::Cosine
-                              ? std::pow(std::min(1.0, c.d / (2 * c.radius)), 2)
-                              : std::min(1.0, c.d / (2 * c.radius));
+  const double analytic = analytic_sphere_occlusion(c.radius, c.d, c.distribution);
   const double n = static_cast<double>(s.positions.size()) * settings.rays;
   const double tol = 5.0 * binomial_sigma(analytic, n);
   const double m = mean(r.occlusion);
@@ -716,17 +674,23 @@ TEST(BakeKeepsProperties, UvAndOtherVertexPropertiesGoThroughUnchanged) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const LoadedMesh in = read_mesh(dir / "in.ply");
   const LoadedMesh out = read_mesh(dir / "out.ply");
-  ASSERT_EQ(out.extra_vertex_properties.size(), 4u);
-  const char* names[] = {"u", "v", "quality", "id"};
-  const char* types[] = {"float", "float", "uchar", "int"};
-  for (std::size_t k = 0; k < 4; ++k) {
+  // u, v are the mesh's texture coordinates (issue 13), written back as float u, v.
+  EXPECT_TRUE(out.read_options.vertex_has_texcoord());
+  EXPECT_EQ(to_triangle_mesh(out).uvs, to_triangle_mesh(in).uvs);
+  EXPECT_EQ(to_triangle_mesh(in).uvs[2], glm::dvec2(0.3333333f, 0.1f));
+  EXPECT_NE(test::read_file(dir / "out.ply").find("property float u\nproperty float v\n"),
+            std::string::npos);
+  ASSERT_EQ(out.extra_vertex_properties.size(), 2u);
+  const char* names[] = {"quality", "id"};
+  const char* types[] = {"uchar", "int"};
+  for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(out.extra_vertex_properties[k].name, names[k]);
     EXPECT_EQ(out.extra_vertex_properties[k].ply_type, types[k]);
     // Float values read back bit-exact (9 significant digits), integers exactly.
     EXPECT_EQ(out.extra_vertex_properties[k].values, in.extra_vertex_properties[k].values)
         << names[k];
   }
-  EXPECT_EQ(in.extra_vertex_properties[3].values[3], 2147483647.0);
+  EXPECT_EQ(in.extra_vertex_properties[1].values[3], 2147483647.0);
   EXPECT_TRUE(out.read_options.vertex_has_color());  // and the bake's own colours
 }
 

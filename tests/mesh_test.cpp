@@ -755,7 +755,7 @@ TEST(Meshgen, CommittedMeshesAreUpToDate) {
   const fs::path committed = fs::path(LT_SOURCE_DIR) / "meshes";
   for (auto& named : meshgen::standard_set()) {
     const fs::path fresh = dir / fs::path(named.path).filename().string();
-    write_mesh(fresh, named.mesh, Options::Binary | Options::VertexNormal);
+    write_mesh(fresh, named.mesh, meshgen::write_options(named));
     ASSERT_TRUE(fs::exists(committed / named.path)) << named.path;
     EXPECT_TRUE(slurp(fresh) == slurp(committed / named.path))
         << named.path << " differs: run `build/ltrender meshgen meshes`";

@@ -1,5 +1,5 @@
 // `ltrender meshgen OUTDIR`: writes the procedural meshes of mesh/meshgen.h (the committed
-// meshes/ directory is this command's output).
+// meshes/ directory is this command's output), or one of them (--sphere, --teapot, --uvsphere).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -47,23 +47,38 @@ Action add_meshgen(CLI::App& app) {
                   "Write only sphere_sS.ply, an icosphere of S subdivisions (7: 163842 vertices, "
                   "the bake-rate case of issue 3)")
       ->check(CLI::Range(0, 8));
-  return [out_dir, sphere]() -> int {
+  auto teapot = std::make_shared<int>(0);
+  sub->add_option("--teapot", *teapot,
+                  "Write only teapot.ply, the Utah teapot with N x N cells per Bezier patch "
+                  "(the set's teapot.ply has " +
+                      std::to_string(meshgen::kDefaultTeapotSubdivisions) + ")")
+      ->check(CLI::Range(1, 256));
+  auto uvsphere = std::make_shared<int>(0);
+  sub->add_option("--uvsphere", *uvsphere,
+                  "Write only uvsphere.ply, a UV sphere of R latitude rings and 2R segments (the "
+                  "set's has 32)")
+      ->check(CLI::Range(2, 4096));
+  sub->get_option("--sphere")->excludes("--teapot")->excludes("--uvsphere");
+  sub->get_option("--teapot")->excludes("--uvsphere");
+  return [out_dir, sphere, teapot, uvsphere]() -> int {
     const std::filesystem::path root(*out_dir);
     ensure_directory(root);
-    const auto options =
-        OpenMesh::IO::Options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::VertexNormal);
     std::uintmax_t total = 0;
     std::vector<meshgen::NamedMesh> set;
     if (*sphere >= 0) {
       set.push_back(
           {"sphere_s" + std::to_string(*sphere) + ".ply", meshgen::icosphere(1.0, *sphere)});
+    } else if (*teapot > 0) {
+      set.push_back({"teapot.ply", meshgen::teapot(*teapot), true});
+    } else if (*uvsphere > 0) {
+      set.push_back({"uvsphere.ply", meshgen::uv_sphere(1.0, *uvsphere), true});
     } else {
       set = meshgen::standard_set();
     }
     for (const auto& named : set) {
       const std::filesystem::path path = root / named.path;
       ensure_directory(path.parent_path());
-      write_mesh(path, named.mesh, options);
+      write_mesh(path, named.mesh, meshgen::write_options(named));
       std::error_code ec;
       const auto size = std::filesystem::file_size(path, ec);
       total += ec ? 0 : size;

@@ -39,6 +39,7 @@ std::size_t repair_split_vertices(PolyMesh& mesh, const Options& opts, FileFacts
     const auto j = static_cast<std::size_t>(from.idx());
     mesh.set_normal(vh, mesh.normal(from));
     mesh.set_color(vh, mesh.color(from));
+    mesh.set_texcoord2D(vh, mesh.texcoord2D(from));
     facts.normal_given[i] = facts.normal_given[j];
     if (facts.has_colors) facts.colors[i] = facts.colors[j];
   }
@@ -58,6 +59,14 @@ void finish_loaded_mesh(LoadedMesh& loaded, const std::string& file, FileFacts& 
       what << "vertex " << vh.idx() << " has a non-finite coordinate (" << p.x << ", " << p.y
            << ", " << p.z << ")";
       fail(file, 0, what.str());
+    }
+  }
+  if (loaded.read_options.vertex_has_texcoord()) {
+    for (auto vh : mesh.vertices()) {
+      if (!is_finite(to_glm(mesh.texcoord2D(vh)))) {
+        fail(file, 0,
+             "vertex " + std::to_string(vh.idx()) + " has a non-finite texture coordinate");
+      }
     }
   }
   if (facts.repeated_faces > 0) {

@@ -24,6 +24,7 @@
 #include "mesh/openmesh_log.h"
 #include "mesh/reader_support.h"
 #include "mesh/triangulate.h"
+#include "mesh/uv_seams.h"
 
 namespace lt {
 
@@ -64,13 +65,18 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     if (stl) check_stl(data, file);
     OpenMeshLogCapture capture;
     PolyMesh& mesh = loaded.mesh;
-    // Vertex status lets the importer mark the copies it makes for non-manifold faces.
+    // Vertex status lets the importer mark the copies it makes for non-manifold faces;
+    // halfedge texture coordinates receive an OBJ's per-corner vt.
     mesh.request_vertex_status();
+    mesh.request_halfedge_texcoords2D();
     Options options = requested_options();
     read_with_openmesh(mesh, file, options, capture);
     // STL has neither vertex normals nor colours, but its reader hands the request back as if
     // the file had them (and leaves them uninitialised).
-    if (stl) options -= Options::VertexNormal | Options::VertexColor | Options::ColorFloat;
+    if (stl) {
+      options -= Options::VertexNormal | Options::VertexColor | Options::ColorFloat;
+      options -= Options::VertexTexCoord | Options::FaceTexCoord;
+    }
     loaded.read_options = options;
     const std::size_t split = repair_split_vertices(mesh, options, facts);
     if (split) {
@@ -83,6 +89,9 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
                            " where the file has " + std::to_string(facts.vertices));
     }
     mesh.release_vertex_status();
+    // OBJ gives texture coordinates per face corner: one position with several is a seam.
+    if (ext == ".obj") split_uv_seams(loaded, facts);
+    if (mesh.has_halfedge_texcoords2D()) mesh.release_halfedge_texcoords2D();
   }
   finish_loaded_mesh(loaded, file, facts);
   return loaded;
@@ -113,6 +122,10 @@ TriangleMesh to_triangle_mesh(const LoadedMesh& loaded) {
   for (auto vh : mesh.vertices()) {
     out.positions.push_back(to_glm(mesh.point(vh)));
     out.normals.push_back(to_glm(mesh.normal(vh)));
+  }
+  if (loaded.read_options.vertex_has_texcoord()) {
+    out.uvs.reserve(mesh.n_vertices());
+    for (auto vh : mesh.vertices()) out.uvs.push_back(to_glm(mesh.texcoord2D(vh)));
   }
   if (loaded.read_options.vertex_has_color()) {
     out.colors.reserve(mesh.n_vertices());

@@ -13,7 +13,11 @@ namespace lt {
 // Reads and validates. Throws InputError naming the file (and line where the reader knows it)
 // for: missing or unreadable file, unknown format, empty mesh, no faces, NaN/Inf coordinates,
 // face indices out of range. Missing, zero-length or non-finite normals are recomputed from the
-// faces (area-weighted) and counted in `warnings`. Colours present in the file are kept.
+// faces (area-weighted) and counted in `warnings`. Colours present in the file are kept, and so
+// are texture coordinates (read_options has VertexTexCoord): PLY u/v, s/t or
+// texture_u/texture_v (float or double), OBJ vt (per face corner; a position with several is
+// split, see uv_seams.h), OFF st, OM texcoords; non-finite ones, or a vt index out of range, are
+// an InputError naming the line.
 // PLY is parsed by our own reader (exact double positions and float colours; OpenMesh 9.0 rounds
 // both) and assembled with OpenMesh's importer; OBJ, OFF and STL are checked line by line before
 // OpenMesh reads them, and OM is first read in a child process because a corrupt OM file can
@@ -32,8 +36,9 @@ TriangleMesh load_triangle_mesh(const std::filesystem::path& path);
 // (vertex colours, normals, binary, float colours). Throws InputError.
 // PLY is written by our own writer with double x/y/z (OpenMesh 9.0 rounds positions to float,
 // which a sphere near 1e6 does not survive); normals are float, colours float with ColorFloat
-// and 8-bit otherwise. Other formats keep OpenMesh's own precision (OBJ/OFF/STL float; OM keeps
-// double positions but stores colours in 8 bits). `extras` (a PLY's u, v, ... from read_mesh)
+// and 8-bit otherwise; texture coordinates (Options::VertexTexCoord) as u, v. Other formats keep
+// OpenMesh's own precision (OBJ/OFF/STL float; OM keeps double positions but stores colours in
+// 8 bits). `extras` (a PLY's quality, ... from read_mesh)
 // are written after the attributes; only PLY can hold them, so another format with extras is an
 // InputError naming them.
 void write_mesh(const std::filesystem::path& path, const PolyMesh& mesh,

@@ -1,6 +1,5 @@
-// Procedural meshes. Each generator first builds plain arrays (positions, normals, triangles),
-// because splitting edges and displacing vertices is simpler there, and converts to a PolyMesh
-// once at the end.
+// Procedural meshes. Each generator first builds plain arrays (mesh/mesh_builder.h) and converts
+// to a PolyMesh once at the end. The UV sphere and the teapot have files of their own.
 #include "mesh/meshgen.h"
 
 #include <algorithm>
@@ -12,51 +11,12 @@
 #include <utility>
 
 #include "core/error.h"
+#include "mesh/mesh_builder.h"
 #include "mesh/normals.h"
 
 namespace lt::meshgen {
 
 namespace {
-
-struct Geometry {
-  std::vector<glm::dvec3> positions;
-  std::vector<glm::dvec3> normals;
-  std::vector<std::array<int, 3>> triangles;
-
-  int add(const glm::dvec3& p, const glm::dvec3& n) {
-    positions.push_back(p);
-    normals.push_back(n);
-    return static_cast<int>(positions.size()) - 1;
-  }
-};
-
-// Vertex normals as given (compute_normals fills the face normals; its vertex normals are then
-// replaced), colours zero.
-PolyMesh to_mesh(const Geometry& g) {
-  PolyMesh mesh;
-  mesh.reserve(g.positions.size(), 3 * g.positions.size(), g.triangles.size());
-  for (const auto& p : g.positions) {
-    auto vh = mesh.add_vertex(PolyMesh::Point(p.x, p.y, p.z));
-    mesh.set_color(vh, PolyMesh::Color(0.0f, 0.0f, 0.0f));
-  }
-  for (const auto& t : g.triangles) {
-    mesh.add_face(OpenMesh::VertexHandle(t[0]), OpenMesh::VertexHandle(t[1]),
-                  OpenMesh::VertexHandle(t[2]));
-  }
-  LT_CHECK(mesh.n_faces() == g.triangles.size(), "generated mesh is not manifold");
-  compute_normals(mesh);
-  for (auto vh : mesh.vertices()) {
-    const auto& n = g.normals[static_cast<std::size_t>(vh.idx())];
-    mesh.set_normal(vh, PolyMesh::Normal(n.x, n.y, n.z));
-  }
-  return mesh;
-}
-
-// Quad (a, b, c, d), counter-clockwise seen from its front, as two triangles.
-void add_quad(Geometry& g, int a, int b, int c, int d) {
-  g.triangles.push_back({a, b, c});
-  g.triangles.push_back({a, c, d});
-}
 
 Geometry icosphere_geometry(double radius, int subdivisions) {
   LT_CHECK(subdivisions >= 0 && subdivisions <= 8, "icosphere subdivisions out of range");
@@ -307,7 +267,16 @@ std::vector<NamedMesh> standard_set() {
   translate(far, glm::dvec3(1e6));
   set.push_back({"hard/far_1e6.ply", std::move(far)});
   set.push_back({"hard/tiny_1e-6.ply", icosphere(1e-6, 4)});
+  set.push_back({"uvsphere.ply", uv_sphere(1.0, 32), true});
+  set.push_back({"teapot.ply", teapot(kDefaultTeapotSubdivisions), true});
   return set;
+}
+
+OpenMesh::IO::Options write_options(const NamedMesh& named) {
+  using OpenMesh::IO::Options;
+  Options options(Options::Binary | Options::VertexNormal);
+  if (named.uvs) options += Options::VertexTexCoord;
+  return options;
 }
 
 }  // namespace lt::meshgen

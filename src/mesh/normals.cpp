@@ -10,6 +10,10 @@ bool is_finite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+bool is_finite(const glm::dvec2& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
 glm::dvec3 safe_normalize(glm::dvec3 v) {
   if (!is_finite(v)) return glm::dvec3(0.0);
   double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});

@@ -17,6 +17,7 @@ std::size_t compute_normals(PolyMesh& mesh);
 namespace meshio {
 
 bool is_finite(const glm::dvec3& v);
+bool is_finite(const glm::dvec2& v);
 
 // Normalises without overflow or underflow (a normal of length 1e-200 still has a direction);
 // returns zero for zero and non-finite input.

@@ -55,7 +55,8 @@ void OpenMeshLogCapture::detach(OpenMesh::mostream& stream, std::ostream& target
 }
 
 Options requested_options() {
-  return Options(Options::VertexNormal | Options::VertexColor);
+  return Options(Options::VertexNormal | Options::VertexColor | Options::VertexTexCoord |
+                 Options::FaceTexCoord);
 }
 
 void read_with_openmesh(PolyMesh& mesh, const std::string& file, Options& options,

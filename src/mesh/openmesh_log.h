@@ -38,8 +38,10 @@ class OpenMeshLogCapture {
   std::vector<Detached> detached_;
 };
 
-// What the attributes request: normals and colours. ColorFloat is not requested: it only
-// changes OpenMesh's binary OFF reader, and there it would misread the usual integer colours.
+// What the attributes request: normals, colours and texture coordinates (per vertex, and per
+// face corner, which only OBJ has: mesh/uv_seams.h makes them per vertex). ColorFloat is not
+// requested: it only changes OpenMesh's binary OFF reader, and there it would misread the usual
+// integer colours.
 OpenMesh::IO::Options requested_options();
 
 // OpenMesh::IO::read_mesh, with its failure (false or an exception) as an InputError naming the

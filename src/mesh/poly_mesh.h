@@ -28,17 +28,21 @@ struct color_caster<Vec4ui, Vec3f> {
 namespace lt {
 
 // Double precision points and normals: bakes and the reference path work in double, and
-// coordinates near 1e6 must survive a round trip. Colours are float rgb in [0, 1].
+// coordinates near 1e6 must survive a round trip. Colours are float rgb in [0, 1]. Texture
+// coordinates are per vertex (a UV seam is a split vertex, as a GPU needs it), in double so that
+// a PLY's double u, v survive; LoadedMesh::read_options says whether the mesh has them.
 struct MeshTraits : public OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
   using Normal = OpenMesh::Vec3d;
   using Color = OpenMesh::Vec3f;
-  VertexAttributes(OpenMesh::Attributes::Normal | OpenMesh::Attributes::Color);
+  using TexCoord2D = OpenMesh::Vec2d;
+  VertexAttributes(OpenMesh::Attributes::Normal | OpenMesh::Attributes::Color |
+                   OpenMesh::Attributes::TexCoord2D);
   FaceAttributes(OpenMesh::Attributes::Normal);
 };
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
 
-// A per-vertex value the renderer does not use (PLY's u, v, quality, ...), kept so that a mesh
+// A per-vertex value the renderer does not use (a PLY's quality, id, ...), kept so that a mesh
 // written back (bake) carries everything it did not change: its PLY name and type, a value per
 // vertex of the mesh.
 struct ExtraVertexProperty {
@@ -50,7 +54,7 @@ struct ExtraVertexProperty {
 // A mesh as read from a file, before triangulation.
 struct LoadedMesh {
   PolyMesh mesh;
-  OpenMesh::IO::Options read_options;  // what the file had (normals, colours, ...)
+  OpenMesh::IO::Options read_options;  // what the file had (normals, colours, VertexTexCoord)
   std::vector<ExtraVertexProperty> extra_vertex_properties;  // PLY only
   std::vector<std::string> warnings;  // e.g. "3 zero-length normals recomputed"
 };
@@ -60,6 +64,12 @@ inline glm::dvec3 to_glm(const OpenMesh::Vec3d& v) {
 }
 inline OpenMesh::Vec3d to_om(const glm::dvec3& v) {
   return {v.x, v.y, v.z};
+}
+inline glm::dvec2 to_glm(const OpenMesh::Vec2d& v) {
+  return {v[0], v[1]};
+}
+inline OpenMesh::Vec2d to_om(const glm::dvec2& v) {
+  return {v.x, v.y};
 }
 
 }  // namespace lt

@@ -19,7 +19,7 @@ void FileFacts::take_parsed_colors(std::vector<glm::vec3> parsed, std::size_t co
   }
 }
 
-void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts) {
+std::vector<std::uint32_t> build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts) {
   PolyMesh& mesh = loaded.mesh;
   mesh.clear();
   const std::size_t nv = raw.positions.size();
@@ -71,6 +71,10 @@ void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts) {
       mesh.set_color(vh, OpenMesh::Vec3f(c.r, c.g, c.b));
     }
   }
+  if (!raw.uvs.empty()) {
+    loaded.read_options += Options::VertexTexCoord;
+    for (auto vh : mesh.vertices()) mesh.set_texcoord2D(vh, to_om(raw.uvs[origin[vh.idx()]]));
+  }
   loaded.extra_vertex_properties.clear();
   for (const auto& extra : raw.extras) {
     ExtraVertexProperty copy{extra.name, extra.ply_type, {}};
@@ -82,6 +86,7 @@ void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts) {
     loaded.warnings.push_back(plural(mesh.n_vertices() - nv, "vertex", "vertices") +
                               " duplicated to split off non-manifold faces");
   }
+  return origin;
 }
 
 }  // namespace lt::meshio

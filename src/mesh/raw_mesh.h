@@ -35,6 +35,7 @@ struct RawMesh {
   std::vector<glm::dvec3> normals;  // empty when the file has none
   std::vector<glm::vec3> colors;    // empty when the file has none
   bool float_colors = false;
+  std::vector<glm::dvec2> uvs;  // empty when the file has none
   std::vector<std::uint32_t> face_offsets{0};
   std::vector<std::uint32_t> face_indices;
   bool binary = false;
@@ -43,7 +44,9 @@ struct RawMesh {
 };
 
 // Builds the mesh from arrays through OpenMesh's importer, so that the connectivity is whatever
-// add_face makes of the faces (consistent by construction), whatever the file said.
-void build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts);
+// add_face makes of the faces (consistent by construction), whatever the file said. Returns,
+// per mesh vertex, the RawMesh vertex it came from (itself, or the corner a non-manifold copy
+// copied).
+std::vector<std::uint32_t> build_mesh(const RawMesh& raw, LoadedMesh& loaded, FileFacts& facts);
 
 }  // namespace lt::meshio

@@ -24,15 +24,19 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
   const auto lines = split_lines(text);
   // Pass 1: how many positions and normals (OpenMesh resolves positive indices against all of
   // them, so a face may name a vertex defined further down).
-  std::size_t total_v = 0, total_vn = 0;
+  std::size_t total_v = 0, total_vn = 0, total_vt = 0;
   for (auto raw : lines) {
     auto t = split_whitespace(trim(raw));
     if (t.empty()) continue;
     if (t[0] == "v") ++total_v;
     if (t[0] == "vn") ++total_vn;
+    if (t[0] == "vt") ++total_vt;
   }
   std::vector<glm::vec3> colors;
-  std::size_t colored = 0, seen_v = 0, seen_vn = 0;
+  std::size_t colored = 0, seen_v = 0, seen_vn = 0, seen_vt = 0;
+  // Whether the first face's corners name texture coordinates: every face must agree, since a
+  // face without them would leave its corners' UVs undefined.
+  int faces_have_vt = -1;
   facts.normal_given.assign(total_v, 0);
   for (std::size_t li = 0; li < lines.size(); ++li) {
     const std::size_t line_no = li + 1;
@@ -75,10 +79,18 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
       }
       ++seen_v;
     } else if (key == "vt") {
-      double uv;
-      if (t.size() < 3 || !parse_double(t[1], uv) || !parse_double(t[2], uv)) {
+      double uv[2];
+      if (t.size() < 3 || !parse_double(t[1], uv[0]) || !parse_double(t[2], uv[1])) {
         fail(file, line_no, "vt needs two numbers");  // OpenMesh gives up on the whole file
       }
+      for (int k = 0; k < 2; ++k) {
+        if (!fits_openmesh_float(uv[k])) {
+          fail(file, line_no,
+               "texture coordinate " + std::to_string(seen_vt) + " is not a finite number ('" +
+                   std::string(t[k + 1]) + "'; OpenMesh reads OBJ numbers as float)");
+        }
+      }
+      ++seen_vt;
     } else if (key == "f") {
       if (t.size() < 4) fail(file, line_no, "a face needs at least 3 vertices");
       std::vector<long long> corners;
@@ -105,6 +117,29 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
                    plural(total_v, "vertex", "vertices") + ")");
         }
         corners.push_back(vertex);
+        const int has_vt = parts[1].empty() ? 0 : 1;
+        if (faces_have_vt < 0) faces_have_vt = has_vt;
+        if (has_vt != faces_have_vt) {
+          fail(file, line_no,
+               "face corner '" + std::string(corner) + "' " +
+                   (has_vt ? "has a texture coordinate where earlier corners had none"
+                           : "has no texture coordinate where earlier corners had one"));
+        }
+        if (has_vt) {
+          long long vt = 0;
+          if (!parse_int(parts[1], vt) || vt == 0) {
+            fail(file, line_no,
+                 "face corner '" + std::string(corner) +
+                     "' has an invalid texture coordinate index");
+          }
+          const long long texcoord = zero_based(vt, seen_vt);
+          if (texcoord < 0 || texcoord >= static_cast<long long>(total_vt)) {
+            fail(file, line_no,
+                 "face texture coordinate index " + std::to_string(vt) +
+                     " is out of range (the file has " +
+                     plural(total_vt, "texture coordinate", "texture coordinates") + ")");
+          }
+        }
         if (!parts[2].empty()) {
           long long n = 0;
           if (!parse_int(parts[2], n) || n == 0) {

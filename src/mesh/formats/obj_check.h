@@ -3,7 +3,9 @@
 // vertex whose numbers it cannot parse (shifting every later index), gives normals only to
 // vertices that a face corner names (isolated ones keep uninitialised memory), and sets colours
 // by position in a list that skips uncoloured vertices. So indices are checked here, and the
-// normals and colours OpenMesh could not be trusted with are taken from this pass.
+// normals and colours OpenMesh could not be trusted with are taken from this pass. Texture
+// coordinates (vt) must be finite and their indices in range, and either every face corner
+// names one or none does.
 #pragma once
 
 #include <string>

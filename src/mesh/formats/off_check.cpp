@@ -90,8 +90,12 @@ FileFacts check_off_binary(const std::string& data, const OffHeader& h, const st
           fail(file, 0, "vertex " + std::to_string(i) + ": colour component out of range 0..255");
       }
     }
-    if (h.texcoords)
-      for (int k = 0; k < 2; ++k) f32("a vertex");
+    if (h.texcoords) {
+      for (int k = 0; k < 2; ++k) {
+        if (!std::isfinite(f32("a vertex")))
+          fail(file, 0, "vertex " + std::to_string(i) + " has a non-finite texture coordinate");
+      }
+    }
   }
   if (nf > (data.size() - pos) / 16) {
     fail(file, 0,
@@ -181,10 +185,22 @@ FileFacts check_off(const std::string& data, const std::string& file) {
                  std::string(t[k]) + "'; OpenMesh reads OFF numbers as float)");
       }
     }
-    if (!h.colors) continue;
-    if (h.texcoords && t.size() < fixed + 2) {
-      fail(file, li, "vertex " + std::to_string(i) + " lacks texture coordinates");
+    if (h.texcoords) {
+      if (t.size() < fixed + 2) {
+        fail(file, li, "vertex " + std::to_string(i) + " lacks texture coordinates");
+      }
+      // OpenMesh reads s, t after the colour, which is only there in COFF: the last two values.
+      const std::size_t st = h.colors ? t.size() - 2 : fixed;
+      for (std::size_t k = st; k < st + 2; ++k) {
+        double v;
+        if (!parse_double(t[k], v) || !fits_openmesh_float(v)) {
+          fail(file, li,
+               "vertex " + std::to_string(i) + " has a non-finite texture coordinate ('" +
+                   std::string(t[k]) + "'; OpenMesh reads OFF numbers as float)");
+        }
+      }
     }
+    if (!h.colors) continue;
     const std::size_t items = t.size() - fixed - (h.texcoords ? 2 : 0);
     glm::vec3 c(0.0f);
     if (items == 3 || items == 4) {

@@ -25,6 +25,7 @@ RawMesh faces_of_om_mesh(const PolyMesh& raw, const Options& options, const std:
       const auto& c = raw.color(vh);
       out.colors.emplace_back(c[0], c[1], c[2]);
     }
+    if (options.vertex_has_texcoord()) out.uvs.push_back(to_glm(raw.texcoord2D(vh)));
   }
   auto corrupt = [&](std::size_t f) {
     fail(file, 0, "face " + std::to_string(f) + " has a broken halfedge loop (corrupt OM file)");
@@ -53,7 +54,8 @@ std::string serialize(const RawMesh& m) {
   auto put = [&out](const void* p, std::size_t n) {
     if (n) out.append(static_cast<const char*>(p), n);
   };
-  const std::uint64_t counts[5] = {m.positions.size(), m.normals.size(), m.colors.size(),
+  const std::uint64_t counts[6] = {m.positions.size(),    m.normals.size(),
+                                   m.colors.size(),       m.uvs.size(),
                                    m.face_offsets.size(), m.face_indices.size()};
   put(counts, sizeof counts);
   const char binary = m.binary ? 1 : 0;
@@ -61,6 +63,7 @@ std::string serialize(const RawMesh& m) {
   put(m.positions.data(), m.positions.size() * sizeof(glm::dvec3));
   put(m.normals.data(), m.normals.size() * sizeof(glm::dvec3));
   put(m.colors.data(), m.colors.size() * sizeof(glm::vec3));
+  put(m.uvs.data(), m.uvs.size() * sizeof(glm::dvec2));
   put(m.face_offsets.data(), m.face_offsets.size() * sizeof(std::uint32_t));
   put(m.face_indices.data(), m.face_indices.size() * sizeof(std::uint32_t));
   return out;
@@ -71,15 +74,16 @@ RawMesh deserialize(const std::string& data, const std::string& file) {
   auto broken = [&]() {
     fail(file, 0, "OpenMesh's OM reader returned an inconsistent mesh (corrupt file?)");
   };
-  std::uint64_t counts[5];
+  std::uint64_t counts[6];
   if (data.size() < sizeof counts + 1) broken();
   std::memcpy(counts, data.data(), sizeof counts);
-  const auto [nv, nn, nc, no, ni] = counts;
-  if (nv > (1u << 31) || (nn != 0 && nn != nv) || (nc != 0 && nc != nv) || no < 1 ||
-      no > (1u << 31) || ni > (1ull << 34))
+  const auto [nv, nn, nc, nu, no, ni] = counts;
+  if (nv > (1u << 31) || (nn != 0 && nn != nv) || (nc != 0 && nc != nv) || (nu != 0 && nu != nv) ||
+      no < 1 || no > (1u << 31) || ni > (1ull << 34))
     broken();
   const std::size_t expected = sizeof counts + 1 + (nv + nn) * sizeof(glm::dvec3) +
-                               nc * sizeof(glm::vec3) + (no + ni) * sizeof(std::uint32_t);
+                               nc * sizeof(glm::vec3) + nu * sizeof(glm::dvec2) +
+                               (no + ni) * sizeof(std::uint32_t);
   if (data.size() != expected) broken();
   RawMesh m;
   std::size_t pos = sizeof counts;
@@ -92,6 +96,7 @@ RawMesh deserialize(const std::string& data, const std::string& file) {
   get(m.positions, nv);
   get(m.normals, nn);
   get(m.colors, nc);
+  get(m.uvs, nu);
   get(m.face_offsets, no);
   get(m.face_indices, ni);
   if (m.face_offsets.front() != 0 || m.face_offsets.back() != ni) broken();

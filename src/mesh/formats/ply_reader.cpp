@@ -19,8 +19,8 @@ namespace lt::meshio {
 
 namespace {
 
-// X..Z, NX..NZ and Red..Blue must stay consecutive: parse_ply indexes with them.
-enum class PlyRole { Other, X, Y, Z, NX, NY, NZ, Red, Green, Blue, Alpha, VertexIndices };
+// X..Z, NX..NZ, Red..Blue and U..V must stay consecutive: parse_ply indexes with them.
+enum class PlyRole { Other, X, Y, Z, NX, NY, NZ, Red, Green, Blue, Alpha, U, V, VertexIndices };
 
 struct PlyProperty {
   std::string name;
@@ -245,6 +245,26 @@ class PlyBody {
   PlyFormat format_;
 };
 
+// The names PLY writers give texture coordinates (Blender and meshlab: s/t or u/v; the Stanford
+// and VCG tools: texture_u/texture_v). The first pair the vertex has both of, as float or double,
+// is the mesh's UVs; anything else (an integer u, a lone s) stays an extra property.
+std::pair<PlyProperty*, PlyProperty*> find_uv_pair(PlyElement& vertex) {
+  static const std::pair<const char*, const char*> names[] = {
+      {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}};
+  auto scalar = [&](const char* name) -> PlyProperty* {
+    for (auto& p : vertex.properties) {
+      if (p.name == name && !p.is_list && ply_is_float(p.type)) return &p;
+    }
+    return nullptr;
+  };
+  for (const auto& [u, v] : names) {
+    PlyProperty* pu = scalar(u);
+    PlyProperty* pv = scalar(v);
+    if (pu && pv) return {pu, pv};
+  }
+  return {nullptr, nullptr};
+}
+
 }  // namespace
 
 RawMesh parse_ply(const std::string& data, const std::string& file) {
@@ -269,7 +289,13 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
   if (!vertex) fail(file, 0, "PLY file has no vertex element");
   bool has_xyz[3] = {false, false, false};
   bool has_normal = false, has_color = false;
+  const auto [uv_u, uv_v] = find_uv_pair(*vertex);
+  if (uv_u) {
+    uv_u->role = PlyRole::U;
+    uv_v->role = PlyRole::V;
+  }
   for (auto& p : vertex->properties) {
+    if (p.role == PlyRole::U || p.role == PlyRole::V) continue;
     static const std::map<std::string, PlyRole> roles = {
         {"x", PlyRole::X},         {"y", PlyRole::Y},
         {"z", PlyRole::Z},         {"nx", PlyRole::NX},
@@ -280,7 +306,7 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
         {"alpha", PlyRole::Alpha}};
     auto it = roles.find(p.name);
     if (it == roles.end() && !p.is_list) {
-      // Not ours to interpret (u, v, quality, ...): carried through to what bake writes.
+      // Not ours to interpret (quality, id, ...): carried through to what bake writes.
       p.extra = static_cast<int>(out.extras.size());
       out.extras.push_back({p.name, p.type_name, {}});
     }
@@ -333,6 +359,7 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
   out.positions.resize(nv);
   if (has_normal) out.normals.assign(nv, glm::dvec3(0.0));
   if (has_color) out.colors.assign(nv, glm::vec3(0.0f));
+  if (uv_u) out.uvs.assign(nv, glm::dvec2(0.0));
   for (auto& extra : out.extras) extra.values.assign(nv, 0.0);
 
   PlyBody body(data, h);
@@ -392,6 +419,9 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
             out.normals[i][role - static_cast<int>(PlyRole::NX)] = v;
           } else if (p.role >= PlyRole::Red && p.role <= PlyRole::Blue) {
             out.colors[i][role - static_cast<int>(PlyRole::Red)] = c;
+          } else if (p.role == PlyRole::U || p.role == PlyRole::V) {
+            // As the declared type holds it: an ascii "0.1" of a float u is the float 0.1f.
+            out.uvs[i][role - static_cast<int>(PlyRole::U)] = ply_value_as(p.type, v);
           }
         }
       } catch (const PlyBody::End&) {
@@ -414,6 +444,11 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
         if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) {
           fail(file, body.line(), "vertex " + std::to_string(i) + " has a non-finite colour");
         }
+      }
+      if (is_vertex && uv_u && !is_finite(out.uvs[i])) {
+        fail(file, body.line(),
+             "vertex " + std::to_string(i) + " has a non-finite texture coordinate (" + uv_u->name +
+                 ", " + uv_v->name + ")");
       }
     }
     // Elements after the faces carry nothing we use (OpenMesh stops there too).

@@ -43,8 +43,23 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
   const bool normals = options.vertex_has_normal();
   const bool colors = options.vertex_has_color();
   const bool float_colors = options.color_is_float();
+  const bool uvs = options.vertex_has_texcoord();
+  // Float when every coordinate is one (what a float u, v read back is), so a round trip keeps
+  // the file's type and its values bit for bit; double otherwise.
+  bool uv_float = true;
+  for (auto vh : mesh.vertices()) {
+    if (!uvs) break;
+    const auto& t = mesh.texcoord2D(vh);
+    for (int k = 0; k < 2; ++k) uv_float = uv_float && ply_value_as(PlyType::Float32, t[k]) == t[k];
+  }
+  const PlyType uv_type = uv_float ? PlyType::Float32 : PlyType::Float64;
   std::vector<PlyType> extra_types;
   for (const auto& e : extras) {
+    if (uvs && (e.name == "u" || e.name == "v")) {
+      throw InputError(
+          target.string(), "",
+          "vertex property '" + e.name + "' would repeat the texture coordinate's name");
+    }
     const auto type = ply_type(e.ply_type);
     LT_CHECK(type && e.values.size() == mesh.n_vertices(), "extra vertex property " + e.name);
     extra_types.push_back(*type);
@@ -61,6 +76,10 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
   if (colors) {
     const char* t = float_colors ? "float" : "uchar";
     header << "property " << t << " red\nproperty " << t << " green\nproperty " << t << " blue\n";
+  }
+  if (uvs) {
+    const char* t = uv_float ? "float" : "double";
+    header << "property " << t << " u\nproperty " << t << " v\n";
   }
   for (const auto& e : extras) header << "property " << e.ply_type << " " << e.name << "\n";
   header << "element face " << mesh.n_faces() << "\n"
@@ -90,6 +109,16 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
             put(c[k]);
           } else {
             put(color8(c[k]));
+          }
+        }
+      }
+      if (uvs) {
+        const auto& t = mesh.texcoord2D(vh);
+        for (int k = 0; k < 2; ++k) {
+          if (uv_float) {
+            put(static_cast<float>(t[k]));
+          } else {
+            put(t[k]);
           }
         }
       }
@@ -133,6 +162,10 @@ void write_ply(const std::filesystem::path& tmp, const std::filesystem::path& ta
           std::snprintf(line, sizeof line, " %d %d %d", color8(c[0]), color8(c[1]), color8(c[2]));
         }
         s += line;
+      }
+      if (uvs) {
+        const auto& t = mesh.texcoord2D(vh);
+        s += ' ' + ply_ascii(uv_type, t[0]) + ' ' + ply_ascii(uv_type, t[1]);
       }
       for (std::size_t e = 0; e < extras.size(); ++e) {
         s += ' ' + ply_ascii(extra_types[e], extras[e].values[static_cast<std::size_t>(vh.idx())]);

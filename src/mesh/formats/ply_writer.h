@@ -1,5 +1,6 @@
 // PLY writer: double positions (see write_mesh in mesh_io.h), float normals, float or 8-bit
-// colours, then the vertex properties the reader kept (u, v, ...) in the types they came in.
+// colours, texture coordinates as u, v (float when they all are floats, double otherwise), then
+// the vertex properties the reader kept (quality, ...) in the types they came in.
 #pragma once
 
 #include <filesystem>
