@@ -228,6 +228,12 @@ struct PassPlan {
   std::string note;
 };
 
+// A material's lobe LUT as the program holds it: the u8 array (empty: no LUT) and its format.
+struct LutArray {
+  std::string name;
+  const char* format = "GX_TF_I8";
+};
+
 // A material's thickness map as the program holds it: the u8 array and the texture it makes.
 struct MapArray {
   std::string name;
@@ -274,14 +280,14 @@ class Generator {
       return out;
     }
     const Translucency& tr = *mat.translucency;
-    const bool flat_lobe = tr.power == 0;
-    std::string lut_name;
-    if (variant_.lobe == GxVariant::Lobe::Lut && !flat_lobe) lut_name = lut_array(mat, file);
+    const bool flat_lobe = !tr.ramp && tr.power == 0;
+    LutArray lut;
+    if (variant_.lobe == GxVariant::Lobe::Lut && !flat_lobe) lut = lut_array(mat, file);
     std::optional<MapArray> map;
     if (const std::optional<MapTexels> texels = thickness_map_texels(mat))
       map = map_array(mat, *texels, file);
     for (size_t l = 0; l < scene_.lights.size(); ++l)
-      out.push_back(light_pass(m, l, lut_name, map ? &*map : nullptr));
+      out.push_back(light_pass(m, l, lut, map ? &*map : nullptr));
     return out;
   }
 
@@ -318,20 +324,37 @@ class Generator {
     return a;
   }
 
-  // The power LUT as an I8 texture of one row in GX tile order (lobe_lut.h).
-  std::string lut_array(const Material& mat, ProgramFile& file) {
+  // The lobe LUT as a texture of one row in GX tile order (lobe_lut.h): t^p, or the material's
+  // lobe ramp.
+  LutArray lut_array(const Material& mat, ProgramFile& file) {
     const int w = variant_.lut_size;
+    const Translucency& tr = *mat.translucency;
+    if (tr.ramp) {
+      const std::vector<float>& v = tr.ramp->texture.texels;
+      const float top = v.empty() ? 0.0f : *std::max_element(v.begin(), v.end());
+      if (top > 1.0f)
+        throw InputError(
+            scene_.file.string(), "materials." + mat.name + ".translucency.ramp",
+            "gx: the ramp holds values up to " + fmt(top) + "; the 8-bit lobe LUT holds 0..1");
+    }
     const TextureObject lut = lobe_lut(mat, w);
+    LutArray a;
+    a.name = "ltrender_lut_" + c_identifier(mat.name);
+    a.format = lut.format == kTexFormatI8 ? "GX_TF_I8" : "GX_TF_RGBA8";
     Declaration d;
     d.type = Declaration::Type::ByteArray;
-    d.name = "ltrender_lut_" + c_identifier(mat.name);
+    d.name = a.name;
     d.values.assign(lut.data.begin(), lut.data.end());
+    const std::string what =
+        tr.ramp ? "the lobe ramp " + tr.ramp->file.filename().string() + " sampled at t"
+                : "lobe(t) = t^" + fmt(tr.power);
     file.top_level.push_back(Statement::of(
-        d, "Power LUT of material " + mat.name + ": lobe(t) = t^" + fmt(mat.translucency->power) +
-               ", " + std::to_string(w) +
-               " texels I8 in GX tile order (8x4 tiles, 32 bytes;\n"
-               "row 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."));
-    return d.name;
+        d, (tr.ramp ? "Lobe LUT" : "Power LUT") + std::string(" of material ") + mat.name + ": " +
+               what + ", " + std::to_string(w) + " texels " + a.format + " in GX tile order (" +
+               (lut.format == kTexFormatI8 ? "8x4 tiles, 32 bytes"
+                                           : "4x4 tiles, 64 bytes: (a, r) then (g, b) pairs") +
+               ";\nrow 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."));
+    return a;
   }
 
   PassPlan diffuse_pass(int m, int pass, size_t first_light) {
@@ -375,7 +398,7 @@ class Generator {
     return {std::move(w.body), note};
   }
 
-  PassPlan light_pass(int m, size_t l, const std::string& lut_name, const MapArray* map) {
+  PassPlan light_pass(int m, size_t l, const LutArray& lut_array, const MapArray* map) {
     const Material& mat = scene_.materials[static_cast<size_t>(m)];
     const Translucency& tr = *mat.translucency;
     const Light& light = scene_.lights[l];
@@ -394,7 +417,8 @@ class Generator {
         light.color * mat.albedo * (vertex_t || map ? tr.tint : glm::dvec3(1));
     const double s0 = max3(trans_color) * (a + s) * t_max;  // magnitude of COLOR0 at att = 1
     const bool translucent = s0 > 0;
-    const bool flat = tr.power == 0 || s == 0;  // w = 1 everywhere: no lobe to look up
+    // w = 1 everywhere: no lobe to look up (a ramp is a lobe whatever the power)
+    const bool flat = (!tr.ramp && tr.power == 0) || s == 0;
     const bool lut = translucent && !xf && !flat;
     const bool uses_map = translucent && map;
 
@@ -453,9 +477,10 @@ class Generator {
       texture_coordinates(w, tr, light, texgens);
       w.declare(Declaration::Type::TexObj, "lut");
       w.call("GX_InitTexObj",
-             {Arg::address_of("lut"), Arg::identifier(lut_name), lit(variant_.lut_size), lit(1),
-              gx("GX_TF_I8"), gx("GX_CLAMP"), gx("GX_CLAMP"), gx("GX_FALSE")},
-             "The LUT: I8, linear, clamped (the clamp saturates t per pixel)");
+             {Arg::address_of("lut"), Arg::identifier(lut_array.name), lit(variant_.lut_size),
+              lit(1), gx(lut_array.format), gx("GX_CLAMP"), gx("GX_CLAMP"), gx("GX_FALSE")},
+             std::string("The LUT: ") + (lut_array.format + 6) +
+                 ", linear, clamped (the clamp saturates t per pixel)");
       w.call("GX_LoadTexObj", {Arg::address_of("lut"), gx("GX_TEXMAP0")});
     } else {
       w.call("GX_SetNumTexGens", {lit(texgens)});

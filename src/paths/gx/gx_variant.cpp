@@ -94,6 +94,13 @@ std::string to_string(const GxVariant& v) {
 }
 
 std::string refusal(const Scene& scene, const GxVariant& v) {
+  if (v.lobe == GxVariant::Lobe::XfSpec) {
+    for (const Material& m : scene.materials) {
+      if (m.translucency && m.translucency->ramp)
+        return "lobe=xf-spec fits t^power in the XF, but material " + m.name +
+               "'s lobe is a ramp (a table): use t=vertex or t=texgen";
+    }
+  }
   if (v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex) return "";
   for (const Material& m : scene.materials) {
     const std::string why = model::why_t_is_not_affine_in_the_normal(scene, m);

@@ -55,8 +55,10 @@ ThicknessTexture thickness_texture(int width, int height, const std::vector<floa
 }
 
 std::optional<MapTexels> thickness_map_texels(const Material& material) {
-  (void)material;  // until the scene carries thickness maps
-  return std::nullopt;
+  if (!material.translucency || material.translucency->thickness_source != ThicknessSource::Texture)
+    return std::nullopt;
+  const TextureMap& map = *material.translucency->thickness_map;
+  return MapTexels{map.texture.width, map.texture.height, &map.texture.texels, map.grey};
 }
 
 }  // namespace lt::gx
