@@ -14,6 +14,16 @@ u8 to_byte(double v) {
   return static_cast<u8>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
+// One row of texels (row-major in `format`'s layout) as the tiled texture.
+TextureObject one_row(u8 format, int width, const std::vector<u8>& row) {
+  TextureObject t;
+  t.width = width;
+  t.height = 1;
+  t.format = format;
+  t.data = to_tiles(format, width, 1, row);
+  return t;
+}
+
 TextureObject ramp_lut(const TextureMap& ramp, int width) {
   const u8 format = ramp.grey ? kTexFormatI8 : kTexFormatRGBA8;
   std::vector<u8> row;
@@ -26,12 +36,7 @@ TextureObject ramp_lut(const TextureMap& ramp, int width) {
       row.push_back(255);
     }
   }
-  TextureObject t;
-  t.width = width;
-  t.height = 1;
-  t.format = format;
-  t.data = to_tiles(format, width, 1, row);
-  return t;
+  return one_row(format, width, row);
 }
 
 }  // namespace
@@ -44,12 +49,7 @@ TextureObject lobe_lut(const Material& material, int width) {
   std::vector<u8> row(static_cast<size_t>(width));
   for (int i = 0; i < width; ++i)
     row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
-  TextureObject t;
-  t.width = width;
-  t.height = 1;
-  t.format = kTexFormatI8;
-  t.data = to_tiles(kTexFormatI8, width, 1, row);
-  return t;
+  return one_row(kTexFormatI8, width, row);
 }
 
 }  // namespace lt::gx
