@@ -258,7 +258,7 @@ TEST(GxTexture, OneRowTextureIsTheOneDimensionalLerpForEveryU) {
 }
 
 TEST(GxTextureDeathTest, UnknownFormatIsABug) {
-  EXPECT_DEATH(tiled_size(6, 4, 4), "GX_TF_I8");  // GX_TF_RGBA8 is not modelled
+  EXPECT_DEATH(tiled_size(14, 4, 4), "GX_TF_I8");  // GX_TF_CMPR is not modelled
 }
 
 }  // namespace

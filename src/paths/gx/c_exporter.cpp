@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/error.h"
+#include "core/fs.h"
 #include "paths/gx/program/printer.h"
 
 namespace lt::gx {
@@ -45,10 +47,16 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
     << "  GX_Begin(GX_TRIANGLES, GX_VTXFMT0, count); per vertex:\n"
     << "    GX_Position3f32(x, y, z); GX_Normal3f32(nx, ny, nz);\n"
     << "    GX_Color4u8(r, g, b, 255);  // if the pass declares GX_VA_CLR0: the baked thickness\n"
-    << "    GX_TexCoord1f32(t);         // if it declares GX_VA_TEX0: t = dot(V, -(L + N d)) of\n"
-    << "                                // the pass's light, unsaturated (the sampler clamps)\n"
+    << "    GX_TexCoord1f32(t);         // if it declares GX_VA_TEX0 as GX_TEX_S: t = dot(V, -(L "
+       "+\n"
+    << "                                // N d)) of the pass's light, unsaturated (the sampler "
+       "clamps)\n"
+    << "    GX_TexCoord2f32(u, v);      // if it declares a GX_VA_TEXn as GX_TEX_ST: the mesh's "
+       "UV\n"
+    << "                                // (v = 0 at the thickness map's bottom row), after t\n"
     << "  GX_End();\n"
-    << "Call DCFlushRange(lut, sizeof lut) once for each LUT array before the first draw.";
+    << "Call DCFlushRange(array, sizeof array) once for each texture array (LUT, thickness map)\n"
+    << "before the first draw.";
   ProgramFile file = programs.file;
   file.comment.clear();
   std::ostringstream out;
@@ -56,6 +64,16 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
   for (std::string line; std::getline(lines, line);)
     out << "//" << (line.empty() ? "" : " ") << line << "\n";
   out << "\n#include <gccore.h>\n\n" << print_program(file);
+  // The file must read back (`render --program`, `budget FILE.c`) within the program input cap:
+  // a large colour thickness map in RGBA8 is what can pass it.
+  const std::uintmax_t cap = input_size_cap(InputKind::Program);
+  if (out.str().size() > cap)
+    throw InputError(
+        f.scene, "",
+        "gx: the exported program would be " + std::to_string(out.str().size() >> 20) +
+            " MiB, over the " + std::to_string(cap >> 20) +
+            " MiB a program file may be, so --program could not read it back "
+            "(a smaller thickness map, or --variant ...:map=rgb565, halves its array)");
   return out.str();
 }
 

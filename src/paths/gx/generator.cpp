@@ -2,16 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "core/error.h"
-#include "model/power_lut.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"
+#include "paths/gx/lobe_lut.h"
 #include "paths/gx/program/gx_names.h"
 #include "paths/gx/program/pass_programs.h"
 #include "paths/gx/texture_unit.h"
+#include "paths/gx/thickness_texture.h"
 
 namespace lt::gx {
 
@@ -154,13 +156,24 @@ void light_object(Writer& w, const std::string& name, const glm::dvec3& pos_eye,
   w.call("GX_LoadLightObj", {Arg::address_of(name), gx(slot)});
 }
 
-void vertex_format(Writer& w, bool colour, bool texcoord) {
+// The UV of a thickness map rides in the texture coordinate after t (GX_VA_TEX1 when t is sent,
+// else GX_VA_TEX0): the XF is told only how many texture coordinates arrive (program_check.h),
+// so they are declared without a gap.
+int uv_attribute(bool texcoord) {
+  return texcoord ? 1 : 0;
+}
+
+void vertex_format(Writer& w, bool colour, bool texcoord, bool uv = false) {
   w.call("GX_ClearVtxDesc", {},
-         "Vertex format: position and normal (and the baked thickness colour / t) as sent");
+         uv ? "Vertex format: position and normal (and t) as sent, and the mesh's UV for the "
+              "thickness map"
+            : "Vertex format: position and normal (and the baked thickness colour / t) as sent");
   w.call("GX_SetVtxDesc", {gx("GX_VA_POS"), gx("GX_DIRECT")});
   w.call("GX_SetVtxDesc", {gx("GX_VA_NRM"), gx("GX_DIRECT")});
   if (colour) w.call("GX_SetVtxDesc", {gx("GX_VA_CLR0"), gx("GX_DIRECT")});
   if (texcoord) w.call("GX_SetVtxDesc", {gx("GX_VA_TEX0"), gx("GX_DIRECT")});
+  const Arg uv_va = gx("GX_VA_TEX", uv_attribute(texcoord));
+  if (uv) w.call("GX_SetVtxDesc", {uv_va, gx("GX_DIRECT")});
   w.call("GX_SetVtxAttrFmt",
          {gx("GX_VTXFMT0"), gx("GX_VA_POS"), gx("GX_POS_XYZ"), gx("GX_F32"), lit(0)});
   w.call("GX_SetVtxAttrFmt",
@@ -171,6 +184,8 @@ void vertex_format(Writer& w, bool colour, bool texcoord) {
   if (texcoord)
     w.call("GX_SetVtxAttrFmt",
            {gx("GX_VTXFMT0"), gx("GX_VA_TEX0"), gx("GX_TEX_S"), gx("GX_F32"), lit(0)});
+  if (uv)
+    w.call("GX_SetVtxAttrFmt", {gx("GX_VTXFMT0"), uv_va, gx("GX_TEX_ST"), gx("GX_F32"), lit(0)});
 }
 
 // Pass 0 replaces what the EFB holds; later passes add onto it: min(src + dst, 255) per channel
@@ -213,6 +228,18 @@ struct PassPlan {
   std::string note;
 };
 
+// A material's lobe LUT as the program holds it: the u8 array (empty: no LUT) and its format.
+struct LutArray {
+  std::string name;
+  const char* format = "GX_TF_I8";
+};
+
+// A material's thickness map as the program holds it: the u8 array and the texture it makes.
+struct MapArray {
+  std::string name;
+  ThicknessTexture texture;
+};
+
 class Generator {
  public:
   Generator(const Scene& scene, const GxVariant& v)
@@ -253,33 +280,81 @@ class Generator {
       return out;
     }
     const Translucency& tr = *mat.translucency;
-    const bool flat_lobe = tr.power == 0;
-    std::string lut_name;
-    if (variant_.lobe == GxVariant::Lobe::Lut && !flat_lobe) lut_name = lut_array(mat, file);
-    for (size_t l = 0; l < scene_.lights.size(); ++l) out.push_back(light_pass(m, l, lut_name));
+    const bool flat_lobe = !tr.ramp && tr.power == 0;
+    LutArray lut;
+    if (variant_.lobe == GxVariant::Lobe::Lut && !flat_lobe) lut = lut_array(mat, file);
+    std::optional<MapArray> map;
+    if (const std::optional<MapTexels> texels = thickness_map_texels(mat))
+      map = map_array(mat, *texels, file);
+    for (size_t l = 0; l < scene_.lights.size(); ++l)
+      out.push_back(light_pass(m, l, lut, map ? &*map : nullptr));
     return out;
   }
 
-  // The power LUT as an I8 texture of one row in GX tile order: texel i holds
-  // round(255 * lobe(i / (W-1))) (texel-centre addressing, model/power_lut.h).
-  std::string lut_array(const Material& mat, ProgramFile& file) {
-    const int w = variant_.lut_size;
-    const model::PowerLut lut =
-        model::PowerLut::build(w, model::LutFormat::U8, {mat.translucency->power});
-    std::vector<u8> row(static_cast<size_t>(w));
-    for (int i = 0; i < w; ++i)
-      row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
-    const std::vector<u8> tiles = to_tiles(1, w, 1, row);
+  // The thickness map as GX_TEXMAP1's texture (thickness_texture.h), one u8 array per material
+  // that every pass loads.
+  MapArray map_array(const Material& mat, const MapTexels& texels, ProgramFile& file) {
+    if (texels.width > kMaxTextureSize || texels.height > kMaxTextureSize)
+      throw InputError(scene_.file.string(), "materials." + mat.name + ".translucency.thickness",
+                       "gx: the thickness map is " + std::to_string(texels.width) + "x" +
+                           std::to_string(texels.height) +
+                           " texels; a GX texture is at most 1024 a side (resize the map)");
+    MapArray a;
+    a.texture = thickness_texture(texels.width, texels.height, *texels.rgb, texels.grey,
+                                  variant_.map_rgb565);
+    a.name = "ltrender_thickness_" + c_identifier(mat.name);
+    const TextureObject& t = a.texture.texture;
     Declaration d;
     d.type = Declaration::Type::ByteArray;
-    d.name = "ltrender_lut_" + c_identifier(mat.name);
-    d.values.assign(tiles.begin(), tiles.end());
+    d.name = a.name;
+    d.values.assign(t.data.begin(), t.data.end());
+    const bool i8 = t.format == kTexFormatI8, rgba8 = t.format == kTexFormatRGBA8;
     file.top_level.push_back(Statement::of(
-        d, "Power LUT of material " + mat.name + ": lobe(t) = t^" + fmt(mat.translucency->power) +
-               ", " + std::to_string(w) +
-               " texels I8 in GX tile order (8x4 tiles, 32 bytes;\n"
-               "row 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."));
-    return d.name;
+        d, "Thickness map of material " + mat.name + ": " + std::to_string(t.width) + "x" +
+               std::to_string(t.height) + " texels " + a.texture.format_name +
+               " in GX tile order (" +
+               (i8      ? "8x4 tiles of 32 bytes"
+                : rgba8 ? "4x4 tiles of 64 bytes: 16 (a, r) pairs, then 16 (g, b) pairs"
+                        : "4x4 tiles of 32 bytes, big-endian r5 g6 b5") +
+               "),\nrows from the image's bottom row up (v = 0 first), so the identity texgen's "
+               "t = v reads the\ntexel a GL path samples at (u, v); a converter that stores the "
+               "top row first needs\nt = 1 - v (a texture matrix with row 1 = (0, -1, 0, 1)). A "
+               "texel of 255 is thickness " +
+               fmt(a.texture.scale) + ". Flush it (DCFlushRange)\nbefore the GPU reads it."));
+    return a;
+  }
+
+  // The lobe LUT as a texture of one row in GX tile order (lobe_lut.h): t^p, or the material's
+  // lobe ramp.
+  LutArray lut_array(const Material& mat, ProgramFile& file) {
+    const int w = variant_.lut_size;
+    const Translucency& tr = *mat.translucency;
+    if (tr.ramp) {
+      const std::vector<float>& v = tr.ramp->texture.texels;
+      const float top = v.empty() ? 0.0f : *std::max_element(v.begin(), v.end());
+      if (top > 1.0f)
+        throw InputError(
+            scene_.file.string(), "materials." + mat.name + ".translucency.ramp",
+            "gx: the ramp holds values up to " + fmt(top) + "; the 8-bit lobe LUT holds 0..1");
+    }
+    const TextureObject lut = lobe_lut(mat, w);
+    LutArray a;
+    a.name = "ltrender_lut_" + c_identifier(mat.name);
+    a.format = lut.format == kTexFormatI8 ? "GX_TF_I8" : "GX_TF_RGBA8";
+    Declaration d;
+    d.type = Declaration::Type::ByteArray;
+    d.name = a.name;
+    d.values.assign(lut.data.begin(), lut.data.end());
+    const std::string what =
+        tr.ramp ? "the lobe ramp " + tr.ramp->file.filename().string() + " sampled at t"
+                : "lobe(t) = t^" + fmt(tr.power);
+    file.top_level.push_back(Statement::of(
+        d, (tr.ramp ? "Lobe LUT" : "Power LUT") + std::string(" of material ") + mat.name + ": " +
+               what + ", " + std::to_string(w) + " texels " + a.format + " in GX tile order (" +
+               (lut.format == kTexFormatI8 ? "8x4 tiles, 32 bytes"
+                                           : "4x4 tiles, 64 bytes: (a, r) then (g, b) pairs") +
+               ";\nrow 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."));
+    return a;
   }
 
   PassPlan diffuse_pass(int m, int pass, size_t first_light) {
@@ -323,7 +398,7 @@ class Generator {
     return {std::move(w.body), note};
   }
 
-  PassPlan light_pass(int m, size_t l, const std::string& lut_name) {
+  PassPlan light_pass(int m, size_t l, const LutArray& lut_array, const MapArray* map) {
     const Material& mat = scene_.materials[static_cast<size_t>(m)];
     const Translucency& tr = *mat.translucency;
     const Light& light = scene_.lights[l];
@@ -333,14 +408,19 @@ class Generator {
     const bool xf = variant_.lobe == GxVariant::Lobe::XfSpec;
     const double s = light.translucency_scale, a = tr.ambient;
     // Constant thickness: the material register holds T normalised to its largest component;
-    // vertex thickness: the baked colour as sent, the tint moves into the light colour.
-    const glm::dvec3 T = model::thickness(tr, glm::dvec3(1));
-    const double t_max = vertex_t ? 1.0 : max3(T);
-    const glm::dvec3 trans_color = light.color * mat.albedo * (vertex_t ? tr.tint : glm::dvec3(1));
+    // vertex thickness: the baked colour as sent, the tint moves into the light colour; a
+    // thickness map: a TEV stage multiplies the texel in (GX_TEXMAP1), the material register is
+    // white, the tint and the map's scale move into the light colour.
+    const glm::dvec3 T = map ? glm::dvec3(1) : model::thickness(tr, glm::dvec3(1));
+    const double t_max = map ? map->texture.scale : vertex_t ? 1.0 : max3(T);
+    const glm::dvec3 trans_color =
+        light.color * mat.albedo * (vertex_t || map ? tr.tint : glm::dvec3(1));
     const double s0 = max3(trans_color) * (a + s) * t_max;  // magnitude of COLOR0 at att = 1
     const bool translucent = s0 > 0;
-    const bool flat = tr.power == 0 || s == 0;  // w = 1 everywhere: no lobe to look up
+    // w = 1 everywhere: no lobe to look up (a ramp is a lobe whatever the power)
+    const bool flat = (!tr.ramp && tr.power == 0) || s == 0;
     const bool lut = translucent && !xf && !flat;
+    const bool uses_map = translucent && map;
 
     const double diffuse_mag =
         (pass == 0 ? max3(scene_.ambient_light) : 0.0) + st.max_diffuse * max3(light.color);
@@ -349,7 +429,8 @@ class Generator {
     const int st_scale = std::max(sd, scale_for(trans_mag));
 
     Writer w;
-    vertex_format(w, translucent && vertex_t, lut && variant_.t == GxVariant::TexCoord::Vertex);
+    const bool t_attribute = lut && variant_.t == GxVariant::TexCoord::Vertex;
+    vertex_format(w, translucent && vertex_t, t_attribute, uses_map);
     const glm::dvec3 pos = light_position_eye(view_, light);
     model::RationalFit fit;
     glm::dvec3 spec_dir(0);
@@ -371,7 +452,9 @@ class Generator {
                   "specular attenuation (x = N.dir, rational in x)"
                 : "COLOR0A0 = T x clamp(att x light x albedo): the translucency base");
       w.call("GX_SetChanAmbColor", {gx("GX_COLOR0A0"), rgb(glm::dvec3(0))});
-      if (!vertex_t) w.call("GX_SetChanMatColor", {gx("GX_COLOR0A0"), rgb(T / t_max)});
+      if (!vertex_t)
+        w.call("GX_SetChanMatColor", {gx("GX_COLOR0A0"), rgb(T / t_max)},
+               map ? "white: the thickness comes from the map, in the TEV" : "");
     } else {
       w.call("GX_SetChanCtrl",
              {gx("GX_COLOR0A0"), gx("GX_DISABLE"), gx("GX_SRC_REG"), gx("GX_SRC_REG"),
@@ -388,18 +471,22 @@ class Generator {
 
     int stage = 0;
     std::ostringstream note;
+    const int map_texcoord = lut ? 1 : 0;  // the map's texgen follows the LUT's
+    const int texgens = (lut ? 1 : 0) + (uses_map ? 1 : 0);
     if (lut) {
-      texture_coordinates(w, tr, light);
+      texture_coordinates(w, tr, light, texgens);
       w.declare(Declaration::Type::TexObj, "lut");
       w.call("GX_InitTexObj",
-             {Arg::address_of("lut"), Arg::identifier(lut_name), lit(variant_.lut_size), lit(1),
-              gx("GX_TF_I8"), gx("GX_CLAMP"), gx("GX_CLAMP"), gx("GX_FALSE")},
-             "The LUT: I8, linear, clamped (the clamp saturates t per pixel)");
+             {Arg::address_of("lut"), Arg::identifier(lut_array.name), lit(variant_.lut_size),
+              lit(1), gx(lut_array.format), gx("GX_CLAMP"), gx("GX_CLAMP"), gx("GX_FALSE")},
+             std::string("The LUT: ") + (lut_array.format + 6) +
+                 ", linear, clamped (the clamp saturates t per pixel)");
       w.call("GX_LoadTexObj", {Arg::address_of("lut"), gx("GX_TEXMAP0")});
     } else {
-      w.call("GX_SetNumTexGens", {lit(0)});
+      w.call("GX_SetNumTexGens", {lit(texgens)});
     }
-    const int stages = (lut ? 1 : 0) + (translucent ? 1 : 0) + 1;
+    if (uses_map) map_texture(w, *map, map_texcoord, uv_attribute(t_attribute));
+    const int stages = (lut ? 1 : 0) + (lut && uses_map ? 1 : 0) + (translucent ? 1 : 0) + 1;
     w.call("GX_SetNumTevStages", {lit(stages)});
     if (lut) {
       const int a8 = to_u8(a / (a + s));
@@ -409,6 +496,12 @@ class Generator {
       tev_stage(w, stage++, "GX_TEXCOORD0", "GX_TEXMAP0", "GX_COLORNULL",
                 {a8 ? "GX_CC_C0" : "GX_CC_ZERO", "GX_CC_ONE", "GX_CC_TEXC", "GX_CC_ZERO"}, 1,
                 "Stage 0: w = lerp(REG0, 1, lobe) = (a + s lobe) / (a + s)");
+      // The map before COLOR0 and its scale: w x map stays below 1, so nothing saturates
+      // earlier than the reference's final clamp.
+      if (uses_map)
+        tev_stage(w, stage++, "GX_TEXCOORD" + std::to_string(map_texcoord), "GX_TEXMAP1",
+                  "GX_COLORNULL", {"GX_CC_ZERO", "GX_CC_CPREV", "GX_CC_TEXC", "GX_CC_ZERO"}, 1,
+                  "Stage 1: w = w x thickness (the map in GX_TEXMAP1)");
     }
     if (translucent) {
       const int k = stage++;
@@ -418,6 +511,10 @@ class Generator {
         tev_stage(w, k, "GX_TEXCOORDNULL", "GX_TEXMAP_NULL", "GX_COLOR0A0",
                   {"GX_CC_ZERO", "GX_CC_CPREV", "GX_CC_RASC", "GX_CC_ZERO"}, st_scale / sd,
                   title + "w x COLOR0" + times);
+      } else if (uses_map) {
+        tev_stage(w, k, "GX_TEXCOORD" + std::to_string(map_texcoord), "GX_TEXMAP1", "GX_COLOR0A0",
+                  {"GX_CC_ZERO", "GX_CC_RASC", "GX_CC_TEXC", "GX_CC_ZERO"}, st_scale / sd,
+                  title + "COLOR0 x thickness (the map in GX_TEXMAP1)" + times);
       } else {
         tev_stage(w, k, "GX_TEXCOORDNULL", "GX_TEXMAP_NULL", "GX_COLOR0A0",
                   {"GX_CC_RASC", "GX_CC_ZERO", "GX_CC_ZERO", "GX_CC_ZERO"}, st_scale / sd,
@@ -432,6 +529,13 @@ class Generator {
 
     note << "light " << l << ", " << stages << (stages == 1 ? " stage" : " stages")
          << (lut ? ", 1 texture (LUT " + std::to_string(variant_.lut_size) + " texels)" : "")
+         << (uses_map ? std::string(lut ? " + " : ", 1 texture (") + "thickness map " +
+                            std::to_string(map->texture.texture.width) + "x" +
+                            std::to_string(map->texture.texture.height) + " " +
+                            map->texture.format_name + ", " +
+                            std::to_string(map->texture.texture.data.size()) + " bytes" +
+                            (lut ? "" : ")")
+                      : "")
          << ", scales: translucency x" << st_scale << ", diffuse x" << sd;
     if (xf && translucent) note << ", lobe fit max error " << fmt(fit.max_error) << " of (a+s)";
     if (trans_mag > kMaxScale) note << "; translucency over x4 saturates";
@@ -443,7 +547,7 @@ class Generator {
   // -V.L, k = -d V. t=vertex sends t itself as GX_VA_TEX0; t=texgen computes it from the raw
   // normal. Either way the texture matrix folds in the LUT's texel-centre remap
   // s = t (W-1)/W + 0.5/W (model/power_lut.h, gx-hardware.md §3.4).
-  void texture_coordinates(Writer& w, const Translucency& tr, const Light& light) {
+  void texture_coordinates(Writer& w, const Translucency& tr, const Light& light, int texgens) {
     const double n = variant_.lut_size, scale = (n - 1) / n, offset = 0.5 / n;
     std::vector<double> m(12, 0.0);
     if (variant_.t == GxVariant::TexCoord::Vertex) {
@@ -463,11 +567,28 @@ class Generator {
                   ? "Texgen: s = t (W-1)/W + 0.5/W from the CPU's t in GX_VA_TEX0"
                   : "Texgen: s = (c0 + k . N) (W-1)/W + 0.5/W from the raw normal");
     w.call("GX_LoadTexMtxImm", {Arg::identifier("lut_matrix"), gx("GX_TEXMTX0"), gx("GX_MTX2x4")});
-    w.call("GX_SetNumTexGens", {lit(1)});
+    w.call("GX_SetNumTexGens", {lit(texgens)});
     w.call("GX_SetTexCoordGen",
            {gx("GX_TEXCOORD0"), gx("GX_TG_MTX2x4"),
             gx(variant_.t == GxVariant::TexCoord::Vertex ? "GX_TG_TEX0" : "GX_TG_NRM"),
             gx("GX_TEXMTX0")});
+  }
+
+  // The thickness map's texgen and texture: (s, t) = the mesh's UV through GX_IDENTITY (the map is
+  // stored bottom row first, thickness_texture.h, so t = v needs no flip), fetched from
+  // GX_TEXMAP1, linear and clamped as the reference's CLAMP_TO_EDGE bilinear.
+  void map_texture(Writer& w, const MapArray& map, int texcoord, int uv_attr) {
+    w.call("GX_SetTexCoordGen",
+           {gx("GX_TEXCOORD", texcoord), gx("GX_TG_MTX2x4"), gx("GX_TG_TEX", uv_attr),
+            gx("GX_IDENTITY")},
+           "Texgen: (s, t) = (u, v) of the mesh, as sent in GX_VA_TEX" + std::to_string(uv_attr));
+    const TextureObject& t = map.texture.texture;
+    w.declare(Declaration::Type::TexObj, "thickness");
+    w.call("GX_InitTexObj",
+           {Arg::address_of("thickness"), Arg::identifier(map.name), lit(t.width), lit(t.height),
+            gx(map.texture.format_name), gx("GX_CLAMP"), gx("GX_CLAMP"), gx("GX_FALSE")},
+           std::string("The thickness map: ") + map.texture.format_name + ", linear, clamped");
+    w.call("GX_LoadTexObj", {Arg::address_of("thickness"), gx("GX_TEXMAP1")});
   }
 
   // lobe=xf-spec: x = max(0, N . u) with u = -+k in eye space (the sign that makes x >= 0 on

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <map>
 
-#include "model/power_lut.h"
 #include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
+#include "paths/gx/lobe_lut.h"
 #include "paths/gx/pixel_stage.h"
 #include "paths/gx/program/parser.h"
 #include "paths/gx/program/printer.h"
@@ -38,8 +38,14 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
     out.source = program_file;
   }
   out.by_material = scene_programs(out.file, scene);
-  for (const auto& passes : out.by_material) {
-    for (const PassProgram& p : passes) check_renderable(p, out.file.file, true);
+  for (size_t m = 0; m < out.by_material.size(); ++m) {
+    // A material's programs may read UVs when every mesh drawn with it has them.
+    bool has_uvs = true;
+    for (const SceneObject& o : scene.objects) {
+      if (static_cast<size_t>(o.material) == m && o.mesh.uvs.empty()) has_uvs = false;
+    }
+    for (const PassProgram& p : out.by_material[m])
+      check_renderable(p, out.file.file, true, has_uvs);
   }
   return out;
 }
@@ -50,22 +56,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// GX_TEXMAP0's texture where a program loads none (gx.md §1): the material's power LUT as I8
-// of the variant's width; a material without translucency gets the flat lobe of power 0.
-TextureObject lut_texture(const Material& m, int width) {
-  const double power = m.translucency ? m.translucency->power : 0.0;
-  const model::PowerLut lut = model::PowerLut::build(width, model::LutFormat::U8, {power});
-  std::vector<u8> row(static_cast<size_t>(width));
-  for (int i = 0; i < width; ++i)
-    row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
-  TextureObject t;
-  t.width = width;
-  t.height = 1;
-  t.format = 1;  // GX_TF_I8
-  t.data = to_tiles(1, width, 1, row);
-  return t;
 }
 
 // The printed C of one pass function, for `info --source`.
@@ -91,7 +81,8 @@ class GxPath final : public Path {
       for (const PassProgram& p : passes) texgens = std::max(texgens, p.state.texgen.num_texgens);
     }
     rasteriser_ = std::make_unique<AttributeRasteriser>(ctx, texgens);
-    for (const Material& m : s.materials) luts_.push_back(lut_texture(m, variant_.lut_size));
+    for (const Material& m : s.materials)
+      luts_.push_back(lobe_lut(m, variant_.lut_size));  // GX_TEXMAP0's fallback (gx.md §1)
     for (const SceneObject& o : s.objects) streams_.push_back(make_vertex_stream(s, o, view_));
     // Per pass and material, the state and its textures (resolved once: the scene is static).
     pixel_programs_.resize(static_cast<size_t>(programs_.passes()));
@@ -290,8 +281,6 @@ PathInfo gx_path_info() {
   };
   info.parse_variant = [](const std::string& v) { return gx::to_string(gx::parse_gx_variant(v)); };
   info.refusal = [](const Scene& scene, const std::string& v) {
-    if (scene_needs(scene).any_thickness_map || scene_needs(scene).any_ramp)
-      return std::string("no thickness maps or lobe ramps on gx yet");
     return gx::refusal(scene, gx::parse_gx_variant(v));
   };
   info.takes_program_file = true;

@@ -17,7 +17,8 @@ namespace lt::gx {
 // Vertex attributes GX_VA_POS (9) .. GX_VA_TEX7 (20), as GX_SetVtxDesc declares them: GX_NONE 0
 // or GX_DIRECT 1 (indexed data is refused: the scene's vertices are sent directly). GX_Init
 // clears the descriptor [OGC gx.c __GX_InitGX: GX_ClearVtxDesc].
-inline constexpr int kVaPos = 9, kVaNrm = 10, kVaClr0 = 11, kVaClr1 = 12, kVaTex0 = 13;
+inline constexpr int kVaPos = 9, kVaNrm = 10, kVaClr0 = 11, kVaClr1 = 12, kVaTex0 = 13,
+                     kVaTex7 = 20;
 inline constexpr int kVertexAttributes = 21;
 struct VertexDescriptor {
   std::array<u8, kVertexAttributes> type{};
@@ -28,6 +29,22 @@ struct VertexDescriptor {
     return n;
   }
   bool operator==(const VertexDescriptor&) const = default;
+};
+
+// What the scene's vertex stream sends in each GX_VA_TEXn, by the component count the program
+// gives it in GX_SetVtxAttrFmt(GX_VTXFMT0, GX_VA_TEXn, ...): GX_TEX_S is the CPU's t of the pass's
+// light (one float), GX_TEX_ST the mesh's UV (two floats, v = 0 at the map's bottom row). A
+// program that sets no format for GX_VA_TEXn gets t in GX_VA_TEX0 (gx.md §1's default, what
+// programs without a map always had) and the UV in GX_VA_TEX1..7. The format is not part of the
+// descriptor: GX_ClearVtxDesc leaves it, as it leaves the hardware's VAT.
+struct TexCoordFormats {
+  enum Kind : u8 { Unset = 0, S = 1, ST = 2 };
+  std::array<u8, kMaxTexGens> kind{};
+  bool is_uv(int n) const {
+    const u8 k = kind[static_cast<size_t>(n)];
+    return k == ST || (k == Unset && n >= 1);
+  }
+  bool operator==(const TexCoordFormats&) const = default;
 };
 
 // GX_SetZMode(enable, func, update) [OGC gx.h L2810]. GX_Init: GX_ENABLE, GX_LEQUAL, GX_TRUE.
@@ -48,6 +65,7 @@ struct GxState {
   BlendMode blend;
   ZMode z;
   VertexDescriptor vertex;
+  TexCoordFormats texcoord_formats;
 
   GxState();  // GX_Init's state
 };

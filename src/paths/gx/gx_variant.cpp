@@ -13,14 +13,14 @@ namespace {
 
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
-    "any of them with :colors=round and :lights=round-each";
+    "any of them with :colors=round, :lights=round-each and :map=rgb565";
 
 }  // namespace
 
 GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
   bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
-       seen_lights = false;
+       seen_lights = false, seen_map = false;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -65,6 +65,10 @@ GxVariant parse_gx_variant(const std::string& text) {
       if (value != "round-each" && value != "sum")
         bad("lights=" + value + " is not round-each or sum");
       v.round_each_light = value == "round-each";
+    } else if (key == "map" && !seen_map) {
+      seen_map = true;
+      if (value != "rgb565" && value != "rgba8") bad("map=" + value + " is not rgba8 or rgb565");
+      v.map_rgb565 = value == "rgb565";
     } else {
       bad("'" + key + "' is not a gx variant axis, or is given twice");
     }
@@ -85,10 +89,18 @@ std::string to_string(const GxVariant& v) {
   }
   if (v.round_colors) s += ":colors=round";
   if (v.round_each_light) s += ":lights=round-each";
+  if (v.map_rgb565) s += ":map=rgb565";
   return s;
 }
 
 std::string refusal(const Scene& scene, const GxVariant& v) {
+  if (v.lobe == GxVariant::Lobe::XfSpec) {
+    for (const Material& m : scene.materials) {
+      if (m.translucency && m.translucency->ramp)
+        return "lobe=xf-spec fits t^power in the XF, but material " + m.name +
+               "'s lobe is a ramp (a table): use t=vertex or t=texgen";
+    }
+  }
   if (v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex) return "";
   for (const Material& m : scene.materials) {
     const std::string why = model::why_t_is_not_affine_in_the_normal(scene, m);

@@ -11,6 +11,9 @@
 //   :lights=round-each  each light's XF contribution rounded before the sum, as the shader
 //                       backends do (default: summed in float and truncated once, the software
 //                       renderer)
+// One axis picks the texture format of a colour thickness map (a grey map is always GX_TF_I8):
+//   :map=rgb565         GX_TF_RGB565, 16 bits a texel (default :map=rgba8, GX_TF_RGBA8, 32 bits:
+//                       the map's 8 bits kept, as the vertex colours it replaces keep theirs)
 #pragma once
 
 #include <string>
@@ -27,6 +30,7 @@ struct GxVariant {
   int lut_size = 256;
   bool round_colors = false;
   bool round_each_light = false;
+  bool map_rgb565 = false;  // colour thickness maps as GX_TF_RGB565 instead of GX_TF_RGBA8
 
   bool operator==(const GxVariant&) const = default;
 };

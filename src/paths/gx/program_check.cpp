@@ -5,7 +5,8 @@
 
 namespace lt::gx {
 
-void check_renderable(const PassProgram& p, const std::string& file, bool has_lut_fallback) {
+void check_renderable(const PassProgram& p, const std::string& file, bool has_lut_fallback,
+                      bool has_uvs) {
   const GxState& st = p.state;
   auto fail = [&](const std::string& what) { throw InputError(file, p.name, what); };
   // A program that declares no vertex format gets the whole stream (gx.md §1's example has
@@ -25,15 +26,31 @@ void check_renderable(const PassProgram& p, const std::string& file, bool has_lu
     fail("GX_SetNumTexGens(" + std::to_string(st.texgen.num_texgens) +
          "): the emulator rasterises at most " + std::to_string(kRasterisedTexGens) +
          " texture coordinates");
+  // The XF is told only how many texture coordinates a vertex brings (libogc's __GX_XfVtxSpecs
+  // writes their count to XF 0x1008 [OGC gx.c]), not which: a GX_VA_TEXn above a gap would
+  // arrive as a lower one. Rather than guess the console's reading, a gap is refused.
+  if (declared) {
+    for (int n = 1; n < kMaxTexGens; ++n) {
+      if (st.vertex.has(kVaTex0 + n) && !st.vertex.has(kVaTex0 + n - 1))
+        fail("the vertex format has GX_VA_TEX" + std::to_string(n) + " but no GX_VA_TEX" +
+             std::to_string(n - 1) +
+             ": the XF receives texture coordinates by count, declare them from GX_VA_TEX0 up");
+    }
+  }
   for (int g = 0; g < st.texgen.num_texgens; ++g) {
     const TexGen& t = st.texgen.texgens[static_cast<size_t>(g)];
     const std::string which = "texgen GX_TEXCOORD" + std::to_string(g);
     if (t.source == 1 && !sent(kVaNrm))
       fail(which + " reads the normal, but the vertex format has no GX_VA_NRM");
-    if (t.source == 4 && !sent(kVaTex0))
-      fail(which + " reads GX_TG_TEX0, but the vertex format has no GX_VA_TEX0");
-    if (t.source > 4)
-      fail(which + " reads a texture coordinate the scene does not send (only GX_VA_TEX0)");
+    if (t.source < 4) continue;
+    const int n = t.source - 4;  // GX_TG_TEXn
+    const std::string attribute = "GX_VA_TEX" + std::to_string(n);
+    if (!sent(kVaTex0 + n))
+      fail(which + " reads GX_TG_TEX" + std::to_string(n) + ", but the vertex format has no " +
+           attribute);
+    if (st.texcoord_formats.is_uv(n) && !has_uvs)
+      fail(which + " reads the mesh's UVs (" + attribute +
+           " as GX_TEX_ST), but a mesh of this material has none");
   }
   for (int c = 0; c < st.lighting.num_channels; ++c) {
     for (int part : {c, c + 2}) {  // colour and alpha control of channel c

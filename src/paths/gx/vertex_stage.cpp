@@ -25,6 +25,7 @@ VertexStream make_vertex_stream(const Scene& scene, const SceneObject& object,
     }
     s.color.push_back(c);
   }
+  for (const glm::dvec2& uv : m.uvs) s.uv.emplace_back(uv);
   for (const Light& light : scene.lights) {
     std::vector<float> t(n, 0.0f);
     if (mat.translucency) {
@@ -57,7 +58,10 @@ void run_vertex_stage(const GxState& state, const VertexStream& stream, size_t l
     TexGenInputs in;
     in.position = stream.position[v];
     in.normal = stream.normal[v];
-    in.texcoords[0] = {t ? (*t)[v] : 0.0f, 0.0f};
+    const glm::vec2 uv = v < stream.uv.size() ? stream.uv[v] : glm::vec2(0.0f);
+    for (int c = 0; c < kMaxTexGens; ++c)
+      in.texcoords[static_cast<size_t>(c)] =
+          state.texcoord_formats.is_uv(c) ? uv : glm::vec2(t ? (*t)[v] : 0.0f, 0.0f);
     for (int g = 0; g < out.num_texgens; ++g)
       out.texcoords[v][static_cast<size_t>(g)] = generate_texcoord(state.texgen, g, in);
   }

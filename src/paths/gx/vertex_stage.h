@@ -2,7 +2,8 @@
 // channel colours and its generated texture coordinates, per vertex. The inputs are what the
 // scene sends as the vertex stream (gx.md §2: the scene supplies geometry, normals, vertex
 // colours and matrices): camera-relative positions and world-space normals as GX_F32, the
-// mesh's colour as GX_RGBA8 CLR0, and in GX_VA_TEX0 the pass's t.
+// mesh's colour as GX_RGBA8 CLR0, and in its texture coordinates the pass's t (GX_TEX_S) or the
+// mesh's UV (GX_TEX_ST), as the program's vertex format names them (gx_state.h TexCoordFormats).
 #pragma once
 
 #include <array>
@@ -23,6 +24,8 @@ struct VertexStream {
   // GX_VA_TEX0 per light: t = dot(V, -H) unsaturated, computed on the CPU in double (the part
   // of the term that stays on the CPU in a port; the sampler's clamp saturates it per pixel).
   std::vector<std::vector<float>> t_per_light;
+  // The mesh's UVs as GX_F32 (v = 0 at the map's bottom row); empty when the mesh has none.
+  std::vector<glm::vec2> uv;
 };
 VertexStream make_vertex_stream(const Scene& scene, const SceneObject& object,
                                 const SceneView& view);

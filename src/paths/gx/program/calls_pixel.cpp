@@ -38,8 +38,10 @@ void add_pixel_calls(CallTable& table) {
          integer(G::TexFormat, 0, 14), integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2),
          integer(G::Bool, 0, 1)},
         [](Machine& m) {
-          if (m.i(4) != 1 && m.i(4) != 3)
-            m.fail_arg(4, "texture format not modelled (GX_TF_I8 and GX_TF_IA8 are)");
+          if (!is_modelled_format(m.u(4)))
+            m.fail_arg(4,
+                       "texture format not modelled (GX_TF_I8, GX_TF_IA8, GX_TF_RGB565 and "
+                       "GX_TF_RGBA8 are)");
           if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
           TexObject& t = m.tex(0);
           t.array = m.name(1);
@@ -93,8 +95,6 @@ void add_pixel_calls(CallTable& table) {
           if (m.i(1) > 1)
             m.fail_arg(1, "indexed vertex data is not modelled (the scene sends GX_DIRECT)");
           if (m.i(0) == kVaClr1) m.fail_arg(0, "the scene has one vertex colour (GX_VA_CLR0)");
-          if (m.i(0) > kVaTex0)
-            m.fail_arg(0, "the scene sends one texture coordinate (GX_VA_TEX0)");
           m.state.vertex.type[m.u(0)] = m.u(1);
         }}},
       {"GX_SetVtxAttrFmt",
@@ -104,14 +104,19 @@ void add_pixel_calls(CallTable& table) {
           // The emulator feeds what the scene has, in one format: check that the program
           // declares that format, so exported code matches what was emulated.
           const long long attr = m.i(1), cnt = m.i(2), type = m.i(3);
+          const bool texcoord = attr >= kVaTex0 && attr <= kVaTex7;
           const bool ok = (attr == kVaPos && cnt == 1 && type == 4) ||
                           (attr == kVaNrm && cnt == 0 && type == 4) ||
-                          (attr == kVaClr0 && (type == 5 || type == 1)) ||
-                          (attr == kVaTex0 && type == 4);
-          if (!ok)
+                          (attr == kVaClr0 && (type == 5 || type == 1)) || (texcoord && type == 4);
+          if (!ok || (texcoord && cnt > 1))
             m.fail_call(
                 "the scene sends positions and normals as GX_F32 XYZ, colours as "
-                "GX_RGBA8/GX_RGB8 and texture coordinates as GX_F32");
+                "GX_RGBA8/GX_RGB8 and texture coordinates as GX_F32 GX_TEX_S or GX_TEX_ST");
+          // GX_TEX_S (0) carries the CPU's t, GX_TEX_ST (1) the mesh's UV (gx_state.h). The
+          // scene draws with GX_VTXFMT0, so only that format's choice is what it sends.
+          if (texcoord && m.i(0) == 0)
+            m.state.texcoord_formats.kind[static_cast<size_t>(attr - kVaTex0)] =
+                cnt == 0 ? TexCoordFormats::S : TexCoordFormats::ST;
         }}},
   });
 }

@@ -1,0 +1,64 @@
+#include "paths/gx/thickness_texture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace lt::gx {
+
+namespace {
+
+// The 8-bit texel of a thickness in [0, scale], rounded to nearest: an 8-bit map's k / 255 comes
+// back as k exactly.
+u8 to_byte(double v, double scale) {
+  return static_cast<u8>(std::lround(std::clamp(v / scale, 0.0, 1.0) * 255.0));
+}
+
+}  // namespace
+
+ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb, bool grey,
+                                   bool rgb565) {
+  LT_CHECK(width >= 1 && width <= kMaxTextureSize && height >= 1 && height <= kMaxTextureSize,
+           "the caller refuses thickness maps over 1024 texels a side");
+  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+  LT_CHECK(rgb.size() == n * 3, "thickness texels must be width x height x 3");
+  ThicknessTexture out;
+  const float top = rgb.empty() ? 0.0f : *std::max_element(rgb.begin(), rgb.end());
+  out.scale = top > 1.0f ? static_cast<double>(top) : 1.0;
+  const u8 format = grey ? kTexFormatI8 : rgb565 ? kTexFormatRGB565 : kTexFormatRGBA8;
+  out.format_name = grey ? "GX_TF_I8" : rgb565 ? "GX_TF_RGB565" : "GX_TF_RGBA8";
+  std::vector<u8> row_major;
+  row_major.reserve(n * (grey ? 1 : rgb565 ? 2 : 4));
+  // Texel i of `rgb` is memory row y = i / W: bottom row first, so t = v (the header).
+  for (size_t i = 0; i < n; ++i) {
+    const float* t = &rgb[i * 3];
+    if (grey) {
+      row_major.push_back(to_byte(t[0], out.scale));
+    } else if (rgb565) {
+      const u16 v = nearest_rgb565(t[0] / out.scale, t[1] / out.scale, t[2] / out.scale);
+      row_major.push_back(static_cast<u8>(v >> 8));  // stored big-endian (texture_unit.h)
+      row_major.push_back(static_cast<u8>(v & 0xff));
+    } else {
+      for (int c = 0; c < 3; ++c) row_major.push_back(to_byte(t[c], out.scale));
+      row_major.push_back(255);
+    }
+  }
+  TextureObject& tex = out.texture;
+  tex.width = width;
+  tex.height = height;
+  tex.format = format;
+  tex.wrap_s = tex.wrap_t = 0;  // GX_CLAMP, as the reference's CLAMP_TO_EDGE
+  tex.linear = true;
+  tex.data = to_tiles(format, width, height, row_major);
+  return out;
+}
+
+std::optional<MapTexels> thickness_map_texels(const Material& material) {
+  if (!material.translucency || material.translucency->thickness_source != ThicknessSource::Texture)
+    return std::nullopt;
+  const TextureMap& map = *material.translucency->thickness_map;
+  return MapTexels{map.texture.width, map.texture.height, &map.texture.texels, map.grey};
+}
+
+}  // namespace lt::gx

@@ -1,0 +1,51 @@
+// A material's thickness map as the texture GX_TEXMAP1 holds (the gx path's extension of gx.md
+// §1, where GX_TEXMAP0 holds the power LUT): the format the hardware offers for it, the texels
+// quantised to that format, in GX tile order.
+//
+// Format: a grey map (r = g = b in every texel) is GX_TF_I8, 8 bits a texel, replicated into
+// TEXC = (i, i, i) [DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel, case I8]. A colour map
+// is GX_TF_RGBA8 by default: 32 bits a texel, the 8 bits of an 8-bit map kept exactly, as the
+// vertex colours it replaces keep theirs (GX_RGBA8 CLR0); alpha is unused (255). `rgb565` picks
+// GX_TF_RGB565 instead: half the memory, 5/6/5 bits, each field expanded to 8 by bit
+// replication, so a texel moves by up to 4 (r, b) or 2 (g) of 255.
+//
+// Orientation: the map's texels are stored bottom row first (v = 0, OpenGL's convention, as
+// model/texture_sampling.h keeps them), and GX's t = 0 is the first row in memory, so with the
+// identity texgen (GX_IDENTITY) t = v addresses the same texel a GL path samples: the flip is in
+// the data, done once here, not a texture matrix per vertex.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "paths/gx/texture_unit.h"
+#include "scene/scene.h"
+
+namespace lt::gx {
+
+struct ThicknessTexture {
+  TextureObject texture;  // tiled, GX_CLAMP both ways, linear
+  // The thickness a texel of 255 stands for: 1 when every texel is at most 1 (an 8-bit map is
+  // stored exactly), else the largest texel component (a float map over 1: the texels are
+  // normalised to it and the generator moves it into the light's magnitude).
+  double scale = 1;
+  const char* format_name = "GX_TF_I8";  // the GX_TF_* name for the program
+};
+
+// `rgb` holds width x height texels of three floats, row 0 the image's bottom row; every value
+// is finite and >= 0 (the scene checked it). Width and height are 1..1024 (the caller refuses
+// larger maps with the scene key).
+ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb, bool grey,
+                                   bool rgb565);
+
+// A material's thickness map as the scene loaded it (scene/thickness_map.h): float rgb texels,
+// row 0 the image's bottom row; empty when the material's thickness is not a map.
+struct MapTexels {
+  int width = 0, height = 0;
+  const std::vector<float>* rgb = nullptr;
+  bool grey = false;
+};
+std::optional<MapTexels> thickness_map_texels(const Material& material);
+
+}  // namespace lt::gx

@@ -1,0 +1,173 @@
+// Program files with a second texture map (the gx path's thickness-map extension of gx.md §1):
+// a GX_TEXMAP1 texture in RGBA8, RGB565 or I8, sampled at the mesh's UV sent as a GX_TEX_ST
+// texture coordinate through GX_IDENTITY, renders the texels the tile order and the decode say,
+// the right way up (v = 0 at the bottom, gx_state.h); the program checks refuse what the stream
+// cannot feed. One process per test (GL).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "paths/gx/texture_unit.h"
+#include "render/session.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+// A quad filling the middle of a 64x48 image, seen head-on; with `uvs`, each vertex's UV is its
+// position mapped from [-1, 1] to [0, 1] (u right, v up).
+Scene quad_scene(const test::TempDir& dir, bool uvs) {
+  test::write_file(dir / "quad.obj", test::quad_obj());
+  const std::string text = R"({
+    "image": { "width": 64, "height": 48 },
+    "camera": { "eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 50 },
+    "materials": { "m": { "albedo": [1, 1, 1] } },
+    "lights": [ { "type": "directional", "direction": [0, 0, -1], "intensity": 1 } ],
+    "objects": [ { "mesh": "quad.obj", "material": "m" } ] })";
+  Scene scene = parse_scene(text, (dir / "quad.json").string(), dir.path());
+  if (uvs) {
+    TriangleMesh& m = scene.objects[0].mesh;
+    m.uvs.clear();
+    for (const glm::dvec3& p : m.positions) m.uvs.emplace_back((p.x + 1) / 2, (p.y + 1) / 2);
+  }
+  return scene;
+}
+
+std::string byte_array(const std::string& name, const std::vector<gx::u8>& bytes) {
+  std::string s = "u8 " + name + "[" + std::to_string(bytes.size()) + "] ATTRIBUTE_ALIGNED(32) = {";
+  for (size_t i = 0; i < bytes.size(); ++i) s += (i ? ", " : "") + std::to_string(bytes[i]);
+  return s + "};\n";
+}
+
+// One stage showing GX_TEXMAP1's texel (GX_REPLACE: TEXC, TEXA) at the UV in GX_VA_TEX0.
+std::string map_program(const std::vector<gx::u8>& tiles, const std::string& format) {
+  return byte_array("map", tiles) + R"(GXTexObj tex;
+GX_ClearVtxDesc();
+GX_SetVtxDesc(GX_VA_POS, GX_DIRECT);
+GX_SetVtxDesc(GX_VA_TEX0, GX_DIRECT);
+GX_SetVtxAttrFmt(GX_VTXFMT0, GX_VA_POS, GX_POS_XYZ, GX_F32, 0);
+GX_SetVtxAttrFmt(GX_VTXFMT0, GX_VA_TEX0, GX_TEX_ST, GX_F32, 0);
+GX_SetNumChans(0);
+GX_SetNumTexGens(1);
+GX_SetTexCoordGen(GX_TEXCOORD0, GX_TG_MTX2x4, GX_TG_TEX0, GX_IDENTITY);
+GX_InitTexObj(&tex, map, 2, 2, )" +
+         format + R"(, GX_CLAMP, GX_CLAMP, GX_FALSE);
+GX_LoadTexObj(&tex, GX_TEXMAP1);
+GX_SetNumTevStages(1);
+GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORD0, GX_TEXMAP1, GX_COLORNULL);
+GX_SetTevOp(GX_TEVSTAGE0, GX_REPLACE);
+)";
+}
+
+std::array<int, 3> pixel(const Image& img, int x, int y) {
+  const float* p = img.at(x, y);
+  return {static_cast<int>(std::lround(p[0] * 255)), static_cast<int>(std::lround(p[1] * 255)),
+          static_cast<int>(std::lround(p[2] * 255))};
+}
+
+// The four corner pixels of the covered quad: (left, bottom), (right, bottom), (left, top),
+// (right, top) in the image (row 0 at the top). Their UVs lie within a quarter of the map of its
+// corners, beyond the texel centres of a 2 x 2 map, so the clamped bilinear gives each corner's
+// texel exactly.
+std::array<std::array<int, 3>, 4> corners(const Image& img) {
+  int x0 = img.width, x1 = -1, y0 = img.height, y1 = -1;
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      if (img.at(x, y)[3] < 0.5f) continue;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  }
+  EXPECT_GT(x1 - x0, 10);
+  return {pixel(img, x0, y1), pixel(img, x1, y1), pixel(img, x0, y0), pixel(img, x1, y0)};
+}
+
+// Texels (r, g, b): (0, 0) = (200, 10, 20), (1, 0) = (30, 220, 40), (0, 1) = (50, 60, 230),
+// (1, 1) = (250, 250, 5); row 0 is memory row 0, GX's t = 0, the map's v = 0: the bottom.
+const std::array<std::array<int, 3>, 4> kTexels = {
+    {{200, 10, 20}, {30, 220, 40}, {50, 60, 230}, {250, 250, 5}}};
+
+TEST(GxMapProgram, Rgba8MapInTexmap1ShowsItsTexelsTheRightWayUp) {
+  // RGBA8 2 x 2 (one 64-byte tile): texel (x, y) is tile texel y*4 + x; (a, r) at twice that,
+  // (g, b) 32 bytes further.
+  std::vector<gx::u8> tiles(64, 0);
+  const int slot[4] = {0, 1, 4, 5};
+  for (int i = 0; i < 4; ++i) {
+    tiles[static_cast<size_t>(slot[i] * 2)] = 255;
+    tiles[static_cast<size_t>(slot[i] * 2 + 1)] = static_cast<gx::u8>(kTexels[i][0]);
+    tiles[static_cast<size_t>(32 + slot[i] * 2)] = static_cast<gx::u8>(kTexels[i][1]);
+    tiles[static_cast<size_t>(32 + slot[i] * 2 + 1)] = static_cast<gx::u8>(kTexels[i][2]);
+  }
+  test::TempDir dir;
+  test::write_file(dir / "map.c", map_program(tiles, "GX_TF_RGBA8"));
+  const Image img = render_scene(quad_scene(dir, true), "gx", "", 0, 0, {(dir / "map.c").string()});
+  EXPECT_EQ(corners(img), kTexels);
+}
+
+TEST(GxMapProgram, Rgb565AndI8MapsDecodeAsTheHardwareExpands) {
+  // RGB565 2 x 2 (one 32-byte tile), big-endian: (0, 0) = 0xF800 red, (1, 0) = 0x07E0 green,
+  // (0, 1) = 0x001F blue, (1, 1) = 0x8410 (16, 32, 16) -> (132, 130, 132).
+  std::vector<gx::u8> rgb565(32, 0);
+  rgb565[0] = 0xF8;
+  rgb565[2] = 0x07, rgb565[3] = 0xE0;
+  rgb565[9] = 0x1F;  // tile texel 4 (x 0, y 1) at byte 8
+  rgb565[10] = 0x84, rgb565[11] = 0x10;
+  test::TempDir dir;
+  const Scene scene = quad_scene(dir, true);
+  test::write_file(dir / "rgb565.c", map_program(rgb565, "GX_TF_RGB565"));
+  const std::array<std::array<int, 3>, 4> expanded = {
+      {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {132, 130, 132}}};
+  EXPECT_EQ(corners(render_scene(scene, "gx", "", 0, 0, {(dir / "rgb565.c").string()})), expanded);
+  // I8 2 x 2 (one 8x4 tile of 32 bytes): (x, y) at y*8 + x.
+  std::vector<gx::u8> i8(32, 0);
+  i8[0] = 17, i8[1] = 99, i8[8] = 180, i8[9] = 254;
+  test::write_file(dir / "i8.c", map_program(i8, "GX_TF_I8"));
+  const std::array<std::array<int, 3>, 4> grey = {
+      {{17, 17, 17}, {99, 99, 99}, {180, 180, 180}, {254, 254, 254}}};
+  EXPECT_EQ(corners(render_scene(scene, "gx", "", 0, 0, {(dir / "i8.c").string()})), grey);
+}
+
+// What the stream cannot feed is refused with the file and the pass, exit 2, nothing written.
+void expect_refused(const std::string& program, bool uvs, const std::string& message) {
+  test::TempDir dir;
+  const Scene scene = quad_scene(dir, uvs);
+  test::write_file(dir / "p.c", program);
+  try {
+    render_scene(scene, "gx", "", 0, 0, {(dir / "p.c").string()});
+    ADD_FAILURE() << "accepted: " << message;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("p.c"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GxMapProgram, UvsOfAMeshWithoutThemAreRefused) {
+  const std::string p = map_program(std::vector<gx::u8>(64, 0), "GX_TF_RGBA8");
+  expect_refused(p, false,
+                 "texgen GX_TEXCOORD0 reads the mesh's UVs (GX_VA_TEX0 as GX_TEX_ST), but a mesh "
+                 "of this material has none");
+}
+
+TEST(GxMapProgram, ATexCoordAboveAGapIsRefused) {
+  std::string p = map_program(std::vector<gx::u8>(64, 0), "GX_TF_RGBA8");
+  // Move the UV to GX_VA_TEX1 with no GX_VA_TEX0: the XF counts texture coordinates.
+  for (const std::string from : {"GX_VA_TEX0", "GX_TG_TEX0"}) {
+    std::string to = from;
+    to.back() = '1';
+    for (size_t at; (at = p.find(from)) != std::string::npos;) p.replace(at, from.size(), to);
+  }
+  expect_refused(p, true, "the vertex format has GX_VA_TEX1 but no GX_VA_TEX0");
+}
+
+TEST(GxMapProgram, AnUnloadedTexmap1AndAnUnmodelledFormatAreRefused) {
+  std::string p = map_program(std::vector<gx::u8>(64, 0), "GX_TF_RGBA8");
+  std::string unloaded = p;
+  unloaded.replace(unloaded.find("GX_LoadTexObj(&tex, GX_TEXMAP1);"), 32, "");
+  expect_refused(unloaded, true, "TEV stage 0 fetches GX_TEXMAP1, which holds no texture");
+  std::string cmpr = p;
+  cmpr.replace(cmpr.find("GX_TF_RGBA8"), 11, "GX_TF_CMPR");
+  expect_refused(cmpr, true, "texture format not modelled");
+}
+
+}  // namespace
+}  // namespace lt
