@@ -18,8 +18,10 @@ scripts/bake_demo_meshes.sh "$bin"
 # The talk's parameter figures rebuilt on the teapot (issue 13, scenes/figures/): one labelled
 # row per scene in out/figures/contact.png, each pair on adjacent rows (name order): fig14
 # ambient, fig15 scale, fig16 power, fig17 distortion, fig20/21 grey and red thickness, fig22
-# the coloured cubes.
-"$bin" bench scenes/figures/*.json --paths reference -o out/figures --quiet "$@"
+# the coloured cubes. They are pictures, not timings: the fewest frames bench allows (and no
+# "$@", whose --frames would clash).
+"$bin" bench scenes/figures/*.json --paths reference --frames 10 --warmup 0 --min-time 0 \
+  -o out/figures --quiet
 # A glTF asset as the whole scene (issue 14): the baked blob with KHR_materials_volume,
 # diffuse transmission and punctual lights (scripts/make_gltf_demo.py made it).
 "$bin" bench scenes/gltf/blob.glb -o out/gltf --quiet "$@"
