@@ -57,6 +57,9 @@ Action add_bench(CLI::App& app) {
       ->check(CLI::Range(1, 64));
   sub->add_option("-o,--output", *out, "Output directory")->required();
   sub->add_flag("--quiet", o->quiet, "No progress lines");
+  sub->add_option("--profile", o->profile,
+                  "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
+                  "drawn in additive passes (the cost column says how many)");
   return [o, scenes, paths, out, lp_threads, compare_with]() -> int {
     o->out_dir = *out;
     // The earlier report is read first: a bad one fails before the bench runs.

@@ -17,7 +17,10 @@ Action add_info(CLI::App& app) {
   auto* sub = app.add_subcommand("info", "What a scene needs and what each path builds for it");
   sub->add_option("SCENE", *scene_path, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_flag("--source", *show_source, "Also print every generated program");
-  return [scene_path, show_source]() -> int {
+  auto profile = std::make_shared<std::string>();
+  sub->add_option("--profile", *profile,
+                  "arbfp: the pass plan for a profile (ps_2_0 ...): which lights each pass draws");
+  return [scene_path, show_source, profile]() -> int {
     const Scene scene = load_scene(*scene_path);
     const SceneNeeds n = scene_needs(scene);
     std::ostream& o = std::cout;
@@ -55,7 +58,9 @@ Action add_info(CLI::App& app) {
     RenderSession session(scene, 1, 1);
     for (const PathInfo& p : all_paths()) {
       const std::string v = resolve_variant(p, "");
-      auto path = session.build(p, v);
+      PathOptions options;
+      if (p.takes_profile) options.profile = *profile;
+      auto path = session.build(p, v, options);
       o << "path " << p.name << " (" << v << "):\n";
       for (const BuiltStage& s : path->stages()) {
         o << "  [" << s.kind << "] " << s.name << "\n";

@@ -10,7 +10,7 @@ namespace lt::cli {
 
 namespace {
 struct RenderArgs {
-  std::string scene, path, variant, output, program, camera;
+  std::string scene, path, variant, output, program, camera, profile;
   int width = 0, height = 0;
 };
 
@@ -41,6 +41,9 @@ Action add_render(CLI::App& app) {
   sub->add_option("--program", a->program,
                   "gx: a program file of libogc calls that replaces the generated programs "
                   "(e.g. one written by `ltrender export gx`)");
+  sub->add_option("--profile", a->profile,
+                  "arbfp: a profile the programs must fit (ps_2_0, ps_2_x, arbfp1-min, vs_2_0, "
+                  "arbvp1-min); a material over it is drawn in additive passes that each fit");
   sub->footer(path_help());
   return [a]() -> int {
     // Validate everything cheap before the scene's meshes are read.
@@ -50,6 +53,7 @@ Action add_render(CLI::App& app) {
     if (!a->program.empty() && !info.takes_program_file)
       throw InputError("--program", a->program,
                        "path " + info.name + " takes no program file (the gx path does)");
+    check_profile_option(info, a->profile);
     // The options' size, before the meshes are read when both are given; with one, the other
     // side is the scene's. Their error names the options, not the scene's `image` key.
     const char* const size_options = "--width/--height";
@@ -67,8 +71,8 @@ Action add_render(CLI::App& app) {
       const std::string why = info.refusal(scene, variant);
       if (!why.empty()) throw InputError("--variant", variant, info.name + ": " + why);
     }
-    const Image img =
-        render_scene(scene, info.name, variant, a->width, a->height, PathOptions{a->program});
+    const Image img = render_scene(scene, info.name, variant, a->width, a->height,
+                                   PathOptions{a->program, a->profile});
     write_image(a->output, img);
     return 0;
   };

@@ -20,6 +20,8 @@ namespace lt {
 // What the user gave beyond the scene and the variant (validated by the path that takes it).
 struct PathOptions {
   std::string program_file;  // gx: a program file that replaces the generated programs
+  // arbfp: a profile (ps_2_0 ...) the programs must fit; over it, lights go into more passes.
+  std::string profile;
 };
 
 // What a path renders with: the scene, a current context at the output size, the uploaded
@@ -105,8 +107,9 @@ struct PathInfo {
   // Why `variant` cannot be exact for this scene (empty when it can): `render` refuses it with
   // this message, bench and the tests skip it and say why.
   std::function<std::string(const Scene& scene, const std::string& variant)> refusal = {};
-  // Whether the path takes PathOptions::program_file.
+  // Whether the path takes PathOptions::program_file, PathOptions::profile.
   bool takes_program_file = false;
+  bool takes_profile = false;
   PathRole role = PathRole::Port;
   // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene against a
   // profile (empty: the path's default), prints a table or JSON, and returns true when it fits.

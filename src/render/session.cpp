@@ -24,6 +24,12 @@ int RenderSession::checked(const Scene& scene, int width, int height) {
   return width;
 }
 
+void check_profile_option(const PathInfo& path, const std::string& profile) {
+  if (!profile.empty() && !path.takes_profile)
+    throw InputError("--profile", profile,
+                     "path " + path.name + " takes no profile (the arbfp path does)");
+}
+
 Image render_scene(const Scene& scene, const std::string& path_name, const std::string& variant,
                    int width, int height, const PathOptions& options) {
   const PathInfo& info = find_path(path_name);
@@ -31,6 +37,7 @@ Image render_scene(const Scene& scene, const std::string& path_name, const std::
   if (!options.program_file.empty() && !info.takes_program_file)
     throw InputError("--program", options.program_file,
                      "path " + info.name + " takes no program file (the gx path does)");
+  check_profile_option(info, options.profile);
   RenderSession session(scene, width > 0 ? width : scene.width, height > 0 ? height : scene.height);
   auto path = session.build(info, v, options);
   path->frame();

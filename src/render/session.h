@@ -49,6 +49,9 @@ class RenderSession {
   gl::SceneGeometry geometry_;
 };
 
+// Throws InputError("--profile", ...) when a profile is given to a path that takes none.
+void check_profile_option(const PathInfo& path, const std::string& profile);
+
 // Renders one frame of `path_name` (with `variant`, empty for the default) at the scene's size
 // unless width/height > 0 are given.
 Image render_scene(const Scene& scene, const std::string& path_name, const std::string& variant,

@@ -20,6 +20,13 @@ namespace lt {
 
 namespace {
 
+// --profile goes to the paths that take one (arbfp splits into passes); the others run as ever.
+PathOptions profile_options(const PathInfo& p, const BenchOptions& o) {
+  PathOptions out;
+  if (p.takes_profile) out.profile = o.profile;
+  return out;
+}
+
 using Clock = std::chrono::steady_clock;
 
 // Each figure a path reports, over the timed frames.
@@ -121,7 +128,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           row.scene = sname;
           row.path = p->name;
           row.variant = v.name;
-          auto path = session.build(*p, v.name);
+          auto path = session.build(*p, v.name, profile_options(*p, o));
           row.at_scene_size = time_frames(*path, o);
           row.cost = path->cost();
           const Image img = path->result();
@@ -162,7 +169,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       for (BenchRow& row : scene_rows) {
         if (row.path == flat.name) continue;
         const PathInfo& p = find_path(row.path);
-        auto path = session.build(p, row.variant);
+        auto path = session.build(p, row.variant, profile_options(p, o));
         count_work(row, *path);
         StatSamples stats;
         const InterleavedTiming t = time_interleaved(

@@ -27,6 +27,7 @@ struct BenchOptions {
   std::string llvmpipe_threads = "as the environment says";  // for the report (--lp-threads)
   int wide_width = 1280, wide_height = 720;
   bool quiet = false;
+  std::string profile;  // --profile: the paths that take one split their programs into passes
 };
 
 struct FrameTiming {

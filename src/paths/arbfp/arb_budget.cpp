@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
+#include "paths/arbfp/arb_passes.h"
 #include "paths/path.h"
 
 namespace lt::budget {
@@ -56,6 +57,22 @@ void add_arbfp(const Scene& scene, const std::string& variant, BudgetReport& r) 
   }
 }
 
+void add_pass_plan(const Scene& scene, const std::string& variant, const std::string& profile,
+                   BudgetReport& r) {
+  const arbfp::PowVariant v = arbfp::parse_variant(variant);
+  try {
+    for (size_t m : used_materials(scene)) {
+      const Material& mat = scene.materials[m];
+      for (const arbfp::Pass& p : arbfp::plan_passes(scene, mat, v, profile).passes) {
+        r.pass_plan.push_back({mat.name, arbfp::describe(p), p.vertex_counts, p.fragment_counts});
+      }
+    }
+  } catch (const InputError& e) {
+    r.pass_plan.clear();
+    r.pass_plan_error = e.what();
+  }
+}
+
 }  // namespace
 
 bool BudgetReport::fits() const {
@@ -90,6 +107,7 @@ BudgetReport run_budget(const Scene& scene, const std::string& path, const std::
   }
   r.variant = resolve_variant(info, variant);
   add_arbfp(scene, r.variant, r);
+  add_pass_plan(scene, r.variant, chosen.name, r);
   for (CountedProgram& p : r.programs) {
     const Profile& prof =
         p.counts.kind == ProgramKind::Fragment ? *r.fragment_profile : *r.vertex_profile;
@@ -150,6 +168,14 @@ std::string format_table(const BudgetReport& r) {
       s << "\n";
     }
   }
+  s << "\npass plan for render --profile " << r.fragment_profile->name << ":";
+  if (!r.pass_plan_error.empty()) s << " none: " << r.pass_plan_error;
+  s << "\n";
+  for (const PlannedPass& p : r.pass_plan) {
+    s << "  material " << p.material << ": " << p.lights << ": fragment " << p.fragment.alu
+      << " ALU + " << p.fragment.tex << " TEX, " << p.fragment.temporaries << " temps, "
+      << p.fragment.parameters << " params; vertex " << p.vertex.instructions() << " ALU\n";
+  }
   s << "\n" << (r.fits() ? "fits" : "OVER BUDGET: " + r.first_overrun()) << "\n";
   return s.str();
 }
@@ -189,6 +215,21 @@ nlohmann::json to_json(const BudgetReport& r) {
                               {"total", {{"alu", t.total.alu}, {"tex", t.total.tex}}},
                               {"per_light", per}});
   }
+  j["passes"] = nlohmann::json::array();
+  for (const PlannedPass& p : r.pass_plan) {
+    j["passes"].push_back(
+        {{"material", p.material},
+         {"lights", p.lights},
+         {"fragment",
+          {{"alu", p.fragment.alu},
+           {"tex", p.fragment.tex},
+           {"temporaries", p.fragment.temporaries},
+           {"parameters", p.fragment.parameters}}},
+         {"vertex",
+          {{"instruction_slots", p.vertex.instructions() + (p.vertex.position_invariant ? 4 : 0)},
+           {"temporaries", p.vertex.temporaries}}}});
+  }
+  if (!r.pass_plan_error.empty()) j["passes_error"] = r.pass_plan_error;
   return j;
 }
 

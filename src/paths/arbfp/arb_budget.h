@@ -32,12 +32,22 @@ struct TermCost {
   Cost total;
 };
 
+// One pass of a material's pass plan for the profile (arb_passes.h).
+struct PlannedPass {
+  std::string material, lights;  // lights: "lights 0-4 + ambient"
+  ProgramCounts vertex, fragment;
+};
+
 struct BudgetReport {
   std::string scene, path, variant;
   const Profile* fragment_profile = nullptr;
   const Profile* vertex_profile = nullptr;
   std::vector<CountedProgram> programs;
   std::vector<TermCost> term_costs;
+  // The passes `render --profile` draws (one per material when its programs fit); empty with
+  // pass_plan_error set when some light does not fit even alone.
+  std::vector<PlannedPass> pass_plan;
+  std::string pass_plan_error;
 
   bool fits() const;
   // "material marble: fragment program: 70 ALU instructions > 64 (ps_2_0)"; empty when it fits.

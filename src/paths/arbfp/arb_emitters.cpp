@@ -93,26 +93,31 @@ Reg declare_orthographic_view(ir::Block& decls, const Scene& scene) {
   return decls.param("V", vec4(-scene.camera.forward(), 0));
 }
 
-Reg declare_light_vector(ir::Block& decls, const Scene& scene, size_t light) {
-  const Light& l = scene.lights[light];
-  const std::string prefix = "light" + std::to_string(light) + "_";
+LightList scene_lights(const Scene& scene, size_t first_light) {
+  LightList out{scene.lights, {}, scene.camera.eye};
+  for (size_t i = 0; i < scene.lights.size(); ++i) out.scene_index.push_back(first_light + i);
+  return out;
+}
+
+Reg declare_light_vector(ir::Block& decls, const LightList& lights, size_t light) {
+  const Light& l = lights[light];
+  const std::string prefix = lights.name(light) + "_";
   if (l.type == Light::Type::Directional) {
     return decls.param(prefix + "L", vec4(-l.direction, 0), "-direction");
   }
-  return decls.param(prefix + "position", vec4(l.position - scene.camera.eye, 0),
-                     "camera-relative");
+  return decls.param(prefix + "position", vec4(l.position - lights.eye, 0), "camera-relative");
 }
 
-std::array<double, 4> light_scales(const Scene& scene, size_t group) {
+std::array<double, 4> light_scales(const LightList& lights, size_t group) {
   std::array<double, 4> s = {0, 0, 0, 0};
-  for (size_t i = group * 4; i < std::min(scene.lights.size(), group * 4 + 4); ++i) {
-    s[i % 4] = scene.lights[i].translucency_scale;
+  for (size_t i = group * 4; i < std::min(lights.size(), group * 4 + 4); ++i) {
+    s[i % 4] = lights[i].translucency_scale;
   }
   return s;
 }
 
-Reg declare_scale(ir::Block& decls, const Scene& scene, size_t group) {
-  const std::array<double, 4> s = light_scales(scene, group);
+Reg declare_scale(ir::Block& decls, const LightList& lights, size_t group) {
+  const std::array<double, 4> s = light_scales(lights, group);
   return decls.param("scale" + std::to_string(group), ir::vec4(s[0], s[1], s[2], s[3]),
                      "s per light");
 }
@@ -181,10 +186,10 @@ void emit_view_vector(ir::Block& code, const Shading& s) {
   emit_normalize(code, s.V, -s.P, vertex, s.guard);
 }
 
-Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, size_t light,
+Reg emit_light_direction(ir::Block& code, const Shading& s, const LightList& lights, size_t light,
                          const Reg& light_vector, bool distance_zero_guard) {
-  const std::string name = "# light " + std::to_string(light);
-  if (scene.lights[light].type == Light::Type::Directional) {
+  const std::string name = "# light " + std::to_string(lights.scene_index[light]);
+  if (lights[light].type == Light::Type::Directional) {
     code.text(name + ": directional\n");
     return light_vector;
   }
@@ -213,20 +218,34 @@ void emit_t(ir::Block& code, const Shading& s, const Reg& L, bool normalize_h, c
 }
 
 // One MUL per bit after the leading one, plus one per set bit; no extra register (t stays in
-// tv[g]). Both program kinds have MUL and MOV.
+// tv[g]). Both program kinds have MUL, MAD, ADD and MOV.
 void emit_mul_chain(ir::Block& code, unsigned long k, const std::vector<Reg>& tv,
-                    const std::vector<Reg>& lobe, size_t lights) {
+                    const std::vector<Reg>& lobe, size_t lights, const std::vector<Reg>& addend) {
   int top = 0;
   while ((k >> (top + 1)) != 0) ++top;
   for (size_t g = 0; g < tv.size(); ++g) {
     const Reg dst = lobe[g].masked(group_mask(g, lights));
+    std::vector<std::pair<Reg, Reg>> steps;  // the factors of each MUL
     Reg cur = tv[g];
     for (int b = top - 1; b >= 0; --b) {
-      code.op(Op::MUL, dst, {cur, cur});
+      steps.push_back({cur, cur});
       cur = lobe[g];
-      if ((k >> b) & 1) code.op(Op::MUL, dst, {lobe[g], tv[g]});
+      if ((k >> b) & 1) steps.push_back({lobe[g], tv[g]});
     }
-    if (cur.same_register(tv[g])) code.op(Op::MOV, dst, {tv[g]}, "p = 1");
+    for (size_t i = 0; i < steps.size(); ++i) {
+      const auto& [x, y] = steps[i];
+      if (i + 1 == steps.size() && !addend.empty()) {
+        code.op(Op::MAD, dst, {x, y, addend[g]});
+      } else {
+        code.op(Op::MUL, dst, {x, y});
+      }
+    }
+    if (!steps.empty()) continue;
+    if (addend.empty()) {
+      code.op(Op::MOV, dst, {tv[g]}, "p = 1");
+    } else {
+      code.op(Op::ADD, dst, {tv[g], addend[g]}, "p = 1");
+    }
   }
 }
 

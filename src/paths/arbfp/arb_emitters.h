@@ -47,12 +47,26 @@ MaterialParams declare_material(ir::Block& decls, const Translucency& tr);
 
 // PARAM V = -forward for an orthographic camera (every view ray is parallel).
 ir::Reg declare_orthographic_view(ir::Block& decls, const Scene& scene);
+// The lights a program shades, in lane order (light i is lane i % 4 of group i / 4), each with
+// its index in the scene (for names and comments) and the eye its positions are relative to.
+struct LightList {
+  std::vector<Light> lights;
+  std::vector<size_t> scene_index;
+  glm::dvec3 eye{0};
+  size_t size() const { return lights.size(); }
+  const Light& operator[](size_t i) const { return lights[i]; }
+  std::string name(size_t i) const { return "light" + std::to_string(scene_index[i]); }
+};
+// The scene's lights in the scene's order, named from `first_light` on (a pass's lights keep
+// their numbers in the scene, arb_passes.h).
+LightList scene_lights(const Scene& scene, size_t first_light = 0);
+
 // Light i's L (directional: PARAM lightI_L = -direction) or camera-relative position (point).
-ir::Reg declare_light_vector(ir::Block& decls, const Scene& scene, size_t light);
+ir::Reg declare_light_vector(ir::Block& decls, const LightList& lights, size_t light);
 // The light scales s of group g, packed like the lights (0 past the last light).
-std::array<double, 4> light_scales(const Scene& scene, size_t group);
+std::array<double, 4> light_scales(const LightList& lights, size_t group);
 // PARAM scaleG: light_scales of group g.
-ir::Reg declare_scale(ir::Block& decls, const Scene& scene, size_t group);
+ir::Reg declare_scale(ir::Block& decls, const LightList& lights, size_t group);
 
 // The registers the per-light code of both programs reads and writes.
 struct Shading {
@@ -79,15 +93,18 @@ void emit_view_vector(ir::Block& code, const Shading& s);
 // program; the fragment program's CMP only with `distance_zero_guard`). A point light leaves
 // 1/dist in r.x, which the fragment program's attenuation reads; scratch: r.x (and r.y in a
 // vertex program).
-ir::Reg emit_light_direction(ir::Block& code, const Shading& s, const Scene& scene, size_t light,
-                             const ir::Reg& light_vector, bool distance_zero_guard = true);
+ir::Reg emit_light_direction(ir::Block& code, const Shading& s, const LightList& lights,
+                             size_t light, const ir::Reg& light_vector,
+                             bool distance_zero_guard = true);
 // H = L + N * d, normalised on request, and t = dot(V, -H) into `t` (one lane). A fragment
 // program saturates t here; a vertex program saturates whole groups afterwards.
 void emit_t(ir::Block& code, const Shading& s, const ir::Reg& L, bool normalize_h,
             const ir::Reg& t);
-// t^k from tv[g] into lobe[g] for every group, by left-to-right binary exponentiation.
+// t^k from tv[g] into lobe[g] for every group, by left-to-right binary exponentiation; with
+// `addend`, t^k + addend[g] (the last MUL becomes a MAD, for free).
 void emit_mul_chain(ir::Block& code, unsigned long k, const std::vector<ir::Reg>& tv,
-                    const std::vector<ir::Reg>& lobe, size_t lights);
+                    const std::vector<ir::Reg>& lobe, size_t lights,
+                    const std::vector<ir::Reg>& addend = {});
 // dst = lobe * s + a (a MUL when a = 0).
 void emit_scale_and_ambient(ir::Block& code, const ir::Reg& dst, const ir::Reg& lobe,
                             const ir::Reg& scale, const MaterialParams& m, bool has_ambient);

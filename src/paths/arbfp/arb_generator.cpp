@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.h"
 #include "paths/arbfp/arb_emitters.h"
 #include "paths/arbfp/arb_guards.h"
+#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_lobe.h"
+#include "paths/arbfp/arb_pack.h"
 
 namespace lt::arbfp {
 
@@ -52,6 +55,15 @@ bool is_integer_power(double p) {
   return p >= 1 && p == std::floor(p) && p <= 1 << 20;
 }
 
+// How the fragment program lays out the lights (generate_arb tries each and keeps the shortest
+// program: packing pays for groups of three or four lights, not for one).
+struct Layout {
+  bool by_kind = false;   // point lights first, then directional ones: groups of one kind
+  size_t pack_min = 5;    // a group of one kind with at least this many lights is packed (5: none)
+  bool dot_sums = false;  // packed groups of three or four lights sum their colours by DP4/DP3
+  bool fold_scale = false;  // Key::fold_scale where it applies
+};
+
 // What the scene, the material and the variant ask of the two programs, decided once (Mesa's
 // state key): the generators below only read it.
 struct Key {
@@ -66,12 +78,82 @@ struct Key {
   bool ortho = false, ambient = false, any_point = false;
   size_t lights = 0, groups = 0;
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
-  GuardNeeds guards = {};               // the fragment program's, for this scene
+  GuardNeeds guards = {};               // the fragment program's, for this scene, in lane order
   std::vector<std::string> notes = {};
+  size_t first_light = 0;         // the number of the scene's first light (a pass's, arb_passes.h)
+  LightList list = {};            // the lights in lane order
+  std::vector<bool> packed = {};  // per group: the light loop four lanes at a time (arb_pack.h)
+  std::vector<bool> dot_sums = {};  // per group: the colour sums as dot products
+  bool per_light_h = false;         // some light computes its own H (the register H is declared)
+  bool per_light_point = false;     // some point light computes its own L (the register L)
+  // pow=mul: lobe * s + a is (lobe + a / s) * s, the addend on the chain's last MUL and s in
+  // the per-light s * T (constant T) or in the colours of the dot products; needs every s > 0.
+  bool fold_scale = false;
 };
 
+size_t lanes_of_group(size_t g, size_t lights) {
+  return std::min<size_t>(4, lights - g * 4);
+}
+
+// The lights in lane order: the scene's, or point lights first (stable).
+LightList ordered_lights(const Scene& scene, bool by_kind, size_t first_light) {
+  LightList list = scene_lights(scene, first_light);
+  if (!by_kind) return list;
+  LightList out{{}, {}, list.eye};
+  for (Light::Type t : {Light::Type::Point, Light::Type::Directional}) {
+    for (size_t i = 0; i < list.size(); ++i) {
+      if (list[i].type != t) continue;
+      out.lights.push_back(list[i]);
+      out.scene_index.push_back(list.scene_index[i]);
+    }
+  }
+  return out;
+}
+
+// Which groups are packed and which sum their colours by dot products, for `layout`.
+void apply_layout(Key& k, const Layout& layout) {
+  k.list = ordered_lights(k.scene, layout.by_kind, k.first_light);
+  GuardNeeds lane_order = k.guards;
+  for (size_t i = 0; i < k.lights; ++i) {
+    const size_t j = k.list.scene_index[i] - k.first_light;
+    lane_order.distance_zero[i] = k.guards.distance_zero[j];
+    lane_order.attenuation_floor[i] = k.guards.attenuation_floor[j];
+  }
+  k.guards = lane_order;
+  // Not packed: the LUT (its TEX results take the per-light registers H and L, lobe_lut) and a
+  // normalised H (|H| per light).
+  const bool packable =
+      k.method != PowMethod::Lut && !(k.fragment_lobe && k.tr.normalize_distorted_light);
+  // The dot products read a group's lobe register, which the fragment program's own packed lobe
+  // methods have (the LUT's, the vertex lobe's and the flat lobe's are not temporaries).
+  const bool lobe_register = !k.term || (k.fragment_lobe && k.method != PowMethod::Lut);
+  for (size_t g = 0; g < k.groups; ++g) {
+    const size_t n = lanes_of_group(g, k.lights);
+    const bool packed = packable && n >= layout.pack_min && group_has_one_kind(k.list, g);
+    k.packed.push_back(packed);
+    k.dot_sums.push_back(packed && layout.dot_sums && n >= 3 && lobe_register);
+    for (size_t i = g * 4; i < g * 4 + n && !packed; ++i) {
+      k.per_light_h |= k.fragment_lobe;
+      k.per_light_point |= k.list[i].type == Light::Type::Point;
+    }
+    if (!packed) continue;
+    std::string lights;
+    for (size_t i = g * 4; i < g * 4 + n; ++i) {
+      lights += (lights.empty() ? "" : ", ") + std::to_string(k.list.scene_index[i]);
+    }
+    k.notes.push_back("lights " + lights + " packed four lanes to a register" +
+                      (k.dot_sums.back() ? ", colour sums as dot products" : ""));
+  }
+  k.fold_scale = layout.fold_scale && k.fragment_lobe && k.method == PowMethod::Mul;
+  for (size_t g = 0; g < k.groups; ++g) {
+    // A light summed alone folds s into a PARAM s * T: only a constant T can.
+    k.fold_scale &= k.dot_sums[g] || k.tr.thickness_source == ThicknessSource::Constant;
+  }
+  for (size_t i = 0; i < k.lights; ++i) k.fold_scale &= k.list[i].translucency_scale > 0;
+}
+
 Key make_key(const Scene& scene, const Material& material, const PowVariant& variant,
-             bool translucency_term) {
+             bool translucency_term, const Layout& layout, size_t first_light) {
   Key k{scene, material.translucency.value_or(Translucency{}), variant};
   k.term = translucency_term && material.translucency.has_value();
   k.lights = scene.lights.size();
@@ -97,8 +179,10 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
     k.method = PowMethod::Exact;
   }
   if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
-  k.guards = guard_needs(scene, material, variant.all_guards);
+  k.first_light = first_light;
+  k.guards = guard_needs(scene, material, variant.all_guards, first_light);
   for (const std::string& n : k.guards.notes) k.notes.push_back(n);
+  apply_layout(k, layout);
   if (k.vertex_lobe) {
     k.notes.push_back(std::string("pow=mul:vertex: t and the lobe per vertex, Gouraud-") +
                       "interpolated" + (k.any_point ? " (point lights: L at the vertex too)" : ""));
@@ -126,9 +210,9 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
   if (k.ortho) s.V = declare_orthographic_view(decls, k.scene);
   std::vector<Reg> light_vector, scale;
   for (size_t i = 0; i < k.lights; ++i) {
-    light_vector.push_back(declare_light_vector(decls, k.scene, i));
+    light_vector.push_back(declare_light_vector(decls, k.list, i));
   }
-  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(decls, k.scene, g));
+  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(decls, k.list, g));
 
   s.r = p.temp("r");
   s.N = p.temp("N");
@@ -146,7 +230,7 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
   emit_normal(code, s, attrib("vertex.normal"));
   if (!k.ortho) emit_view_vector(code, s);
   for (size_t i = 0; i < k.lights; ++i) {
-    const Reg L = emit_light_direction(code, s, k.scene, i, light_vector[i]);
+    const Reg L = emit_light_direction(code, s, k.list, i, light_vector[i]);
     emit_t(code, s, L, k.tr.normalize_distorted_light, write_lane(tv, i));
   }
   code.text("# t = saturate(dot(V, -H)) for a whole group at once (no _SAT in vertex programs).\n");
@@ -155,7 +239,7 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
     code.op(Op::MAX, dst, {tv[g], s.material.zero});
     code.op(Op::MIN, dst, {tv[g], s.guard.one});
   }
-  LobeInput in{decls, code, s, k.variant, k.tr, k.lights, tv, lobe, k.any_point, k.notes};
+  LobeInput in{decls, code, s, k.variant, k.tr, k.lights, tv, lobe, k.any_point, k.notes, {}};
   lobe_mul_vertex(in, k.method);
   code.text("# lobe * s + a, to the fragment program.\n");
   for (size_t g = 0; g < k.groups; ++g) {
@@ -205,10 +289,36 @@ struct Fragment {
   ir::Program& p;
   ir::Block head, decls, temps, code;
   Shading s;
-  Reg albedo, sum, acc, T, ambient;
+  Reg albedo, sum, T, ambient;
+  Reg dnv;                                        // sum.w = d * (N.V), for the packed groups' t
+  std::array<Reg, 3> d;                           // packed point groups: position - P, x y z
+  Reg dist2, one;                                 // packed point groups without lobe registers
   std::vector<Reg> diffuse, tv, lobe, att;        // per group
-  std::vector<Reg> color, light_vector, light_k;  // per light
+  std::vector<PackedRows> rows;                   // per packed group
+  std::vector<std::array<Reg, 3>> colour_rows;    // per group summed by dot products
+  std::vector<Reg> color, light_vector, light_k;  // per light not packed (invalid otherwise)
+  std::vector<Reg> scaled_T;                      // per light summed alone: s * T (fold_scale)
+  std::vector<std::array<Reg, 3>> scaled_rows;    // per group summed by dot products: s * colour
+  // A temporary declared on first use: acc, the per-light sum's term (and the dot products'
+  // second sum when no packed point group left its scratch).
+  Reg acc() {
+    if (!acc_.valid()) acc_ = p.temp("acc");
+    return acc_;
+  }
+
+ private:
+  Reg acc_;
 };
+
+// The ambient light goes into the final multiply when the first group sums by dot products
+// (which have no addend): (sum + ambient) * albedo = sum * albedo + ambient * albedo.
+bool ambient_in_final(const Key& k) {
+  return k.ambient && k.groups > 0 && k.dot_sums[0];
+}
+
+bool any_of(const std::vector<bool>& v) {
+  return std::find(v.begin(), v.end(), true) != v.end();
+}
 
 // Declarations in print order (the TEMP statement lists the temporaries in allocation order).
 void declare_fragment(Fragment& f, const Key& k, const Material& material) {
@@ -222,16 +332,23 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
   f.s.r = p.temp("r");
   f.s.N = p.temp("N");
   f.sum = p.temp("sum");
-  if (k.fragment_lobe) f.s.H = p.temp("H");
-  if (k.any_point) f.s.L = p.temp("L");
+  if (k.per_light_h) f.s.H = p.temp("H");
+  if (k.per_light_point) f.s.L = p.temp("L");
   for (size_t g = 0; g < k.groups; ++g) {
     const std::string n = std::to_string(g);
     f.diffuse.push_back(p.temp("diffuse" + n));
     if (k.fragment_lobe) f.tv.push_back(p.temp("tv" + n)), f.lobe.push_back(p.temp("lobe" + n));
     if (k.any_point) f.att.push_back(p.temp("att" + n));
   }
+  bool packed_point = false;
+  for (size_t g = 0; g < k.groups; ++g) {
+    packed_point |= k.packed[g] && k.list[g * 4].type == Light::Type::Point;
+  }
+  if (packed_point) {
+    f.d = {p.temp("d_x"), p.temp("d_y"), p.temp("d_z")};
+    if (!k.fragment_lobe) f.dist2 = p.temp("dist2");
+  }
   if (k.term) {
-    f.acc = p.temp("acc");
     if (k.vertex_lobe) {
       d.text("# pow=mul:vertex: (lobe * s + a) of light group g comes in fragment.texcoord[" +
              std::to_string(kVertexLobeTexcoord) + " + g]\n");
@@ -242,21 +359,41 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
       // The vertex program multiplied the tint in (see there).
       d.text("# T = fragment.texcoord[2]: vertex colour * tint\n");
       f.T = attrib("fragment.texcoord[2]");
-    } else {
+    } else if (!k.fold_scale || any_of(k.dot_sums)) {
+      // (With the scale folded, a light summed alone reads its own s * T instead.)
       d.text("# constant thickness * tint\n");
       f.T = d.param("T", vec4(k.tr.thickness * k.tr.tint, 0));
     }
     if (k.fragment_lobe) f.s.V = k.ortho ? declare_orthographic_view(d, k.scene) : p.temp("V");
   }
-  if (k.ambient) f.ambient = d.param("ambient_light", vec4(k.scene.ambient_light, 0));
-  for (size_t i = 0; i < k.lights; ++i) {
-    const Light& l = k.scene.lights[i];
-    const std::string prefix = "light" + std::to_string(i) + "_";
-    f.color.push_back(d.param(prefix + "color", vec4(l.color, 0)));
-    f.light_vector.push_back(declare_light_vector(d, k.scene, i));
-    f.light_k.push_back(l.type == Light::Type::Point
-                            ? d.param(prefix + "k", ir::vec4(l.kc, l.kl, l.kq, 0), "kc, kl, kq")
-                            : Reg{});
+  if (k.ambient && !ambient_in_final(k)) {
+    f.ambient = d.param("ambient_light", vec4(k.scene.ambient_light, 0));
+  }
+  f.color.resize(k.lights);
+  f.light_vector.resize(k.lights);
+  f.light_k.resize(k.lights);
+  f.scaled_T.resize(k.lights);
+  f.scaled_rows.resize(k.groups);
+  f.rows.resize(k.groups);
+  f.colour_rows.resize(k.groups);
+  for (size_t g = 0; g < k.groups; ++g) {
+    if (k.packed[g]) f.rows[g] = declare_packed_rows(d, k.list, g);
+    if (k.dot_sums[g]) f.colour_rows[g] = declare_colour_rows(d, k.list, g, false);
+    if (k.dot_sums[g] && k.fold_scale) f.scaled_rows[g] = declare_colour_rows(d, k.list, g, true);
+    for (size_t i = g * 4; i < g * 4 + lanes_of_group(g, k.lights); ++i) {
+      const Light& l = k.list[i];
+      const std::string prefix = k.list.name(i) + "_";
+      if (!k.dot_sums[g]) f.color[i] = d.param(prefix + "color", vec4(l.color, 0));
+      if (!k.dot_sums[g] && k.fold_scale) {
+        f.scaled_T[i] = d.param(
+            prefix + "sT", vec4(l.translucency_scale * k.tr.thickness * k.tr.tint, 0), "s * T");
+      }
+      if (k.packed[g]) continue;
+      f.light_vector[i] = declare_light_vector(d, k.list, i);
+      if (l.type == Light::Type::Point) {
+        f.light_k[i] = d.param(prefix + "k", ir::vec4(l.kc, l.kl, l.kq, 0), "kc, kl, kq");
+      }
+    }
   }
 }
 
@@ -272,21 +409,74 @@ void emit_attenuation(ir::Block& code, const Shading& s, const Reg& k, const Reg
   code.op(Op::RCP, att, {r.swz("z")});
 }
 
-// Per light: diffuse (and attenuation), then t.
+// Light i on its own: diffuse (and attenuation), then t.
+void fragment_light(Fragment& f, const Key& k, size_t i) {
+  ir::Block& code = f.code;
+  const Reg L =
+      emit_light_direction(code, f.s, k.list, i, f.light_vector[i], k.guards.distance_zero[i]);
+  if (k.list[i].type == Light::Type::Point) {
+    emit_attenuation(code, f.s, f.light_k[i], write_lane(f.att, i), k.guards.attenuation_floor[i]);
+  }
+  code.op_sat(Op::DP3, write_lane(f.diffuse, i), {f.s.N, L});
+  if (k.fragment_lobe) emit_t(code, f.s, L, k.tr.normalize_distorted_light, write_lane(f.tv, i));
+}
+
+// The lanes of group g whose light needs a guard (`needs` in lane order).
+std::string guarded_lanes(const std::vector<bool>& needs, size_t g, size_t lights) {
+  std::string lanes;
+  for (size_t i = g * 4; i < g * 4 + lanes_of_group(g, lights); ++i) {
+    if (needs[i]) lanes += component(i);
+  }
+  return lanes;
+}
+
+// Group g four lanes at a time (arb_pack.h).
+void fragment_packed_group(Fragment& f, const Key& k, size_t g) {
+  PackedGroup pg;
+  pg.mask = group_mask(g, k.lights);
+  pg.point = k.list[g * 4].type == Light::Type::Point;
+  pg.diffuse = f.diffuse[g];
+  if (k.fragment_lobe) pg.tv = f.tv[g];
+  pg.dnv = f.dnv;
+  if (pg.point) {
+    pg.att = f.att[g];
+    pg.d = f.d;
+    pg.d2 = k.fragment_lobe ? f.lobe[g] : f.dist2;
+    pg.inv = f.s.r;
+    pg.distance_zero_lanes = guarded_lanes(k.guards.distance_zero, g, k.lights);
+    pg.floor_lanes = guarded_lanes(k.guards.attenuation_floor, g, k.lights);
+    if (!pg.distance_zero_lanes.empty()) {
+      if (!f.one.valid()) f.one = f.decls.param("one", "{1, 0, 0, 0}", "L = N: 1/dist := 1");
+      pg.one = f.one;
+    }
+  }
+  std::string names;
+  for (size_t i = g * 4; i < g * 4 + lanes_of_group(g, k.lights); ++i) {
+    names += (names.empty() ? "" : ", ") + std::to_string(k.list.scene_index[i]);
+  }
+  f.code.text("# lights " + names + ": " + (pg.point ? "point" : "directional") +
+              ", packed in lanes " + pg.mask + "\n");
+  emit_packed_group(f.code, f.s, f.rows[g], pg);
+}
+
+// Per group: diffuse (and attenuation), then t, for each light or four lanes at a time.
 void fragment_lights(Fragment& f, const Key& k) {
   ir::Block& code = f.code;
   code.text(
       "\n# Per light: diffuse (and attenuation), then t = saturate(dot(V, -H)) with H = L + "
       "N*d.\n");
-  for (size_t i = 0; i < k.lights; ++i) {
-    const Reg L =
-        emit_light_direction(code, f.s, k.scene, i, f.light_vector[i], k.guards.distance_zero[i]);
-    if (k.scene.lights[i].type == Light::Type::Point) {
-      emit_attenuation(code, f.s, f.light_k[i], write_lane(f.att, i),
-                       k.guards.attenuation_floor[i]);
+  if (k.fragment_lobe && any_of(k.packed)) {
+    code.text("# The packed groups' t reads d * (N.V) from sum.w (sum is xyz until the end).\n");
+    f.dnv = f.sum.swz("w");
+    code.op(Op::DP3, f.sum.masked("w"), {f.s.N, f.s.V});
+    code.op(Op::MUL, f.sum.masked("w"), {f.dnv, f.s.material.distortion});
+  }
+  for (size_t g = 0; g < k.groups; ++g) {
+    if (k.packed[g]) {
+      fragment_packed_group(f, k, g);
+      continue;
     }
-    code.op_sat(Op::DP3, write_lane(f.diffuse, i), {f.s.N, L});
-    if (k.fragment_lobe) emit_t(code, f.s, L, k.tr.normalize_distorted_light, write_lane(f.tv, i));
+    for (size_t i = g * 4; i < g * 4 + lanes_of_group(g, k.lights); ++i) fragment_light(f, k, i);
   }
 }
 
@@ -332,7 +522,7 @@ FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut)
   if (!k.term) return out;
   if (k.flat_lobe) {
     for (size_t g = 0; g < k.groups; ++g) {
-      const std::array<double, 4> s = light_scales(k.scene, g);
+      const std::array<double, 4> s = light_scales(k.list, g);
       const double a = k.tr.ambient;
       f.lobe.push_back(f.decls.param("lobe" + std::to_string(g),
                                      ir::vec4(s[0] + a, s[1] + a, s[2] + a, s[3] + a),
@@ -341,13 +531,26 @@ FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut)
     for (size_t i = 0; i < k.lights; ++i) lanes.push_back(read_lane(f.lobe, i));
     return out;
   }
-  LobeInput in{f.decls, f.code, f.s, k.variant, k.tr, k.lights, f.tv, f.lobe, k.any_point, k.notes};
+  LobeInput in{f.decls, f.code, f.s,         k.variant, k.tr, k.lights,
+               f.tv,    f.lobe, k.any_point, k.notes,   {}};
+  if (k.fold_scale && k.tr.ambient != 0) {
+    // lobe * s + a = (lobe + a / s) * s: a / s rides on the chain's last MUL, s on T or on
+    // the colours the sum reads.
+    for (size_t g = 0; g < k.groups; ++g) {
+      const std::array<double, 4> s = light_scales(k.list, g);
+      std::array<double, 4> v = {0, 0, 0, 0};
+      for (size_t i = 0; i < lanes_of_group(g, k.lights); ++i) v[i] = k.tr.ambient / s[i];
+      in.addend.push_back(f.decls.param("a_over_s" + std::to_string(g),
+                                        ir::vec4(v[0], v[1], v[2], v[3]), "a / s per light"));
+    }
+  }
   if (k.method == PowMethod::Lut) {
     lut = model::PowerLut::build(k.variant.lut_size, k.variant.lut_format, {k.tr.power});
   }
   lanes = fragment_method(in, k.method, lut ? &*lut : nullptr);
+  if (k.fold_scale) return out;
   std::vector<Reg> scale;
-  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(f.decls, k.scene, g));
+  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(f.decls, k.list, g));
   if (k.method == PowMethod::Lut) {
     out.scale_in_accumulation = scale;
     return out;
@@ -359,34 +562,77 @@ FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut)
   return out;
 }
 
+// Light i's share of sum: color * att * (diffuse + lobe * T), or the ambient light plus it for
+// the first light.
+void accumulate_light(Fragment& f, const Key& k, const FragmentLobe& lobe, size_t i,
+                      bool& started) {
+  ir::Block& code = f.code;
+  const Reg sum = f.sum.masked("xyz");
+  const bool point = k.list[i].type == Light::Type::Point;
+  Reg x = read_lane(f.diffuse, i);
+  if (k.term) {
+    const Reg& l = lobe.lanes[i];
+    if (!lobe.scale_in_accumulation.empty()) {
+      emit_scale_and_ambient(code, l.as_destination(), l, read_lane(lobe.scale_in_accumulation, i),
+                             f.s.material, k.tr.ambient != 0);
+    }
+    const Reg acc = f.acc();
+    code.op(Op::MAD, acc.masked("xyz"), {l, k.fold_scale ? f.scaled_T[i] : f.T, x});
+    if (point) code.op(Op::MUL, acc.masked("xyz"), {acc, read_lane(f.att, i)});
+    x = acc;
+  } else if (point) {
+    code.op(Op::MUL, write_lane(f.diffuse, i), {x, read_lane(f.att, i)});
+  }
+  if (started) {
+    code.op(Op::MAD, sum, {x, f.color[i], f.sum});
+  } else if (k.ambient) {
+    code.op(Op::MAD, sum, {x, f.color[i], f.ambient});
+  } else {
+    code.op(Op::MUL, sum, {x, f.color[i]});
+  }
+  started = true;
+}
+
+// Group g's share of sum as dot products: for each colour channel c, DP4(att * diffuse, c of
+// each light) + T * DP4(att * (lobe*s + a), c of each light) (DP3 for three lights).
+void accumulate_dot(Fragment& f, const Key& k, size_t g, bool& started) {
+  ir::Block& code = f.code;
+  const std::string m = group_mask(g, k.lights);
+  const bool point = k.list[g * 4].type == Light::Type::Point;
+  const Op dp = m.size() == 4 ? Op::DP4 : Op::DP3;
+  // position - P is dead by now: its x register holds the second sum.
+  const Reg spare = f.d[0].valid() ? f.d[0] : f.acc();
+  const std::array<Reg, 3>& c = f.colour_rows[g];
+  code.text("# group " + std::to_string(g) +
+            ": the colour sums as dot products with the transposed colours.\n");
+  const char* channel[] = {"x", "y", "z"};
+  if (point) code.op(Op::MUL, f.diffuse[g].masked(m), {f.diffuse[g], f.att[g]});
+  const Reg target = started ? spare : f.sum;
+  for (int ch = 0; ch < 3; ++ch) code.op(dp, target.masked(channel[ch]), {f.diffuse[g], c[ch]});
+  if (started) code.op(Op::ADD, f.sum.masked("xyz"), {f.sum, spare});
+  if (k.term) {
+    if (point) code.op(Op::MUL, f.lobe[g].masked(m), {f.lobe[g], f.att[g]});
+    const std::array<Reg, 3>& lc = k.fold_scale ? f.scaled_rows[g] : c;
+    for (int ch = 0; ch < 3; ++ch) code.op(dp, spare.masked(channel[ch]), {f.lobe[g], lc[ch]});
+    code.op(Op::MAD, f.sum.masked("xyz"), {spare, f.T, f.sum});
+  }
+  started = true;
+}
+
 // sum = ambient_light + sum over lights of color * att * (diffuse + lobe * T).
 void accumulate(Fragment& f, const Key& k, const FragmentLobe& lobe) {
   ir::Block& code = f.code;
   code.text(
       "\n# sum = ambient_light + sum over lights of color * att * (diffuse + (lobe*s + a) * T).\n");
   const Reg sum = f.sum.masked("xyz");
-  for (size_t i = 0; i < k.lights; ++i) {
-    const bool point = k.scene.lights[i].type == Light::Type::Point;
-    Reg x = read_lane(f.diffuse, i);
-    if (k.term) {
-      const Reg& l = lobe.lanes[i];
-      if (!lobe.scale_in_accumulation.empty()) {
-        emit_scale_and_ambient(code, l.as_destination(), l,
-                               read_lane(lobe.scale_in_accumulation, i), f.s.material,
-                               k.tr.ambient != 0);
-      }
-      code.op(Op::MAD, f.acc.masked("xyz"), {l, f.T, x});
-      if (point) code.op(Op::MUL, f.acc.masked("xyz"), {f.acc, read_lane(f.att, i)});
-      x = f.acc;
-    } else if (point) {
-      code.op(Op::MUL, write_lane(f.diffuse, i), {x, read_lane(f.att, i)});
+  bool started = false;
+  for (size_t g = 0; g < k.groups; ++g) {
+    if (k.dot_sums[g]) {
+      accumulate_dot(f, k, g, started);
+      continue;
     }
-    if (i > 0) {
-      code.op(Op::MAD, sum, {x, f.color[i], f.sum});
-    } else if (k.ambient) {
-      code.op(Op::MAD, sum, {x, f.color[i], f.ambient});
-    } else {
-      code.op(Op::MUL, sum, {x, f.color[i]});
+    for (size_t i = g * 4; i < g * 4 + lanes_of_group(g, k.lights); ++i) {
+      accumulate_light(f, k, lobe, i, started);
     }
   }
   if (k.lights == 0) {
@@ -410,8 +656,15 @@ ir::Program fragment_program(Key& k, const Material& material,
   fragment_lights(f, k);
   accumulate(f, k, emit_lobe(f, k, lut));
   f.code.text("\n");
-  f.code.op(Op::MUL, output("result.color").masked("xyz"), {f.sum, f.albedo});
-  f.code.op(Op::MOV, output("result.color").masked("w"), {f.albedo.swz("w")});
+  const Reg color = output("result.color");
+  if (ambient_in_final(k)) {
+    const Reg ambient_albedo = f.decls.param(
+        "ambient_albedo", vec4(k.scene.ambient_light * material.albedo, 0), "ambient * albedo");
+    f.code.op(Op::MAD, color.masked("xyz"), {f.sum, f.albedo, ambient_albedo});
+  } else {
+    f.code.op(Op::MUL, color.masked("xyz"), {f.sum, f.albedo});
+  }
+  f.code.op(Op::MOV, color.masked("w"), {f.albedo.swz("w")});
   // Known only now: every temporary (the LUT's) and every note (sg-fitted's).
   f.temps.text("\n");
   f.temps.temps();
@@ -425,15 +678,77 @@ ir::Program fragment_program(Key& k, const Material& material,
 
 }  // namespace
 
-ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
-                         bool translucency_term) {
-  Key k = make_key(scene, material, variant, translucency_term);
+namespace {
+
+ArbPrograms generate_with(const Scene& scene, const Material& material, const PowVariant& variant,
+                          bool translucency_term, const Layout& layout, size_t first_light) {
+  Key k = make_key(scene, material, variant, translucency_term, layout, first_light);
   ArbPrograms out;
   out.fragment_program = fragment_program(k, material, out.lut);
   out.vertex_program = vertex_program(k);
+  out.notes = k.notes;
+  return out;
+}
+
+// The layouts worth trying for `lights` lights: by kind only when both kinds are there; a packing
+// threshold only where it changes which groups are packed (every group but the last has four
+// lights: 5 packs none, 4 the full groups, the last group's size all of them); dot sums only
+// where a packed group has three or four lights. The scale fold saves one instruction per group
+// wherever it applies, so it is always on.
+std::vector<Layout> candidate_layouts(const Scene& scene) {
+  bool point = false, directional = false;
+  for (const Light& l : scene.lights) (l.type == Light::Type::Point ? point : directional) = true;
+  const size_t n = scene.lights.size();
+  const size_t last = n == 0 ? 0 : n - 4 * (group_count(n) - 1);
+  std::vector<size_t> thresholds = {5};
+  if (n >= 4) thresholds.push_back(4);
+  if (last >= 2 && last < 4) thresholds.push_back(last);
+  std::vector<Layout> out;
+  for (bool by_kind : {false, true}) {
+    if (by_kind && !(point && directional)) continue;
+    for (size_t pack_min : thresholds) {
+      out.push_back({by_kind, pack_min, false, true});
+      if (pack_min <= 4 && (n >= 4 || last >= 3)) out.push_back({by_kind, pack_min, true, true});
+    }
+  }
+  return out;
+}
+
+// The programs of the layout with the shortest fragment program (ALU + TEX, then temporaries;
+// the first of equals, so a scene packing does not shorten keeps the light-by-light program).
+// Chosen on the program with the term and only the guards the scene needs, so `:guards=all`
+// lays the lights out the same way and renders the same bits wherever no guard triggers
+// (arb_guards_test), and the program without the term is the same program minus the term (the
+// budget's term cost).
+ArbPrograms generate_best(const Scene& scene, const Material& material, const PowVariant& variant,
+                          bool translucency_term, size_t first_light) {
+  PowVariant chooser = variant;
+  chooser.all_guards = false;
+  std::optional<ArbPrograms> best;
+  Layout best_layout;
+  std::pair<int, int> least;
+  for (const Layout& l : candidate_layouts(scene)) {
+    ArbPrograms p = generate_with(scene, material, chooser, true, l, first_light);
+    const budget::ProgramCounts c = ir::count(p.fragment_program);
+    const std::pair<int, int> key(c.alu + c.tex, c.temporaries);
+    if (best && !(key < least)) continue;
+    best = std::move(p);
+    best_layout = l;
+    least = key;
+  }
+  if (variant.all_guards || !translucency_term) {
+    return generate_with(scene, material, variant, translucency_term, best_layout, first_light);
+  }
+  return std::move(*best);
+}
+
+}  // namespace
+
+ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
+                         bool translucency_term, size_t first_light) {
+  ArbPrograms out = generate_best(scene, material, variant, translucency_term, first_light);
   out.vertex = ir::print(out.vertex_program);
   out.fragment = ir::print(out.fragment_program);
-  out.notes = k.notes;
   return out;
 }
 

@@ -28,8 +28,10 @@ inline constexpr int kVertexLobeTexcoord = 3;
 inline constexpr size_t kMaxVertexLobeLights = 4 * (8 - kVertexLobeTexcoord);
 
 // `translucency_term = false` generates the same program without the translucency term (diffuse
-// only), so the budget can report the term's own cost as the difference.
+// only), so the budget can report the term's own cost as the difference. The programs' names,
+// comments and notes number the scene's lights from `first_light` (a pass's lights are a run of
+// a larger scene's, arb_passes.h).
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
-                         bool translucency_term = true);
+                         bool translucency_term = true, size_t first_light = 0);
 
 }  // namespace lt::arbfp

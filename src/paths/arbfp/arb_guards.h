@@ -25,8 +25,10 @@ struct GuardNeeds {
 };
 
 // Every guard for `all` (the variant's :guards=all); otherwise those the objects drawn with
-// `material` can trigger.
-GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all);
+// `material` can trigger. The notes number the lights from `first_light` (a pass's first light,
+// arb_passes.h).
+GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
+                       size_t first_light = 0);
 
 // The smallest distance from the origin to the triangle (a, b, c), in double.
 double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);

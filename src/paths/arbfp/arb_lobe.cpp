@@ -119,7 +119,7 @@ LobeLanes lobe_mul(LobeInput& in) {
   const bool vertex = in.code.kind() == ir::ProgramKind::Vertex;
   in.code.text(std::string(vertex ? "# t^" : "# pow=mul: t^") + std::to_string(k) +
                " by repeated squaring (exact up to float rounding).\n");
-  emit_mul_chain(in.code, k, in.tv, in.lobe, in.lights);
+  emit_mul_chain(in.code, k, in.tv, in.lobe, in.lights, in.addend);
   return packed_lanes(in);
 }
 

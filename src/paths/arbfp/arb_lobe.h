@@ -23,6 +23,7 @@ struct LobeInput {
   std::vector<ir::Reg> tv, lobe;  // per group of four lights
   bool any_point;                 // L is declared (a register the LUT may reuse)
   std::vector<std::string>& notes;
+  std::vector<ir::Reg> addend;  // lobe_mul only: per group, added to t^p (empty: none)
 };
 
 // Where light i's t^p is: a lane of lobe (the packed methods), or one register per light (the

@@ -1,10 +1,13 @@
 #include "paths/arbfp/arbfp_path.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "paths/arbfp/arb_budget.h"
 #include "paths/arbfp/arb_file_budget.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
+#include "paths/arbfp/arb_passes.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/common/frame.h"
 
@@ -12,11 +15,16 @@ namespace lt {
 
 namespace {
 
-// One material's programs and, for the LUT variants, its power texture.
-struct MaterialState {
-  arbfp::ArbPrograms source;
+// One pass of a material: its programs and, for the LUT variants, its power texture.
+struct PassState {
+  arbfp::Pass plan;
   std::unique_ptr<arbfp::ArbProgram> vertex, fragment;
   GLuint lut_texture = 0;
+};
+
+// One material's passes (one unless --profile split its lights, arb_passes.h).
+struct MaterialState {
+  std::vector<PassState> passes;
 };
 
 GLuint upload_lut(const model::PowerLut& lut) {
@@ -60,12 +68,20 @@ class ArbfpPath final : public Path {
       if (materials_[m.material]) continue;
       const Material& mat = ctx.scene.materials[m.material];
       auto st = std::make_unique<MaterialState>();
-      st->source = arbfp::generate_arb(ctx.scene, mat, variant_);
-      st->vertex = std::make_unique<arbfp::ArbProgram>(GL_VERTEX_PROGRAM_ARB, st->source.vertex,
-                                                       "arbfp:" + mat.name + " vertex");
-      st->fragment = std::make_unique<arbfp::ArbProgram>(
-          GL_FRAGMENT_PROGRAM_ARB, st->source.fragment, "arbfp:" + mat.name + " fragment");
-      if (st->source.lut) st->lut_texture = upload_lut(*st->source.lut);
+      arbfp::PassPlan plan = arbfp::plan_passes(ctx.scene, mat, variant_, ctx.options.profile);
+      for (size_t i = 0; i < plan.passes.size(); ++i) {
+        PassState ps;
+        ps.plan = std::move(plan.passes[i]);
+        const std::string name =
+            "arbfp:" + mat.name + (plan.passes.size() > 1 ? " pass " + std::to_string(i + 1) : "");
+        ps.vertex = std::make_unique<arbfp::ArbProgram>(GL_VERTEX_PROGRAM_ARB,
+                                                        ps.plan.programs.vertex, name + " vertex");
+        ps.fragment = std::make_unique<arbfp::ArbProgram>(
+            GL_FRAGMENT_PROGRAM_ARB, ps.plan.programs.fragment, name + " fragment");
+        if (ps.plan.programs.lut) ps.lut_texture = upload_lut(*ps.plan.programs.lut);
+        st->passes.push_back(std::move(ps));
+      }
+      passes_ = std::max(passes_, st->passes.size());
       materials_[m.material] = std::move(st);
     }
     gl::check_error("building arbfp programs");
@@ -73,21 +89,43 @@ class ArbfpPath final : public Path {
 
   ~ArbfpPath() override {
     for (const auto& m : materials_) {
-      if (m && m->lut_texture) glDeleteTextures(1, &m->lut_texture);
+      if (!m) continue;
+      for (const PassState& ps : m->passes) {
+        if (ps.lut_texture) glDeleteTextures(1, &ps.lut_texture);
+      }
     }
   }
 
+  // Pass 0 of every mesh (depth LESS, depth writes), then pass k of every mesh that has one:
+  // depth EQUAL against pass 0's depth (ARB_position_invariant makes every pass's depth the
+  // same), ONE + ONE blending, no depth writes. The 8-bit framebuffer clamps and rounds each
+  // pass's sum (README, "Passes").
   void frame() override {
     begin_frame(ctx_);
     glEnable(GL_VERTEX_PROGRAM_ARB);
     glEnable(GL_FRAGMENT_PROGRAM_ARB);
     glActiveTexture(GL_TEXTURE0);
-    for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
-      const MaterialState& st = *materials_[m.material];
-      st.vertex->bind();
-      st.fragment->bind();
-      glBindTexture(GL_TEXTURE_1D, st.lut_texture);
-      ctx_.geometry.draw(m);
+    for (size_t k = 0; k < passes_; ++k) {
+      if (k == 1) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        glDepthFunc(GL_EQUAL);
+        glDepthMask(GL_FALSE);
+      }
+      for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
+        const MaterialState& st = *materials_[m.material];
+        if (k >= st.passes.size()) continue;
+        const PassState& ps = st.passes[k];
+        ps.vertex->bind();
+        ps.fragment->bind();
+        glBindTexture(GL_TEXTURE_1D, ps.lut_texture);
+        ctx_.geometry.draw(m);
+      }
+    }
+    if (passes_ > 1) {
+      glDisable(GL_BLEND);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
     }
     glBindTexture(GL_TEXTURE_1D, 0);
     glDisable(GL_FRAGMENT_PROGRAM_ARB);
@@ -96,31 +134,39 @@ class ArbfpPath final : public Path {
 
   Image result() override { return read_framebuffer(ctx_.gl); }
 
-  // The largest program of the scene: a budget is met or missed by its worst program.
+  // The largest program of the scene (a budget is met or missed by its worst program), and the
+  // passes when --profile split a material.
   std::string cost() const override {
     budget::ProgramCounts frag, vert;
     for (const auto& m : materials_) {
       if (!m) continue;
-      const budget::ProgramCounts f = arbfp::ir::count(m->source.fragment_program);
-      const budget::ProgramCounts v = arbfp::ir::count(m->source.vertex_program);
-      if (f.instructions() > frag.instructions()) frag = f;
-      if (v.instructions() > vert.instructions()) vert = v;
+      for (const PassState& ps : m->passes) {
+        const budget::ProgramCounts& f = ps.plan.fragment_counts;
+        const budget::ProgramCounts& v = ps.plan.vertex_counts;
+        if (f.instructions() > frag.instructions()) frag = f;
+        if (v.instructions() > vert.instructions()) vert = v;
+      }
     }
-    return "fragment " + std::to_string(frag.alu) + " ALU + " + std::to_string(frag.tex) +
-           " TEX, vertex " + std::to_string(vert.alu) + " ALU";
+    std::string s = "fragment " + std::to_string(frag.alu) + " ALU + " + std::to_string(frag.tex) +
+                    " TEX, vertex " + std::to_string(vert.alu) + " ALU";
+    if (passes_ > 1) s += ", " + std::to_string(passes_) + " passes (" + ctx_.options.profile + ")";
+    return s;
   }
 
   // Each fragment instruction runs once a covered pixel, each vertex instruction once a vertex,
-  // the 4 DP4 that ARB_position_invariant adds included (what vs_2_0 counts as slots).
+  // the 4 DP4 that ARB_position_invariant adds included (what vs_2_0 counts as slots); summed
+  // over the passes --profile split a material into.
   WorkModel work() const override {
     WorkModel w{"fragment ALU + TEX instruction", "vertex instruction", {}, {}};
     w.by_material.resize(materials_.size());
     for (size_t i = 0; i < materials_.size(); ++i) {
       if (!materials_[i]) continue;
-      const budget::ProgramCounts f = arbfp::ir::count(materials_[i]->source.fragment_program);
-      const budget::ProgramCounts v = arbfp::ir::count(materials_[i]->source.vertex_program);
-      w.by_material[i] = {static_cast<double>(f.instructions()),
-                          static_cast<double>(v.instructions() + (v.position_invariant ? 4 : 0))};
+      for (const PassState& ps : materials_[i]->passes) {
+        const budget::ProgramCounts& f = ps.plan.fragment_counts;
+        const budget::ProgramCounts& v = ps.plan.vertex_counts;
+        w.by_material[i].per_pixel += f.instructions();
+        w.by_material[i].per_vertex += v.instructions() + (v.position_invariant ? 4 : 0);
+      }
     }
     return w;
   }
@@ -130,15 +176,30 @@ class ArbfpPath final : public Path {
     for (size_t i = 0; i < materials_.size(); ++i) {
       if (!materials_[i]) continue;
       const MaterialState& st = *materials_[i];
-      const std::string name = "material " + ctx_.scene.materials[i].name;
-      out.push_back({name + ": vertex program", "arb-vertex", st.source.vertex});
-      out.push_back({name + ": fragment program", "arb-fragment", st.source.fragment});
-      if (st.source.lut) {
-        out.push_back({name + ": power LUT, 1D, " + std::to_string(st.source.lut->size) +
-                           " texels " + model::to_string(st.source.lut->format),
-                       "texture", ""});
+      const std::string material = "material " + ctx_.scene.materials[i].name;
+      if (st.passes.size() > 1) {
+        out.push_back({material + ": " + std::to_string(st.passes.size()) + " passes to fit " +
+                           ctx_.options.profile,
+                       "note", ""});
       }
-      for (const std::string& n : st.source.notes) out.push_back({name + ": " + n, "note", ""});
+      for (size_t k = 0; k < st.passes.size(); ++k) {
+        const PassState& ps = st.passes[k];
+        const arbfp::ArbPrograms& src = ps.plan.programs;
+        std::string name = material;
+        if (st.passes.size() > 1) {
+          name += ", pass " + std::to_string(k + 1) + " (" + arbfp::describe(ps.plan) + "; " +
+                  std::to_string(ps.plan.fragment_counts.alu) + " ALU, " +
+                  std::to_string(ps.plan.fragment_counts.temporaries) + " temps)";
+        }
+        out.push_back({name + ": vertex program", "arb-vertex", src.vertex});
+        out.push_back({name + ": fragment program", "arb-fragment", src.fragment});
+        if (src.lut) {
+          out.push_back({name + ": power LUT, 1D, " + std::to_string(src.lut->size) + " texels " +
+                             model::to_string(src.lut->format),
+                         "texture", ""});
+        }
+        for (const std::string& n : src.notes) out.push_back({name + ": " + n, "note", ""});
+      }
     }
     return out;
   }
@@ -147,6 +208,7 @@ class ArbfpPath final : public Path {
   PathContext ctx_;
   arbfp::PowVariant variant_;
   std::vector<std::unique_ptr<MaterialState>> materials_;
+  size_t passes_ = 1;  // the most passes of any material
 };
 
 }  // namespace
@@ -206,6 +268,7 @@ PathInfo arbfp_path_info() {
   };
   // Hand-written ARB_vertex_program / ARB_fragment_program text, checked by our counter and by
   // Mesa (arb_file_budget.h).
+  info.takes_profile = true;
   info.program_extensions = {".fp", ".vp", ".arb"};
   info.program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
   info.budget_file = [](const std::string& file, const BudgetRequest& rq) {

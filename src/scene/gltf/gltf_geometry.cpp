@@ -150,7 +150,11 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
     const AccessorValues a = read_accessor(doc, uv, "TEXCOORD_0", {2});
     same_count(a, uv, "TEXCOORD_0");
     mesh.uvs.resize(n);
-    for (std::size_t v = 0; v < n; ++v) mesh.uvs[v] = {a.values[v * 2], a.values[v * 2 + 1]};
+    // glTF puts (0, 0) at the image's top-left texel (glTF 2.0 §3.7.2.1 "Meshes"); TriangleMesh
+    // keeps OpenGL's convention, v = 0 on the bottom row (every other format's and the UV
+    // baker's, README "Mesh UVs"): flip v so one sampler serves both.
+    for (std::size_t v = 0; v < n; ++v)
+      mesh.uvs[v] = {a.values[v * 2], 1.0 - a.values[v * 2 + 1]};
     out.notes.push_back("kept " + ptr +
                         "/attributes/TEXCOORD_0 (for thickness maps, not used yet)");
   }
