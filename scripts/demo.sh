@@ -15,6 +15,13 @@ scripts/bake_demo_meshes.sh "$bin"
 # Per-vertex error against tessellation (issues 5 and 9): the backlit sphere at 42 to 10242
 # vertices, through the GL 1.3 combiners and the Wii's GX.
 "$bin" bench scenes/tessellation/*.json --paths combiners,gx -o out/tessellation --quiet "$@"
+# The talk's parameter figures rebuilt on the teapot (issue 13, scenes/figures/): one labelled
+# row per scene in out/figures/contact.png, each pair on adjacent rows (name order): fig14
+# ambient, fig15 scale, fig16 power, fig17 distortion, fig20/21 grey and red thickness, fig22
+# the coloured cubes. They are pictures, not timings: the fewest frames bench allows (and no
+# "$@", whose --frames would clash).
+"$bin" bench scenes/figures/*.json --paths reference --frames 10 --warmup 0 --min-time 0 \
+  -o out/figures --quiet
 # A glTF asset as the whole scene (issue 14): the baked blob with KHR_materials_volume,
 # diffuse transmission and punctual lights (scripts/make_gltf_demo.py made it).
 "$bin" bench scenes/gltf/blob.glb -o out/gltf --quiet "$@"
@@ -33,4 +40,5 @@ grep -E '^\| backlit_sphere_s[0-9] \| (combiners|gx) \| t=vertex \|' out/tessell
   --junit out/regress/junit.xml -o out/regress
 echo
 echo "demo: images and heatmaps in out/images/, chart in out/chart.svg, contact sheet out/contact.png"
+echo "demo: the talk's figures on the teapot: out/figures/contact.png"
 echo "demo: the report page: $PWD/out/index.html (regress against the goldens: $PWD/out/regress/index.html)"
