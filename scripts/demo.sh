@@ -15,6 +15,10 @@ scripts/bake_demo_meshes.sh "$bin"
 # Per-vertex error against tessellation (issues 5 and 9): the backlit sphere at 42 to 10242
 # vertices, through the GL 1.3 combiners and the Wii's GX.
 "$bin" bench scenes/tessellation/*.json --paths combiners,gx -o out/tessellation --quiet "$@"
+# Thickness maps (issue 13, scenes/maps/): the addendum's red teapot with its baked 1024x1024
+# map (its per-vertex twin, scenes/teapot_vertex.json, is in the main bench), the sphere with a
+# grey map, with an rgb map and ramp, and the 0/1 checker, through every path.
+"$bin" bench scenes/maps/*.json -o out/maps --quiet "$@"
 # The talk's parameter figures rebuilt on the teapot (issue 13, scenes/figures/): one labelled
 # row per scene in out/figures/contact.png, each pair on adjacent rows (name order): fig14
 # ambient, fig15 scale, fig16 power, fig17 distortion, fig20/21 grey and red thickness, fig22
@@ -40,5 +44,5 @@ grep -E '^\| backlit_sphere_s[0-9] \| (combiners|gx) \| t=vertex \|' out/tessell
   --junit out/regress/junit.xml -o out/regress
 echo
 echo "demo: images and heatmaps in out/images/, chart in out/chart.svg, contact sheet out/contact.png"
-echo "demo: the talk's figures on the teapot: out/figures/contact.png"
+echo "demo: the talk's figures on the teapot: out/figures/contact.png; thickness maps: out/maps/report.md"
 echo "demo: the report page: $PWD/out/index.html (regress against the goldens: $PWD/out/regress/index.html)"
