@@ -118,12 +118,7 @@ class ArbfpPath final : public Path {
     glEnable(GL_FRAGMENT_PROGRAM_ARB);
     glActiveTexture(GL_TEXTURE0);
     for (size_t k = 0; k < passes_; ++k) {
-      if (k == 1) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        glDepthFunc(GL_EQUAL);
-        glDepthMask(GL_FALSE);
-      }
+      if (k == 1) begin_additive_passes();
       for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
         const MaterialState& st = *materials_[m.material];
         if (k >= st.passes.size()) continue;
@@ -135,11 +130,7 @@ class ArbfpPath final : public Path {
         ctx_.geometry.draw(m);
       }
     }
-    if (passes_ > 1) {
-      glDisable(GL_BLEND);
-      glDepthFunc(GL_LESS);
-      glDepthMask(GL_TRUE);
-    }
+    if (passes_ > 1) end_additive_passes();
     bind_thickness_map(nullptr);
     glBindTexture(GL_TEXTURE_1D, 0);
     glDisable(GL_FRAGMENT_PROGRAM_ARB);

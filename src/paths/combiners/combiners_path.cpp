@@ -185,28 +185,15 @@ class CombinersPath final : public Path {
     for (const gl::GpuMesh& m : meshes)
       max_passes = std::max(max_passes, plans_[m.material].passes());
     for (int pass = 0; pass < max_passes; ++pass) {
-      if (pass == 1) {
-        // Later passes add one light each onto the 8-bit framebuffer: the sum clamps at 1
-        // (lossless: every term is >= 0) but each pass is rounded to 8 bits before it is added.
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        // Same vertices, same fixed-function transform: the depths repeat exactly (GL's
-        // invariance rule), so EQUAL keeps the visible fragments of pass 0.
-        glDepthFunc(GL_EQUAL);
-        glDepthMask(GL_FALSE);
-        // The one known loss of EQUAL: where two faces meet at a vertex and their depths tie in
-        // 24 bits at a pixel, both pass and that pixel gets the light twice (the reference's
-        // single pass keeps one fragment). A stencil "first fragment only" would fix it; the
-        // OSMesa context has no stencil buffer. Seen on one corner pixel of thin_vs_thick.
-      }
+      // Later passes add one light each. Same vertices, same fixed-function transform: the
+      // depths repeat exactly (GL's invariance rule), so EQUAL keeps pass 0's visible fragments.
+      if (pass == 1) begin_additive_passes();
       for (size_t i = 0; i < meshes.size(); ++i) {
         if (pass < plans_[meshes[i].material].passes()) draw_pass(i, pass, terms[i]);
       }
     }
     passes_drawn_ = max_passes;
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    end_additive_passes();
     combiners::reset_texture_state(combiners::kMaxStages);
     gl::check_error("combiners frame");
   }

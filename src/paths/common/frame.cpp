@@ -22,4 +22,17 @@ Image read_framebuffer(const gl::Context& gl) {
   return img;
 }
 
+void begin_additive_passes() {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+}
+
+void end_additive_passes() {
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+}
+
 }  // namespace lt
