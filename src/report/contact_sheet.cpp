@@ -46,11 +46,21 @@ void draw_fitted(Image& img, int x, int y, std::string text, int width, const fl
   draw_text(img, x, y, text, size, rgb);
 }
 
+// The legend's layout: its title, the ramp, then two swatches with their words.
+constexpr int kRampOffset = 210, kRampWidth = 320, kSwatchGap = 24, kSecondSwatch = 210;
+constexpr const char* kLastLegendWord = "NaN/Inf";
+
+// The width the legend takes: a sheet of one column (the figures' sheet) must still hold it.
+int legend_width() {
+  return kRampOffset + kRampWidth + kSwatchGap + kSecondSwatch + 16 +
+         text_width(kLastLegendWord, kLabelSize) + 2 * kPad;
+}
+
 // The heatmap's ramp with its marks in LSB, and the two colours outside the ramp.
 void draw_legend(Image& img, int x, int y) {
-  const int ramp_width = 320, ramp_height = 12;
+  const int ramp_width = kRampWidth, ramp_height = 12;
   draw_text(img, x, y, "error heatmap, LSB of 8 bits:", kLabelSize, kInk);
-  const int rx = x + 210;
+  const int rx = x + kRampOffset;
   for (int i = 0; i < ramp_width; ++i) {
     float rgb[3];
     heatmap_colour(kHeatmapMaxLsb * i / (ramp_width - 1), kHeatmapMaxLsb, rgb);
@@ -63,11 +73,11 @@ void draw_legend(Image& img, int x, int y) {
     std::snprintf(label, sizeof label, v == kHeatmapMaxLsb ? "%g+" : "%g", v);
     draw_text(img, tx - 3, y + 20, label, 11, kInk);
   }
-  const int sx = rx + ramp_width + 24;
+  const int sx = rx + ramp_width + kSwatchGap;
   fill_rect(img, sx, y + 2, 12, 12, kHeatmapUncovered);
   draw_text(img, sx + 16, y, "background within 0.5 LSB", kLabelSize, kInk);
-  fill_rect(img, sx + 210, y + 2, 12, 12, kHeatmapNonFinite);
-  draw_text(img, sx + 226, y, "NaN/Inf", kLabelSize, kInk);
+  fill_rect(img, sx + kSecondSwatch, y + 2, 12, 12, kHeatmapNonFinite);
+  draw_text(img, sx + kSecondSwatch + 16, y, kLastLegendWord, kLabelSize, kInk);
 }
 
 }  // namespace
@@ -87,7 +97,7 @@ Image draw_contact_sheet(const ContactSheet& s) {
   const int cols = static_cast<int>(s.column_labels.size());
   const int rows = static_cast<int>(s.row_labels.size());
   const int cell_height = 2 * th + 3 * kPad;
-  Image sheet(std::max(label_column + cols * (tw + kPad) + kPad, 820),
+  Image sheet(std::max(label_column + cols * (tw + kPad) + kPad, legend_width()),
               header + rows * cell_height + kLegendHeight);
   const float white[3] = {1, 1, 1};
   fill_rect(sheet, 0, 0, sheet.width, sheet.height, white);
