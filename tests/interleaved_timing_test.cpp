@@ -58,13 +58,53 @@ TEST(Interleaved, PairsMeasuringTimeAndWarmUp) {
   o.min_warmup = 2;
   const InterleavedTiming t = time_interleaved(path, baseline, o);
   EXPECT_EQ(t.path_ms.size(), 100u);
-  EXPECT_EQ(t.baseline_ms.size(), 100u);
+  EXPECT_EQ(t.baseline_ms.size(), 300u);  // three 1 ms baseline frames fill each 3 ms path frame
   EXPECT_EQ(timed_path, 100);
   EXPECT_EQ(path_calls, 100 + 5 + 3);  // warm-up: five warming frames, then three that agree
   EXPECT_DOUBLE_EQ(t.ratio.median, 3.0);
   EXPECT_DOUBLE_EQ(t.ratio.low, 3.0);
   EXPECT_DOUBLE_EQ(t.ratio.high, 3.0);
   EXPECT_EQ(t.ratio.pairs, 100u);
+}
+
+// A machine with something else on it, as a virtual clock: every `period` ms of wall time a
+// stall of `stall` ms lands on whichever frame is running. A path frame of 300 ms and baseline
+// frames of 15 ms have the ratio 20 on an idle machine.
+struct StalledMachine {
+  double period, stall, now = 0, next_stall;
+  StalledMachine(double period_ms, double stall_ms, double phase_ms)
+      : period(period_ms), stall(stall_ms), next_stall(phase_ms) {}
+  double frame(double work_ms) {
+    double end = now + work_ms;
+    while (next_stall < end) {  // each stall inside the frame delays its end
+      end += stall;
+      next_stall += period;
+    }
+    const double ms = end - now;
+    now = end;
+    return ms;
+  }
+};
+
+double ratio_under_stalls(int max_baseline_frames, double phase) {
+  StalledMachine m(/*period_ms=*/97, /*stall_ms=*/10, phase);  // ~10% of the machine taken
+  InterleaveOptions o;
+  o.min_pairs = 41;
+  o.min_seconds = 0;
+  o.max_baseline_frames_per_pair = max_baseline_frames;
+  return time_interleaved([&](bool) { return m.frame(300); }, [&] { return m.frame(15); }, o)
+      .ratio.median;
+}
+
+// The point of matched durations: a slow path's ratio does not rise with the background load.
+// With one baseline frame a pair, the 300 ms frame takes three stalls and the 15 ms frame
+// rarely one, so the ratio reads (300 + 30) / 15 = 22 instead of 20; with the baseline side as
+// long as the path's, both sides take the same share and the ratio stays within 3% of 20.
+TEST(Interleaved, MatchedDurationsKeepASlowPathsRatioUnderLoad) {
+  for (double phase : {0.0, 13.0, 51.0, 88.0}) {
+    EXPECT_NEAR(ratio_under_stalls(64, phase), 20.0, 0.6) << "phase " << phase;
+    EXPECT_GT(ratio_under_stalls(1, phase), 21.5) << "phase " << phase;  // the old pairing
+  }
 }
 
 }  // namespace

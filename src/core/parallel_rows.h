@@ -1,10 +1,15 @@
-// Rows of an image shared out over worker threads, interleaved (worker w takes rows w, w + n,
-// ...): geometry is rarely spread evenly down an image, so interleaving balances the load
-// better than bands. Used by every CPU per-pixel stage (the reference's and half's shading, the
-// gx path's TEV).
+// Rows of an image shared out over worker threads, one row at a time from a shared counter:
+// each worker takes the next row not yet taken. Geometry is rarely spread evenly down an image,
+// and on a shared machine a core can be taken away for part of a frame; with rows handed out
+// as workers become free, a worker that is slowed (by its rows or by the machine) simply takes
+// fewer of them. A fixed split (worker w takes rows w, w + n, ...) instead ended every frame
+// with the slowest worker's share, so one descheduled thread stretched the whole frame, and
+// the CPU paths' bench figures did not repeat from run to run (issue 11). Used by every CPU
+// per-pixel stage (the reference's and half's shading, the gx path's TEV).
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <thread>
 #include <vector>
 
@@ -15,13 +20,17 @@ inline unsigned worker_threads() {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-// Calls row(y, worker) for every y in [0, rows), worker < worker_threads(), so the caller can
-// keep per-worker counters without locks. Returns when every row is done.
+// Calls row(y, worker) once for every y in [0, rows), worker < worker_threads(), so the caller
+// can keep per-worker counters without locks. Which worker shades which row varies from call to
+// call; what a row computes must not depend on it. Returns when every row is done.
 template <class Row>
-void for_each_row_interleaved(int rows, Row&& row) {
+void for_each_row_in_parallel(int rows, Row&& row) {
   const unsigned n = worker_threads();
+  std::atomic<int> next{0};
   auto work = [&](unsigned worker) {
-    for (int y = static_cast<int>(worker); y < rows; y += static_cast<int>(n)) row(y, worker);
+    for (int y = next.fetch_add(1, std::memory_order_relaxed); y < rows;
+         y = next.fetch_add(1, std::memory_order_relaxed))
+      row(y, worker);
   };
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < n; ++t) pool.emplace_back(work, t);

@@ -15,8 +15,8 @@ double median_of(std::vector<double> v) {
 }
 
 // Frames until the last three are within 10% of their median (JIT, thread start-up and caches
-// are done), at least `min` and at most `max` of them.
-void warm_up(const std::function<double()>& frame, int min, int max) {
+// are done), at least `min` and at most `max` of them. Returns the last frame's time.
+double warm_up(const std::function<double()>& frame, int min, int max) {
   std::vector<double> recent;
   for (int i = 0; i < max; ++i) {
     recent.push_back(frame());
@@ -25,8 +25,9 @@ void warm_up(const std::function<double()>& frame, int min, int max) {
     const double m = median_of(last);
     const bool settled = std::all_of(last.begin(), last.end(),
                                      [m](double x) { return std::fabs(x - m) <= 0.10 * m; });
-    if (settled) return;
+    if (settled) break;
   }
+  return recent.empty() ? 0 : recent.back();
 }
 
 }  // namespace
@@ -66,20 +67,38 @@ InterleavedTiming time_interleaved(const std::function<double(bool timed)>& path
                                    const std::function<double()>& baseline_frame,
                                    const InterleaveOptions& o) {
   warm_up(baseline_frame, o.min_warmup, o.max_warmup);
-  warm_up([&] { return path_frame(false); }, o.min_warmup, o.max_warmup);
+  const double warm_path_ms =
+      warm_up([&] { return path_frame(false); }, o.min_warmup, o.max_warmup);
   InterleavedTiming t;
   std::vector<double> ratios;
   double path_seconds = 0;
+  // The baseline frames whose total comes nearest `span` ms (at least one, at most the option's
+  // cap: another frame is taken while it would end closer to `span` than stopping does); returns
+  // their mean.
+  auto baseline_block = [&](double span) {
+    double sum = 0;
+    int n = 0;
+    do {
+      const double ms = baseline_frame();
+      t.baseline_ms.push_back(ms);
+      sum += ms;
+      ++n;
+    } while (sum + 0.5 * sum / n < span && n < o.max_baseline_frames_per_pair);
+    return sum / n;
+  };
+  // The first pair's baseline side needs the path's duration before the path runs: the last
+  // warm-up frame stands in until a timed one exists.
+  double last_path_ms = warm_path_ms;
   while (static_cast<int>(ratios.size()) < o.min_pairs || path_seconds < o.min_seconds) {
     // The baseline first in even pairs and second in odd ones, so that neither side always
     // follows the other (a frame can pay for its predecessor's work still in flight).
     const bool baseline_first = ratios.size() % 2 == 0;
-    double base = 0, path = 0;
-    if (baseline_first) base = baseline_frame();
-    path = path_frame(true);
-    if (!baseline_first) base = baseline_frame();
+    double base = 0;
+    if (baseline_first) base = baseline_block(last_path_ms);
+    const double path = path_frame(true);
+    if (!baseline_first) base = baseline_block(path);
+    last_path_ms = path;
     t.path_ms.push_back(path);
-    t.baseline_ms.push_back(base);
     ratios.push_back(base > 0 ? path / base : 0);
     path_seconds += path / 1000.0;
   }

@@ -3,6 +3,13 @@
 // hiccup or a clock change hits both sides of a pair; the ratio is the median of the per-pair
 // ratios, with a distribution-free 95% interval; every figure gets a minimum measuring time, not
 // just a frame count; warm-up lasts until the frame time settles.
+//
+// Both sides of a pair last about as long: the baseline side is as many baseline frames as fill
+// the path's frame. A 300 ms CPU frame paired with one 15 ms flat frame takes ~20 times the
+// share of whatever else runs on the machine (another process, a page-fault storm, a host's
+// neighbour), so its ratio rose with the background load and did not repeat from run to run
+// (reference 18-28%, gx 17-23% off the median of three runs). With matched durations a
+// disturbance is as likely to land on either side, and the ratio stays put.
 #pragma once
 
 #include <cstddef>
@@ -35,17 +42,22 @@ struct InterleaveOptions {
   double min_seconds = 0.5;  // measuring time of the path per figure (--min-time)
   int min_warmup = 2;        // frames before the settle test
   int max_warmup = 50;       // a path that never settles is timed anyway
+  // The baseline side of a pair: frames until they add up to the path frame's time, at most
+  // this many (a path 1000x slower than flat is then timed against 64 frames, not 1000).
+  int max_baseline_frames_per_pair = 64;
 };
 
 struct InterleavedTiming {
-  std::vector<double> path_ms, baseline_ms;  // the timed frames, in order
-  RatioEstimate ratio;
+  std::vector<double> path_ms;      // the timed path frames, in order (one a pair)
+  std::vector<double> baseline_ms;  // every timed baseline frame, in order (one or more a pair)
+  RatioEstimate ratio;              // of path frame / mean baseline frame, per pair
 };
 
 // `path_frame(timed)` and `baseline_frame()` each render one frame and return its milliseconds
 // (bounded by glFinish); `timed` is false during the path's warm-up, so the caller takes the
 // path's own figures from the timed frames only. Both warm up until three consecutive frames
-// lie within 10% of their median.
+// lie within 10% of their median. Each pair is one path frame and the baseline frames that
+// fill its time (at least one), in alternating order.
 InterleavedTiming time_interleaved(const std::function<double(bool timed)>& path_frame,
                                    const std::function<double()>& baseline_frame,
                                    const InterleaveOptions& options);

@@ -44,7 +44,7 @@ size_t shade_pass(const AttributeRasteriser& raster, const std::vector<PixelProg
                   std::vector<Color8>& efb, bool round_colors) {
   const int width = raster.width(), height = raster.height();
   std::vector<size_t> stage_pixels(worker_threads(), 0);
-  for_each_row_interleaved(height, [&](int gy, unsigned worker) {
+  for_each_row_in_parallel(height, [&](int gy, unsigned worker) {
     TevPixelInputs in;
     for (int x = 0; x < width; ++x) {
       const size_t g = raster.index(x, gy);
