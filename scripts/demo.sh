@@ -25,8 +25,8 @@ python3 scripts/map_vs_vertex.py --bin "$bin" --table out/tessellation/map_vs_ve
 "$bin" bench scenes/maps/*.json -o out/maps --quiet "$@"
 # The talk's parameter figures rebuilt on the teapot (issue 13, scenes/figures/): one labelled
 # row per scene in out/figures/contact.png, each pair on adjacent rows (name order): fig14
-# ambient, fig15 scale, fig16 power, fig17 distortion, fig20/21 grey and red thickness, fig22
-# the coloured cubes. They are pictures, not timings: the fewest frames bench allows (and no
+# ambient, fig15 scale, fig16 power, fig17 distortion, fig20/21 grey and red thickness, fig21m
+# the same pair with the UV map, fig22 the coloured cubes. They are pictures, not timings: the fewest frames bench allows (and no
 # "$@", whose --frames would clash).
 "$bin" bench scenes/figures/*.json --paths reference --frames 10 --warmup 0 --min-time 0 \
   -o out/figures --quiet
