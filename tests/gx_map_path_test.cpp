@@ -12,7 +12,6 @@
 
 #include "map_test_util.h"
 #include "metrics/compare.h"
-#include "model/translucency.h"
 #include "render/session.h"
 
 namespace lt {
@@ -170,37 +169,14 @@ TEST(GxMapPath, AWhiteMapIsExactlyTheConstantThicknessOne) {
   EXPECT_GT(test::covered_pixels(map), map.pixel_count() / 2);
 }
 
-// The ground truth of the quad scene, computed here in double from the model (model::shade with
-// the map bilinearly sampled at each pixel centre's UV), independently of any path: the quad
-// fills the 64 x 64 orthographic image, so pixel (x, y) (row 0 at the top) sees the point
-// (-1 + (x + 0.5) / 32, 1 - (y + 0.5) / 32, 0), whose UV is that mapped from [-1, 1] to [0, 1].
-Image quad_ground_truth(const Scene& scene) {
-  Image img(scene.width, scene.height);
-  const Material& m = scene.materials[0];
-  for (int y = 0; y < scene.height; ++y) {
-    for (int x = 0; x < scene.width; ++x) {
-      model::SurfacePoint sp;
-      sp.P = {-1 + (x + 0.5) * 2 / scene.width, 1 - (y + 0.5) * 2 / scene.height, 0};
-      sp.N = {0, 0, 1};
-      sp.V = model::view_vector(scene.camera, sp.P - scene.camera.eye);
-      sp.uv = {(sp.P.x + 1) / 2, (sp.P.y + 1) / 2};
-      const glm::dvec3 c = model::shade(scene, m, sp);
-      float* out = img.at(x, y);
-      for (int k = 0; k < 3; ++k) out[k] = static_cast<float>(c[k]);
-      out[3] = 1;
-    }
-  }
-  return img;
-}
-
-// gx against that ground truth on the colour map's quad. On a flat quad under an orthographic
-// camera and directional lights t = c0 + k.N is the same at every vertex, so per-vertex t costs
-// nothing and what is left is arithmetic: the no-map programs' truncations (XF float to int, the
-// material multiply, the interpolated colour: ~0.5 LSB each, downwards, doubled where a light
-// needs the x2 scale), plus the map's own: its 7-bit bilinear weights truncated (< 1/128 of a
-// texel step, and the >> 14 drops < 1/255 of the texel), and the map stage's product rounded
-// (0.5 LSB of w, times the later scales). RGB565 adds the format: a texel moves by up to 4/255
-// (r, b) or 2/255 (g) of T, at most that share of the translucency term (x2 where the pass
+// gx against the quad's ground truth (map_test_util.h) on the colour map's quad. On a flat quad
+// under an orthographic camera and directional lights t = c0 + k.N is the same at every vertex, so
+// per-vertex t costs nothing and what is left is arithmetic: the no-map programs' truncations (XF
+// float to int, the material multiply, the interpolated colour: ~0.5 LSB each, downwards, doubled
+// where a light needs the x2 scale), plus the map's own: its 7-bit bilinear weights truncated (<
+// 1/128 of a texel step, and the >> 14 drops < 1/255 of the texel), and the map stage's product
+// rounded (0.5 LSB of w, times the later scales). RGB565 adds the format: a texel moves by up to
+// 4/255 (r, b) or 2/255 (g) of T, at most that share of the translucency term (x2 where the pass
 // scales it). Bounds: RGBA8 3 truncations of 0.5 doubled by the x2 scale plus the map's 1 LSB,
 // 5 max, the downward half of it, 2 mean; RGB565 4 LSB more at most (the format's 4/255 through
 // the x2 scale would be 8; the term is below the whole output), 9 max, 2.6 mean. Measured
@@ -208,7 +184,7 @@ Image quad_ground_truth(const Scene& scene) {
 TEST(GxMapPath, ColourMapIsWithinItsFormatsQuantisationOfTheModel) {
   test::TempDir dir;
   const Scene scene = load_scene(write_map_scene(dir, true));
-  const Image truth = quad_ground_truth(scene);
+  const Image truth = test::quad_ground_truth(scene);
   const Comparison rgba8 =
       compare_images(render_scene(scene, "gx", ""), truth, TestEncoding::kUnorm8);
   const Comparison rgb565 = compare_images(render_scene(scene, "gx", "t=vertex:map=rgb565"), truth,

@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "gltf_test_util.h"
+#include "image/image.h"
+#include "model/translucency.h"
+#include "scene/scene.h"
 #include "test_util.h"
 
 namespace lt::test {
@@ -57,6 +60,29 @@ inline std::string map_scene(const std::string& thickness, const std::string& me
   "objects": [{"gltf": ")" +
          mesh + R"(", "material": "skin"}]
 })";
+}
+
+// The ground truth of map_scene() (any map), computed here in double from the model (model::shade
+// with the map bilinearly sampled at each pixel centre's UV), independently of any path: the quad
+// fills the 64 x 64 orthographic image, so pixel (x, y) (row 0 at the top) sees the point
+// (-1 + (x + 0.5) / 32, 1 - (y + 0.5) / 32, 0), whose UV is that mapped from [-1, 1] to [0, 1].
+inline Image quad_ground_truth(const Scene& scene) {
+  Image img(scene.width, scene.height);
+  const Material& m = scene.materials[0];
+  for (int y = 0; y < scene.height; ++y) {
+    for (int x = 0; x < scene.width; ++x) {
+      model::SurfacePoint sp;
+      sp.P = {-1 + (x + 0.5) * 2 / scene.width, 1 - (y + 0.5) * 2 / scene.height, 0};
+      sp.N = {0, 0, 1};
+      sp.V = model::view_vector(scene.camera, sp.P - scene.camera.eye);
+      sp.uv = {(sp.P.x + 1) / 2, (sp.P.y + 1) / 2};
+      const glm::dvec3 c = model::shade(scene, m, sp);
+      float* out = img.at(x, y);
+      for (int k = 0; k < 3; ++k) out[k] = static_cast<float>(c[k]);
+      out[3] = 1;
+    }
+  }
+  return img;
 }
 
 }  // namespace lt::test

@@ -1,11 +1,12 @@
 #include "gl/map_texture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace lt::gl {
 
-MapTexture::MapTexture(const Context& gl, const TextureMap& map) {
+MapTexture::MapTexture(const Context& gl, const TextureMap& map, MapTexelClass texel_class) {
   const model::Texture& t = map.texture;
   glGenTextures(1, &id_);
   glBindTexture(GL_TEXTURE_2D, id_);
@@ -16,15 +17,22 @@ MapTexture::MapTexture(const Context& gl, const TextureMap& map) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   const std::string size = std::to_string(t.width) + "x" + std::to_string(t.height);
   const bool float_textures = gl.has_extension("GL_ARB_texture_float");
-  if (map.exact_in_8_bits()) {
-    // The texels are multiples of 1/255: upload the bytes, so GL rounds nothing of its own.
+  if (map.exact_in_8_bits() || texel_class == MapTexelClass::Unorm8) {
+    // Rounded here, not by GL, so the bytes are exactly the nearest 1/255 (an 8-bit file's own
+    // bytes come back unchanged).
     std::vector<unsigned char> bytes(t.texels.size());
     for (size_t i = 0; i < bytes.size(); ++i) {
-      bytes[i] = static_cast<unsigned char>(std::lround(t.texels[i] * 255.0));
+      bytes[i] =
+          static_cast<unsigned char>(std::lround(std::clamp(t.texels[i], 0.0f, 1.0f) * 255.0));
     }
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, t.width, t.height, 0, GL_RGB, GL_UNSIGNED_BYTE,
                  bytes.data());
-    description_ = "GL_RGB8 " + size + " (exact: 8-bit file)";
+    description_ =
+        "GL_RGB8 " + size +
+        (map.exact_in_8_bits() ? " (exact: 8-bit file)"
+                               : std::string(map.source_float ? " (a float" : " (a 16-bit") +
+                                     " file rounded to 1/255, clamped to [0, 1]: "
+                                     "GL 1.3 parts filter only 8-bit texels)");
   } else if (!map.source_float || !float_textures) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16, t.width, t.height, 0, GL_RGB, GL_FLOAT,
                  t.texels.data());
@@ -34,12 +42,15 @@ MapTexture::MapTexture(const Context& gl, const TextureMap& map) {
                             "clamped to [0, 1])"
                           : " (exact: 16-bit file)");
   } else {
+    // GL_RGB16F for half and float files alike (MapTexelClass::Fp16): a half file's texels are
+    // halves already, so its conversion is exact; a float file's are rounded to half.
     const bool half = map.source_bits == 16;
-    // A half file's texels are halves already, so the float->half conversion is exact.
-    glTexImage2D(GL_TEXTURE_2D, 0, half ? GL_RGB16F_ARB : GL_RGB32F_ARB, t.width, t.height, 0,
-                 GL_RGB, GL_FLOAT, t.texels.data());
-    description_ = std::string(half ? "GL_RGB16F " : "GL_RGB32F ") + size +
-                   (half ? " (exact: half file)" : " (exact: float file)");
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F_ARB, t.width, t.height, 0, GL_RGB, GL_FLOAT,
+                 t.texels.data());
+    description_ = "GL_RGB16F " + size +
+                   (half ? " (exact: half file)"
+                         : " (float file rounded to half: fp16 is the widest float texture "
+                           "GL 2.0-class parts filter)");
   }
   description_ += ", GL_LINEAR, CLAMP_TO_EDGE";
   glBindTexture(GL_TEXTURE_2D, 0);

@@ -1,7 +1,8 @@
 // A thickness map or a lobe ramp (scene/thickness_map.h) as a GL texture: GL_TEXTURE_2D,
-// GL_LINEAR without mipmaps, GL_CLAMP_TO_EDGE, the texels uploaded as they are stored (row 0 =
-// v = 0, model/texture_sampling.h), so GL's sampling is the one the reference computes in double.
-// Shared by the glsl, arbfp and combiners paths: one upload, one description of its precision.
+// GL_LINEAR without mipmaps, GL_CLAMP_TO_EDGE, the texels uploaded in the widest format the
+// path's hardware class filters (row 0 = v = 0, model/texture_sampling.h), so GL's sampling is
+// the reference's, in that format's precision. Shared by the glsl, arbfp and combiners paths:
+// one upload, one description of its precision.
 #pragma once
 
 #include <string>
@@ -11,15 +12,27 @@
 
 namespace lt::gl {
 
+// The texel formats a path's hardware class can filter, which decides what a file wider than
+// 8 bits (a 16-bit PNG, a half or float EXR) becomes.
+enum class MapTexelClass {
+  // GL 2.0 / ps_2_x-class parts (glsl, arbfp): fp16 is the widest float texture they filter
+  // (GeForce 6 filters fp16; fp32 filtering came only with the DX10 parts), so a float map is
+  // GL_RGB16F, values above 1 kept; a 16-bit file GL_RGB16.
+  Fp16,
+  // GL 1.3-class parts (combiners: GeForce 2/3, Radeon 7500): no float or 16-bit textures, so
+  // every map is GL_RGB8: each texel clamped to [0, 1] (the combine stages clamp there anyway)
+  // and rounded to the nearest 1/255, at most 0.5/255 off.
+  Unorm8,
+};
+
 class MapTexture {
  public:
-  // Needs a current context.
-  //  - 8-bit files: GL_RGB8 from the bytes (v / 255 is what the file held: exact).
-  //  - 16-bit integer files: GL_RGB16 (exact).
-  //  - half EXR: GL_RGB16F_ARB (exact); float EXR: GL_RGB32F_ARB (exact), both through
-  //    GL_ARB_texture_float, which llvmpipe offers. Without it, GL_RGB16: the texels rounded to
-  //    1/65535 (the loss is said in description()), values above 1 clamped to 1.
-  MapTexture(const Context& gl, const TextureMap& map);
+  // Needs a current context. An 8-bit file is GL_RGB8 from its bytes (v / 255 is what the file
+  // held: exact) for either class. Fp16: a half EXR is exact in GL_RGB16F; a float EXR is
+  // rounded to half by the upload (2^-12 relative at most); a 16-bit file is GL_RGB16 (exact).
+  // Without GL_ARB_texture_float (llvmpipe has it), float files fall back to GL_RGB16: the
+  // texels rounded to 1/65535 and clamped to [0, 1] (said in description()).
+  MapTexture(const Context& gl, const TextureMap& map, MapTexelClass texel_class);
   ~MapTexture();
   MapTexture(const MapTexture&) = delete;
   MapTexture& operator=(const MapTexture&) = delete;

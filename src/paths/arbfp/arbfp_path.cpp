@@ -91,9 +91,10 @@ class ArbfpPath final : public Path {
         st->passes.push_back(std::move(ps));
       }
       passes_ = std::max(passes_, st->passes.size());
+      // A float map as half: what the float-filtering ps_2_x parts hold (gl/map_texture.h).
       if (mat.translucency && mat.translucency->thickness_map)
-        st->thickness_map =
-            std::make_unique<gl::MapTexture>(ctx.gl, *mat.translucency->thickness_map);
+        st->thickness_map = std::make_unique<gl::MapTexture>(
+            ctx.gl, *mat.translucency->thickness_map, gl::MapTexelClass::Fp16);
       materials_[m.material] = std::move(st);
     }
     gl::check_error("building arbfp programs");

@@ -130,8 +130,8 @@ class CombinersPath final : public Path {
       lut_textures_[p.material] = upload_lut(lut.texels);
       if (samples_thickness_map(m)) {
         // Per light: its (t^p s + a) / (s + a), and the map (map_stage.h).
-        maps_[p.material] =
-            std::make_unique<gl::MapTexture>(ctx.gl, *m.translucency->thickness_map);
+        maps_[p.material] = std::make_unique<gl::MapTexture>(ctx.gl, *m.translucency->thickness_map,
+                                                             gl::MapTexelClass::Unorm8);
         for (const Light& l : s.lights)
           map_luts_[p.material].push_back(upload_lut(map_lut_texels(lut, *m.translucency, l)));
       }

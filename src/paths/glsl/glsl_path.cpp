@@ -70,6 +70,9 @@ namespace {
 // The textures of the materials that have programs: the thickness map on unit 1 (its UVs are
 // texture coordinate set 1, gl/scene_geometry.h), the ramp on unit 0.
 constexpr int kRampTextureUnit = 0, kMapTextureUnit = 1;
+// GLSL 1.10 is the GL 2.0 class, whose parts filter fp16 but not fp32 textures: a float map or
+// ramp is uploaded as half (gl/map_texture.h).
+constexpr gl::MapTexelClass kTexelClass = gl::MapTexelClass::Fp16;
 class MaterialTextures {
  public:
   MaterialTextures() = default;
@@ -80,8 +83,9 @@ class MaterialTextures {
     for (size_t i = 0; i < programs.size(); ++i) {
       if (!programs[i] || !ctx.scene.materials[i].translucency) continue;
       const Translucency& tr = *ctx.scene.materials[i].translucency;
-      if (tr.thickness_map) maps_[i] = std::make_shared<gl::MapTexture>(ctx.gl, *tr.thickness_map);
-      if (tr.ramp) ramps_[i] = std::make_shared<gl::MapTexture>(ctx.gl, *tr.ramp);
+      if (tr.thickness_map)
+        maps_[i] = std::make_shared<gl::MapTexture>(ctx.gl, *tr.thickness_map, kTexelClass);
+      if (tr.ramp) ramps_[i] = std::make_shared<gl::MapTexture>(ctx.gl, *tr.ramp, kTexelClass);
     }
   }
   void bind(int material) const {

@@ -9,6 +9,11 @@
 // GX_TF_RGB565 instead: half the memory, 5/6/5 bits, each field expanded to 8 by bit
 // replication, so a texel moves by up to 4 (r, b) or 2 (g) of 255.
 //
+// A float (EXR) map gets the same formats: GX has no float texture format (GX_TF_* are I4..RGBA8,
+// the colour-indexed and CMPR ones), so each texel is quantised to the nearest 1/255 of `scale`
+// (I8, RGBA8; at most 0.5/255 of it off) or to RGB565's nearest expansion, exactly as a porter's
+// texture converter would store it.
+//
 // Orientation: the map's texels are stored bottom row first (v = 0, OpenGL's convention, as
 // model/texture_sampling.h keeps them), and GX's t = 0 is the first row in memory, so with the
 // identity texgen (GX_IDENTITY) t = v addresses the same texel a GL path samples: the flip is in
