@@ -18,6 +18,7 @@ packages=(
   libgtest-dev libbenchmark-dev              # tests, micro-benchmarks
   fonts-dejavu-core                          # the contact sheet's labels (DejaVu Sans)
   chromium                                   # the report page's test in a real browser
+  python3                                    # scripts/map_vs_vertex.py (the demo and its test)
 )
 missing=()
 for p in "${packages[@]}"; do
