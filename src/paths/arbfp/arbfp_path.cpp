@@ -39,9 +39,7 @@ GLuint upload_lut(const model::PowerLut& lut) {
   glBindTexture(GL_TEXTURE_1D, tex);
   // Linear filtering between texel centres (texel-centre addressing, power_lut.h); clamp to edge
   // so t = 0 and t = 1 return exactly the end texels.
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl::set_linear_clamp_to_edge(GL_TEXTURE_1D);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (lut.format == model::LutFormat::U8) {
     // The texels are already multiples of 1/255: upload the bytes so GL does no rounding of its

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "gl/map_texture.h"
 #include "model/translucency.h"
 
 namespace lt {
@@ -106,10 +107,7 @@ CubeLobe build_cube_lobe(const Scene& s, const glm::dvec3& eye, int material, si
     glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, n, n, 0,
                  GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   }
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  gl::set_linear_clamp_to_edge(GL_TEXTURE_CUBE_MAP);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   return c;
 }

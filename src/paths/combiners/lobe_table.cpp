@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/map_texture.h"
 #include "model/power_lut.h"
 #include "model/translucency.h"
 
@@ -80,11 +81,8 @@ GLuint upload_lobe_table(const LobeTable& table) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage1D(GL_TEXTURE_1D, 0, rgb ? GL_RGB8 : GL_LUMINANCE8, table.width, 0,
                rgb ? GL_RGB : GL_LUMINANCE, GL_UNSIGNED_BYTE, bytes.data());
-  // Linear between texel centres; CLAMP_TO_EDGE saturates t per pixel (coordinates beyond the
-  // end texel centres read the end texels).
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  // Linear between texel centres; CLAMP_TO_EDGE saturates t per pixel.
+  gl::set_linear_clamp_to_edge(GL_TEXTURE_1D);
   glBindTexture(GL_TEXTURE_1D, 0);
   return tex;
 }
