@@ -13,7 +13,6 @@
 #include "paths/arbfp/arb_budget.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
-#include "paths/arbfp/arb_mesa_counts.h"
 #include "paths/arbfp/arb_passes.h"
 #include "ramp_test_util.h"
 #include "render/session.h"
@@ -22,15 +21,6 @@ namespace lt {
 namespace {
 
 const char kRampScene[] = "scenes/maps/sphere_rgb_ramp.json";
-
-// The largest difference of channel c between two images of the same size, in LSB of 8 bits.
-double channel_max_lsb(const Image& a, const Image& b, int c) {
-  double worst = 0;
-  for (size_t i = 0; i < a.pixel_count(); ++i) {
-    worst = std::max(worst, std::fabs(static_cast<double>(a.rgba[i * 4 + c]) - b.rgba[i * 4 + c]));
-  }
-  return worst * 255;
-}
 
 // No variant refuses the demo ramp scene, and each renders it: finite and lit. Every variant
 // but pow=mul:vertex generates the same program on a ramp material (the ramp is the curve: the
@@ -92,12 +82,8 @@ TEST(ArbfpRamp, CoarseRampOnAFlatQuadIsTheReferenceButForItsLookup) {
   const Scene scene = test::coarse_ramp_quad(dir);
   const Image reference = render_scene(scene, "reference", "");
   for (const char* variant : {"pow=mul", "pow=lut:16:u8", "pow=mul:vertex"}) {
-    const Comparison c =
-        compare_images(render_scene(scene, "arbfp", variant), reference, TestEncoding::kUnorm8);
-    std::printf("arbfp %s, 8-texel ramp on the quad: %.3f max / %.3f mean LSB\n", variant,
-                c.covered.max_lsb, c.covered.mean_lsb);
-    EXPECT_EQ(c.covered.pixels, reference.pixel_count()) << variant;
-    EXPECT_LE(c.covered.max_lsb, 1.05 * test::kCoarseQuadLobeWeight + 0.5) << variant;
+    test::expect_coarse_quad_within(scene, reference, "arbfp", variant,
+                                    1.05 * test::kCoarseQuadLobeWeight + 0.5);
   }
 }
 
@@ -105,14 +91,8 @@ TEST(ArbfpRamp, CoarseRampOnAFlatQuadIsTheReferenceButForItsLookup) {
 // (ramp * s) * T, so the two images may differ in red only, and green and blue are the same bits
 // (the same program, the same diffuse), in every variant of the fragment lobe and per vertex.
 TEST(ArbfpRamp, RedRampLightsOnlyTheRedChannel) {
-  const Scene red = test::ortho_sphere(test::flat_ramp({1, 0, 0}), 0);
-  const Scene black = test::ortho_sphere(test::flat_ramp({0, 0, 0}), 0);
   for (const char* variant : {"pow=mul", "pow=lut:256:u8", "pow=mul:vertex"}) {
-    const Image r = render_scene(red, "arbfp", variant, 96, 96);
-    const Image k = render_scene(black, "arbfp", variant, 96, 96);
-    EXPECT_GT(channel_max_lsb(r, k, 0), 100) << variant << ": the red lobe shows";
-    EXPECT_EQ(channel_max_lsb(r, k, 1), 0) << variant << ": no green translucency";
-    EXPECT_EQ(channel_max_lsb(r, k, 2), 0) << variant << ": no blue translucency";
+    test::expect_red_ramp_lights_only_red("arbfp", variant);
   }
 }
 
@@ -132,11 +112,7 @@ TEST(ArbfpRamp, BudgetCountsOneTexPerLightAndMesaAgrees) {
     EXPECT_EQ(c.tex, 3) << v.name;
     EXPECT_EQ(c.indirections, 2) << v.name;
     EXPECT_FALSE(p.lut.has_value()) << v.name << ": the ramp is the table";
-    const arbfp::MesaCounts mesa = arbfp::mesa_counts(budget::ProgramKind::Fragment, p.fragment);
-    ASSERT_TRUE(mesa.accepted) << v.name << ": " << mesa.error;
-    EXPECT_EQ(mesa.native.alu, c.alu) << v.name;
-    EXPECT_EQ(mesa.native.tex, c.tex) << v.name;
-    EXPECT_EQ(mesa.native.temporaries, c.temporaries) << v.name;
+    test::expect_mesa_counts_agree(p.fragment, c, v.name);
     const budget::BudgetReport r = budget::run_budget(scene, "arbfp", v.name, "ps_2_0");
     EXPECT_TRUE(r.fits()) << v.name << ": " << r.first_overrun();
     ASSERT_EQ(r.term_costs.size(), 1u);
@@ -164,12 +140,7 @@ TEST(ArbfpRamp, ProfileSplitsARampSceneIntoPassesThatFit) {
     const std::string what = arbfp::describe(p);
     EXPECT_TRUE(budget::check(p.fragment_counts, budget::find_profile("ps_2_0")).empty()) << what;
     EXPECT_EQ(p.fragment_counts.tex, static_cast<int>(p.count)) << what;
-    const arbfp::MesaCounts mesa =
-        arbfp::mesa_counts(budget::ProgramKind::Fragment, p.programs.fragment);
-    ASSERT_TRUE(mesa.accepted) << what << ": " << mesa.error;
-    EXPECT_EQ(mesa.native.alu, p.fragment_counts.alu) << what;
-    EXPECT_EQ(mesa.native.tex, p.fragment_counts.tex) << what;
-    EXPECT_EQ(mesa.native.temporaries, p.fragment_counts.temporaries) << what;
+    test::expect_mesa_counts_agree(p.programs.fragment, p.fragment_counts, what);
   }
   const auto float_frame = [&](const std::string& profile) {
     RenderSession session(scene, 160, 120);

@@ -4,11 +4,16 @@
 // carrying one.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "arb_test_util.h"
+#include "image/image.h"
 #include "map_test_util.h"
+#include "metrics/compare.h"
+#include "render/session.h"
 #include "scene/thickness_map.h"
 
 namespace lt::test {
@@ -63,6 +68,34 @@ inline glm::dvec3 lobe_weight(const Scene& s) {
   return w * tr.thickness * tr.tint;
 }
 
+// The largest difference of channel c between two images of one size, in LSB of 8 bits.
+inline double channel_max_lsb(const Image& a, const Image& b, int c) {
+  double worst = 0;
+  for (size_t i = 0; i < a.pixel_count(); ++i) {
+    worst = std::max(worst, std::fabs(static_cast<double>(a.rgba[i * 4 + c]) - b.rgba[i * 4 + c]));
+  }
+  return worst * 255;
+}
+
+// Two renders of one scene whose ramps are pure red and black, the translucency ambient 0: the
+// term is the ramp times the rest, so only red may differ (by more than `min_red_lsb`: the lobe
+// shows), and green and blue are the same bits.
+inline void expect_only_red_differs(const Image& red, const Image& black, double min_red_lsb,
+                                    const std::string& what) {
+  EXPECT_GT(channel_max_lsb(red, black, 0), min_red_lsb) << what << ": the red lobe shows";
+  EXPECT_EQ(channel_max_lsb(red, black, 1), 0) << what << ": no green translucency";
+  EXPECT_EQ(channel_max_lsb(red, black, 2), 0) << what << ": no blue translucency";
+}
+
+// The same on the orthographic sphere through `path` `variant`, 96 x 96 (its lobe reaches far
+// over 100 LSB of red).
+inline void expect_red_ramp_lights_only_red(const std::string& path, const std::string& variant) {
+  const Scene red = ortho_sphere(flat_ramp({1, 0, 0}), 0);
+  const Scene black = ortho_sphere(flat_ramp({0, 0, 0}), 0);
+  expect_only_red_differs(render_scene(red, path, variant, 96, 96),
+                          render_scene(black, path, variant, 96, 96), 100, path + " " + variant);
+}
+
 // The thickness-map quad seen head-on (map_test_util.h: orthographic, two directional lights,
 // here constant thickness 1) with an 8-texel rgb ramp with a steep last step, written into `dir`.
 // t is the same everywhere on the flat quad: 0.876 for the light behind it (between the last two
@@ -83,5 +116,18 @@ inline Scene coarse_ramp_quad(const TempDir& dir) {
 }
 // The lobe's weight on it: albedo 0.8 x (intensity 1.5 + 0.3) x s 1 x T 1.
 inline constexpr double kCoarseQuadLobeWeight = 0.8 * (1.5 + 0.3);
+
+// `path` `variant` renders the coarse ramp quad (`scene`) over every pixel, within `bound` LSB of
+// the `reference` render at the most (and prints what it measured).
+inline void expect_coarse_quad_within(const Scene& scene, const Image& reference,
+                                      const std::string& path, const std::string& variant,
+                                      double bound) {
+  const Comparison c =
+      compare_images(render_scene(scene, path, variant), reference, TestEncoding::kUnorm8);
+  std::printf("%s %s, 8-texel ramp on the quad: %.3f max / %.3f mean LSB\n", path.c_str(),
+              variant.c_str(), c.covered.max_lsb, c.covered.mean_lsb);
+  EXPECT_EQ(c.covered.pixels, reference.pixel_count()) << variant;
+  EXPECT_LE(c.covered.max_lsb, bound) << path << " " << variant;
+}
 
 }  // namespace lt::test
