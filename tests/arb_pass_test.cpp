@@ -14,7 +14,6 @@
 #include "metrics/compare.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
-#include "paths/arbfp/arb_mesa_counts.h"
 #include "paths/arbfp/arb_passes.h"
 #include "render/session.h"
 #include "test_util.h"
@@ -127,12 +126,7 @@ TEST(ArbPasses, EveryPassFitsTheProfileByTheCounterAndByMesa) {
     ambient += p.ambient;
     EXPECT_TRUE(budget::check(p.fragment_counts, budget::find_profile("ps_2_0")).empty()) << what;
     EXPECT_TRUE(budget::check(p.vertex_counts, budget::find_profile("vs_2_0")).empty()) << what;
-    const arbfp::MesaCounts mesa =
-        arbfp::mesa_counts(budget::ProgramKind::Fragment, p.programs.fragment);
-    ASSERT_TRUE(mesa.accepted) << what << ": " << mesa.error;
-    EXPECT_EQ(mesa.native.alu, p.fragment_counts.alu) << what;
-    EXPECT_EQ(mesa.native.tex, p.fragment_counts.tex) << what;
-    EXPECT_EQ(mesa.native.temporaries, p.fragment_counts.temporaries) << what;
+    test::expect_mesa_counts_agree(p.programs.fragment, p.fragment_counts, what);
   }
   EXPECT_EQ(next, scene.lights.size());
   EXPECT_EQ(ambient, 1);

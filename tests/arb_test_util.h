@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "gl/program.h"
+#include "paths/arbfp/arb_mesa_counts.h"
 #include "paths/path.h"
 #include "scene/scene.h"
 #include "test_util.h"
@@ -72,5 +73,18 @@ inline std::vector<float> frame_in_float_target(Path& path, int width, int heigh
   target.read(0, px);
   target.unbind();
   return px;
+}
+}  // namespace lt::test
+
+namespace lt::test {
+// Mesa accepts a generated fragment program's text, and its native counts agree with `counts`
+// (the counter's) on ALU, TEX and temporaries. Needs a current GL context.
+inline void expect_mesa_counts_agree(const std::string& fragment,
+                                     const budget::ProgramCounts& counts, const std::string& what) {
+  const arbfp::MesaCounts mesa = arbfp::mesa_counts(budget::ProgramKind::Fragment, fragment);
+  ASSERT_TRUE(mesa.accepted) << what << ": " << mesa.error;
+  EXPECT_EQ(mesa.native.alu, counts.alu) << what;
+  EXPECT_EQ(mesa.native.tex, counts.tex) << what;
+  EXPECT_EQ(mesa.native.temporaries, counts.temporaries) << what;
 }
 }  // namespace lt::test

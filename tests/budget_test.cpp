@@ -161,6 +161,8 @@ TEST(ProgramCounter, EveryGeneratedProgramAgreesWithMesa) {
   for (const std::string& s : test::json_files("scenes/hard")) scenes.push_back(s);
   // The packed light groups of issue 10: four point lights, eight directional ones, twelve mixed.
   for (const std::string& s : test::json_files("scenes/budget")) scenes.push_back(s);
+  // Thickness maps and a lobe ramp (their TEX: the map's, one of the ramp per light).
+  for (const std::string& s : test::json_files("scenes/maps")) scenes.push_back(s);
   for (const std::string& file : scenes) {
     const Scene scene = test::load_test_scene(file);
     for (const VariantInfo& v : arbfp_path_info().variants) {

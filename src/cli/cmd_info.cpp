@@ -72,8 +72,8 @@ Action add_info(CLI::App& app) {
       if (t.ramp) {
         o << ", lobe from the ramp " << t.ramp->file.string() << " (" << t.ramp->texture.width
           << " texels" << (t.ramp->grey ? ", grey" : ", rgb")
-          << "; replaces t^power on reference, half and glsl, whatever the pow variant; arbfp, "
-             "combiners and gx refuse it)";
+          << "; replaces t^power on every path, whatever the pow variant; gx lobe=xf-spec "
+             "refuses it)";
       }
       o << "\n";
     }

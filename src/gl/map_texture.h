@@ -25,6 +25,12 @@ enum class MapTexelClass {
   Unorm8,
 };
 
+// GL_LINEAR without mipmaps and GL_CLAMP_TO_EDGE (s and t) for the texture bound to `target`
+// (1D, 2D or a cube map): the sampling the reference computes in double
+// (model/texture_sampling.h), and every lookup table's: coordinates beyond the end texel centres
+// read the end texels, which saturates a table's t.
+void set_linear_clamp_to_edge(GLenum target);
+
 class MapTexture {
  public:
   // Needs a current context. An 8-bit file is GL_RGB8 from its bytes (v / 255 is what the file

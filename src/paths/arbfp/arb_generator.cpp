@@ -36,7 +36,8 @@ const char kFragmentHeader[] =
 #   fragment.texcoord[2]  vertex thickness (only when the material reads it), or the UVs of
 #                          a thickness map (texture[1])
 #   fragment.texcoord[3+g] pow=mul:vertex only: (lobe * s + a) of light group g, per vertex
-#                          (then the fragment program has no t, V, H or lobe of its own)
+#                          (then the fragment program has no t, V, H or lobe of its own); on a
+#                          lobe-ramp material t of light group g, which the ramp's TEX reads
 #
 )";
 
@@ -74,8 +75,10 @@ struct Key {
   const PowVariant& variant;
   bool term = false;              // the translucency term is generated
   bool flat_lobe = false;         // p = 0: t^0 = 1 everywhere (0^0 := 1), no t and no lobe
-  bool vertex_lobe = false;       // pow=mul:vertex: the vertex program computes the lobe
+  bool vertex_lobe = false;       // pow=mul:vertex: the vertex program computes t and the lobe
+                                  // (t only with ramp_lobe: the fragment program reads the ramp)
   bool fragment_lobe = false;     // the fragment program computes t and the lobe
+  bool ramp_lobe = false;         // the material's ramp replaces t^p in every variant (lobe_ramp)
   bool vertex_thickness = false;  // T comes from the vertex colour
   bool map_thickness = false;     // T comes from a thickness map (arb_thickness_map.h)
   bool ortho = false, ambient = false, any_point = false;
@@ -113,6 +116,26 @@ LightList ordered_lights(const Scene& scene, bool by_kind, size_t first_light) {
   return out;
 }
 
+// What every variant does on a lobe-ramp material (for `info`): the ramp is the curve.
+std::string ramp_note(const PowVariant& variant, const TextureMap& ramp) {
+  const std::string s = "lobe ramp " + ramp.file.filename().string() + " (" +
+                        std::to_string(ramp.texture.width) + " texels, " +
+                        (ramp.grey ? "grey" : "rgb") +
+                        "): its value at t replaces t^p (power unused), one TEX per light from "
+                        "texture[0]";
+  if (variant.per_vertex) {
+    return s +
+           "; pow=mul:vertex: t per vertex (unsaturated, Gouraud-interpolated), the ramp per "
+           "pixel";
+  }
+  return s + "; " + variant.name() + " has no curve to approximate on this material";
+}
+
+// Light group g's texcoord from the vertex program to the fragment program (pow=mul:vertex).
+std::string vertex_lobe_texcoord(size_t group) {
+  return "texcoord[" + std::to_string(kVertexLobeTexcoord + group) + "]";
+}
+
 // Which groups are packed and which sum their colours by dot products, for `layout`.
 void apply_layout(Key& k, const Layout& layout) {
   k.list = ordered_lights(k.scene, layout.by_kind, k.first_light);
@@ -124,12 +147,14 @@ void apply_layout(Key& k, const Layout& layout) {
   }
   k.guards = lane_order;
   // Not packed: the LUT (its TEX results take the per-light registers H and L, lobe_lut) and a
-  // normalised H (|H| per light).
-  const bool packable =
-      k.method != PowMethod::Lut && !(k.fragment_lobe && k.tr.normalize_distorted_light);
+  // normalised H (|H| per light). A ramp packs t and reads the ramp light by light (lobe_ramp).
+  const bool packable = (k.ramp_lobe || k.method != PowMethod::Lut) &&
+                        !(k.fragment_lobe && k.tr.normalize_distorted_light);
   // The dot products read a group's lobe register, which the fragment program's own packed lobe
-  // methods have (the LUT's, the vertex lobe's and the flat lobe's are not temporaries).
-  const bool lobe_register = !k.term || (k.fragment_lobe && k.method != PowMethod::Lut);
+  // methods have (the LUT's, the ramp's, the vertex lobe's and the flat lobe's are not
+  // temporaries of one scalar per light).
+  const bool lobe_register =
+      !k.term || (k.fragment_lobe && !k.ramp_lobe && k.method != PowMethod::Lut);
   for (size_t g = 0; g < k.groups; ++g) {
     const size_t n = lanes_of_group(g, k.lights);
     const bool packed = packable && n >= layout.pack_min && group_has_one_kind(k.list, g);
@@ -147,7 +172,7 @@ void apply_layout(Key& k, const Layout& layout) {
     k.notes.push_back("lights " + lights + " packed four lanes to a register" +
                       (k.dot_sums.back() ? ", colour sums as dot products" : ""));
   }
-  k.fold_scale = layout.fold_scale && k.fragment_lobe && k.method == PowMethod::Mul;
+  k.fold_scale = layout.fold_scale && k.fragment_lobe && !k.ramp_lobe && k.method == PowMethod::Mul;
   for (size_t g = 0; g < k.groups; ++g) {
     // A light summed alone folds s into a PARAM s * T: only a constant T can.
     k.fold_scale &= k.dot_sums[g] || k.tr.thickness_source == ThicknessSource::Constant;
@@ -165,7 +190,8 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
   k.map_thickness = k.term && k.tr.thickness_source == ThicknessSource::Texture;
   k.ortho = scene.camera.projection == Camera::Projection::Orthographic;
   k.ambient = scene.ambient_light != glm::dvec3(0);
-  k.flat_lobe = k.term && k.tr.power == 0;
+  k.ramp_lobe = k.term && k.tr.ramp != nullptr;
+  k.flat_lobe = k.term && !lobe_varies(k.tr);
   for (const Light& l : scene.lights) k.any_point |= l.type == Light::Type::Point;
   k.vertex_lobe = k.term && !k.flat_lobe && variant.per_vertex;
   k.fragment_lobe = k.term && !k.flat_lobe && !k.vertex_lobe;
@@ -176,18 +202,20 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
                          std::to_string(k.lights));
   }
   k.method = variant.method;
-  if (k.term && !k.flat_lobe && k.method == PowMethod::Mul && !is_integer_power(k.tr.power)) {
+  if (k.term && !k.flat_lobe && !k.ramp_lobe && k.method == PowMethod::Mul &&
+      !is_integer_power(k.tr.power)) {
     k.notes.push_back(variant.name() + ": power " + ir::num(k.tr.power) +
                       " is not an integer, exact POW used instead" +
                       (variant.per_vertex ? " (per vertex)" : ""));
     k.method = PowMethod::Exact;
   }
   if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
+  if (k.ramp_lobe) k.notes.push_back(ramp_note(variant, *k.tr.ramp));
   k.first_light = first_light;
   k.guards = guard_needs(scene, material, variant.all_guards, first_light);
   for (const std::string& n : k.guards.notes) k.notes.push_back(n);
   apply_layout(k, layout);
-  if (k.vertex_lobe) {
+  if (k.vertex_lobe && !k.ramp_lobe) {
     k.notes.push_back(std::string("pow=mul:vertex: t and the lobe per vertex, Gouraud-") +
                       "interpolated" + (k.any_point ? " (point lights: L at the vertex too)" : ""));
   }
@@ -201,12 +229,16 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
 // interpolating it equals applying it to the interpolated lobe). Every hard-case convention of
 // src/model/translucency.h holds at the vertices; between them the lobe is Gouraud-interpolated
 // (also for point lights, whose L is taken at the vertex here, like the combiners path), which is
-// this variant's error.
+// this variant's error. On a lobe-ramp material only t, unsaturated: the fragment program reads
+// the ramp at the interpolated t, whose CLAMP_TO_EDGE saturates it per pixel as the model does
+// (saturating per vertex would move the lobe's edge).
 void emit_vertex_lobe(ir::Program& p, Key& k) {
   ir::Block decls = p.block(), temps = p.block(), code = p.block();
-  decls.text(
-      "# The translucency lobe per vertex (pow=mul:vertex): the fragment program only adds\n"
-      "# lobe * T to the diffuse term of each light.\n");
+  decls.text(k.ramp_lobe
+                 ? "# t per vertex (pow=mul:vertex on a lobe-ramp material): the fragment program\n"
+                   "# reads the ramp at the interpolated t.\n"
+                 : "# The translucency lobe per vertex (pow=mul:vertex): the fragment program only "
+                   "adds\n# lobe * T to the diffuse term of each light.\n");
   Shading s;
   s.P = attrib("vertex.position");
   s.material = declare_material(decls, k.tr);
@@ -216,7 +248,9 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
   for (size_t i = 0; i < k.lights; ++i) {
     light_vector.push_back(declare_light_vector(decls, k.list, i));
   }
-  for (size_t g = 0; g < k.groups; ++g) scale.push_back(declare_scale(decls, k.list, g));
+  for (size_t g = 0; g < k.groups && !k.ramp_lobe; ++g) {
+    scale.push_back(declare_scale(decls, k.list, g));
+  }
 
   s.r = p.temp("r");
   s.N = p.temp("N");
@@ -225,6 +259,10 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
   if (k.any_point) s.L = p.temp("L");
   std::vector<Reg> tv, lobe;
   for (size_t g = 0; g < k.groups; ++g) {
+    if (k.ramp_lobe) {
+      tv.push_back(output("result." + vertex_lobe_texcoord(g)));  // t goes out as it is
+      continue;
+    }
     tv.push_back(p.temp("tv" + std::to_string(g)));
     lobe.push_back(p.temp("lobe" + std::to_string(g)));
   }
@@ -233,9 +271,15 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
   code.text("# N = n / |n|, or 0 when |n| < 1e-6 (then H = L, as the reference).\n");
   emit_normal(code, s, attrib("vertex.normal"));
   if (!k.ortho) emit_view_vector(code, s);
+  if (k.ramp_lobe)
+    code.text("# t = dot(V, -H) of each light, unsaturated, to the fragment program.\n");
   for (size_t i = 0; i < k.lights; ++i) {
     const Reg L = emit_light_direction(code, s, k.list, i, light_vector[i]);
     emit_t(code, s, L, k.tr.normalize_distorted_light, write_lane(tv, i));
+  }
+  if (k.ramp_lobe) {
+    code.text("\n");
+    return;
   }
   code.text("# t = saturate(dot(V, -H)) for a whole group at once (no _SAT in vertex programs).\n");
   for (size_t g = 0; g < k.groups; ++g) {
@@ -243,11 +287,11 @@ void emit_vertex_lobe(ir::Program& p, Key& k) {
     code.op(Op::MAX, dst, {tv[g], s.material.zero});
     code.op(Op::MIN, dst, {tv[g], s.guard.one});
   }
-  LobeInput in{decls, code, s, k.variant, k.tr, k.lights, tv, lobe, k.any_point, k.notes, {}};
+  LobeInput in{decls, code, s, k.variant, k.tr, k.lights, tv, lobe, k.notes, {}};
   lobe_mul_vertex(in, k.method);
   code.text("# lobe * s + a, to the fragment program.\n");
   for (size_t g = 0; g < k.groups; ++g) {
-    const Reg out = output("result.texcoord[" + std::to_string(kVertexLobeTexcoord + g) + "]");
+    const Reg out = output("result." + vertex_lobe_texcoord(g));
     emit_scale_and_ambient(code, out.masked(group_mask(g, k.lights)), lobe[g], scale[g], s.material,
                            k.tr.ambient != 0);
   }
@@ -356,11 +400,12 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
   }
   if (k.term) {
     if (k.vertex_lobe) {
-      d.text("# pow=mul:vertex: (lobe * s + a) of light group g comes in fragment.texcoord[" +
-             std::to_string(kVertexLobeTexcoord) + " + g]\n");
-    } else {
-      f.s.material = declare_material(d, k.tr);
+      d.text(std::string("# pow=mul:vertex: ") + (k.ramp_lobe ? "t" : "(lobe * s + a)") +
+             " of light group g comes in fragment.texcoord[" + std::to_string(kVertexLobeTexcoord) +
+             " + g]\n");
     }
+    // A ramp's lobe * s + a is the fragment program's, whichever program computed t.
+    if (!k.vertex_lobe || k.ramp_lobe) f.s.material = declare_material(d, k.tr);
     if (k.vertex_thickness) {
       // The vertex program multiplied the tint in (see there).
       d.text("# T = fragment.texcoord[2]: vertex colour * tint\n");
@@ -491,8 +536,9 @@ void fragment_lights(Fragment& f, const Key& k) {
 // Each light's lobe as the accumulation reads it.
 struct FragmentLobe {
   LobeLanes lanes;
-  // The LUT's lanes hold t^p and are scaled light by light in the accumulation (these are the
-  // scales, per group); every other lobe arrives as lobe * s + a (empty).
+  // The LUT's and the ramp's lanes hold the lobe and are scaled light by light in the
+  // accumulation (these are the scales, per group); every other lobe arrives as lobe * s + a
+  // (empty).
   std::vector<Reg> scale_in_accumulation;
 };
 
@@ -514,17 +560,47 @@ LobeLanes fragment_method(LobeInput& in, PowMethod method, const model::PowerLut
   return {};
 }
 
+// Light i's lane of what the vertex program passed (pow=mul:vertex): lobe * s + a, or t.
+Reg vertex_lobe_lane(size_t light) {
+  return attrib("fragment." + vertex_lobe_texcoord(light / 4)).swz(component(light));
+}
+
+// Temporaries dead once every light's t, diffuse and attenuation are known (the lobe's TEX
+// results may take them; the accumulation reads none of them): each group's lobe register (a
+// packed point group's dist^2 scratch until then), the per-light H and L, the scratch r, a packed
+// point group's position - P, the normal and the view vector.
+std::vector<Reg> lobe_scratch(const Fragment& f) {
+  std::vector<Reg> out = f.lobe;
+  for (const Reg& r : {f.s.H, f.s.r, f.s.L, f.d[0], f.d[1], f.d[2], f.s.N, f.s.V}) {
+    if (r.valid() && r.file == ir::File::Temp) out.push_back(r);
+  }
+  return out;
+}
+
+// A lobe-ramp material, whatever the variant: the ramp at each light's t (computed here, or per
+// vertex by pow=mul:vertex), scaled light by light in the accumulation (the lobe is rgb).
+FragmentLobe emit_ramp_lobe(Fragment& f, const Key& k) {
+  std::vector<Reg> t;
+  for (size_t i = 0; i < k.lights; ++i) {
+    t.push_back(k.vertex_lobe ? vertex_lobe_lane(i) : read_lane(f.tv, i));
+  }
+  FragmentLobe out;
+  out.lanes = lobe_ramp(f.code, t, lobe_scratch(f));
+  for (size_t g = 0; g < k.groups; ++g) {
+    out.scale_in_accumulation.push_back(declare_scale(f.decls, k.list, g));
+  }
+  return out;
+}
+
 // The lobe t^p for every light, by the variant's method, then lobe * s + a per group.
 FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut) {
+  if (k.ramp_lobe) return emit_ramp_lobe(f, k);
   f.code.text("\n# The lobe t^p for every light of a group at once, then (lobe * s + a).\n");
   FragmentLobe out;
   LobeLanes& lanes = out.lanes;
   if (k.vertex_lobe) {
     f.code.text("# pow=mul:vertex: the lobe, times s plus a, was computed per vertex.\n");
-    for (size_t i = 0; i < k.lights; ++i) {
-      const std::string texcoord = std::to_string(kVertexLobeTexcoord + i / 4);
-      lanes.push_back(attrib("fragment.texcoord[" + texcoord + "]").swz(component(i)));
-    }
+    for (size_t i = 0; i < k.lights; ++i) lanes.push_back(vertex_lobe_lane(i));
     return out;
   }
   if (!k.term) return out;
@@ -539,8 +615,8 @@ FragmentLobe emit_lobe(Fragment& f, Key& k, std::optional<model::PowerLut>& lut)
     for (size_t i = 0; i < k.lights; ++i) lanes.push_back(read_lane(f.lobe, i));
     return out;
   }
-  LobeInput in{f.decls, f.code, f.s,         k.variant, k.tr, k.lights,
-               f.tv,    f.lobe, k.any_point, k.notes,   {}};
+  LobeInput in{f.decls, f.code, f.s,     k.variant, k.tr,           k.lights,
+               f.tv,    f.lobe, k.notes, {},        lobe_scratch(f)};
   if (k.fold_scale && k.tr.ambient != 0) {
     // lobe * s + a = (lobe + a / s) * s: a / s rides on the chain's last MUL, s on T or on
     // the colours the sum reads.

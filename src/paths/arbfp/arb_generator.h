@@ -18,14 +18,22 @@ struct ArbPrograms {
   std::string vertex, fragment;  // ir::print of the programs below
   ir::Program vertex_program{ir::ProgramKind::Vertex};
   ir::Program fragment_program{ir::ProgramKind::Fragment};
-  std::optional<model::PowerLut> lut;  // the texture the fragment program samples as texture[0]
-  std::vector<std::string> notes;      // what the variant did for this material (for `info`)
+  // The texture the fragment program samples as texture[0] for pow=lut; a lobe-ramp material's
+  // program samples its ramp there instead (2D, arb_lobe.h), and has no LUT.
+  std::optional<model::PowerLut> lut;
+  std::vector<std::string> notes;  // what the variant did for this material (for `info`)
 };
 
 // The per-vertex variant passes light group g's lobe in texcoord[kVertexLobeTexcoord + g]; ps_2_0
 // has 8 texcoords, so it takes at most 4 * (8 - kVertexLobeTexcoord) lights.
 inline constexpr int kVertexLobeTexcoord = 3;
 inline constexpr size_t kMaxVertexLobeLights = 4 * (8 - kVertexLobeTexcoord);
+
+// Whether a translucency's lobe varies with t (and the programs compute t): a ramp, or a power
+// other than 0 (t^0 = 1 everywhere, 0^0 := 1, is a constant).
+inline bool lobe_varies(const Translucency& tr) {
+  return tr.ramp != nullptr || tr.power != 0;
+}
 
 // `translucency_term = false` generates the same program without the translucency term (diffuse
 // only), so the budget can report the term's own cost as the difference. The programs' names,

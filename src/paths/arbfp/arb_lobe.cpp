@@ -53,6 +53,42 @@ LobeLanes exact_vertex(LobeInput& in) {
   return packed_lanes(in);
 }
 
+// Whether coords[i] is the last coordinate read from its temporary (a later TEX may then write
+// the whole register: its other lanes are read already).
+bool last_read_of_temporary(const std::vector<Reg>& coords, size_t i) {
+  if (coords[i].file != ir::File::Temp) return false;
+  for (size_t j = i + 1; j < coords.size(); ++j) {
+    if (coords[j].same_register(coords[i])) return false;
+  }
+  return true;
+}
+
+// One TEX per light at coords[i], each writing a whole register of its own: Mesa's
+// ARB_fragment_program (llvmpipe) returns wrong values from the third write-masked TEX into one
+// register (measured: a packed lobe0.z was garbage). No ALU instruction comes between the TEXes,
+// so after the first (which starts an indirection: its coordinate was computed) none adds one
+// (ARB_fragment_program issue 24), whatever register it writes; the registers are, in order: the
+// coordinate's own once this TEX is its last reader (a group's last light writes its t register),
+// then `scratch` (registers dead by now), then new temporaries tex<i>.
+std::vector<Reg> tex_per_light(ir::Block& code, const std::vector<Reg>& coords,
+                               const std::vector<Reg>& scratch, const std::string& target) {
+  std::vector<Reg> out;
+  size_t next = 0;
+  for (size_t i = 0; i < coords.size(); ++i) {
+    Reg dst;
+    if (last_read_of_temporary(coords, i)) {
+      dst = coords[i].as_destination().masked("");
+    } else if (next < scratch.size()) {
+      dst = scratch[next++];
+    } else {
+      dst = code.program().temp("tex" + std::to_string(i));
+    }
+    code.tex(dst, coords[i], kLobeTableUnit, target);
+    out.push_back(dst);
+  }
+  return out;
+}
+
 }  // namespace
 
 LobeLanes lobe_exact(LobeInput& in) {
@@ -80,20 +116,10 @@ LobeLanes lobe_lut(LobeInput& in, const model::PowerLut& lut) {
   for (size_t g = 0; g < in.tv.size(); ++g) {
     in.code.op(Op::MAD, group_dst(in.tv, g, in), {in.tv[g], remap.swz("x"), remap.swz("y")});
   }
-  // Each TEX writes a whole register of its own: Mesa's ARB_fragment_program (llvmpipe) returns
-  // wrong values from the third write-masked TEX into one register (measured: a packed lobe0.z
-  // was garbage), and a TEX overwriting a register an ALU instruction read since the last TEX
-  // would add an indirection. Registers dead by now are reused first.
-  std::vector<Reg> pool = in.lobe;
-  pool.push_back(in.s.H);
-  pool.push_back(in.s.r);
-  if (in.any_point) pool.push_back(in.s.L);
+  std::vector<Reg> coords;
+  for (size_t i = 0; i < in.lights; ++i) coords.push_back(read_lane(in.tv, i));
   LobeLanes out;
-  for (size_t i = 0; i < in.lights; ++i) {
-    if (i >= pool.size()) pool.push_back(in.code.program().temp("tex" + std::to_string(i)));
-    in.code.tex(pool[i], read_lane(in.tv, i), 0, "1D");
-    out.push_back(pool[i].swz("x"));
-  }
+  for (const Reg& r : tex_per_light(in.code, coords, in.scratch, "1D")) out.push_back(r.swz("x"));
   return out;
 }
 
@@ -125,6 +151,13 @@ LobeLanes lobe_mul(LobeInput& in) {
 
 LobeLanes lobe_mul_vertex(LobeInput& in, PowMethod method) {
   return method == PowMethod::Mul ? lobe_mul(in) : exact_vertex(in);
+}
+
+LobeLanes lobe_ramp(ir::Block& code, const std::vector<Reg>& t, const std::vector<Reg>& scratch) {
+  code.text(
+      "# Lobe ramp: the ramp's rgb at t replaces t^p, one TEX per light (texture[0], 2D, one\n"
+      "# row: (t, t) reads what (t, 0.5) reads), after every light's ALU code.\n");
+  return tex_per_light(code, t, scratch, "2D");
 }
 
 }  // namespace lt::arbfp

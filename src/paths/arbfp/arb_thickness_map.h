@@ -9,7 +9,8 @@
 
 namespace lt::arbfp {
 
-// texture[1]: unit 0 is the power LUT's. The UVs arrive as vertex.texcoord[1]
+// texture[1]: unit 0 is the lobe table's (the power LUT or a lobe ramp, kLobeTableUnit in
+// arb_lobe.h). The UVs arrive as vertex.texcoord[1]
 // (gl/scene_geometry.h) and travel in result.texcoord[2], the vertex thickness's varying, which
 // a map material does not read.
 inline constexpr int kThicknessMapUnit = 1;
@@ -20,7 +21,7 @@ void emit_map_uv(ir::Block& code);
 // Fragment program: TEX T, fragment.texcoord[2], texture[1], 2D, then MUL T.xyz by the tint
 // unless it is 1. Emitted before any ALU instruction, the fetch reads an input directly, so it
 // is in the first texture indirection (ARB_fragment_program issue 24) and adds none: the LUT's
-// TEX, which reads a computed t, stays the second.
+// or the ramp's TEX, which read a computed t, stay the second.
 ir::Reg emit_map_thickness(ir::Program& p, ir::Block& decls, ir::Block& code,
                            const glm::dvec3& tint);
 

@@ -8,6 +8,7 @@
 #include "paths/arbfp/arb_file_budget.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
+#include "paths/arbfp/arb_lobe.h"
 #include "paths/arbfp/arb_passes.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arb_thickness_map.h"
@@ -28,6 +29,8 @@ struct PassState {
 struct MaterialState {
   std::vector<PassState> passes;
   std::unique_ptr<gl::MapTexture> thickness_map;  // on texture unit kThicknessMapUnit
+  // A lobe ramp on kLobeTableUnit (2D): every pass's program reads it instead of a power LUT.
+  std::unique_ptr<gl::MapTexture> ramp;
 };
 
 GLuint upload_lut(const model::PowerLut& lut) {
@@ -36,9 +39,7 @@ GLuint upload_lut(const model::PowerLut& lut) {
   glBindTexture(GL_TEXTURE_1D, tex);
   // Linear filtering between texel centres (texel-centre addressing, power_lut.h); clamp to edge
   // so t = 0 and t = 1 return exactly the end texels.
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl::set_linear_clamp_to_edge(GL_TEXTURE_1D);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (lut.format == model::LutFormat::U8) {
     // The texels are already multiples of 1/255: upload the bytes so GL does no rounding of its
@@ -57,9 +58,16 @@ GLuint upload_lut(const model::PowerLut& lut) {
   return tex;
 }
 
-void bind_thickness_map(const gl::MapTexture* map) {
-  glActiveTexture(GL_TEXTURE0 + arbfp::kThicknessMapUnit);
-  glBindTexture(GL_TEXTURE_2D, map ? map->id() : 0);
+// The material's 2D textures: the thickness map (texture[1]) and the lobe ramp (texture[0], whose
+// 1D target holds the power LUT of pow=lut: a program reads one of the two).
+void bind_material_textures(const MaterialState* st) {
+  const std::pair<int, const gl::MapTexture*> units[] = {
+      {arbfp::kThicknessMapUnit, st ? st->thickness_map.get() : nullptr},
+      {arbfp::kLobeTableUnit, st ? st->ramp.get() : nullptr}};
+  for (const auto& [unit, texture] : units) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, texture ? texture->id() : 0);
+  }
   glActiveTexture(GL_TEXTURE0);
 }
 
@@ -95,6 +103,10 @@ class ArbfpPath final : public Path {
       if (mat.translucency && mat.translucency->thickness_map)
         st->thickness_map = std::make_unique<gl::MapTexture>(
             ctx.gl, *mat.translucency->thickness_map, gl::MapTexelClass::Fp16);
+      // The glsl path's upload of the same ramp (gl/map_texture.h): both sample one texture.
+      if (mat.translucency && mat.translucency->ramp)
+        st->ramp = std::make_unique<gl::MapTexture>(ctx.gl, *mat.translucency->ramp,
+                                                    gl::MapTexelClass::Fp16);
       materials_[m.material] = std::move(st);
     }
     gl::check_error("building arbfp programs");
@@ -127,12 +139,12 @@ class ArbfpPath final : public Path {
         ps.vertex->bind();
         ps.fragment->bind();
         glBindTexture(GL_TEXTURE_1D, ps.lut_texture);
-        bind_thickness_map(st.thickness_map.get());
+        bind_material_textures(&st);
         ctx_.geometry.draw(m);
       }
     }
     if (passes_ > 1) end_additive_passes();
-    bind_thickness_map(nullptr);
+    bind_material_textures(nullptr);
     glBindTexture(GL_TEXTURE_1D, 0);
     glDisable(GL_FRAGMENT_PROGRAM_ARB);
     glDisable(GL_VERTEX_PROGRAM_ARB);
@@ -211,6 +223,11 @@ class ArbfpPath final : public Path {
                            st.thickness_map->description(),
                        "texture", ""});
       }
+      if (st.ramp) {
+        out.push_back({material + ": lobe ramp, one TEX per light from texture[0] (2D, replaces " +
+                           "t^p in every variant): " + st.ramp->description(),
+                       "texture", ""});
+      }
     }
     return out;
   }
@@ -227,7 +244,9 @@ class ArbfpPath final : public Path {
 PathInfo arbfp_path_info() {
   PathInfo info{
       "arbfp",
-      "per-pixel ARB vertex/fragment programs (SM2), generated per material; pow variants",
+      "per-pixel ARB vertex/fragment programs (SM2), generated per material; pow variants (a "
+      "lobe-ramp material reads its ramp, one TEX per light, in every variant: no pow to "
+      "replace)",
       {
           // The default: the cheapest variant (fewest ALU + TEX on every demo scene, no texture)
           // whose max error is <= 2 LSB on every demo scene (bench, see the closing note).
@@ -236,7 +255,7 @@ PathInfo arbfp_path_info() {
           // its error is the lobe's Gouraud interpolation, which grows with triangle size.
           {"pow=mul:vertex",
            "t^p by repeated squaring per vertex, lobe interpolated: fewest fragment ALU, error "
-           "grows with triangle size"},
+           "grows with triangle size (a ramp: t per vertex, the ramp per pixel)"},
           {"pow=exact", "POW with 0^0 guarded by CMP: float error only"},
           {"pow=lut:256:u8",
            "256-texel 8-bit LUT: 1 MAD + 1 TEX, u8 rounding (0.5/255 of the lobe)"},
@@ -255,15 +274,13 @@ PathInfo arbfp_path_info() {
   // The variant grammar: any LUT width and format the generator builds, not just the rows the
   // bench runs ("pow=lut:128:f16").
   info.parse_variant = [](const std::string& v) { return arbfp::parse_variant(v).name(); };
-  // The per-vertex lobe packs four lights per texcoord: a scene with more lights cannot take it
-  // (bench skips it and says so, render refuses it with this reason).
+  // The per-vertex lobe (or t) packs four lights per texcoord: a scene with more lights cannot
+  // take it (bench skips it and says so, render refuses it with this reason).
   info.refusal = [](const Scene& scene, const std::string& v) -> std::string {
-    // An rgb ramp per light does not fit the lobe's four-lights-a-register lanes (not built yet).
-    if (scene_needs(scene).any_ramp) return "no lobe ramps on arbfp yet";
     if (!arbfp::parse_variant(v).per_vertex || scene.lights.size() <= arbfp::kMaxVertexLobeLights)
       return "";
     for (const Material& m : scene.materials) {
-      if (m.translucency && m.translucency->power != 0) {
+      if (m.translucency && arbfp::lobe_varies(*m.translucency)) {
         return "the per-vertex lobe takes at most " + std::to_string(arbfp::kMaxVertexLobeLights) +
                " lights (four per texcoord, texcoord[3..7]); the scene has " +
                std::to_string(scene.lights.size());

@@ -9,10 +9,10 @@
 #include "gl/context.h"
 #include "gl/map_texture.h"
 #include "gl/program.h"
-#include "model/power_lut.h"
 #include "model/translucency.h"
 #include "paths/combiners/combiner_budget.h"
 #include "paths/combiners/cube_lobe.h"
+#include "paths/combiners/lobe_table.h"
 #include "paths/combiners/map_stage.h"
 #include "paths/combiners/texgen_matrix.h"
 #include "paths/combiners/vertex_terms.h"
@@ -38,6 +38,19 @@ const char* program_file(PassKind kind) {
   return "";
 }
 
+namespace {
+
+// Whether lobe=cube can bake `light`'s lobe for `m`: a directional light (the cube is of the
+// normal alone), and a lobe the cube holds: lobe_cube_full.comb (constant thickness) holds any in
+// rgb, lobe_cube.comb one channel in alpha (t^p, or a grey ramp).
+bool cube_holds_lobe(const Material& m, const Light& light) {
+  const Translucency& tr = *m.translucency;
+  return light.type == Light::Type::Directional &&
+         (tr.thickness_source == ThicknessSource::Constant || !tr.ramp || tr.ramp->grey);
+}
+
+}  // namespace
+
 std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant) {
   std::vector<CombinerMaterialPlan> plans(scene.materials.size());
   for (const SceneObject& o : scene.objects) plans[o.material].used = true;
@@ -55,7 +68,7 @@ std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::
         if (samples_thickness_map(m)) {
           // The map is a texture stage of its own, whatever the variant (map_stage.h).
           p.pass_kinds.push_back(PassKind::LobeVertexMap);
-        } else if (variant == "lobe=cube" && l.type == Light::Type::Directional) {
+        } else if (variant == "lobe=cube" && cube_holds_lobe(m, l)) {
           // Constant thickness: the whole term depends on N only and fits in the cube's rgb.
           const bool constant = m.translucency->thickness_source == ThicknessSource::Constant;
           p.pass_kinds.push_back(constant ? PassKind::LobeCubeFull : PassKind::LobeCube);
@@ -80,19 +93,12 @@ GLuint make_buffer() {
   return b;
 }
 
-// An 8-bit 1D LUT, linear, CLAMP_TO_EDGE: the clamp saturates t per pixel (coordinates beyond
-// the end texel centres read the end texels).
-GLuint upload_lut(const std::vector<float>& texels) {
-  GLuint tex = 0;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_1D, tex);
-  glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE8, static_cast<GLsizei>(texels.size()), 0,
-               GL_LUMINANCE, GL_FLOAT, texels.data());
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glBindTexture(GL_TEXTURE_1D, 0);
-  return tex;
+// " (lobe ramp r.png: GL_RGB8 1D, 8 texels at u = t)" for `info`; nothing for t^p.
+std::string describe_ramp(const Translucency& tr, const LobeTable& table) {
+  if (!tr.ramp) return "";
+  return " (lobe ramp " + tr.ramp->file.filename().string() + ": " +
+         (table.channels == 3 ? "GL_RGB8" : "GL_LUMINANCE8") + " 1D, " +
+         std::to_string(table.width) + " texels at u = t)";
 }
 
 void stream(GLuint buffer, const std::vector<float>& data) {
@@ -115,25 +121,23 @@ class CombinersPath final : public Path {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
 
-    luts_.resize(s.materials.size());
-    lut_textures_.resize(s.materials.size(), 0);
+    tables_.resize(s.materials.size());
+    table_textures_.resize(s.materials.size(), 0);
     maps_.resize(s.materials.size());
-    map_luts_.resize(s.materials.size());
+    map_tables_.resize(s.materials.size());
     cubes_.assign(s.materials.size(), std::vector<CubeLobe>(s.lights.size()));
     for (const CombinerMaterialPlan& p : plans_) {
       const Material& m = s.materials[p.material];
       if (!p.used || !m.translucency) continue;
-      // 8-bit texels: what a GL 1.3 (or Wii I8) texture holds. One row: this material's power.
-      luts_[p.material] =
-          model::PowerLut::build(kCombinerLutSize, model::LutFormat::U8, {m.translucency->power});
-      const model::PowerLut& lut = luts_[p.material];
-      lut_textures_[p.material] = upload_lut(lut.texels);
+      // 8-bit texels: what a GL 1.3 (or Wii I8) texture holds: t^p, or the material's ramp.
+      tables_[p.material] = lobe_table(*m.translucency);
+      table_textures_[p.material] = upload_lobe_table(tables_[p.material]);
       if (samples_thickness_map(m)) {
-        // Per light: its (t^p s + a) / (s + a), and the map (map_stage.h).
+        // Per light: its (lobe s + a) / (gain s + a), and the map (map_stage.h).
         maps_[p.material] = std::make_unique<gl::MapTexture>(ctx.gl, *m.translucency->thickness_map,
                                                              gl::MapTexelClass::Unorm8);
         for (const Light& l : s.lights)
-          map_luts_[p.material].push_back(upload_lut(map_lut_texels(lut, *m.translucency, l)));
+          map_tables_[p.material].push_back(upload_lobe_table(map_lobe_table(*m.translucency, l)));
       }
       for (int pass = 0; pass < p.passes(); ++pass) {
         if (!uses_cube(p.kind(pass))) continue;
@@ -153,10 +157,10 @@ class CombinersPath final : public Path {
 
   ~CombinersPath() override {
     for (const auto& b : buffers_) glDeleteBuffers(3, b.data());
-    for (GLuint t : lut_textures_) {
+    for (GLuint t : table_textures_) {
       if (t) glDeleteTextures(1, &t);
     }
-    for (const auto& per_light : map_luts_) {
+    for (const auto& per_light : map_tables_) {
       for (GLuint t : per_light) glDeleteTextures(1, &t);
     }
     for (const auto& per_light : cubes_) {
@@ -172,7 +176,7 @@ class CombinersPath final : public Path {
     const auto& meshes = ctx_.geometry.meshes();
     std::vector<VertexTerms> terms(meshes.size());
     for (size_t i = 0; i < meshes.size(); ++i)
-      terms[i] = vertex_terms(ctx_.scene, ctx_.geometry.origin(), i, lut_of(i));
+      terms[i] = vertex_terms(ctx_.scene, ctx_.geometry.origin(), i, table_of(i));
     cpu_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     begin_frame(ctx_);
@@ -245,7 +249,10 @@ class CombinersPath final : public Path {
               "unnormalised H; t computed per vertex on the CPU)";
         }
         if (variant_ == "lobe=cube" && kind == PassKind::LobeVertex) {
-          note = " (point light: no cube, t per vertex)";
+          note = ctx_.scene.lights[static_cast<size_t>(pass)].type == Light::Type::Point
+                     ? " (point light: no cube, t per vertex)"
+                     : " (rgb lobe ramp with per-vertex thickness: the cube's alpha holds one "
+                       "channel; t per vertex)";
         }
         if (kind == PassKind::LobeVertexMap) {
           note = " (thickness map on unit 1: " +
@@ -254,8 +261,14 @@ class CombinersPath final : public Path {
         }
         if (uses_cube(kind)) {
           const CubeLobe& c = cubes_[p.material][static_cast<size_t>(pass)];
+          const bool ramp =
+              ctx_.scene.materials[static_cast<size_t>(p.material)].translucency->ramp != nullptr;
           note = " (cube " + std::to_string(kCombinerCubeSize) + "^2 x 6, RGBA8" +
-                 (c.constant_clamped ? "; albedo*color*g > 4 clamped" : "") + ")";
+                 (c.constant_clamped ? "; albedo*color*g > 4 clamped" : "") +
+                 (ramp ? "; the lobe ramp baked in" : "") + ")";
+        } else if (kind != PassKind::DiffuseOnly) {
+          const size_t m = static_cast<size_t>(p.material);
+          note += describe_ramp(*ctx_.scene.materials[m].translucency, tables_[m]);
         }
         out.push_back({material + ", pass " + std::to_string(pass) + ": combiners/" + name + ", " +
                            std::to_string(p.program(pass).stages.size()) + " stages" + note,
@@ -299,13 +312,13 @@ class CombinersPath final : public Path {
       const Light& light = s.lights[l];
       const size_t mi = static_cast<size_t>(mesh.material);
       if (kind == PassKind::LobeVertexMap) {
-        in.textures["power_lut"] = {GL_TEXTURE_1D, map_luts_[mi][l]};
+        in.textures["power_lut"] = {GL_TEXTURE_1D, map_tables_[mi][l]};
         in.textures["thickness_map"] = {GL_TEXTURE_2D, maps_[mi]->id()};
         in.constants["term_gain"] = glm::dvec4(map_term_gain(mat, light), 1);
       } else {
-        in.textures["power_lut"] = {GL_TEXTURE_1D, lut_textures_[mi]};
-        in.constants["lobe_color"] = glm::dvec4(
-            mat.albedo * light.color * light.translucency_scale / fold_factors(s, mat)[l], 1);
+        in.textures["power_lut"] = {GL_TEXTURE_1D, table_textures_[mi]};
+        in.constants["lobe_color"] =
+            glm::dvec4(lobe_constant(mat, light) / fold_factors(s, mat)[l], 1);
       }
       stream(buf[0], vt.primary[l]);
       stream(buf[2], vt.secondary[l]);
@@ -320,7 +333,7 @@ class CombinersPath final : public Path {
     glMatrixMode(GL_TEXTURE);
     if (kind == PassKind::LobeTexgen) {
       const glm::mat4 m =
-          texgen_matrix(s, mat, s.lights[l], luts_[static_cast<size_t>(mesh.material)]);
+          texgen_matrix(s, mat, s.lights[l], tables_[static_cast<size_t>(mesh.material)]);
       glLoadMatrixf(glm::value_ptr(m));
     } else {
       glLoadIdentity();
@@ -350,21 +363,21 @@ class CombinersPath final : public Path {
     ctx_.geometry.unbind();
   }
 
-  // The LUT object `i`'s material samples; null for a material without translucency.
-  const model::PowerLut* lut_of(size_t i) const {
+  // The lobe table object `i`'s material samples; null for a material without translucency.
+  const LobeTable* table_of(size_t i) const {
     const int m = ctx_.scene.objects[i].material;
     return ctx_.scene.materials[static_cast<size_t>(m)].translucency
-               ? &luts_[static_cast<size_t>(m)]
+               ? &tables_[static_cast<size_t>(m)]
                : nullptr;
   }
 
   PathContext ctx_;
   std::string variant_;
   std::vector<CombinerMaterialPlan> plans_;
-  std::vector<model::PowerLut> luts_;
-  std::vector<GLuint> lut_textures_;
+  std::vector<LobeTable> tables_;  // [material]: t^p or its ramp
+  std::vector<GLuint> table_textures_;
   std::vector<std::unique_ptr<gl::MapTexture>> maps_;  // [material], thickness-map materials
-  std::vector<std::vector<GLuint>> map_luts_;          // [material][light], their LUTs
+  std::vector<std::vector<GLuint>> map_tables_;        // [material][light], their tables
   std::vector<std::vector<CubeLobe>> cubes_;           // [material][light], lobe=cube passes only
   std::vector<std::array<GLuint, 3>> buffers_;         // per object: primary, texcoord, secondary
   GLuint white_ = 0;
@@ -391,10 +404,6 @@ PathInfo combiners_path_info() {
                 [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
                   return std::make_unique<CombinersPath>(ctx, variant);
                 }};
-  // An rgb ramp would replace the luminance LUT with an rgb one at u = t (not built yet).
-  info.refusal = [](const Scene& scene, const std::string&) -> std::string {
-    return scene_needs(scene).any_ramp ? "no lobe ramps on combiners yet" : "";
-  };
   // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
   auto print = [](const CombinerBudgetReport& r, const BudgetRequest& rq) {
     *rq.out << (rq.json ? to_json(r) + "\n" : to_text(r));

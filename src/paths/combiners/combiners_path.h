@@ -18,11 +18,11 @@ PathInfo combiners_path_info();
 // What one pass draws, chosen once by plan_combiners; every later decision reads the kind.
 enum class PassKind {
   DiffuseOnly,    // a material without translucency: the diffuse sum per vertex
-  LobeVertex,     // the LUT at a per-vertex t
-  LobeTexgen,     // the LUT at t from texgen NORMAL_MAP and the texture matrix
-  LobeCube,       // the lobe from a cube map of the normal, thickness per vertex
+  LobeVertex,     // the lobe table (lobe_table.h) at a per-vertex t
+  LobeTexgen,     // the lobe table at t from texgen NORMAL_MAP and the texture matrix
+  LobeCube,       // the lobe from a cube map of the normal (its alpha), thickness per vertex
   LobeCubeFull,   // the whole term in the cube map (constant thickness)
-  LobeVertexMap,  // a thickness map's material: the LUT at a per-vertex t, the map on unit 1
+  LobeVertexMap,  // a thickness map's material: the table at a per-vertex t, the map on unit 1
 };
 // Its program in combiners/ ("lobe_vertex.comb").
 const char* program_file(PassKind kind);
@@ -45,10 +45,9 @@ struct CombinerMaterialPlan {
 };
 // `variant` as registered ("t=vertex", "t=texgen", "lobe=cube"). t=texgen serves only scenes
 // texgen_applicable accepts (else t=vertex); lobe=cube serves directional lights (point lights
-// get t=vertex passes).
+// get t=vertex passes, and so does an rgb lobe ramp with per-vertex thickness: lobe_cube.comb
+// holds the lobe in the cube's one alpha channel). A lobe ramp rides in every program's lobe
+// (the table, or the cube baked from it).
 std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant);
-
-// The power LUT size and format the path samples (8-bit texels, as GL 1.3 hardware stores them).
-inline constexpr int kCombinerLutSize = 256;
 
 }  // namespace lt

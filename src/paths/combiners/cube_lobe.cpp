@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "gl/map_texture.h"
 #include "model/translucency.h"
 
 namespace lt {
@@ -71,14 +72,18 @@ CubeLobe build_cube_lobe(const Scene& s, const glm::dvec3& eye, int material, si
       for (int i = 0; i < n; ++i) {
         const size_t k = (static_cast<size_t>(f) * n + j) * n + i;
         const glm::dvec3 N = glm::normalize(to_world * cube_direction(f, i, j, n));
-        g[k] = tr.ambient + light.translucency_scale *
-                                model::lobe(model::translucency_dot(V, L, N, tr), tr.power);
+        // a + s * lobe, rgb for a ramp (model::material_lobe: t^p, or the ramp at t).
+        const glm::dvec3 term =
+            tr.ambient + light.translucency_scale *
+                             model::material_lobe(tr, model::translucency_dot(V, L, N, tr));
         const double diffuse = std::max(glm::dot(N, L), 0.0);
         if (full) {
-          rgb[k] = mat.albedo * light.color * (diffuse + g[k] * T) + ambient;
+          rgb[k] = mat.albedo * light.color * (diffuse + term * T) + ambient;
           g[k] = 1;  // alpha unused
         } else {
+          // One channel: t^p's or a grey ramp's (plan_combiners gives an rgb ramp t=vertex).
           rgb[k] = mat.albedo * light.color * diffuse + ambient;
+          g[k] = term.r;
         }
         g_max = std::max(g_max, g[k]);
       }
@@ -102,10 +107,7 @@ CubeLobe build_cube_lobe(const Scene& s, const glm::dvec3& eye, int material, si
     glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, n, n, 0,
                  GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   }
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  gl::set_linear_clamp_to_edge(GL_TEXTURE_CUBE_MAP);
   glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
   return c;
 }

@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-#include "model/power_lut.h"
+#include "paths/combiners/lobe_table.h"
 #include "scene/scene.h"
 
 namespace lt {
@@ -14,9 +14,9 @@ bool texgen_applicable(const Scene& scene, const Material& material);
 
 // texgen NORMAL_MAP yields the eye-space normal n (q = 1 from the current texcoord). With V
 // and L constant in eye space, t = -V.L - d (V.n) is one row of the texture matrix, followed by
-// the LUT's texel-centre remap u = t (N-1)/N + 0.5/N (model/power_lut.h).
-// The matrix for GL_TEXTURE of unit 0 (the caller loads it).
+// the lobe table's coordinate (the power LUT's texel-centre remap u = t (N-1)/N + 0.5/N, or a
+// ramp's u = t; lobe_table.h). The matrix for GL_TEXTURE of unit 0 (the caller loads it).
 glm::mat4 texgen_matrix(const Scene& scene, const Material& material, const Light& light,
-                        const model::PowerLut& lut);
+                        const LobeTable& table);
 
 }  // namespace lt

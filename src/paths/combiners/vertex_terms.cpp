@@ -8,10 +8,15 @@
 
 namespace lt {
 
+glm::dvec3 lobe_constant(const Material& material, const Light& light) {
+  const double gain = material.translucency ? lobe_gain(*material.translucency) : 1.0;
+  return material.albedo * light.color * light.translucency_scale * gain;
+}
+
 std::vector<double> fold_factors(const Scene& scene, const Material& mat) {
   std::vector<double> out;
   for (const Light& l : scene.lights) {
-    const glm::dvec3 k = mat.albedo * l.color * l.translucency_scale;
+    const glm::dvec3 k = lobe_constant(mat, l);
     const double m = std::max({k.r, k.g, k.b});
     out.push_back(m > 4 ? m / 4 : 1.0);
   }
@@ -19,7 +24,7 @@ std::vector<double> fold_factors(const Scene& scene, const Material& mat) {
 }
 
 VertexTerms vertex_terms(const Scene& s, const glm::dvec3& eye, size_t object,
-                         const model::PowerLut* lut) {
+                         const LobeTable* table) {
   const TriangleMesh& mesh = s.objects[object].mesh;
   const Material& mat = s.materials[static_cast<size_t>(s.objects[object].material)];
   const size_t n = mesh.positions.size();
@@ -32,7 +37,7 @@ VertexTerms vertex_terms(const Scene& s, const glm::dvec3& eye, size_t object,
   vt.diffuse.assign(n * 4, 1.0f);
   const std::vector<double> fold = fold_factors(s, mat);
   const glm::dvec3 ambient = mat.albedo * s.ambient_light;
-  // A map material (map_stage.h): T is the map's stage, a is in the LUT, K / g in the primary.
+  // A map material (map_stage.h): T is the map's stage, a is in the table, K / g in the primary.
   const bool map = samples_thickness_map(mat);
   std::vector<glm::dvec3> map_primary(lights);
   for (size_t l = 0; l < lights && map; ++l) {
@@ -59,8 +64,8 @@ VertexTerms vertex_terms(const Scene& s, const glm::dvec3& eye, size_t object,
       const glm::dvec3 own =
           mat.albedo * light.color * (diffuse + (map ? 0.0 : ls.attenuation * tr.ambient) * T) +
           (l == 0 ? ambient : glm::dvec3(0));
-      vt.texcoord[l][v] =
-          static_cast<float>(lut->coordinate(model::translucency_dot_unsaturated(V, ls.L, N, tr)));
+      vt.texcoord[l][v] = static_cast<float>(
+          table->coordinate(model::translucency_dot_unsaturated(V, ls.L, N, tr)));
       const glm::dvec3 prim = ls.attenuation * (map ? map_primary[l] : T * fold[l]);
       for (int c = 0; c < 3; ++c) {
         vt.primary[l][v * 4 + c] = static_cast<float>(prim[c]);
