@@ -63,9 +63,11 @@ void add_pass_plan(const Scene& scene, const std::string& variant, const std::st
   try {
     for (size_t m : used_materials(scene)) {
       const Material& mat = scene.materials[m];
-      for (const arbfp::Pass& p : arbfp::plan_passes(scene, mat, v, profile).passes) {
+      const arbfp::PassPlan plan = arbfp::plan_passes(scene, mat, v, profile);
+      for (const arbfp::Pass& p : plan.passes) {
         r.pass_plan.push_back({mat.name, arbfp::describe(p), p.vertex_counts, p.fragment_counts});
       }
+      if (plan.passes.size() > 1) r.pass_lower_bounds.push_back({mat.name, plan.lower_bound});
     }
   } catch (const InputError& e) {
     r.pass_plan.clear();
@@ -74,6 +76,12 @@ void add_pass_plan(const Scene& scene, const std::string& variant, const std::st
 }
 
 }  // namespace
+
+double TermCost::further_light_alu() const {
+  if (per_light.size() < 2) return 0;
+  return static_cast<double>(total.alu - per_light.front().alu) /
+         static_cast<double>(per_light.size() - 1);
+}
 
 bool BudgetReport::fits() const {
   return first_overrun().empty();
@@ -165,6 +173,10 @@ std::string format_table(const BudgetReport& r) {
                      : ", light " + std::to_string(k + 1) + " ")
           << t.per_light[k].alu << " ALU + " << t.per_light[k].tex << " TEX";
       }
+      if (t.per_light.size() > 1) {
+        s << "; further lights amortised " << std::setprecision(3) << t.further_light_alu()
+          << " ALU each";
+      }
       s << "\n";
     }
   }
@@ -175,6 +187,10 @@ std::string format_table(const BudgetReport& r) {
     s << "  material " << p.material << ": " << p.lights << ": fragment " << p.fragment.alu
       << " ALU + " << p.fragment.tex << " TEX, " << p.fragment.temporaries << " temps, "
       << p.fragment.parameters << " params; vertex " << p.vertex.instructions() << " ALU\n";
+  }
+  for (const auto& [material, bound] : r.pass_lower_bounds) {
+    s << "  material " << material << ": fewest passes searched over every mix of point and "
+      << "directional lights per pass (arb_pass_search.h); capacity bound >= " << bound << "\n";
   }
   s << "\n" << (r.fits() ? "fits" : "OVER BUDGET: " + r.first_overrun()) << "\n";
   return s.str();
@@ -213,7 +229,8 @@ nlohmann::json to_json(const BudgetReport& r) {
     for (const TermCost::Cost& c : t.per_light) per.push_back({{"alu", c.alu}, {"tex", c.tex}});
     j["term_cost"].push_back({{"material", t.material},
                               {"total", {{"alu", t.total.alu}, {"tex", t.total.tex}}},
-                              {"per_light", per}});
+                              {"per_light", per},
+                              {"further_light_alu", t.further_light_alu()}});
   }
   j["passes"] = nlohmann::json::array();
   for (const PlannedPass& p : r.pass_plan) {
