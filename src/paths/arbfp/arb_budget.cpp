@@ -67,7 +67,9 @@ void add_pass_plan(const Scene& scene, const std::string& variant, const std::st
       for (const arbfp::Pass& p : plan.passes) {
         r.pass_plan.push_back({mat.name, arbfp::describe(p), p.vertex_counts, p.fragment_counts});
       }
-      if (plan.passes.size() > 1) r.pass_lower_bounds.push_back({mat.name, plan.lower_bound});
+      if (plan.passes.size() > 1) {
+        r.pass_lower_bounds.push_back({mat.name, plan.lower_bound, plan.most_lights});
+      }
     }
   } catch (const InputError& e) {
     r.pass_plan.clear();
@@ -188,9 +190,10 @@ std::string format_table(const BudgetReport& r) {
       << " ALU + " << p.fragment.tex << " TEX, " << p.fragment.temporaries << " temps, "
       << p.fragment.parameters << " params; vertex " << p.vertex.instructions() << " ALU\n";
   }
-  for (const auto& [material, bound] : r.pass_lower_bounds) {
-    s << "  material " << material << ": fewest passes searched over every mix of point and "
-      << "directional lights per pass (arb_pass_search.h); capacity bound >= " << bound << "\n";
+  for (const BudgetReport::PassBound& b : r.pass_lower_bounds) {
+    s << "  material " << b.material << ": fewest passes searched over every mix of point and "
+      << "directional lights per pass (arb_pass_search.h); no pass tried fits more than "
+      << b.most_lights << " lights: capacity bound >= " << b.lower_bound << " passes\n";
   }
   s << "\n" << (r.fits() ? "fits" : "OVER BUDGET: " + r.first_overrun()) << "\n";
   return s.str();
@@ -247,6 +250,11 @@ nlohmann::json to_json(const BudgetReport& r) {
            {"temporaries", p.vertex.temporaries}}}});
   }
   if (!r.pass_plan_error.empty()) j["passes_error"] = r.pass_plan_error;
+  j["pass_bounds"] = nlohmann::json::array();
+  for (const BudgetReport::PassBound& b : r.pass_lower_bounds) {
+    j["pass_bounds"].push_back(
+        {{"material", b.material}, {"lower_bound", b.lower_bound}, {"most_lights", b.most_lights}});
+  }
   return j;
 }
 

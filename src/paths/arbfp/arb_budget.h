@@ -77,7 +77,11 @@ struct BudgetReport {
   std::vector<PlannedPass> pass_plan;
   std::string pass_plan_error;
   // Per material with more than one pass: no plan has fewer than this (arb_passes.h).
-  std::vector<std::pair<std::string, size_t>> pass_lower_bounds;
+  struct PassBound {
+    std::string material;
+    size_t lower_bound = 1, most_lights = 0;
+  };
+  std::vector<PassBound> pass_lower_bounds;
 
   bool fits() const;
   // "material marble: fragment program: 70 ALU instructions > 64 (ps_2_0)"; empty when it fits.

@@ -111,6 +111,7 @@ PassPlan plan_passes(const Scene& scene, const Material& material, const PowVari
     plan.passes.push_back(make_pass(sub, scene, material, variant,
                                     lights_of(search.passes[k], points, directionals), k == 0));
   }
+  plan.most_lights = search.most_lights;
   plan.lower_bound = (n + search.most_lights - 1) / search.most_lights;
   return plan;
 }

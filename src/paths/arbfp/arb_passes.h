@@ -26,6 +26,7 @@ struct PassPlan {
   // How many passes no plan can go below: ceil(lights / the most lights any pass that fits was
   // found to hold). 1 when one pass fits.
   size_t lower_bound = 1;
+  size_t most_lights = 0;  // that most (0 when one pass fits)
 };
 
 // One pass of every light without a profile, or when the material's programs fit it; otherwise
