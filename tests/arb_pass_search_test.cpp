@@ -3,6 +3,8 @@
 // capacity bound on the over-budget scenes.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "arb_pass_util.h"
 #include "arb_test_util.h"
 #include "paths/arbfp/arb_passes.h"
@@ -50,6 +52,21 @@ TEST(ArbPassSearch, EveryPlannedPassFitsAndTheCountMeetsTheCapacityBound) {
       EXPECT_TRUE(test::pass_fits(s, p.lights, p.ambient, "ps_2_0")) << file << arbfp::describe(p);
     }
   }
+}
+
+// `budget` reports the plan with its capacity bound, and the bound meets the plan on
+// twelve_mixed: no pass of 5 of its lights fits ps_2_0, so 12 lights need 3 passes.
+TEST(ArbPassSearch, BudgetReportsTheCapacityBound) {
+  const auto scene = test::test_scene_path("scenes/budget/twelve_mixed.json").string();
+  const test::RunResult r = test::run_ltrender("budget " + scene + " --path arbfp --json");
+  EXPECT_EQ(r.exit_code, 1) << r.err;  // the one-pass program is over ps_2_0
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["pass_bounds"].size(), 1u);
+  const nlohmann::json& b = j["pass_bounds"][0];
+  const size_t most = b["most_lights"].get<size_t>();
+  EXPECT_EQ(b["lower_bound"].get<size_t>(), (12 + most - 1) / most);
+  EXPECT_EQ(b["lower_bound"].get<size_t>(), j["passes"].size()) << "the plan meets its bound";
+  EXPECT_TRUE(j["term_cost"][0].contains("further_light_alu"));
 }
 
 TEST(ArbPassSearch, DescribeNamesRunsOfLights) {
