@@ -63,8 +63,12 @@ void add_pass_plan(const Scene& scene, const std::string& variant, const std::st
   try {
     for (size_t m : used_materials(scene)) {
       const Material& mat = scene.materials[m];
-      for (const arbfp::Pass& p : arbfp::plan_passes(scene, mat, v, profile).passes) {
+      const arbfp::PassPlan plan = arbfp::plan_passes(scene, mat, v, profile);
+      for (const arbfp::Pass& p : plan.passes) {
         r.pass_plan.push_back({mat.name, arbfp::describe(p), p.vertex_counts, p.fragment_counts});
+      }
+      if (plan.passes.size() > 1) {
+        r.pass_lower_bounds.push_back({mat.name, plan.lower_bound, plan.most_lights});
       }
     }
   } catch (const InputError& e) {
@@ -74,6 +78,12 @@ void add_pass_plan(const Scene& scene, const std::string& variant, const std::st
 }
 
 }  // namespace
+
+double TermCost::further_light_alu() const {
+  if (per_light.size() < 2) return 0;
+  return static_cast<double>(total.alu - per_light.front().alu) /
+         static_cast<double>(per_light.size() - 1);
+}
 
 bool BudgetReport::fits() const {
   return first_overrun().empty();
@@ -165,6 +175,10 @@ std::string format_table(const BudgetReport& r) {
                      : ", light " + std::to_string(k + 1) + " ")
           << t.per_light[k].alu << " ALU + " << t.per_light[k].tex << " TEX";
       }
+      if (t.per_light.size() > 1) {
+        s << "; further lights amortised " << std::setprecision(3) << t.further_light_alu()
+          << " ALU each";
+      }
       s << "\n";
     }
   }
@@ -175,6 +189,11 @@ std::string format_table(const BudgetReport& r) {
     s << "  material " << p.material << ": " << p.lights << ": fragment " << p.fragment.alu
       << " ALU + " << p.fragment.tex << " TEX, " << p.fragment.temporaries << " temps, "
       << p.fragment.parameters << " params; vertex " << p.vertex.instructions() << " ALU\n";
+  }
+  for (const BudgetReport::PassBound& b : r.pass_lower_bounds) {
+    s << "  material " << b.material << ": fewest passes searched over every mix of point and "
+      << "directional lights per pass (arb_pass_search.h); no pass tried fits more than "
+      << b.most_lights << " lights: capacity bound >= " << b.lower_bound << " passes\n";
   }
   s << "\n" << (r.fits() ? "fits" : "OVER BUDGET: " + r.first_overrun()) << "\n";
   return s.str();
@@ -213,7 +232,8 @@ nlohmann::json to_json(const BudgetReport& r) {
     for (const TermCost::Cost& c : t.per_light) per.push_back({{"alu", c.alu}, {"tex", c.tex}});
     j["term_cost"].push_back({{"material", t.material},
                               {"total", {{"alu", t.total.alu}, {"tex", t.total.tex}}},
-                              {"per_light", per}});
+                              {"per_light", per},
+                              {"further_light_alu", t.further_light_alu()}});
   }
   j["passes"] = nlohmann::json::array();
   for (const PlannedPass& p : r.pass_plan) {
@@ -230,6 +250,11 @@ nlohmann::json to_json(const BudgetReport& r) {
            {"temporaries", p.vertex.temporaries}}}});
   }
   if (!r.pass_plan_error.empty()) j["passes_error"] = r.pass_plan_error;
+  j["pass_bounds"] = nlohmann::json::array();
+  for (const BudgetReport::PassBound& b : r.pass_lower_bounds) {
+    j["pass_bounds"].push_back(
+        {{"material", b.material}, {"lower_bound", b.lower_bound}, {"most_lights", b.most_lights}});
+  }
   return j;
 }
 

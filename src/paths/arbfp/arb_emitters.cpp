@@ -93,9 +93,10 @@ Reg declare_orthographic_view(ir::Block& decls, const Scene& scene) {
   return decls.param("V", vec4(-scene.camera.forward(), 0));
 }
 
-LightList scene_lights(const Scene& scene, size_t first_light) {
+LightList scene_lights(const Scene& scene, const LightNumbers& numbers) {
   LightList out{scene.lights, {}, scene.camera.eye};
-  for (size_t i = 0; i < scene.lights.size(); ++i) out.scene_index.push_back(first_light + i);
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    out.scene_index.push_back(light_number(numbers, i));
   return out;
 }
 

@@ -49,6 +49,12 @@ MaterialParams declare_material(ir::Block& decls, const Translucency& tr);
 ir::Reg declare_orthographic_view(ir::Block& decls, const Scene& scene);
 // The lights a program shades, in lane order (light i is lane i % 4 of group i / 4), each with
 // its index in the scene (for names and comments) and the eye its positions are relative to.
+// The numbers a (pass's) scene's lights have in the whole scene; empty: 0, 1, ... (light_number).
+using LightNumbers = std::vector<size_t>;
+inline size_t light_number(const LightNumbers& numbers, size_t i) {
+  return numbers.empty() ? i : numbers[i];
+}
+
 struct LightList {
   std::vector<Light> lights;
   std::vector<size_t> scene_index;
@@ -57,9 +63,9 @@ struct LightList {
   const Light& operator[](size_t i) const { return lights[i]; }
   std::string name(size_t i) const { return "light" + std::to_string(scene_index[i]); }
 };
-// The scene's lights in the scene's order, named from `first_light` on (a pass's lights keep
-// their numbers in the scene, arb_passes.h).
-LightList scene_lights(const Scene& scene, size_t first_light = 0);
+// The scene's lights in the scene's order, named by `numbers` (a pass's lights keep their
+// numbers in the scene, arb_passes.h; empty: 0, 1, ...).
+LightList scene_lights(const Scene& scene, const LightNumbers& numbers = {});
 
 // Light i's L (directional: PARAM lightI_L = -direction) or camera-relative position (point).
 ir::Reg declare_light_vector(ir::Block& decls, const LightList& lights, size_t light);

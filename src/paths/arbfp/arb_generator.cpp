@@ -11,6 +11,7 @@
 #include "paths/arbfp/arb_lobe.h"
 #include "paths/arbfp/arb_pack.h"
 #include "paths/arbfp/arb_thickness_map.h"
+#include "paths/arbfp/arb_view_dots.h"
 
 namespace lt::arbfp {
 
@@ -65,6 +66,7 @@ struct Layout {
   size_t pack_min = 5;    // a group of one kind with at least this many lights is packed (5: none)
   bool dot_sums = false;  // packed groups of three or four lights sum their colours by DP4/DP3
   bool fold_scale = false;  // Key::fold_scale where it applies
+  bool view_dots = false;   // Key::view_dots where it applies
 };
 
 // What the scene, the material and the variant ask of the two programs, decided once (Mesa's
@@ -86,24 +88,51 @@ struct Key {
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
   GuardNeeds guards = {};               // the fragment program's, for this scene, in lane order
   std::vector<std::string> notes = {};
-  size_t first_light = 0;         // the number of the scene's first light (a pass's, arb_passes.h)
+  LightNumbers numbers = {};      // the lights' numbers in the whole scene (a pass's, arb_passes.h)
   LightList list = {};            // the lights in lane order
   std::vector<bool> packed = {};  // per group: the light loop four lanes at a time (arb_pack.h)
   std::vector<bool> dot_sums = {};  // per group: the colour sums as dot products
   bool per_light_h = false;         // some light computes its own H (the register H is declared)
   bool per_light_point = false;     // some point light computes its own L (the register L)
   // pow=mul: lobe * s + a is (lobe + a / s) * s, the addend on the chain's last MUL and s in
-  // the per-light s * T (constant T) or in the colours of the dot products; needs every s > 0.
+  // the per-light s * T (constant T, or a vertex T times s in the vertex program) or in the
+  // colours of the dot products; needs every s > 0.
   bool fold_scale = false;
+  // Directional lights' t from the interpolated (d P, P.L) (arb_view_dots.h): every light
+  // directional and computed alone, a perspective camera, H not normalised.
+  bool view_dots = false;
+  // Every light in a packed group, t from the interpolated d P (texcoord[3]) and per-group dots
+  // (texcoord[4 + g]) without V (arb_view_dots.h).
+  bool packed_view_dots = false;
+  // fold_scale with a vertex thickness: the vertex program writes s * T per light (texcoord[2]
+  // for the first light, free texcoords after the view dots for the others).
+  bool vertex_scaled_T = false;
+
+  int view_dot_texcoord(size_t light) const { return kFirstFreeTexcoord + static_cast<int>(light); }
+  int distorted_position_texcoord() const { return kFirstFreeTexcoord; }
+  int group_view_dot_texcoord(size_t group) const {
+    return kFirstFreeTexcoord + 1 + static_cast<int>(group);
+  }
+  size_t view_dot_texcoords() const {
+    return view_dots ? lights : packed_view_dots ? groups + 1 : 0;
+  }
+  int scaled_T_texcoord(size_t light) const {
+    if (light == 0) return 2;
+    return kFirstFreeTexcoord + static_cast<int>(view_dot_texcoords() + light - 1);
+  }
 };
+
+bool any_of(const std::vector<bool>& v) {
+  return std::find(v.begin(), v.end(), true) != v.end();
+}
 
 size_t lanes_of_group(size_t g, size_t lights) {
   return std::min<size_t>(4, lights - g * 4);
 }
 
 // The lights in lane order: the scene's, or point lights first (stable).
-LightList ordered_lights(const Scene& scene, bool by_kind, size_t first_light) {
-  LightList list = scene_lights(scene, first_light);
+LightList ordered_lights(const Scene& scene, bool by_kind, const LightNumbers& numbers) {
+  LightList list = scene_lights(scene, numbers);
   if (!by_kind) return list;
   LightList out{{}, {}, list.eye};
   for (Light::Type t : {Light::Type::Point, Light::Type::Directional}) {
@@ -138,10 +167,11 @@ std::string vertex_lobe_texcoord(size_t group) {
 
 // Which groups are packed and which sum their colours by dot products, for `layout`.
 void apply_layout(Key& k, const Layout& layout) {
-  k.list = ordered_lights(k.scene, layout.by_kind, k.first_light);
+  k.list = ordered_lights(k.scene, layout.by_kind, k.numbers);
   GuardNeeds lane_order = k.guards;
   for (size_t i = 0; i < k.lights; ++i) {
-    const size_t j = k.list.scene_index[i] - k.first_light;
+    size_t j = 0;  // the light's place in the scene's list
+    while (light_number(k.numbers, j) != k.list.scene_index[i]) ++j;
     lane_order.distance_zero[i] = k.guards.distance_zero[j];
     lane_order.attenuation_floor[i] = k.guards.attenuation_floor[j];
   }
@@ -172,16 +202,36 @@ void apply_layout(Key& k, const Layout& layout) {
     k.notes.push_back("lights " + lights + " packed four lanes to a register" +
                       (k.dot_sums.back() ? ", colour sums as dot products" : ""));
   }
+  // A ramp material keeps V and its own lobe code (emit_ramp_lobe: t, one TEX per light, then
+  // lobe * s + a): t from interpolated dots and s folded into T are written for t^p.
+  k.view_dots = layout.view_dots && k.fragment_lobe && !k.ramp_lobe && !k.ortho &&
+                !k.tr.normalize_distorted_light && k.method != PowMethod::Lut &&
+                k.lights <= static_cast<size_t>(kFreeTexcoords) && !any_of(k.packed);
+  for (size_t i = 0; i < k.lights; ++i) {
+    k.view_dots &= k.list[i].type == Light::Type::Directional;
+  }
+  if (k.view_dots) k.per_light_h = false;
+  k.packed_view_dots = layout.view_dots && k.fragment_lobe && !k.ramp_lobe && !k.ortho &&
+                       !k.tr.normalize_distorted_light && k.method != PowMethod::Lut &&
+                       k.groups + 1 <= static_cast<size_t>(kFreeTexcoords) && k.groups > 0;
+  for (size_t g = 0; g < k.groups; ++g) k.packed_view_dots &= k.packed[g];
   k.fold_scale = layout.fold_scale && k.fragment_lobe && !k.ramp_lobe && k.method == PowMethod::Mul;
+  // A light summed alone folds s into s * T: a PARAM for a constant T; for a vertex T the vertex
+  // program's product, one texcoord per light (none of them summed by dot products, which read
+  // the unscaled T).
+  const size_t free_texcoords = kFreeTexcoords - k.view_dot_texcoords();
+  k.vertex_scaled_T =
+      k.vertex_thickness && !any_of(k.dot_sums) && k.lights >= 1 && k.lights - 1 <= free_texcoords;
   for (size_t g = 0; g < k.groups; ++g) {
-    // A light summed alone folds s into a PARAM s * T: only a constant T can.
-    k.fold_scale &= k.dot_sums[g] || k.tr.thickness_source == ThicknessSource::Constant;
+    k.fold_scale &=
+        k.dot_sums[g] || k.tr.thickness_source == ThicknessSource::Constant || k.vertex_scaled_T;
   }
   for (size_t i = 0; i < k.lights; ++i) k.fold_scale &= k.list[i].translucency_scale > 0;
+  k.vertex_scaled_T &= k.fold_scale;
 }
 
 Key make_key(const Scene& scene, const Material& material, const PowVariant& variant,
-             bool translucency_term, const Layout& layout, size_t first_light) {
+             bool translucency_term, const Layout& layout, const LightNumbers& numbers) {
   Key k{scene, material.translucency.value_or(Translucency{}), variant};
   k.term = translucency_term && material.translucency.has_value();
   k.lights = scene.lights.size();
@@ -211,8 +261,8 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
   }
   if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
   if (k.ramp_lobe) k.notes.push_back(ramp_note(variant, *k.tr.ramp));
-  k.first_light = first_light;
-  k.guards = guard_needs(scene, material, variant.all_guards, first_light);
+  k.numbers = numbers;
+  k.guards = guard_needs(scene, material, variant.all_guards, numbers);
   for (const std::string& n : k.guards.notes) k.notes.push_back(n);
   apply_layout(k, layout);
   if (k.vertex_lobe && !k.ramp_lobe) {
@@ -310,7 +360,18 @@ ir::Program vertex_program(Key& k) {
       "normal,\n# through texture coordinates because colour varyings may be clamped to [0, 1].\n");
   b.op(Op::MOV, output("result.texcoord[0]"), {attrib("vertex.position")});
   b.op(Op::MOV, output("result.texcoord[1]"), {attrib("vertex.normal")});
-  if (k.vertex_thickness) {
+  if (k.vertex_scaled_T) {
+    // s * T = vertex colour * (s * tint) per light: s and the tint are constant, so
+    // interpolating the product equals the product of the interpolation, and the fragment
+    // program saves the MUL by s (fold_scale) without a PARAM s * T it cannot have.
+    b.text("# Vertex thickness times each light's s: the mesh colour times s * tint.\n");
+    for (size_t i = 0; i < k.lights; ++i) {
+      const Reg tint = b.param(k.list.name(i) + "_s_tint",
+                               vec4(k.list[i].translucency_scale * k.tr.tint, 0), "s * tint");
+      const std::string out = "result.texcoord[" + std::to_string(k.scaled_T_texcoord(i)) + "]";
+      b.op(Op::MUL, output(out), {attrib("vertex.color"), tint});
+    }
+  } else if (k.vertex_thickness) {
     // T = vertex colour * tint is multiplied here: the tint is constant, so interpolating the
     // product equals the product of the interpolation, and the fragment program saves one MUL
     // per pixel.
@@ -321,6 +382,32 @@ ir::Program vertex_program(Key& k) {
     emit_map_uv(b);
   } else {
     b.text("# (constant thickness: nothing more to pass)\n");
+  }
+  if (k.view_dots) {
+    b.text("# (d P, P.L) per directional light, linear in P: interpolated exactly.\n");
+    const Reg d = declare_material(b, k.tr).distortion;
+    for (size_t i = 0; i < k.lights; ++i) {
+      const std::string out = "result.texcoord[" + std::to_string(k.view_dot_texcoord(i)) + "]";
+      emit_view_dot_varying(b, output(out), attrib("vertex.position"), d,
+                            declare_light_vector(b, k.list, i));
+    }
+  }
+  if (k.packed_view_dots) {
+    b.text("# d P, and per group P.L or P.position in each light's lane: linear in P.\n");
+    const Reg d = declare_material(b, k.tr).distortion;
+    const auto texcoord = [](int t) {
+      return output("result.texcoord[" + std::to_string(t) + "]");
+    };
+    emit_distorted_position(b, texcoord(k.distorted_position_texcoord()), attrib("vertex.position"),
+                            d);
+    for (size_t g = 0; g < k.groups; ++g) {
+      std::vector<Reg> vectors;
+      for (size_t i = g * 4; i < g * 4 + lanes_of_group(g, k.lights); ++i) {
+        vectors.push_back(declare_light_vector(b, k.list, i));
+      }
+      emit_group_view_dots(b, texcoord(k.group_view_dot_texcoord(g)), attrib("vertex.position"),
+                           vectors);
+    }
   }
   if (k.vertex_lobe) {
     emit_vertex_lobe(p, k);
@@ -366,10 +453,6 @@ bool ambient_in_final(const Key& k) {
   return k.ambient && k.groups > 0 && k.dot_sums[0];
 }
 
-bool any_of(const std::vector<bool>& v) {
-  return std::find(v.begin(), v.end(), true) != v.end();
-}
-
 // Declarations in print order (the TEMP statement lists the temporaries in allocation order).
 void declare_fragment(Fragment& f, const Key& k, const Material& material) {
   ir::Program& p = f.p;
@@ -406,7 +489,10 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
     }
     // A ramp's lobe * s + a is the fragment program's, whichever program computed t.
     if (!k.vertex_lobe || k.ramp_lobe) f.s.material = declare_material(d, k.tr);
-    if (k.vertex_thickness) {
+    if (k.vertex_scaled_T) {
+      d.text(
+          "# s * T of light i = its texcoord (vertex colour * s * tint, see the vertex program)\n");
+    } else if (k.vertex_thickness) {
       // The vertex program multiplied the tint in (see there).
       d.text("# T = fragment.texcoord[2]: vertex colour * tint\n");
       f.T = attrib("fragment.texcoord[2]");
@@ -437,7 +523,9 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
       const Light& l = k.list[i];
       const std::string prefix = k.list.name(i) + "_";
       if (!k.dot_sums[g]) f.color[i] = d.param(prefix + "color", vec4(l.color, 0));
-      if (!k.dot_sums[g] && k.fold_scale) {
+      if (k.vertex_scaled_T) {
+        f.scaled_T[i] = attrib("fragment.texcoord[" + std::to_string(k.scaled_T_texcoord(i)) + "]");
+      } else if (!k.dot_sums[g] && k.fold_scale) {
         f.scaled_T[i] = d.param(
             prefix + "sT", vec4(l.translucency_scale * k.tr.thickness * k.tr.tint, 0), "s * T");
       }
@@ -471,7 +559,13 @@ void fragment_light(Fragment& f, const Key& k, size_t i) {
     emit_attenuation(code, f.s, f.light_k[i], write_lane(f.att, i), k.guards.attenuation_floor[i]);
   }
   code.op_sat(Op::DP3, write_lane(f.diffuse, i), {f.s.N, L});
-  if (k.fragment_lobe) emit_t(code, f.s, L, k.tr.normalize_distorted_light, write_lane(f.tv, i));
+  if (k.view_dots) {
+    const std::string varying = std::to_string(k.view_dot_texcoord(i));
+    emit_view_dot_t(code, f.s.N, attrib("fragment.texcoord[" + varying + "]"), f.s.V.swz("w"),
+                    read_lane(f.tv, i));
+  } else if (k.fragment_lobe) {
+    emit_t(code, f.s, L, k.tr.normalize_distorted_light, write_lane(f.tv, i));
+  }
 }
 
 // The lanes of group g whose light needs a guard (`needs` in lane order).
@@ -491,6 +585,12 @@ void fragment_packed_group(Fragment& f, const Key& k, size_t g) {
   pg.diffuse = f.diffuse[g];
   if (k.fragment_lobe) pg.tv = f.tv[g];
   pg.dnv = f.dnv;
+  if (k.packed_view_dots) {
+    pg.view_dots =
+        attrib("fragment.texcoord[" + std::to_string(k.group_view_dot_texcoord(g)) + "]");
+    pg.eye = f.s.V;
+    pg.view_addend = f.dnv;
+  }
   if (pg.point) {
     pg.att = f.att[g];
     pg.d = f.d;
@@ -518,7 +618,12 @@ void fragment_lights(Fragment& f, const Key& k) {
   code.text(
       "\n# Per light: diffuse (and attenuation), then t = saturate(dot(V, -H)) with H = L + "
       "N*d.\n");
-  if (k.fragment_lobe && any_of(k.packed)) {
+  if (k.packed_view_dots) {
+    f.dnv = f.sum.swz("w");
+    const std::string dp = std::to_string(k.distorted_position_texcoord());
+    emit_eye_terms(code, f.s.P, f.s.N, attrib("fragment.texcoord[" + dp + "]"), f.s.V, f.dnv,
+                   k.any_point);
+  } else if (k.fragment_lobe && any_of(k.packed)) {
     code.text("# The packed groups' t reads d * (N.V) from sum.w (sum is xyz until the end).\n");
     f.dnv = f.sum.swz("w");
     code.op(Op::DP3, f.sum.masked("w"), {f.s.N, f.s.V});
@@ -736,7 +841,11 @@ ir::Program fragment_program(Key& k, const Material& material,
   f.code.text(
       "# N = n / |n|, or 0 when |n| < 1e-6 (then diffuse = 0 and H = L, as the reference).\n");
   emit_normal(f.code, f.s, attrib("fragment.texcoord[1]"));
-  if (k.fragment_lobe && !k.ortho) emit_view_vector(f.code, f.s);
+  if (k.view_dots) {
+    emit_inverse_eye_distance(f.code, f.s.P, f.s.V.swz("w"));
+  } else if (k.fragment_lobe && !k.ortho && !k.packed_view_dots) {
+    emit_view_vector(f.code, f.s);
+  }
   fragment_lights(f, k);
   accumulate(f, k, emit_lobe(f, k, lut));
   f.code.text("\n");
@@ -765,8 +874,9 @@ ir::Program fragment_program(Key& k, const Material& material,
 namespace {
 
 ArbPrograms generate_with(const Scene& scene, const Material& material, const PowVariant& variant,
-                          bool translucency_term, const Layout& layout, size_t first_light) {
-  Key k = make_key(scene, material, variant, translucency_term, layout, first_light);
+                          bool translucency_term, const Layout& layout,
+                          const LightNumbers& numbers) {
+  Key k = make_key(scene, material, variant, translucency_term, layout, numbers);
   ArbPrograms out;
   out.fragment_program = fragment_program(k, material, out.lut);
   out.vertex_program = vertex_program(k);
@@ -795,6 +905,14 @@ std::vector<Layout> candidate_layouts(const Scene& scene) {
       if (pack_min <= 4 && (n >= 4 || last >= 3)) out.push_back({by_kind, pack_min, true, true});
     }
   }
+  // The view dots apply to directional lights computed one by one, or to every light packed
+  // (apply_layout decides which, or neither).
+  const size_t layouts = out.size();
+  for (size_t i = 0; i < layouts; ++i) {
+    Layout l = out[i];
+    l.view_dots = true;
+    out.push_back(l);
+  }
   return out;
 }
 
@@ -805,14 +923,14 @@ std::vector<Layout> candidate_layouts(const Scene& scene) {
 // (arb_guards_test), and the program without the term is the same program minus the term (the
 // budget's term cost).
 ArbPrograms generate_best(const Scene& scene, const Material& material, const PowVariant& variant,
-                          bool translucency_term, size_t first_light) {
+                          bool translucency_term, const LightNumbers& numbers) {
   PowVariant chooser = variant;
   chooser.all_guards = false;
   std::optional<ArbPrograms> best;
   Layout best_layout;
   std::pair<int, int> least;
   for (const Layout& l : candidate_layouts(scene)) {
-    ArbPrograms p = generate_with(scene, material, chooser, true, l, first_light);
+    ArbPrograms p = generate_with(scene, material, chooser, true, l, numbers);
     const budget::ProgramCounts c = ir::count(p.fragment_program);
     const std::pair<int, int> key(c.alu + c.tex, c.temporaries);
     if (best && !(key < least)) continue;
@@ -821,7 +939,7 @@ ArbPrograms generate_best(const Scene& scene, const Material& material, const Po
     least = key;
   }
   if (variant.all_guards || !translucency_term) {
-    return generate_with(scene, material, variant, translucency_term, best_layout, first_light);
+    return generate_with(scene, material, variant, translucency_term, best_layout, numbers);
   }
   return std::move(*best);
 }
@@ -829,8 +947,8 @@ ArbPrograms generate_best(const Scene& scene, const Material& material, const Po
 }  // namespace
 
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
-                         bool translucency_term, size_t first_light) {
-  ArbPrograms out = generate_best(scene, material, variant, translucency_term, first_light);
+                         bool translucency_term, const LightNumbers& numbers) {
+  ArbPrograms out = generate_best(scene, material, variant, translucency_term, numbers);
   out.vertex = ir::print(out.vertex_program);
   out.fragment = ir::print(out.fragment_program);
   return out;

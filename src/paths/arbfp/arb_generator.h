@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "model/power_lut.h"
+#include "paths/arbfp/arb_emitters.h"
 #include "paths/arbfp/arb_ir.h"
 #include "paths/arbfp/arb_variant.h"
 #include "scene/scene.h"
@@ -37,9 +38,9 @@ inline bool lobe_varies(const Translucency& tr) {
 
 // `translucency_term = false` generates the same program without the translucency term (diffuse
 // only), so the budget can report the term's own cost as the difference. The programs' names,
-// comments and notes number the scene's lights from `first_light` (a pass's lights are a run of
-// a larger scene's, arb_passes.h).
+// comments and notes number the scene's lights by `numbers` (a pass's lights are some of a
+// larger scene's, arb_passes.h; empty: 0, 1, ...).
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
-                         bool translucency_term = true, size_t first_light = 0);
+                         bool translucency_term = true, const LightNumbers& numbers = {});
 
 }  // namespace lt::arbfp

@@ -68,7 +68,8 @@ double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::d
   return glm::length(a + ab * (vb / denom) + ac * (vc / denom));
 }
 
-GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all, size_t first_light) {
+GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
+                       const LightNumbers& numbers) {
   GuardNeeds g;
   const size_t n = scene.lights.size();
   g.distance_zero.assign(n, false);
@@ -107,7 +108,7 @@ GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all, s
     const double magnitude = std::max({glm::length(bounds.lo - scene.camera.eye),
                                        glm::length(bounds.hi - scene.camera.eye),
                                        glm::length(l.position - scene.camera.eye)});
-    const std::string light = "light " + std::to_string(first_light + i) + ": ";
+    const std::string light = "light " + std::to_string(light_number(numbers, i)) + ": ";
     if (d > std::max(kBoundsMargin * diagonal, kFloatMargin * magnitude)) {
       g.distance_zero[i] = false;
       g.notes.push_back(light + "distance-0 guard dropped: the light is " + ir::num(d) +

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "paths/arbfp/arb_emitters.h"
 #include "scene/scene.h"
 
 namespace lt::arbfp {
@@ -25,10 +26,9 @@ struct GuardNeeds {
 };
 
 // Every guard for `all` (the variant's :guards=all); otherwise those the objects drawn with
-// `material` can trigger. The notes number the lights from `first_light` (a pass's first light,
-// arb_passes.h).
+// `material` can trigger. The notes number the lights by `numbers` (a pass's, arb_passes.h).
 GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
-                       size_t first_light = 0);
+                       const LightNumbers& numbers = {});
 
 // The smallest distance from the origin to the triangle (a, b, c), in double.
 double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "paths/arbfp/arb_view_dots.h"
+
 namespace lt::arbfp {
 
 using ir::Op;
@@ -110,7 +112,9 @@ void emit_packed_group(ir::Block& code, const Shading& s, const PackedRows& rows
   if (!g.point) {
     code.text("# N.L and t = saturate(-(V.L) - d (N.V)) of each light at once (H = L + N d).\n");
     dot_rows(code, g.diffuse, m, {rows.x, rows.y, rows.z}, s.N, true);
-    if (g.tv.valid()) {
+    if (g.tv.valid() && g.view_dots.valid()) {
+      emit_group_view_dot_t(code, m, g.view_dots, g.eye, g.view_addend, g.tv);
+    } else if (g.tv.valid()) {
       dot_rows(code, g.tv, m, {rows.x, rows.y, rows.z}, s.V, false);
       code.op_sat(Op::ADD, tv, {-g.tv, -g.dnv});
     }
@@ -141,7 +145,17 @@ void emit_packed_group(ir::Block& code, const Shading& s, const PackedRows& rows
   code.text("# N.L = (N . (position - P)) / dist, saturated; t = saturate(-(V.L) - d (N.V)).\n");
   dot_rows(code, g.diffuse, m, {g.d[0], g.d[1], g.d[2]}, s.N, false);
   code.op_sat(Op::MUL, diffuse, {g.diffuse, inv});
-  if (g.tv.valid()) {
+  if (g.tv.valid() && g.view_dots.valid()) {
+    emit_point_view_dot(code, m, g.view_dots, g.eye, g.tv);
+    if (!g.distance_zero_lanes.empty()) {
+      // L = N there, so -(V.L) = -(V.N) = (N.P) / |P| (into eye.w, free), times 1/dist = 1.
+      code.text("# dist^2 = 0: -(V.L) = (N.P) / |P| in those lanes (L = N).\n");
+      code.op(Op::DP3, g.eye.masked("w"), {s.N, P});
+      code.op(Op::MUL, g.eye.masked("w"), {g.eye.swz("w"), g.eye.swz("y")});
+      code.op(Op::CMP, g.tv.masked(g.distance_zero_lanes), {-d2, g.tv, g.eye.swz("w")});
+    }
+    code.op_sat(Op::MAD, tv, {g.tv, inv, g.view_addend});
+  } else if (g.tv.valid()) {
     dot_rows(code, g.tv, m, {g.d[0], g.d[1], g.d[2]}, s.V, false);
     code.op_sat(Op::MAD, tv, {-g.tv, inv, -g.dnv});
   }

@@ -37,6 +37,9 @@ struct PackedGroup {
   ir::Reg tv;       // out: t per lane; invalid when the fragment program computes no t
   ir::Reg att;      // out (point): the attenuation per lane
   ir::Reg dnv;      // in: d * (N.V), one component, read when tv is valid
+  // in, when valid: t from the interpolated dots instead of V (arb_view_dots.h): the group's
+  // texcoord, the eye terms (1/|P| in y, |P| in z) and the addend d (N.P) / |P|; dnv unused.
+  ir::Reg view_dots, eye, view_addend;
   // Point groups' scratch: the light vectors' x, y, z, dist^2 (the group's lobe register, free
   // until the lobe is computed) and 1/dist (r, free after the normal).
   std::array<ir::Reg, 3> d;
