@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/parallel_rows.h"
 #include "report/bench.h"
 #include "report/bench_compare.h"
 
@@ -55,12 +56,18 @@ Action add_bench(CLI::App& app) {
   sub->add_option("--lp-threads", *lp_threads,
                   "llvmpipe's rendering threads (sets LP_NUM_THREADS; default: the environment's)")
       ->check(CLI::Range(1, 64));
+  auto cpu_threads = std::make_shared<unsigned>(0);
+  sub->add_option("--cpu-threads", *cpu_threads,
+                  "Threads of the CPU paths' per-pixel stages (reference, half, gx; default: "
+                  "one per core)")
+      ->check(CLI::Range(1, 64));
   sub->add_option("-o,--output", *out, "Output directory")->required();
   sub->add_flag("--quiet", o->quiet, "No progress lines");
   sub->add_option("--profile", o->profile,
                   "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
                   "drawn in additive passes (the cost column says how many)");
-  return [o, scenes, paths, out, lp_threads, compare_with]() -> int {
+  return [o, scenes, paths, out, lp_threads, cpu_threads, compare_with]() -> int {
+    worker_threads_setting() = *cpu_threads;
     o->out_dir = *out;
     // The earlier report is read first: a bad one fails before the bench runs.
     std::optional<EarlierBench> before;

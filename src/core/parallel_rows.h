@@ -15,9 +15,16 @@
 
 namespace lt {
 
-// Every core.
+// How many workers a CPU stage uses: 0 means every core (the default); `bench --cpu-threads`
+// sets it before any path is built.
+inline std::atomic<unsigned>& worker_threads_setting() {
+  static std::atomic<unsigned> n{0};
+  return n;
+}
+
 inline unsigned worker_threads() {
-  return std::max(1u, std::thread::hardware_concurrency());
+  const unsigned set = worker_threads_setting().load();
+  return set > 0 ? set : std::max(1u, std::thread::hardware_concurrency());
 }
 
 // Calls row(y, worker) once for every y in [0, rows), worker < worker_threads(), so the caller
