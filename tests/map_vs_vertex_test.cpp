@@ -18,23 +18,15 @@
 namespace lt {
 namespace {
 
-std::string output_of(const std::string& command) {
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-  EXPECT_EQ(pclose(pipe), 0) << command;
-  return out;
-}
-
 TEST(MapVsVertex, ErrorFallsAsTheTessellationRises) {
   const std::string command = "python3 " +
                               (test::source_dir() / "scripts" / "map_vs_vertex.py").string() +
                               " --bin " + LT_BINARY +
                               " --rings 4,8,16 --rays 64 --map 128x64 --width 160 --height 120"
                               " --json";
-  const auto rows = nlohmann::json::parse(output_of(command));
+  const test::CommandOutput run = test::command_output(command);
+  ASSERT_EQ(run.exit_code, 0) << command;
+  const auto rows = nlohmann::json::parse(run.out);
   ASSERT_EQ(rows.size(), 3u);
   for (size_t i = 1; i < rows.size(); ++i) {
     const auto &coarse = rows[i - 1], &fine = rows[i];

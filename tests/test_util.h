@@ -102,6 +102,22 @@ inline RunResult run_ltrender(const std::string& args, const RunLimits& limits =
   return r;
 }
 
+// Standard output of a shell command and its exit code (the repo's scripts, run by their tests).
+struct CommandOutput {
+  int exit_code = -1;
+  std::string out;
+};
+inline CommandOutput command_output(const std::string& command) {
+  CommandOutput r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
 // A unit quad in the XY plane facing +Z (two triangles), as OBJ with explicit normals.
 inline std::string quad_obj() {
   return "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
