@@ -3,9 +3,9 @@
 // and on a shared machine a core can be taken away for part of a frame; with rows handed out
 // as workers become free, a worker that is slowed (by its rows or by the machine) simply takes
 // fewer of them. A fixed split (worker w takes rows w, w + n, ...) instead ended every frame
-// with the slowest worker's share, so one descheduled thread stretched the whole frame, and
-// the CPU paths' bench figures did not repeat from run to run (issue 11). Used by every CPU
-// per-pixel stage (the reference's and half's shading, the gx path's TEV).
+// with the slowest worker's share, so one descheduled thread stretched the whole frame (a
+// noise the bench timed, issue 11). Used by every CPU per-pixel stage (the reference's and
+// half's shading, the gx path's TEV).
 #pragma once
 
 #include <algorithm>

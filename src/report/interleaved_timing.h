@@ -5,11 +5,12 @@
 // just a frame count; warm-up lasts until the frame time settles.
 //
 // Both sides of a pair last about as long: the baseline side is as many baseline frames as fill
-// the path's frame. A 300 ms CPU frame paired with one 15 ms flat frame takes ~20 times the
+// the path's frame. A 70 ms CPU frame paired with one 2 ms flat frame takes thirty times the
 // share of whatever else runs on the machine (another process, a page-fault storm, a host's
-// neighbour), so its ratio rose with the background load and did not repeat from run to run
-// (reference 18-28%, gx 17-23% off the median of three runs). With matched durations a
-// disturbance is as likely to land on either side, and the ratio stays put.
+// neighbour), so its ratio rises with the background load; with matched durations a
+// disturbance is as likely to land on either side. (It does not make the CPU paths' ratios
+// repeat from run to run: flat's own frame time drifts between runs, README "How far the ratios
+// repeat".)
 #pragma once
 
 #include <cstddef>
