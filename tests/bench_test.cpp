@@ -99,6 +99,20 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
   EXPECT_EQ(cards, expected);
   EXPECT_TRUE(fs::exists(o.out_dir / "images" / "quad__reference.png"));
   EXPECT_NE(html.find("<figure class=\"chart\"><svg"), std::string::npos);
+  // A path has one colour in both charts, though the work chart lacks glsl's points (arbfp,
+  // after glsl, took glsl's colour there). The legend entry is "<text ... fill='#rrggbb'>N  path".
+  const auto colour_of = [](const std::string& svg, const std::string& path) {
+    const size_t at = svg.find("  " + path + " ");
+    const size_t fill = at == std::string::npos ? at : svg.rfind("fill='#", at);
+    return fill == std::string::npos ? std::string("none") : svg.substr(fill + 6, 7);
+  };
+  const std::string speed = slurp("chart.svg"), work = slurp("chart_work.svg");
+  ASSERT_EQ(work.find("  glsl "), std::string::npos);  // the case the colours must survive
+  for (const std::string path : {"reference", "arbfp", "combiners", "half", "gx"}) {
+    EXPECT_NE(colour_of(speed, path), "none") << path;
+    EXPECT_EQ(colour_of(speed, path), colour_of(work, path)) << path;
+  }
+  EXPECT_NE(colour_of(speed, "glsl"), colour_of(speed, "arbfp"));
   EXPECT_EQ(static_cast<size_t>(std::count(csv.begin(), csv.end(), '\n')), expected + 1);
   // Scripts read the CSV by column: the old columns keep their order, new ones come last.
   EXPECT_EQ(csv.rfind("scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,"

@@ -252,9 +252,13 @@ std::string svg_chart(const std::vector<BenchRow>& rows, const ChartAxis& axis) 
   };
   static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
                                   "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  // A path's colour is its place in the registry, not in this chart's points: the work chart
+  // has no glsl points (Mesa counts no GLSL instructions), and numbering the paths it does have
+  // gave arbfp the speed chart's glsl red beside it on the report page.
   std::map<std::string, std::string> colour;
-  for (const Point& p : points) {
-    if (!colour.count(p.path)) colour[p.path] = palette[colour.size() % 8];
+  for (const Point& p : points) colour[p.path] = palette[7];  // a path the registry lacks
+  for (size_t i = 0; i < all_paths().size(); ++i) {
+    if (colour.count(all_paths()[i].name)) colour[all_paths()[i].name] = palette[i % 8];
   }
   std::ostringstream s;
   s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
