@@ -15,6 +15,18 @@
 namespace lt {
 namespace {
 
+// quad.json (48x32, one backlit quad) and its mesh in `dir`.
+void write_quad_scene(const fs::path& dir) {
+  test::write_file(dir / "quad.obj", test::quad_obj());
+  test::write_file(dir / "quad.json", R"({
+    "image": {"width": 48, "height": 32},
+    "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "fov_y_deg": 40},
+    "materials": {"m": {"albedo": [0.8, 0.8, 0.8],
+                        "translucency": {"power": 4, "distortion": 0.2, "thickness": 0.5}}},
+    "lights": [{"type": "directional", "direction": [0.3, 0, 1], "translucency_scale": 2}],
+    "objects": [{"mesh": "quad.obj", "material": "m"}]})");
+}
+
 TEST(Bench, SummarizeFramesTakesMedianAndMin) {
   const FrameTiming odd = summarize_frames({5, 1, 3});
   EXPECT_EQ(odd.median_ms, 3);
@@ -25,20 +37,14 @@ TEST(Bench, SummarizeFramesTakesMedianAndMin) {
 
 TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
   test::TempDir dir;
-  test::write_file(dir / "quad.obj", test::quad_obj());
-  test::write_file(dir / "quad.json", R"({
-    "image": {"width": 48, "height": 32},
-    "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "fov_y_deg": 40},
-    "materials": {"m": {"albedo": [0.8, 0.8, 0.8],
-                        "translucency": {"power": 4, "distortion": 0.2, "thickness": 0.5}}},
-    "lights": [{"type": "directional", "direction": [0.3, 0, 1], "translucency_scale": 2}],
-    "objects": [{"mesh": "quad.obj", "material": "m"}]})");
+  write_quad_scene(dir.path());
   BenchOptions o;
   o.scenes = {dir / "quad.json"};
   o.out_dir = dir / "out";
   o.frames = 10;
   o.warmup = 1;
   o.min_time_s = 0;  // the pair count decides: this test checks the rows, not their figures
+  o.max_time_s = 0;
   o.wide_width = 64;
   o.wide_height = 36;
   o.quiet = true;
@@ -120,7 +126,7 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
                       0),
             0u);
   EXPECT_NE(csv.find(",cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
-                     "work_vertex_ops\n"),
+                     "work_vertex_ops,settling_frames\n"),
             std::string::npos);
   for (size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& r = rows[i];
@@ -131,6 +137,8 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     EXPECT_DOUBLE_EQ(j["rows"][i]["ratio_interval"]["low"].get<double>(), r.ratio.low);
     EXPECT_DOUBLE_EQ(j["rows"][i]["ratio_interval"]["high"].get<double>(), r.ratio.high);
     EXPECT_EQ(j["rows"][i]["ratio_interval"]["pairs"].get<std::size_t>(), r.ratio.pairs);
+    EXPECT_EQ(j["rows"][i]["ratio_interval"]["settling_frames"].get<std::size_t>(),
+              r.settling_frames);
     for (const auto& [name, value] : r.stats.set_fields()) {
       EXPECT_DOUBLE_EQ(j["rows"][i]["stats"][name].get<double>(), value) << r.path << " " << name;
     }
@@ -181,6 +189,37 @@ TEST(BenchCli, BadSceneWritesNothing) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.json:image.width"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// --pin-core: the whole bench on one core by default, and the report says so (with llvmpipe in
+// the calling thread and one CPU worker); a core the process may not use, or a word that is no
+// core, is an input error naming the option, with nothing written.
+TEST(Bench, PinsToOneCoreAndSaysSo) {
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  const std::string bench = "bench " + (dir / "quad.json").string() +
+                            " --paths reference --frames 10 --min-time 0 --max-time 0 --quiet ";
+  auto report = [&](const std::string& name) {
+    std::ifstream in(dir / name / "report.json");
+    return nlohmann::json::parse(in);
+  };
+  ASSERT_EQ(test::run_ltrender(bench + "-o " + (dir / "pinned").string()).exit_code, 0);
+  const auto pinned = report("pinned");
+  EXPECT_EQ(pinned["pinning"].get<std::string>().rfind("pinned to core ", 0), 0u);
+  EXPECT_EQ(pinned["cpu_threads"], 1);
+  EXPECT_NE(pinned["llvmpipe_threads"].get<std::string>().find("LP_NUM_THREADS=0"),
+            std::string::npos);
+  ASSERT_EQ(test::run_ltrender(bench + "--pin-core none -o " + (dir / "free").string()).exit_code,
+            0);
+  EXPECT_EQ(report("free")["pinning"].get<std::string>().rfind("not pinned", 0), 0u);
+  for (const char* bad : {"4000", "abc", "1x"}) {
+    const auto r =
+        test::run_ltrender(bench + "--pin-core " + bad + " -o " + (dir / "bad").string());
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("ltrender: error: --pin-core"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "bad")) << bad;
+  }
 }
 
 }  // namespace

@@ -107,5 +107,78 @@ TEST(Interleaved, MatchedDurationsKeepASlowPathsRatioUnderLoad) {
   }
 }
 
+// A machine where the baseline runs slow right after a heavy frame (on the machines here flat
+// frames take up to twice their time for 20-30 ms after a 50-100 ms CPU frame): 60 ms path
+// frames, 2 ms baseline frames, 4 ms for the five after a path frame. The steady ratio is 30.
+InterleavedTiming time_with_slow_frames_after_the_path(int max_settling_frames) {
+  int slow_left = 0;  // baseline frames still slowed by the last path frame
+  auto path = [&](bool) {
+    slow_left = 5;
+    return 60.0;
+  };
+  auto baseline = [&] { return slow_left-- > 0 ? 4.0 : 2.0; };
+  InterleaveOptions o;
+  o.min_pairs = 20;
+  o.min_seconds = 0;
+  o.max_settling_frames = max_settling_frames;
+  return time_interleaved(path, baseline, o);
+}
+
+// Timed, the slow frames would pull every other pair's baseline side up, and the median of two
+// kinds of pair jumps between them from run to run; settled first, every pair reads the steady
+// ratio.
+TEST(Interleaved, BaselineSettlesAfterAPathFrameBeforeItIsTimed) {
+  const InterleavedTiming t = time_with_slow_frames_after_the_path(16);
+  EXPECT_DOUBLE_EQ(t.ratio.median, 30.0);
+  EXPECT_DOUBLE_EQ(t.ratio.low, 30.0);
+  EXPECT_DOUBLE_EQ(t.ratio.high, 30.0);
+  for (double ms : t.baseline_ms) EXPECT_EQ(ms, 2.0);
+  // The first pair follows the path's warm-up, and every odd pair's baseline its own path frame:
+  // 1 + 10 blocks of five settling frames.
+  EXPECT_EQ(t.settling_frames, 55u);
+}
+
+// Without settling, the same machine gives pairs of two kinds: the check that the test above
+// can fail. A baseline block after a path frame averages five 4 ms frames into 25 frames.
+TEST(Interleaved, UnsettledBaselineWouldReadTwoKindsOfPair) {
+  const InterleavedTiming t = time_with_slow_frames_after_the_path(0);
+  EXPECT_EQ(t.settling_frames, 0u);
+  EXPECT_LT(t.ratio.low, 27.0);  // 60 / ((5 * 4 + 20 * 2) / 25) = 25
+  EXPECT_DOUBLE_EQ(t.ratio.high, 30.0);
+}
+
+// Beyond the minimum, pairs go on until the interval is within the target, or the path has had
+// its maximum time. The path's frames scatter +-10% (a fixed sequence), the baseline's do not.
+TEST(Interleaved, PairsGoOnUntilTheIntervalIsNarrowOrTimeIsUp) {
+  auto scattered_path = [] {
+    return [k = 0](bool timed) mutable {
+      if (!timed) return 10.0;  // a settled warm-up
+      k = (k * 37 + 11) % 101;  // a fixed sequence in 0..100
+      return 10.0 * (0.9 + 0.2 * k / 100.0);
+    };
+  };
+  auto baseline = [] { return 1.0; };
+  InterleaveOptions o;
+  o.min_pairs = 10;
+  o.min_seconds = 0;
+  o.target_half_width = 0.02;
+  o.max_seconds = 100;
+  const InterleavedTiming narrow = time_interleaved(scattered_path(), baseline, o);
+  EXPECT_GT(narrow.ratio.pairs, 10u);  // ten pairs of +-10% scatter give about +-6%
+  EXPECT_LE(narrow.ratio.relative_half_width(), 0.02);
+  // One pair fewer and the interval was still wider than the target (with 1 ms baseline
+  // frames a pair's ratio is its path frame's milliseconds).
+  const std::vector<double> fewer(narrow.path_ms.begin(), narrow.path_ms.end() - 1);
+  EXPECT_GT(estimate_ratio(fewer).relative_half_width(), 0.02);
+
+  o.max_seconds = 0.2;  // 20 frames of about 10 ms
+  const InterleavedTiming capped = time_interleaved(scattered_path(), baseline, o);
+  double seconds = 0;
+  for (double ms : capped.path_ms) seconds += ms / 1000;
+  EXPECT_GE(seconds, 0.2);
+  EXPECT_LT(seconds - capped.path_ms.back() / 1000, 0.2);  // it stopped at the first pair over
+  EXPECT_GT(capped.ratio.relative_half_width(), 0.02);
+}
+
 }  // namespace
 }  // namespace lt

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "cli/commands.h"
+#include "core/cpu_affinity.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/parallel_rows.h"
@@ -20,15 +21,49 @@ namespace {
 // What llvmpipe will use, for the report: LP_NUM_THREADS is read when the first context is made,
 // so --lp-threads sets it before any. The CPU paths' own threads never run while llvmpipe
 // renders (they shade after the G-buffer's read-back), so the two do not compete in a frame.
-std::string llvmpipe_threads(int requested) {
-  if (requested > 0) {
+// Pinned to one core, llvmpipe rasterises in the calling thread (LP_NUM_THREADS=0) unless told
+// otherwise: threads sharing one core would only add hand-offs.
+std::string llvmpipe_threads(int requested, bool pinned) {
+  if (requested >= 0) {
     ::setenv("LP_NUM_THREADS", std::to_string(requested).c_str(), 1);
     return "LP_NUM_THREADS=" + std::to_string(requested) + " (--lp-threads)";
   }
   if (const char* env = std::getenv("LP_NUM_THREADS"))
     return std::string("LP_NUM_THREADS=") + env + " (from the environment)";
+  if (pinned) {
+    ::setenv("LP_NUM_THREADS", "0", 1);
+    return "LP_NUM_THREADS=0, rasterising in the calling thread (the bench is pinned to one core)";
+  }
   return "llvmpipe's default, one per core (" +
          std::to_string(std::thread::hardware_concurrency()) + ")";
+}
+
+// --pin-core: `last` (the default) is the last core the process may use, `none` leaves the
+// scheduler free, a number is that core. Returns what the report says.
+std::string pin_to_core(const std::string& spec, bool& pinned) {
+  pinned = false;
+  const std::vector<int> allowed = allowed_cores();
+  if (spec == "none" || allowed.empty())
+    return "not pinned (" + std::to_string(usable_core_count()) + " cores)";
+  int core = allowed.back();
+  if (spec != "last") {
+    std::size_t used = 0;
+    try {
+      core = std::stoi(spec, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != spec.size())
+      throw InputError("--pin-core", "", "'" + spec + "' is not a core number, 'last' or 'none'");
+  }
+  if (!pin_process_to_core(core)) {
+    std::string list;
+    for (int c : allowed) list += (list.empty() ? "" : ",") + std::to_string(c);
+    throw InputError("--pin-core", "",
+                     "core " + spec + " is not one this process may use (" + list + ")");
+  }
+  pinned = true;
+  return "pinned to core " + std::to_string(core) + " (--pin-core " + spec + ")";
 }
 
 }  // namespace
@@ -48,31 +83,50 @@ Action add_bench(CLI::App& app) {
   sub->add_option("--min-time", o->min_time_s,
                   "Least measuring time per path at 1280x720, in seconds (interleaved with flat)")
       ->check(CLI::Range(0.0, 60.0));
+  sub->add_option("--target-interval", o->target_interval,
+                  "Beyond --min-time, keep pairing while the ratio's 95% interval is wider than "
+                  "+- this fraction of it (default 0.02)")
+      ->check(CLI::Range(0.0, 1.0));
+  sub->add_option("--max-time", o->max_time_s,
+                  "Most measuring time per path at 1280x720 while the interval is wider than the "
+                  "target, in seconds (default 2.5; never below --min-time)")
+      ->check(CLI::Range(0.0, 60.0))
+      // scripts/demo.sh sets it for its error-only benches and passes run.sh's arguments on.
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   auto compare_with = std::make_shared<std::string>();
   sub->add_option("--compare", *compare_with,
                   "An earlier report.json: rows whose ratio intervals do not overlap are listed "
                   "in compare.md; exit 1 if any is slower");
-  auto lp_threads = std::make_shared<int>(0);
+  auto lp_threads = std::make_shared<int>(-1);
   sub->add_option("--lp-threads", *lp_threads,
-                  "llvmpipe's rendering threads (sets LP_NUM_THREADS; default: the environment's)")
-      ->check(CLI::Range(1, 64));
+                  "llvmpipe's rendering threads (sets LP_NUM_THREADS; 0: in the calling thread; "
+                  "default: the environment's, or 0 when pinned to one core)")
+      ->check(CLI::Range(0, 64));
+  auto pin_core = std::make_shared<std::string>("last");
+  sub->add_option("--pin-core", *pin_core,
+                  "Run the whole bench on one core: 'last' (default, the last core the process "
+                  "may use), a core number, or 'none'");
   auto cpu_threads = std::make_shared<unsigned>(0);
   sub->add_option("--cpu-threads", *cpu_threads,
                   "Threads of the CPU paths' per-pixel stages (reference, half, gx; default: "
-                  "one per core)")
+                  "one per core the bench may use: 1 when pinned)")
       ->check(CLI::Range(1, 64));
   sub->add_option("-o,--output", *out, "Output directory")->required();
   sub->add_flag("--quiet", o->quiet, "No progress lines");
   sub->add_option("--profile", o->profile,
                   "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
                   "drawn in additive passes (the cost column says how many)");
-  return [o, scenes, paths, out, lp_threads, cpu_threads, compare_with]() -> int {
+  return [o, scenes, paths, out, lp_threads, cpu_threads, pin_core, compare_with]() -> int {
+    // Before any thread or context exists: what is started later inherits the core.
+    bool pinned = false;
+    o->pinning = pin_to_core(*pin_core, pinned);
     worker_threads_setting() = *cpu_threads;
     o->out_dir = *out;
     // The earlier report is read first: a bad one fails before the bench runs.
     std::optional<EarlierBench> before;
     if (!compare_with->empty()) before = read_earlier_bench(*compare_with);
-    o->llvmpipe_threads = llvmpipe_threads(*lp_threads);
+    o->llvmpipe_threads = llvmpipe_threads(*lp_threads, pinned);
+    o->cpu_threads = worker_threads();
     o->paths.clear();
     std::stringstream ss(*paths);
     for (std::string p; std::getline(ss, p, ',');) {

@@ -13,10 +13,13 @@
 #include <thread>
 #include <vector>
 
+#include "core/cpu_affinity.h"
+
 namespace lt {
 
-// How many workers a CPU stage uses: 0 means every core (the default); `bench --cpu-threads`
-// sets it before any path is built.
+// How many workers a CPU stage uses: 0 means every core the process may use (the default: one
+// when the bench has pinned it to a core); `bench --cpu-threads` sets it before any path is
+// built.
 inline std::atomic<unsigned>& worker_threads_setting() {
   static std::atomic<unsigned> n{0};
   return n;
@@ -24,7 +27,7 @@ inline std::atomic<unsigned>& worker_threads_setting() {
 
 inline unsigned worker_threads() {
   const unsigned set = worker_threads_setting().load();
-  return set > 0 ? set : std::max(1u, std::thread::hardware_concurrency());
+  return set > 0 ? set : usable_core_count();
 }
 
 // Calls row(y, worker) once for every y in [0, rows), worker < worker_threads(), so the caller

@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
@@ -48,6 +50,23 @@ void collect_stats(const Path& path, StatSamples& stats) {
   }
 }
 
+// Rounds a figure is timed in at 1280x720 (pass 2 of run_bench).
+constexpr int kTimingRounds = 5;
+
+// One round's share of the bench's measuring options: the minimums and the maximum time split
+// over the rounds (at least --frames pairs and --min-time in all), the target judged on every
+// round's pairs so far.
+InterleaveOptions round_options(const BenchOptions& o, const std::vector<double>& earlier) {
+  InterleaveOptions io;
+  io.min_pairs = (o.frames + kTimingRounds - 1) / kTimingRounds;
+  io.min_seconds = o.min_time_s / kTimingRounds;
+  io.max_seconds = o.max_time_s / kTimingRounds;
+  io.target_half_width = o.target_interval;
+  io.min_warmup = o.warmup;
+  io.earlier_ratios = earlier;
+  return io;
+}
+
 FrameTiming time_frames(Path& path, const BenchOptions& o) {
   for (int i = 0; i < o.warmup; ++i) timed_frame(path);
   std::vector<double> ms;
@@ -64,6 +83,104 @@ double median(std::vector<double> v) {
 
 std::string scene_name(const fs::path& p) {
   return p.stem().string();
+}
+
+// Pass 2 of run_bench, at 1280x720: timing only, each path in interleaved pairs with flat in the
+// same session (report/interleaved_timing.h), so every ratio is the median of per-pair ratios.
+// A figure is timed in rounds (round 1 of every row of every scene, then round 2, ...), each in
+// a session of its own (context, framebuffer, flat and the path built afresh): its pairs sample
+// the machine at times spread over the whole bench, and the placement of its objects and
+// framebuffer in memory more than once. A state that holds for a whole measurement is then one
+// round of several, outvoted in the median. Measured (README "How far the ratios repeat"): in
+// one of eight processes glsl on coloured_cubes read 6.0 times flat instead of 3.0-3.4, its
+// interval +-2%; with the rounds inside one scene's minute, one run's thin_vs_thick CPU rows sat
+// 8-14% below another run's, every interval within +-5%.
+void time_at_wide_size(const std::vector<Scene>& scenes,
+                       std::vector<std::vector<BenchRow>>& rows_by_scene, const PathInfo& flat,
+                       const BenchOptions& o) {
+  struct RowTiming {
+    std::vector<double> ratios, path_ms;
+    StatSamples stats;
+    std::size_t settling_frames = 0;
+  };
+  struct SceneTiming {
+    std::vector<RowTiming> rows;
+    std::vector<double> flat_ms;  // every timed flat frame of the scene, over the rounds
+    std::optional<SceneCoverage> coverage;
+  };
+  std::vector<SceneTiming> timing(scenes.size());
+  for (std::size_t si = 0; si < scenes.size(); ++si)
+    timing[si].rows.resize(rows_by_scene[si].size());
+  for (int round = 0; round < kTimingRounds; ++round) {
+    if (!o.quiet) std::fprintf(stderr, "bench: timing, round %d of %d\n", round + 1, kTimingRounds);
+    for (std::size_t si = 0; si < scenes.size(); ++si) {
+      const Scene& scene = scenes[si];
+      SceneTiming& st = timing[si];
+      std::vector<BenchRow>& scene_rows = rows_by_scene[si];
+      RenderSession session(scene, o.wide_width, o.wide_height);
+      if (!st.coverage)
+        st.coverage = scene_coverage(scene, covered_pixels_by_material(session.context()));
+      auto count_work = [&](BenchRow& row, const Path& path) {
+        const WorkModel model = path.work();
+        row.work = frame_work(model, *st.coverage);
+        row.work_not_counted = model.not_counted;
+      };
+      auto base = session.build(flat, flat.variants.front().name);
+      bool timed_any = false;
+      for (std::size_t i = 0; i < scene_rows.size(); ++i) {
+        BenchRow& row = scene_rows[i];
+        if (row.path == flat.name) {
+          if (round == 0) count_work(row, *base);
+          continue;
+        }
+        timed_any = true;
+        const PathInfo& p = find_path(row.path);
+        auto path = session.build(p, row.variant, profile_options(p, o));
+        if (round == 0) count_work(row, *path);
+        RowTiming& rt = st.rows[i];
+        const InterleavedTiming t = time_interleaved(
+            [&](bool timed) {
+              const double ms = timed_frame(*path);
+              if (timed) collect_stats(*path, rt.stats);
+              return ms;
+            },
+            [&] { return timed_frame(*base); }, round_options(o, rt.ratios));
+        rt.ratios.insert(rt.ratios.end(), t.pair_ratios.begin(), t.pair_ratios.end());
+        rt.path_ms.insert(rt.path_ms.end(), t.path_ms.begin(), t.path_ms.end());
+        rt.settling_frames += t.settling_frames;
+        st.flat_ms.insert(st.flat_ms.end(), t.baseline_ms.begin(), t.baseline_ms.end());
+      }
+      // flat alone (the only path asked for): its own frames, in the first round.
+      if (!timed_any && round == 0) {
+        for (int i = 0; i < std::max(o.frames, 10); ++i) st.flat_ms.push_back(timed_frame(*base));
+      }
+    }
+  }
+  for (std::size_t si = 0; si < scenes.size(); ++si) {
+    for (std::size_t i = 0; i < rows_by_scene[si].size(); ++i) {
+      BenchRow& row = rows_by_scene[si][i];
+      const RowTiming& rt = timing[si].rows[i];
+      if (row.path == flat.name) {
+        // Its frames from every pair of the scene, and a ratio of 1 by definition.
+        row.at_wide = summarize_frames(timing[si].flat_ms);
+        row.ratio = estimate_ratio(std::vector<double>(timing[si].flat_ms.size(), 1.0));
+        row.ratio_to_flat = 1.0;
+        continue;
+      }
+      row.at_wide = summarize_frames(rt.path_ms);
+      row.ratio = estimate_ratio(rt.ratios);
+      row.ratio_to_flat = row.ratio.median;
+      row.settling_frames = rt.settling_frames;
+      // Every figure a path reports, as the median over the timed frames.
+      for (size_t k = 0; k < rt.stats.size(); ++k) {
+        if (!rt.stats[k].empty()) row.stats.*(FrameStats::kFields[k].second) = median(rt.stats[k]);
+      }
+      if (row.stats.shading_seconds && row.stats.covered_pixels) {
+        const double secs = *row.stats.shading_seconds;
+        row.shading_mpixels_per_s = secs > 0 ? *row.stats.covered_pixels / secs / 1e6 : 0;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -95,7 +212,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
   fs::create_directories(o.out_dir / "images", ec);
   if (ec)
     throw InputError(o.out_dir.string(), "", "cannot create output directory: " + ec.message());
-  std::vector<BenchRow> rows;
+  std::vector<std::vector<BenchRow>> rows_by_scene;
   for (size_t si = 0; si < scenes.size(); ++si) {
     const fs::path& scene_path = o.scenes[si];
     const Scene& scene = scenes[si];
@@ -103,6 +220,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
     if (!o.quiet) std::fprintf(stderr, "bench: %s\n", sname.c_str());
 
     // Pass 1, at the scene's size: the reference image, every path's image, error, timing.
+    // Pass 2, the timing at 1280x720, follows for every scene at once (time_at_wide_size).
     std::vector<BenchRow> scene_rows;
     Image ref_image;
     {
@@ -149,62 +267,11 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         }
       }
     }
-    // Pass 2, at 1280x720: timing only, each path in interleaved pairs with flat in the same
-    // session (report/interleaved_timing.h), so every ratio is the median of per-pair ratios.
-    {
-      RenderSession session(scene, o.wide_width, o.wide_height);
-      const SceneCoverage coverage =
-          scene_coverage(scene, covered_pixels_by_material(session.context()));
-      auto base = session.build(flat, flat.variants.front().name);
-      auto count_work = [&](BenchRow& row, const Path& path) {
-        const WorkModel model = path.work();
-        row.work = frame_work(model, coverage);
-        row.work_not_counted = model.not_counted;
-      };
-      InterleaveOptions io;
-      io.min_pairs = o.frames;
-      io.min_seconds = o.min_time_s;
-      io.min_warmup = o.warmup;
-      std::vector<double> all_flat_ms;
-      for (BenchRow& row : scene_rows) {
-        if (row.path == flat.name) continue;
-        const PathInfo& p = find_path(row.path);
-        auto path = session.build(p, row.variant, profile_options(p, o));
-        count_work(row, *path);
-        StatSamples stats;
-        const InterleavedTiming t = time_interleaved(
-            [&](bool timed) {
-              const double ms = timed_frame(*path);
-              if (timed) collect_stats(*path, stats);
-              return ms;
-            },
-            [&] { return timed_frame(*base); }, io);
-        row.at_wide = summarize_frames(t.path_ms);
-        row.ratio = t.ratio;
-        row.ratio_to_flat = t.ratio.median;
-        all_flat_ms.insert(all_flat_ms.end(), t.baseline_ms.begin(), t.baseline_ms.end());
-        // Every figure a path reports, as the median over the timed frames.
-        for (size_t k = 0; k < stats.size(); ++k) {
-          if (!stats[k].empty()) row.stats.*(FrameStats::kFields[k].second) = median(stats[k]);
-        }
-        if (row.stats.shading_seconds && row.stats.covered_pixels) {
-          const double secs = *row.stats.shading_seconds;
-          row.shading_mpixels_per_s = secs > 0 ? *row.stats.covered_pixels / secs / 1e6 : 0;
-        }
-      }
-      // flat's own row: its frames from every pair of the scene (or alone if it is the only
-      // path), and a ratio of 1 by definition.
-      if (all_flat_ms.empty()) {
-        for (int i = 0; i < std::max(o.frames, 10); ++i) all_flat_ms.push_back(timed_frame(*base));
-      }
-      for (BenchRow& row : scene_rows) {
-        if (row.path != flat.name) continue;
-        count_work(row, *base);
-        row.at_wide = summarize_frames(all_flat_ms);
-        row.ratio = estimate_ratio(std::vector<double>(all_flat_ms.size(), 1.0));
-        row.ratio_to_flat = 1.0;
-      }
-    }
+    rows_by_scene.push_back(std::move(scene_rows));
+  }
+  time_at_wide_size(scenes, rows_by_scene, flat, o);
+  std::vector<BenchRow> rows;
+  for (auto& scene_rows : rows_by_scene) {
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
   }
   return rows;

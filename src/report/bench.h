@@ -24,7 +24,13 @@ struct BenchOptions {
   int frames = 10;  // >= 10 (metrics.md); at 1280x720, the least number of interleaved pairs
   int warmup = 2;   // at least; at 1280x720 warm-up goes on until the frame time settles
   double min_time_s = 0.5;  // at 1280x720, the least measuring time of each path (--min-time)
+  // Beyond it, pairs go on while the ratio's 95% interval is wider than +-target_interval
+  // (--target-interval, a fraction), up to max_time_s of the path (--max-time).
+  double target_interval = 0.02;
+  double max_time_s = 2.5;
   std::string llvmpipe_threads = "as the environment says";  // for the report (--lp-threads)
+  std::string pinning = "not pinned";                        // for the report (--pin-core)
+  unsigned cpu_threads = 0;  // for the report: the CPU paths' workers (--cpu-threads)
   int wide_width = 1280, wide_height = 720;
   bool quiet = false;
   std::string profile;  // --profile: the paths that take one split their programs into passes
@@ -37,8 +43,10 @@ struct FrameTiming {
 struct BenchRow {
   std::string scene, path, variant;
   FrameTiming at_scene_size, at_wide;
-  double ratio_to_flat = 0;         // at 1280x720: the median of interleaved per-pair ratios
-  RatioEstimate ratio;              // the same, with its 95% interval and pair count
+  double ratio_to_flat = 0;  // at 1280x720: the median of interleaved per-pair ratios
+  RatioEstimate ratio;       // the same, with its 95% interval and pair count
+  std::size_t settling_frames =
+      0;  // flat frames run untimed after a path frame (interleaved_timing.h)
   std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
   FrameStats stats;                 // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time

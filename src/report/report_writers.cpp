@@ -79,10 +79,15 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
     << "Frames, each bounded by glFinish: at the scene's size, median and min of " << o.frames
     << " after " << o.warmup << " warm-up; at " << o.wide_width << "x" << o.wide_height
     << ", each path in interleaved pairs with `flat` in the same session (at least " << o.frames
-    << " pairs and " << fmt(o.min_time_s) << " s of the path), after a warm-up that lasts until "
-    << "the frame time settles. `ratio` = median of the per-pair ratios; `95% interval` from "
-       "order statistics, marked *wide* beyond +-10%. llvmpipe threads: "
-    << o.llvmpipe_threads << ". Error: covered pixels against the reference, in LSB (1/255).\n\n"
+    << " pairs and " << fmt(o.min_time_s) << " s of the path, then more while the interval is "
+    << "wider than +-" << fmt(100 * o.target_interval) << "%, up to " << fmt(o.max_time_s)
+    << " s of the path), after a warm-up that lasts until the frame time settles; flat frames "
+       "right after a path frame are not timed until flat is back within 10% of its level. "
+       "`ratio` = median of the per-pair ratios; `95% interval` from "
+       "order statistics, marked *wide* beyond +-10%. Cores: "
+    << o.pinning << "; llvmpipe threads: " << o.llvmpipe_threads
+    << "; CPU paths' threads: " << o.cpu_threads
+    << ". Error: covered pixels against the reference, in LSB (1/255).\n\n"
     << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
     << o.wide_height
     << ") median / min | ratio to flat | 95% interval | max LSB | mean LSB | p99 LSB | "
@@ -115,7 +120,7 @@ std::string csv(const std::vector<BenchRow>& rows) {
   s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
        "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
        "shading_mpixels_per_s,cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
-       "work_vertex_ops\n";
+       "work_vertex_ops,settling_frames\n";
   for (const BenchRow& r : rows) {
     s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
       << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
@@ -135,7 +140,7 @@ std::string csv(const std::vector<BenchRow>& rows) {
       s << r.work->total() << "," << r.work->pixel_ops << "," << r.work->vertex_ops;
     else
       s << ",,";
-    s << "\n";
+    s << "," << r.settling_frames << "\n";
   }
   return s.str();
 }
@@ -154,7 +159,11 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
   j["warmup"] = o.warmup;
   j["wide"] = {o.wide_width, o.wide_height};
   j["min_time_s"] = o.min_time_s;
+  j["target_interval"] = o.target_interval;
+  j["max_time_s"] = o.max_time_s;
   j["llvmpipe_threads"] = o.llvmpipe_threads;
+  j["pinning"] = o.pinning;
+  j["cpu_threads"] = o.cpu_threads;
   j["rows"] = nlohmann::json::array();
   auto finite = [](double v) -> nlohmann::json {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -172,7 +181,8 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                          {{"low", r.ratio.low},
                           {"high", r.ratio.high},
                           {"pairs", r.ratio.pairs},
-                          {"wide", r.ratio.wide()}}},
+                          {"wide", r.ratio.wide()},
+                          {"settling_frames", r.settling_frames}}},
                         {"image", r.image},
                         {"heatmap", r.heatmap},
                         {"stats", stats_json(r)},
