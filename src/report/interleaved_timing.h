@@ -19,8 +19,9 @@
 // Measuring time: at least `min_seconds` of the path and `min_pairs` pairs, then more pairs
 // while the interval is wider than `target_half_width`, up to `max_seconds` of the path. A GL
 // path's interval is narrow after half a second; a CPU path's pairs scatter more (its frame
-// and flat's are different kinds of work and drift apart over seconds: in 2.5 s windows of
-// one 20 s measurement the ratio moved 2-4%, in 5 s windows 1.3-2.5%).
+// and flat's are different kinds of work and drift apart over seconds: over the 2.5 s windows
+// of one 20 s measurement on both cores the ratio's standard deviation was 2.8-4.3%, over 5 s
+// windows 2.4-3.5%).
 #pragma once
 
 #include <cstddef>
