@@ -222,5 +222,23 @@ TEST(Bench, PinsToOneCoreAndSaysSo) {
   }
 }
 
+// The measuring options take finite numbers only: a NaN time or interval would leave the
+// stopping rule without an end (CLI11's own range check lets NaN through).
+TEST(Bench, NotANumberForATimeOrIntervalIsAnInputError) {
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  for (const char* option : {"--min-time", "--max-time", "--target-interval"}) {
+    for (const char* value : {"nan", "inf", "-1"}) {
+      const auto r =
+          test::run_ltrender("bench " + (dir / "quad.json").string() + " --paths flat --quiet " +
+                             option + " " + value + " -o " + (dir / "out").string());
+      EXPECT_EQ(r.exit_code, 2) << option << " " << value;
+      EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_FALSE(fs::exists(dir / "out")) << option << " " << value;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lt

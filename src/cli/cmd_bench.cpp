@@ -82,15 +82,15 @@ Action add_bench(CLI::App& app) {
       ->check(CLI::Range(0, 1000));
   sub->add_option("--min-time", o->min_time_s,
                   "Least measuring time per path at 1280x720, in seconds (interleaved with flat)")
-      ->check(CLI::Range(0.0, 60.0));
+      ->check(FiniteRange(0.0, 60.0));
   sub->add_option("--target-interval", o->target_interval,
                   "Beyond --min-time, keep pairing while the ratio's 95% interval is wider than "
                   "+- this fraction of it (default 0.02)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(FiniteRange(0.0, 1.0));
   sub->add_option("--max-time", o->max_time_s,
                   "Most measuring time per path at 1280x720 while the interval is wider than the "
                   "target, in seconds (default 2.5; never below --min-time)")
-      ->check(CLI::Range(0.0, 60.0))
+      ->check(FiniteRange(0.0, 60.0))
       // scripts/demo.sh sets it for its error-only benches and passes run.sh's arguments on.
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   auto compare_with = std::make_shared<std::string>();
