@@ -410,9 +410,10 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
   page.title = "ltrender bench";
   page.summary = std::to_string(rows.size()) +
                  " renders; error against the reference over "
-                 "covered pixels in LSB of 8 bits; ms = median of " +
-                 std::to_string(o.frames) + " frames at " + std::to_string(o.wide_width) + "x" +
-                 std::to_string(o.wide_height);
+                 "covered pixels in LSB of 8 bits; ms = median of the timed frames at " +
+                 std::to_string(o.wide_width) + "x" + std::to_string(o.wide_height) +
+                 " (at least " + std::to_string(o.frames) + ", in pairs with flat; " + o.pinning +
+                 ")";
   page.chart_svg = svg_chart(rows, time_axis(o)) + svg_chart(rows, work_axis(o));
   for (const BenchRow& r : rows) {
     PageCard c;
