@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "image/image.h"
+
 namespace lt::gl {
 
 void set_linear_clamp_to_edge(GLenum target) {
@@ -26,8 +28,7 @@ MapTexture::MapTexture(const Context& gl, const TextureMap& map, MapTexelClass t
     // bytes come back unchanged).
     std::vector<unsigned char> bytes(t.texels.size());
     for (size_t i = 0; i < bytes.size(); ++i) {
-      bytes[i] =
-          static_cast<unsigned char>(std::lround(std::clamp(t.texels[i], 0.0f, 1.0f) * 255.0));
+      bytes[i] = to_unorm8(t.texels[i]);
     }
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, t.width, t.height, 0, GL_RGB, GL_UNSIGNED_BYTE,
                  bytes.data());

@@ -21,13 +21,18 @@ struct Image {
   size_t pixel_count() const { return static_cast<size_t>(width) * height; }
 };
 
-// 8-bit conversion of model.md: clamp to [0, 1], then round to nearest (0.5 LSB floor).
+// 8-bit conversion of model.md: clamp to [0, 1], then round to nearest (0.5 LSB floor). Also
+// the one rounding of every 8-bit table and colour the paths build (LUT texels, cube maps,
+// GXColor components), so a path's bytes are the image's bytes for the same value.
 // The product is taken in double: in float, 0.7f * 255 rounds up to 178.5 exactly and lands on
 // 179, 0.500003 LSB from the value, breaking the 0.5 LSB floor the metrics promise.
+inline uint8_t to_unorm8(double v) {
+  if (!(v > 0.0)) return 0;  // also maps NaN to 0: a NaN never reaches an 8-bit image
+  if (v >= 1.0) return 255;
+  return static_cast<uint8_t>(v * 255.0 + 0.5);
+}
 inline uint8_t to_unorm8(float v) {
-  if (!(v > 0.0f)) return 0;  // also maps NaN to 0: a NaN never reaches an 8-bit image
-  if (v >= 1.0f) return 255;
-  return static_cast<uint8_t>(static_cast<double>(v) * 255.0 + 0.5);
+  return to_unorm8(static_cast<double>(v));
 }
 
 // Writes by extension, atomically (core/fs.h):

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gl/map_texture.h"
+#include "image/image.h"
 #include "model/translucency.h"
 
 namespace lt {
@@ -29,10 +30,6 @@ glm::dvec3 cube_direction(int face, int i, int j, int size) {
     default:
       return {-sc, -tc, -1};  // -Z
   }
-}
-
-unsigned char to_unorm8(double v) {
-  return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
 // The view vector the cube is built for: exact for an orthographic camera; under perspective

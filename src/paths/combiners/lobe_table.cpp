@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gl/map_texture.h"
+#include "image/image.h"
 #include "model/power_lut.h"
 #include "model/translucency.h"
 
@@ -13,7 +14,7 @@ namespace {
 
 // The texel as an 8-bit texture stores it: rounded to nearest of 255 steps, once.
 float to_8_bits(double v) {
-  return static_cast<float>(std::round(std::clamp(v, 0.0, 1.0) * 255.0) / 255.0);
+  return static_cast<float>(to_unorm8(v) / 255.0);
 }
 
 // The table's layout for `tr`, each texel `texel_of(lobe at the texel)` rounded once to 8 bits.
@@ -72,7 +73,7 @@ LobeTable map_lobe_table(const Translucency& tr, const Light& light) {
 GLuint upload_lobe_table(const LobeTable& table) {
   std::vector<unsigned char> bytes(table.texels.size());
   for (size_t i = 0; i < bytes.size(); ++i) {
-    bytes[i] = static_cast<unsigned char>(std::lround(table.texels[i] * 255.0));
+    bytes[i] = to_unorm8(table.texels[i]);
   }
   const bool rgb = table.channels == 3;
   GLuint tex = 0;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "image/image.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"
 #include "paths/gx/lobe_lut.h"
@@ -23,10 +24,6 @@ SceneView SceneView::of(const Scene& scene) {
   // The same view as gl::SceneGeometry, so every path sees one camera.
   v.view = glm::dmat3(scene.camera.view_from_origin());
   return v;
-}
-
-int to_u8(double v) {
-  return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
 namespace {
@@ -57,7 +54,7 @@ Arg lit(long long v) {
   return Arg::literal(v);
 }
 Arg rgb(const glm::dvec3& c, double alpha = 1.0) {
-  return Arg::rgba({to_u8(c.r), to_u8(c.g), to_u8(c.b), to_u8(alpha)});
+  return Arg::rgba({to_unorm8(c.r), to_unorm8(c.g), to_unorm8(c.b), to_unorm8(alpha)});
 }
 
 std::string fmt(double v) {
@@ -489,7 +486,7 @@ class Generator {
     const int stages = (lut ? 1 : 0) + (lut && uses_map ? 1 : 0) + (translucent ? 1 : 0) + 1;
     w.call("GX_SetNumTevStages", {lit(stages)});
     if (lut) {
-      const int a8 = to_u8(a / (a + s));
+      const int a8 = to_unorm8(a / (a + s));
       if (a8 > 0)
         w.call("GX_SetTevColor", {gx("GX_TEVREG0"), Arg::rgba({a8, a8, a8, 255})},
                "REG0 = 255 a / (a + s)");

@@ -46,7 +46,4 @@ struct GeneratedPrograms {
 // Throws InputError("--variant", ...) where refusal() says the variant cannot be exact.
 GeneratedPrograms generate_programs(const Scene& scene, const GxVariant& variant);
 
-// The 8-bit value of a linear [0, 1] quantity, rounded to nearest (GXColor components).
-int to_u8(double v);
-
 }  // namespace lt::gx

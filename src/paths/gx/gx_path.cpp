@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "image/image.h"
 #include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
@@ -100,8 +101,7 @@ class GxPath final : public Path {
       }
     }
     const glm::dvec3 bg = s.background;
-    background_ = {static_cast<u8>(to_u8(bg.r)), static_cast<u8>(to_u8(bg.g)),
-                   static_cast<u8>(to_u8(bg.b)), 255};
+    background_ = {to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
   }
 
   void frame() override {

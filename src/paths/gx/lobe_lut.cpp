@@ -3,16 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/image.h"
 #include "model/power_lut.h"
 #include "model/texture_sampling.h"
 
 namespace lt::gx {
 
 namespace {
-
-u8 to_byte(double v) {
-  return static_cast<u8>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-}
 
 // One row of texels (row-major in `format`'s layout) as the tiled texture.
 TextureObject one_row(u8 format, int width, const std::vector<u8>& row) {
@@ -30,9 +27,9 @@ TextureObject ramp_lut(const TextureMap& ramp, int width) {
   for (int i = 0; i < width; ++i) {
     const glm::dvec3 v = model::sample_ramp(ramp.texture, static_cast<double>(i) / (width - 1));
     if (ramp.grey) {
-      row.push_back(to_byte(v.r));
+      row.push_back(to_unorm8(v.r));
     } else {
-      for (int c = 0; c < 3; ++c) row.push_back(to_byte(v[c]));
+      for (int c = 0; c < 3; ++c) row.push_back(to_unorm8(v[c]));
       row.push_back(255);
     }
   }
@@ -47,8 +44,7 @@ TextureObject lobe_lut(const Material& material, int width) {
   const double power = material.translucency ? material.translucency->power : 0.0;
   const model::PowerLut lut = model::PowerLut::build(width, model::LutFormat::U8, {power});
   std::vector<u8> row(static_cast<size_t>(width));
-  for (int i = 0; i < width; ++i)
-    row[static_cast<size_t>(i)] = static_cast<u8>(std::lround(lut.texel(0, i) * 255.0));
+  for (int i = 0; i < width; ++i) row[static_cast<size_t>(i)] = to_unorm8(lut.texel(0, i));
   return one_row(kTexFormatI8, width, row);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "image/image.h"
 
 namespace lt::gx {
 
@@ -12,7 +13,7 @@ namespace {
 // The 8-bit texel of a thickness in [0, scale], rounded to nearest: an 8-bit map's k / 255 comes
 // back as k exactly.
 u8 to_byte(double v, double scale) {
-  return static_cast<u8>(std::lround(std::clamp(v / scale, 0.0, 1.0) * 255.0));
+  return to_unorm8(v / scale);
 }
 
 }  // namespace

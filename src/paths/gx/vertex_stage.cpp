@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "image/image.h"
 #include "model/translucency.h"
 
 namespace lt::gx {
@@ -21,7 +22,7 @@ VertexStream make_vertex_stream(const Scene& scene, const SceneObject& object,
     s.eye_normal.push_back(rotation * nrm);
     Color8 c{255, 255, 255, 255};
     if (m.has_colors()) {
-      for (int ch = 0; ch < 3; ++ch) c[ch] = static_cast<u8>(to_u8(m.colors[v][ch]));
+      for (int ch = 0; ch < 3; ++ch) c[ch] = to_unorm8(m.colors[v][ch]);
     }
     s.color.push_back(c);
   }
