@@ -5,7 +5,9 @@ Usage: scripts/ratio_repeatability.py RUN_DIR RUN_DIR [RUN_DIR ...]
 where each RUN_DIR holds the report.json of one `ltrender bench ... -o RUN_DIR` of the same
 scenes. Prints, as markdown, every scene's default variant (each path's first variant) with its
 ratio in every run, the median of the runs, the worst deviation from that median and the first
-run's 95% interval; then each path's worst deviation over the scenes. Only the standard library.
+run's 95% interval; then each path's worst deviation over the scenes, and how often the first
+run's intervals hold the other runs' ratios and how many rows lie within 5% of their median
+(every variant). Only the standard library.
 """
 import json
 import statistics
@@ -15,7 +17,8 @@ from pathlib import Path
 
 def main(run_dirs):
     if len(run_dirs) < 2:
-        sys.exit("usage: ratio_repeatability.py RUN_DIR RUN_DIR [RUN_DIR ...]")
+        print("usage: ratio_repeatability.py RUN_DIR RUN_DIR [RUN_DIR ...]", file=sys.stderr)
+        return 2
     runs = []
     for d in run_dirs:
         report = Path(d) / "report.json"
@@ -48,9 +51,41 @@ def main(run_dirs):
         cells = " | ".join(f"{r:.3f}" for r in ratios)
         print(f"| {scene} | {path} | {variant} | {cells} | {median:.3f} | {100 * worst:.1f}% | "
               f"{interval['low']:.2f}-{interval['high']:.2f} |")
-    print("\n| path | worst deviation from the median |\n|---|---|")
+    # Each path's interval half-widths in the first run, over every variant.
+    half_widths = {}
+    for row in runs[0].values():
+        interval = row["ratio_interval"]
+        if row["path"] != "flat" and row["ratio_to_flat"] > 0:
+            half_widths.setdefault(row["path"], []).append(
+                (interval["high"] - interval["low"]) / 2 / row["ratio_to_flat"])
+    print("\n| path | worst deviation from the median | run 1's 95% interval, median / widest "
+          "(every variant) |\n|---|---|---|")
     for path, worst in worst_by_path.items():
-        print(f"| {path} | {100 * worst:.1f}% |")
+        widths = half_widths.get(path, [0.0])
+        print(f"| {path} | {100 * worst:.1f}% | +-{100 * statistics.median(widths):.1f}% / "
+              f"+-{100 * max(widths):.1f}% |")
+    # How often the first run's interval holds the other runs' figures, over every variant:
+    # what the interval says about another run (a row missing from a later run is skipped).
+    held = total = 0
+    for key, row in runs[0].items():
+        if row["path"] == "flat":
+            continue
+        interval = row["ratio_interval"]
+        for run in runs[1:]:
+            if key in run:
+                total += 1
+                held += interval["low"] <= run[key]["ratio_to_flat"] <= interval["high"]
+    print(f"\nrun 1's intervals hold the other runs' ratios in {held} of {total} cases")
+    # Every variant, not only the defaults: how many lie within 5% of their median in every run.
+    within = rows = 0
+    for key, row in runs[0].items():
+        if row["path"] == "flat" or any(key not in run for run in runs):
+            continue
+        ratios = [run[key]["ratio_to_flat"] for run in runs]
+        median = statistics.median(ratios)
+        rows += 1
+        within += median > 0 and all(abs(r - median) <= 0.05 * median for r in ratios)
+    print(f"every variant: {within} of {rows} rows within 5% of their median")
     return 0
 
 

@@ -48,7 +48,8 @@ def work_cell(row):
 
 def main(argv):
     if len(argv) != 1:
-        sys.exit("usage: readme_sample_table.py RUN_DIR")
+        print("usage: readme_sample_table.py RUN_DIR", file=sys.stderr)
+        return 2
     report = Path(argv[0]) / "report.json"
     try:
         rows = {(r["scene"], r["path"], r["variant"]): r
