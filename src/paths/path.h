@@ -2,6 +2,7 @@
 // Each lives in its own folder behind this interface; adding one touches only registry.cpp.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -120,6 +121,12 @@ struct PathInfo {
   std::vector<std::string> program_extensions = {};
   std::vector<std::string> program_headers = {};
   std::function<bool(const std::string& file, const BudgetRequest& request)> budget_file = {};
+  // `export --format dff` and `render --via dolphin`: one frame as a Dolphin FIFO log (the bytes
+  // of a .dff file) encoded from exactly the state the path's emulator runs, for an
+  // implementation that is not ltrender's to play. Empty for paths that model no console.
+  std::function<std::vector<std::uint8_t>(const Scene& scene, const std::string& variant,
+                                          const PathOptions& options, int width, int height)>
+      fifo_log = {};
 };
 
 // Every path, in the order the report lists them.
