@@ -32,6 +32,19 @@ std::string shader(const std::string& file, int texgens, bool fragment) {
       file);
 }
 
+// A GX cull mode as GL face culling. GL's front faces are counter-clockwise in window
+// coordinates (y up), which GX's setup unit calls back faces: GX_CULL_BACK removes GL's front
+// faces and GX_CULL_FRONT GL's back faces (gx_state.h, [DSW Clipper.cpp CullTest]).
+void set_cull_mode(u8 gx_mode) {
+  if (gx_mode == kCullNone) {
+    glDisable(GL_CULL_FACE);
+    return;
+  }
+  glEnable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
+  glCullFace(gx_mode == kCullBack ? GL_FRONT : gx_mode == kCullFront ? GL_BACK : GL_FRONT_AND_BACK);
+}
+
 void stream(GLuint buffer, const void* data, size_t bytes) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STREAM_DRAW);
@@ -66,7 +79,8 @@ AttributeRasteriser::~AttributeRasteriser() {
   for (auto& b : buffers_) glDeleteBuffers(static_cast<GLsizei>(b.size()), b.data());
 }
 
-void AttributeRasteriser::rasterise(const std::vector<const VertexOutputs*>& outputs) {
+void AttributeRasteriser::rasterise(const std::vector<const VertexOutputs*>& outputs,
+                                    const std::vector<u8>& cull_modes) {
   target_.bind();
   glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -103,6 +117,7 @@ void AttributeRasteriser::rasterise(const std::vector<const VertexOutputs*>& out
       stream(b[static_cast<size_t>(2 + g)], tc.data(), tc.size() * sizeof(float));
     }
     glUniform1f(program_->uniform("u_material"), static_cast<float>(mesh.material));
+    set_cull_mode(cull_modes[i]);
     ctx_.geometry.bind(mesh);
     glBindBuffer(GL_ARRAY_BUFFER, b[0]);
     glEnableVertexAttribArray(kColor0Slot);
@@ -124,6 +139,7 @@ void AttributeRasteriser::rasterise(const std::vector<const VertexOutputs*>& out
       glDisableVertexAttribArray(kTexCoordSlot + static_cast<GLuint>(g));
     ctx_.geometry.unbind();
   }
+  glDisable(GL_CULL_FACE);
   glUseProgram(0);
   target_.unbind();
   target_.read(0, colors_[0]);

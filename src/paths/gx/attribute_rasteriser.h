@@ -25,8 +25,10 @@ class AttributeRasteriser {
   AttributeRasteriser& operator=(const AttributeRasteriser&) = delete;
 
   // Draws object i with outputs[i] (an object with no outputs this pass still draws, for depth,
-  // with zero attributes) and reads every target back.
-  void rasterise(const std::vector<const VertexOutputs*>& outputs);
+  // with zero attributes) under its GX cull mode cull_modes[i] (gx_state.h), and reads every
+  // target back.
+  void rasterise(const std::vector<const VertexOutputs*>& outputs,
+                 const std::vector<u8>& cull_modes);
 
   int texgens() const { return texgens_; }
   int width() const { return ctx_.width; }

@@ -202,6 +202,11 @@ void pixel_engine(Writer& w, int pass) {
   }
   w.call("GX_SetAlphaCompare",
          {gx("GX_ALWAYS"), lit(0), gx("GX_AOP_AND"), gx("GX_ALWAYS"), lit(0)});
+  // Every face, as the other paths draw them: the depth test keeps the nearest. GX_Init leaves
+  // GX_CULL_BACK, which on GX removes the faces GL calls front (gx_state.h), so a pass that
+  // set nothing would show a GL-wound mesh from the inside.
+  w.call("GX_SetCullMode", {gx("GX_CULL_NONE")},
+         "Draw both sides (GX_Init's GX_CULL_BACK would cull the faces wound counter-clockwise)");
 }
 
 // Colour in/op of one stage, and an alpha of 255 (KASEL 1): the EFB keeps no alpha (RGB8_Z24).

@@ -112,11 +112,16 @@ class GxPath final : public Path {
     light_vertices_ = 0;
     std::vector<VertexOutputs> outputs(s.objects.size());
     std::vector<const VertexOutputs*> drawn(s.objects.size());
+    // An object its material does not draw in this pass still gives depth, as the EFB keeps it
+    // from the material's last pass: under that pass's cull mode.
+    std::vector<u8> cull(s.objects.size(), kCullNone);
     for (size_t pass = 0; pass < pixel_programs_.size(); ++pass) {
       auto t0 = Clock::now();
       for (size_t i = 0; i < s.objects.size(); ++i) {
         const PixelProgram& pp = pixel_programs_[pass][static_cast<size_t>(s.objects[i].material)];
         drawn[i] = nullptr;
+        const auto& passes = programs_.by_material[static_cast<size_t>(s.objects[i].material)];
+        if (!passes.empty()) cull[i] = passes[std::min(pass, passes.size() - 1)].state.cull_mode;
         if (!pp.state) continue;
         // GX_VA_TEX0 carries the t of light `pass` (a plain one-pass program gets light 0's).
         run_vertex_stage(*pp.state, streams_[i], pass,
@@ -127,13 +132,13 @@ class GxPath final : public Path {
         light_vertices_ += streams_[i].position.size() * lights_in(*pp.state);
       }
       vertex_seconds_ += seconds_since(t0);
-      rasteriser_->rasterise(drawn);
+      rasteriser_->rasterise(drawn, cull);
       t0 = Clock::now();
       stage_pixels_ += shade_pass(*rasteriser_, pixel_programs_[pass], efb_, variant_.round_colors);
       pixel_seconds_ += seconds_since(t0);
     }
     // No material draws anything: still rasterise once, for the coverage of result().
-    if (pixel_programs_.empty()) rasteriser_->rasterise(drawn);
+    if (pixel_programs_.empty()) rasteriser_->rasterise(drawn, cull);
   }
 
   // The EFB as the console shows it (RGB8), alpha = coverage, top row first.

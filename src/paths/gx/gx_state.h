@@ -55,6 +55,15 @@ struct ZMode {
   bool operator==(const ZMode&) const = default;
 };
 
+// GX_SetCullMode(mode) in libogc's values [OGC gx.h L649-652]: GX_CULL_NONE 0, GX_CULL_FRONT 1,
+// GX_CULL_BACK 2, GX_CULL_ALL 3. GX_Init: GX_CULL_BACK [OGC gx.c __GX_InitGX L645]. Which faces
+// are "back": libogc writes the mode swapped into genmode (cm2hw = {0, 2, 1, 3} [OGC gx.c
+// L3931]), and the setup unit culls hardware mode 1 where the clip-space signed area is positive
+// and mode 2 where it is not [DSW Clipper.cpp CullTest]. So GX_CULL_BACK removes the triangles
+// that are counter-clockwise in clip space (y up) - the faces GL calls front - and GX_CULL_FRONT
+// the ones GL calls back: a mesh wound for GL drawn under GX_Init's mode shows its inside.
+inline constexpr u8 kCullNone = 0, kCullFront = 1, kCullBack = 2, kCullAll = 3;
+
 struct GxState {
   XfLightingState lighting;
   XfTexGenState texgen;
@@ -66,6 +75,7 @@ struct GxState {
   ZMode z;
   VertexDescriptor vertex;
   TexCoordFormats texcoord_formats;
+  u8 cull_mode = kCullBack;
 
   GxState();  // GX_Init's state
 };

@@ -238,6 +238,10 @@ constexpr GxName kNames[] = {
     {"GX_IDENTITY", 60, NameGroup::TexMtx},
     {"GX_MTX3x4", 0, NameGroup::MtxType},
     {"GX_MTX2x4", 1, NameGroup::MtxType},
+    {"GX_CULL_NONE", 0, NameGroup::CullMode},
+    {"GX_CULL_FRONT", 1, NameGroup::CullMode},
+    {"GX_CULL_BACK", 2, NameGroup::CullMode},
+    {"GX_CULL_ALL", 3, NameGroup::CullMode},
     {"GX_NEVER", 0, NameGroup::Compare},
     {"GX_LESS", 1, NameGroup::Compare},
     {"GX_EQUAL", 2, NameGroup::Compare},
@@ -388,6 +392,8 @@ std::string describe(NameGroup group) {
   switch (group) {
     case NameGroup::PosMtx:
       return "a position matrix (GX_PNMTX0..9)";
+    case NameGroup::CullMode:
+      return "a cull mode (GX_CULL_*)";
     case NameGroup::Number:
       return "a number";
     case NameGroup::Bool:

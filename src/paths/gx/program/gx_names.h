@@ -51,6 +51,7 @@ enum class NameGroup {
   TexWrap,
   TexFilter,
   PosMtx,
+  CullMode,
 };
 
 struct GxName {

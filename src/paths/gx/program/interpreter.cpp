@@ -31,7 +31,6 @@ void Machine::execute(const Call& c) {
         {"GX_LoadNrmMtxImm", "matrices come from the scene's camera"},
         {"GX_SetCurrentMtx", "matrices come from the scene's camera"},
         {"GX_Begin", "geometry comes from the scene"},
-        {"GX_SetCullMode", "culling is not modelled (every face is drawn, as the other paths do)"},
     };
     const auto nm = not_modelled.find(c.function);
     if (nm != not_modelled.end()) fail(c.pos, c.function + ": not modelled: " + nm->second);

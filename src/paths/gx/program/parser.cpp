@@ -246,7 +246,7 @@ class Parser {
       expect(";");
       return d;
     }
-    // u8 name[N] ATTRIBUTE_ALIGNED(32) = { ... };
+    // u8 name[N] ATTRIBUTE_ALIGN(32) = { ... };
     d.type = Declaration::Type::ByteArray;
     expect("[");
     long long declared = -1;
@@ -274,9 +274,10 @@ class Parser {
     return d;
   }
 
-  // ATTRIBUTE_ALIGNED(32) (libogc's macro) or __attribute__((aligned(32))).
+  // ATTRIBUTE_ALIGN(32) (libogc's macro), ATTRIBUTE_ALIGNED(32) (what exports before the fix
+  // wrote; libogc never defined it) or __attribute__((aligned(32))).
   void alignment() {
-    if (is("ATTRIBUTE_ALIGNED")) {
+    if (is("ATTRIBUTE_ALIGN") || is("ATTRIBUTE_ALIGNED")) {
       take();
       expect("(");
       if (cur().kind != Token::Kind::Integer) expected("an alignment");

@@ -43,9 +43,11 @@ void print_declaration(std::ostream& out, const Declaration& d, const std::strin
       out << "};\n";
       return;
     case Declaration::Type::ByteArray:
-      // 32-byte aligned: GX texture images must be [OGC gx.h L4262].
+      // 32-byte aligned: GX texture images must be [OGC gx.h L4262]. ATTRIBUTE_ALIGN is
+      // libogc's macro (gcutil.h since the 2025 rework, gctypes.h before it); there is no
+      // ATTRIBUTE_ALIGNED in libogc, though the parser still reads it from older files.
       out << indent << "static u8 " << d.name << "[" << d.values.size()
-          << "] ATTRIBUTE_ALIGNED(32) = {";
+          << "] ATTRIBUTE_ALIGN(32) = {";
       for (size_t i = 0; i < d.values.size(); ++i) {
         out << (i % 16 ? " " : "\n" + indent + "    ") << static_cast<int>(d.values[i])
             << (i + 1 < d.values.size() ? "," : "");

@@ -53,7 +53,7 @@ struct Call {
 };
 
 // `GXLightObj name;`, `GXTexObj name;`, `Mtx name = {{..},{..},{..}};` and
-// `u8 name[N] ATTRIBUTE_ALIGNED(32) = {..};` (static/const allowed).
+// `u8 name[N] ATTRIBUTE_ALIGN(32) = {..};` (static/const allowed).
 struct Declaration {
   enum class Type { LightObj, TexObj, Mtx, ByteArray };
   Type type = Type::LightObj;
