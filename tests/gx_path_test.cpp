@@ -74,10 +74,38 @@ TEST(GxPath, FlatColouredQuadIsExactlyItsTevProduct) {
   expect_every_covered_pixel(img, {101, 30, 40});
 }
 
+// GX_Init leaves GX_CULL_BACK, and GX's back faces are GL's front faces (gx_state.h): the
+// quad, wound counter-clockwise as GL's front face and seen from the front, is culled by the
+// default and by GX_CULL_ALL, and drawn by GX_CULL_NONE and GX_CULL_FRONT, as Dolphin's setup
+// unit does [DSW Clipper.cpp CullTest] after libogc's swap [OGC gx.c L3931].
+TEST(GxPath, CullModesFollowTheSetupUnitFromGxInitsDefault) {
+  test::TempDir dir;
+  const Scene scene = quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
+  const std::string program = kFlatProgram;
+  const std::string without_cull = program.substr(program.find("GX_SetNumChans"));
+  const std::vector<std::pair<std::string, bool>> cases = {
+      {"", false},  // GX_Init's GX_CULL_BACK
+      {"GX_SetCullMode(GX_CULL_BACK);\n", false},
+      {"GX_SetCullMode(GX_CULL_ALL);\n", false},
+      {"GX_SetCullMode(GX_CULL_NONE);\n", true},
+      {"GX_SetCullMode(GX_CULL_FRONT);\n", true},
+  };
+  for (const auto& [cull, drawn] : cases) {
+    test::write_file(dir / "cull.c", cull + without_cull);
+    const Image img = render_scene(scene, "gx", "", 0, 0, {(dir / "cull.c").string()});
+    if (drawn) {
+      expect_every_covered_pixel(img, {101, 30, 40});
+    } else {
+      EXPECT_EQ(test::covered_pixels(img), 0u) << (cull.empty() ? "GX_Init's default" : cull);
+    }
+  }
+}
+
 // Equal vertex colours interpolate to exactly themselves: interpolation never loses the last LSB.
 TEST(GxPath, EqualVertexColoursInterpolateExactly) {
   test::TempDir dir;
-  test::write_file(dir / "vtx.c", R"(GX_SetNumChans(1);
+  test::write_file(dir / "vtx.c", R"(GX_SetCullMode(GX_CULL_NONE);
+GX_SetNumChans(1);
 GX_SetChanCtrl(GX_COLOR0A0, GX_DISABLE, GX_SRC_REG, GX_SRC_VTX, GX_LIGHTNULL, GX_DF_NONE, GX_AF_NONE);
 GX_SetNumTexGens(0);
 GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLOR0A0);
@@ -94,7 +122,8 @@ GX_SetTevOp(GX_TEVSTAGE0, GX_PASSCLR);
 // GX_Init's selector, 1/4 = 64, not the konst colour.
 TEST(GxPath, KonstWithoutSelectorIsGxInitsQuarter) {
   test::TempDir dir;
-  test::write_file(dir / "konst.c", R"(GX_SetNumTexGens(0);
+  test::write_file(dir / "konst.c", R"(GX_SetCullMode(GX_CULL_NONE);
+GX_SetNumTexGens(0);
 GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLORNULL);
 GX_SetTevKColor(GX_KCOLOR0, (GXColor){255, 0, 0, 255});
 GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_ZERO, GX_CC_ZERO, GX_CC_ZERO, GX_CC_KONST);
@@ -109,7 +138,8 @@ GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_TRUE, G
 // with no clamp shows as 44.
 TEST(GxPath, UnclampedLastStageWrapsInTheEfb) {
   test::TempDir dir;
-  test::write_file(dir / "wrap.c", R"(GX_SetNumTexGens(0);
+  test::write_file(dir / "wrap.c", R"(GX_SetCullMode(GX_CULL_NONE);
+GX_SetNumTexGens(0);
 GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLORNULL);
 GX_SetTevColor(GX_TEVREG0, (GXColor){200, 200, 200, 255});
 GX_SetTevColor(GX_TEVREG1, (GXColor){100, 10, 0, 255});
