@@ -20,7 +20,7 @@ scripts/bake_demo_meshes.sh "$bin"
   --quiet "$@"
 # Replacing the thickness map by vertex colours, per tessellation (issue 13): UV spheres of 4 to
 # 64 rings, each baked as vertex colours and as a 512x256 map (256 rays), both rendered by the
-# reference and compared (README "Map or vertex colours?"; ~20 s).
+# reference and compared (docs/maps.md "Map or vertex colours?"; ~20 s).
 python3 scripts/map_vs_vertex.py --bin "$bin" --table out/tessellation/map_vs_vertex.md
 # Thickness maps (issue 13, scenes/maps/): the addendum's red teapot with its baked 1024x1024
 # map (its per-vertex twin, scenes/teapot_vertex.json, is in the main bench), the sphere with a
@@ -41,8 +41,8 @@ cat out/report.md
 echo
 echo "combiners and gx error against tessellation (out/tessellation/report.md):"
 grep -E '^\| backlit_sphere_s[0-9] \| (combiners|gx) \| t=vertex \|' out/tessellation/report.md || true
-# The Wii port of one demo scene, as the libogc C a porter pastes into the game (README,
-# "Porting to the Wii").
+# The Wii port of one demo scene, as the libogc C a porter pastes into the game (docs/
+# porting-to-the-wii.md).
 "$bin" export gx scenes/backlit_sphere.json -o out/backlit_sphere_gx.c
 "$bin" budget out/backlit_sphere_gx.c
 # The demo scenes as a studio's regression suite would run them: against ltrender's own goldens

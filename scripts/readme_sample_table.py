@@ -1,16 +1,16 @@
 #!/usr/bin/env python3
-"""The README's sample of the speed-against-error table, from one bench run's report.json.
+"""The sample of the speed-against-error table in docs/measurements.md, from a bench's report.json.
 
 Usage: scripts/readme_sample_table.py RUN_DIR
-Prints the backlit sphere's rows the README shows (and the ortho twin's combiners lobe=cube) as
-markdown, the columns as the README's "A sample of the speed-against-error table" has them.
+Prints the backlit sphere's rows docs/measurements.md shows (and the ortho twin's lobe=cube) as
+markdown, the columns as docs/measurements.md's "A sample of the speed-against-error table" has.
 Only the standard library.
 """
 import json
 import sys
 from pathlib import Path
 
-# (scene, path, variant, label): the rows the README samples, in its order.
+# (scene, path, variant, label): the rows docs/measurements.md samples, in its order.
 ROWS = [
     ("backlit_sphere", "reference", "exact", "exact"),
     ("backlit_sphere", "glsl", "pow=exact", "pow=exact"),

@@ -79,10 +79,10 @@ TEST(ArbGuards, ElidedProgramsRenderTheSameAsGuardedOnes) {
 
 // The hard cases whose case is a guard's keep it: a light at a vertex or inside the mesh the
 // distance-0 CMP. The meshes of zero_normals.json and degenerate_triangles.json have no zero
-// normal once loaded (the reader recomputes zero-length normals from the faces, README "Numeric
-// conventions"), so no interpolated normal of theirs can vanish and their guard is dropped (the
-// render test above shows the same image); cancelling normals, model.md's other zero-normal
-// case, keep it.
+// normal once loaded (the reader recomputes zero-length normals from the faces,
+// docs/numeric-conventions.md), so no interpolated normal of theirs can vanish and their guard
+// is dropped (the render test above shows the same image); cancelling normals, model.md's other
+// zero-normal case, keep it.
 TEST(ArbGuards, HardCasesKeepTheGuardsTheyNeed) {
   for (const char* file :
        {"scenes/hard/point_light_at_vertex.json", "scenes/hard/light_inside_mesh.json"}) {

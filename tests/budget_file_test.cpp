@@ -1,5 +1,5 @@
 // `ltrender budget FILE...` on hand-written ARB programs: exit 0 / 1 (naming the limit) / 2
-// (file:line:column), the JSON schema of the README, recognition by extension or header, the
+// (file:line:column), the JSON schema of docs/budget.md, recognition by extension or header, the
 // partner profile for the other program kind, and several files in one run.
 #include <gtest/gtest.h>
 

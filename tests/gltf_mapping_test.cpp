@@ -1,4 +1,4 @@
-// One test per row of the README's glTF mapping table, on files the tests write.
+// One test per row of docs/scenes-and-gltf.md's glTF mapping table, on files the tests write.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -120,8 +120,8 @@ TEST_F(GltfMapping, PhotometricLightsBecomeTheScenesLinearIntensity) {
   EXPECT_EQ(p.kq, 1);
 }
 
-// The fit and its stated error (README): kq = 5/4, window error RMS 0.27, max 0.8 at the range;
-// no kc or kl > 0 lowers the RMS error, at any range.
+// The fit and its stated error (docs/scenes-and-gltf.md): kq = 5/4, window error RMS 0.27, max 0.8
+// at the range; no kc or kl > 0 lowers the RMS error, at any range.
 double rms_window_error(double kc, double kl, double kq, double range) {
   double sum = 0;
   for (int i = 0; i <= 1000; ++i) {

@@ -1,5 +1,5 @@
 // The error of replacing a thickness map by vertex colours falls as the mesh gets denser: the
-// property behind scripts/map_vs_vertex.py's table (README, "Map or vertex colours?"), run
+// property behind scripts/map_vs_vertex.py's table (docs/maps.md, "Map or vertex colours?"), run
 // through that script on three UV spheres at small sizes so it takes seconds.
 //
 // Why it must fall: on a faceted sphere the map holds the bake at every texel of a facet while

@@ -315,8 +315,8 @@ TEST_F(SceneFile, CliNeverOverwritesAnInput) {
 namespace lt {
 namespace {
 
-// README "Scene limits": the counts a scene may ask for, refused at parse time with the key,
-// and the largest allowed count still parses.
+// docs/input-files.md "Scene limits": the counts a scene may ask for, refused at parse time with
+// the key, and the largest allowed count still parses.
 std::string repeated(const std::string& element, std::size_t n) {
   std::string s;
   for (std::size_t i = 0; i < n; ++i) s += (i ? "," : "") + element;

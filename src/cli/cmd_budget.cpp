@@ -69,7 +69,7 @@ Action add_budget(CLI::App& app) {
                   "profile checks the other program kind); combiners: gl13-2units (default), "
                   "gl13-3units, gl-8units; gx: wii-tev (default)");
   sub->add_flag("--json", request->json,
-                "Print the counts as JSON, one object per file (README, budget)");
+                "Print the counts as JSON, one object per file (docs/budget.md)");
   return [=]() -> int {
     std::string over;
     std::vector<InputError> invalid;

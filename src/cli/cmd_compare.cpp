@@ -99,7 +99,7 @@ int run_compare(const CompareOptions& opt) {
 
 Action add_compare(CLI::App& app) {
   auto* sub = app.add_subcommand(
-      "compare", "Error of TEST against the float reference REF in LSB of 8 bits (metrics.md)");
+      "compare", "Error of TEST against the reference REF in LSB of 8 bits (docs/spec/metrics.md)");
   auto opt = std::make_shared<CompareOptions>();
   sub->add_option("TEST", opt->test, "Image under test (8-bit PNG, or EXR compared unquantised)")
       ->required()

@@ -1,5 +1,5 @@
-// `ltrender regress SCENE_OR_DIR... --goldens DIR`: regression renders against goldens (README,
-// "Regression renders"). Exit 0 every case passed (or --update wrote what was needed), 1 some
+// `ltrender regress SCENE_OR_DIR... --goldens DIR`: regression renders against goldens (docs/
+// regress.md). Exit 0 every case passed (or --update wrote what was needed), 1 some
 // failed or have no golden, 2 bad input. All the work is in regress/; this file reads options.
 #include <cstdio>
 #include <memory>

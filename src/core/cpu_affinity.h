@@ -5,7 +5,7 @@
 // and that placement changed from process to process (reference on coloured_cubes read 13.0 to
 // 15.8 times flat over five processes; pinned to one core, 9.9 to 10.7). A bench pinned to one
 // core measures each path's work on that core, the same way every run; the other core takes the
-// rest of the machine. README "How far the ratios repeat" has the measurements.
+// rest of the machine. docs/bench.md "How far the ratios repeat" has the measurements.
 #pragma once
 
 #include <vector>

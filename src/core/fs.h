@@ -47,7 +47,7 @@ void ensure_not_an_input(const fs::path& output, const std::vector<fs::path>& in
 // read_input_file. Only regular files are read (after following symlinks): a FIFO blocks
 // forever, a device such as /dev/zero never ends, a directory is not a file. Each kind has a
 // size cap far above any real input of its kind, so a wrong or hostile file is refused by its
-// size instead of exhausting memory (README, "Input files").
+// size instead of exhausting memory (docs/input-files.md).
 enum class InputKind {
   Scene,    // scene JSON: 16 MiB
   Mesh,     // PLY, OBJ, OFF, STL, OM: 256 MiB

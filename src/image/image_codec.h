@@ -1,7 +1,7 @@
 // The image library behind one table of functions, loaded on first use. Linked in, OpenImageIO
 // made the binary map 271 shared libraries (OpenCV, GDAL, FFmpeg, Poppler ...) and every
 // command, `ltrender --help` and a `budget` of one program file included, paid 0.2 s and 180 MB
-// before main() (README "Start-up" has the measurements; issue 11). Only the code in
+// before main() (docs/command-line.md "Start-up" has the measurements; issue 11). Only the code in
 // image/oiio/ includes OpenImageIO; it is built as the module libltrender_imageio.so, which
 // image_codec() loads with dlopen the first time a command reads, writes or draws an image.
 //

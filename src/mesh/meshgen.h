@@ -27,7 +27,7 @@ PolyMesh quad(double half_size, int n);
 PolyMesh blob(int subdivisions);
 
 // --- Meshes with texture coordinates (u, v per vertex; v = 0 is the bottom of an image, the
-// OpenGL convention, see README "Mesh UVs") ---------------------------------------------------
+// OpenGL convention, see docs/input-files.md "Mesh UVs") ------------------------------------
 
 // Sphere around the origin with equirectangular UVs: `rings` latitude bands (>= 2) and
 // 2 * rings longitude segments. u = longitude / 2 pi (longitude 0 on +X, increasing towards -Z),

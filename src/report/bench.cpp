@@ -91,7 +91,7 @@ std::string scene_name(const fs::path& p) {
 // a session of its own (context, framebuffer, flat and the path built afresh): its pairs sample
 // the machine at times spread over the whole bench, and the placement of its objects and
 // framebuffer in memory more than once. A state that holds for a whole measurement is then one
-// round of several, outvoted in the median. Measured (README "How far the ratios repeat"): in
+// round of several, outvoted in the median. Measured (docs/bench.md "How far the ratios repeat"):
 // one of eight processes glsl on coloured_cubes read 6.0 times flat instead of 3.0-3.4, its
 // interval +-2%; with the rounds inside one scene's minute, one run's thin_vs_thick CPU rows sat
 // 8-14% below another run's, every interval within +-5%.

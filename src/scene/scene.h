@@ -76,7 +76,7 @@ struct SceneObject {
   TriangleMesh mesh;  // world space (transform applied in double, normals renormalised)
 };
 
-// The optional "regress" block (README, "Regression renders"): `ltrender regress`'s thresholds
+// The optional "regress" block (docs/regress.md): `ltrender regress`'s thresholds
 // for this scene, over the path's default; an unset field keeps the default. The names under
 // "paths" are checked by regress, which knows the paths (the scene does not).
 struct ToleranceOverride {

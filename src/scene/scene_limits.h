@@ -24,7 +24,7 @@ inline constexpr double kMaxDistortion = 1e3;
 inline constexpr double kMaxAttenuation = 1e6;  // kc, kl, kq
 inline constexpr double kMaxScaleFactor = 1e6;  // transform.scale, and 1 / it
 
-// Count limits (README, "Scene limits"): what a scene may ask for, far above what the targets
+// Count limits (docs/input-files.md): what a scene may ask for, far above what the targets
 // draw, and low enough that no accepted scene stalls a command. The GL paths unroll the light
 // loop, and llvmpipe's compile time grows with it (64 lights: ~6 s for glsl; 1,000: minutes);
 // fixed-function GL and the Wii's XF light 8 at a time.

@@ -1,4 +1,4 @@
-// The textures a material's translucency may read (scene-format extension, README "Thickness
+// The textures a material's translucency may read (scene-format extension, docs/maps.md "Thickness
 // maps and lobe ramps"): a thickness map (`"thickness": {"texture": "map.png", "channels":
 // "r"}`) and an artist's lobe ramp (`"ramp": "ramp.png"`, a W x 1 image replacing t^p).
 //

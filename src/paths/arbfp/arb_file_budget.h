@@ -48,7 +48,7 @@ struct FileBudget {
 FileBudget budget_arb_file(const std::string& file, const std::string& profile);
 
 std::string to_text(const FileBudget& b);
-// The stable schema of README "budget FILE.fp|FILE.vp".
+// The stable schema of docs/budget.md "budget FILE.fp|FILE.vp".
 nlohmann::json to_json(const FileBudget& b);
 
 }  // namespace lt::arbfp

@@ -124,7 +124,7 @@ class ArbfpPath final : public Path {
   // Pass 0 of every mesh (depth LESS, depth writes), then pass k of every mesh that has one:
   // depth EQUAL against pass 0's depth (ARB_position_invariant makes every pass's depth the
   // same), ONE + ONE blending, no depth writes. The 8-bit framebuffer clamps and rounds each
-  // pass's sum (README, "Passes").
+  // pass's sum (docs/arbfp.md, "Passes").
   void frame() override {
     begin_frame(ctx_);
     glEnable(GL_VERTEX_PROGRAM_ARB);
@@ -266,7 +266,7 @@ PathInfo arbfp_path_info() {
           {"pow=lut:32:f32", "32-texel float LUT: interpolation error only"},
           {"pow=sg", "exp2(n'(t-1)), n' = 1.4427p + 1.4427: 2 ALU, a close but different curve"},
           {"pow=sg-fitted", "exp2(n'(t-1)) with n' fitted per material to the max error"},
-          {"pow=sg-simplified", "exp2(p(t-1)): a different curve, ~35-40 LSB off (model.md)"},
+          {"pow=sg-simplified", "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)"},
       },
       [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
         return std::make_unique<ArbfpPath>(ctx, variant);

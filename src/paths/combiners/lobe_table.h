@@ -1,6 +1,6 @@
 // The table a combiners lobe pass samples on texture unit 0 (`texture power_lut` in the .comb
 // files), in 8 bits as GL 1.3 hardware stores it: the power LUT of t^p, or a material's lobe ramp
-// (README "Thickness maps and lobe ramps"), and the coordinate that samples t on it.
+// (docs/maps.md "Thickness maps and lobe ramps"), and the coordinate that samples t on it.
 //
 //  - t^p: kCombinerLutSize texels at t_i = i / (N - 1), luminance, read at the texel-centre
 //    remap u = t (N - 1)/N + 0.5/N (model/power_lut.h).

@@ -131,7 +131,7 @@ const std::vector<GxProfile>& gx_profiles() {
       {"wii-tev",
        "Wii / GameCube GX: 16 TEV stages, 8 texgens, 8 texture maps, 2 colour "
        "channels, 8 lights, 4 konst colours, PREV + 3 TEV registers",
-       wii, "devkitPro/libogc gc/ogc/gx.h; ../shared/spec/gx-hardware.md section 4"}};
+       wii, "devkitPro/libogc gc/ogc/gx.h; docs/spec/gx-hardware.md section 4"}};
   return profiles;
 }
 

@@ -1,6 +1,6 @@
 // Integer types and limits of the Wii's graphics processor (GX), shared by every unit of the gx
 // path. Widths are spelled out: the point of this path is arithmetic of exactly these widths.
-// Sources are cited as in ../shared/spec/gx-hardware.md: HWT = dolphin-emu/hwtests, OGC =
+// Sources are cited as in docs/spec/gx-hardware.md: HWT = dolphin-emu/hwtests, OGC =
 // devkitPro/libogc (gc/ogc/gx.h, libogc/gx.c), DSW = Dolphin's software renderer.
 #pragma once
 

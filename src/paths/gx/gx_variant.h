@@ -5,7 +5,7 @@
 //   lobe=xf-spec  no texture: the lobe from the XF specular attenuation, fitted per material
 // and for the LUT variants `:lut=N` (2..1024 texels, default 256), e.g. `t=vertex:lut=64`.
 // Two axes pick the other side where the sources disagree on the hardware (gx-hardware.md §2.4,
-// §2.5), so the README can say how far each choice moves the image:
+// §2.5), so docs/porting-to-the-wii.md can say how far each choice moves the image:
 //   :colors=round       interpolated channel colours rounded, as Dolphin's shader backends do
 //                       (default: truncated, as its software rasteriser does)
 //   :lights=round-each  each light's XF contribution rounded before the sum, as the shader

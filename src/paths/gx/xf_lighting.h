@@ -40,7 +40,7 @@ struct ChannelControl {
 // test settles it (gx-hardware.md §2.4): Dolphin's software renderer sums in float and truncates
 // once [DSW TransformColor]; its shader backends round each light to an integer before summing
 // [DHW LightingShaderGen GenerateLightShader]. The path uses the first (the software renderer
-// is the bit-level model); the second exists so the README can say how far the choice moves.
+// is the bit-level model); the second exists so docs/porting-to-the-wii.md can say how far.
 enum class LightRounding { SumThenTruncate, RoundEachLight };
 
 struct XfLightingState {

@@ -16,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-// The extensions whose meaning the importer implements (README, "glTF scenes"): a file that
+// The extensions whose meaning the importer implements (docs/scenes-and-gltf.md): a file that
 // requires any other is refused, since glTF 2.0 §3.12 says a loader that does not support a
 // required extension must not load the asset.
 const std::set<std::string> kImplementedExtensions = {

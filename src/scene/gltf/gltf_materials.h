@@ -1,5 +1,5 @@
 // glTF materials (glTF 2.0 §3.9, KHR_materials_volume, KHR_materials_diffuse_transmission) as
-// the term's Material; the README's "glTF scenes" table gives each row and its reason.
+// the term's Material; docs/scenes-and-gltf.md's glTF table gives each row and its reason.
 #pragma once
 
 #include "scene/gltf/gltf_document.h"
