@@ -20,6 +20,7 @@
 #include "core/child_process.h"
 #include "core/error.h"
 #include "image/image.h"
+#include "judge/log_tail.h"
 #include "test_util.h"
 
 namespace lt {
@@ -290,6 +291,16 @@ TEST(DolphinPlayer, TheKeepVariableKeepsTheSessionDirectory) {
   EXPECT_TRUE(std::filesystem::exists(kept[0] / "frame.dff"));
   EXPECT_TRUE(std::filesystem::exists(kept[0] / "user" / "Dump" / "Frames" / "framedump_1.png"));
   EXPECT_TRUE(std::filesystem::exists(kept[0] / "user" / "Config" / "GFX.ini"));
+}
+
+TEST(DolphinPlayer, TheQuotedTailIsTheLastNonEmptyLinesWithoutControlCharacters) {
+  TempDir dir;
+  std::string text = "first\nsecond\n\n  third \r\nfourth\n";
+  text += std::string(1, '\0') + "\n";  // how Dolphin ends its output
+  test::write_file(dir / "out", text);
+  EXPECT_EQ(judge::log_tail(dir / "out"), "second | third | fourth");
+  EXPECT_EQ(judge::log_tail(dir / "out", 3, 10), "...d | fourth");
+  EXPECT_EQ(judge::log_tail(dir / "missing"), "");
 }
 
 // Measured with Debian's dolphin-emu 5.0-17995 (docs/dolphin-judge.md): XFB -> dump size.

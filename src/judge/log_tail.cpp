@@ -2,6 +2,7 @@
 
 #include <deque>
 #include <fstream>
+#include <string>
 
 namespace lt::judge {
 
@@ -10,6 +11,8 @@ std::string log_tail(const std::filesystem::path& file, int lines, std::size_t m
   std::deque<std::string> last;
   std::string line;
   while (std::getline(in, line)) {
+    // Control characters (Dolphin ends its output with a NUL) would print as nothing or worse.
+    std::erase_if(line, [](char c) { return static_cast<unsigned char>(c) < 0x20 && c != '\t'; });
     const auto begin = line.find_first_not_of(" \t\r");
     if (begin == std::string::npos) continue;
     const auto end = line.find_last_not_of(" \t\r");

@@ -6,8 +6,9 @@
 
 namespace lt::judge {
 
-// The last `lines` non-empty lines of `file`, trimmed and joined with " | ", at most
-// `max_chars` (the start cut, "..." in its place); empty if the file is missing or empty.
+// The last `lines` non-empty lines of `file`, without control characters, trimmed and joined with "
+// | ", at most `max_chars` (the start cut, "..." in its place); empty if the file is missing or
+// empty.
 std::string log_tail(const std::filesystem::path& file, int lines = 3, std::size_t max_chars = 400);
 
 }  // namespace lt::judge
