@@ -108,6 +108,29 @@ std::vector<std::uint8_t> some_bytes() {
   return std::vector<std::uint8_t>(64, 0x5a);
 }
 
+// A play by a stand-in for Dolphin (a shell script) that must fail: its one line, and how long
+// it took.
+struct FailedPlay {
+  std::string what;
+  Clock::duration took;
+};
+FailedPlay play_stand_in(const Scratch& scratch, const std::string& script, double deadline) {
+  DolphinOptions options;
+  options.executable = (scratch / "stand_in").string();
+  write_script(options.executable, script);
+  options.deadline_seconds = deadline;
+  const auto start = Clock::now();
+  const std::string what = input_error_of([&] { play_fifo_log(some_bytes(), options); });
+  EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  return {what, Clock::now() - start};
+}
+
+// No process of a play is running (whatever started it) and no session directory is left.
+void expect_nothing_left(const Scratch& scratch) {
+  EXPECT_TRUE(processes_of_sessions_in(scratch.tmp()).empty());
+  EXPECT_TRUE(scratch.tmp_is_empty());
+}
+
 TEST(DolphinPlayer, MissingDolphinIsOneLineNamingItsPathAndPackage) {
   Scratch scratch;
   DolphinOptions options;
@@ -147,8 +170,7 @@ TEST(DolphinPlayer, AFileThatIsNotAFifoLogIsDolphinsOwnLineWithNothingLeft) {
       << what;
   EXPECT_NE(what.find("magic number"), std::string::npos) << what;
   EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-  EXPECT_TRUE(processes_of_sessions_in(scratch.tmp()).empty());
-  EXPECT_TRUE(scratch.tmp_is_empty());
+  expect_nothing_left(scratch);
 }
 
 TEST(DolphinPlayer, ADirectoryIsRefusedBeforeAnythingStarts) {
@@ -161,65 +183,44 @@ TEST(DolphinPlayer, ADirectoryIsRefusedBeforeAnythingStarts) {
 TEST(DolphinPlayer, DeadlineKillsAProgramThatIgnoresSigintAndItsChildren) {
   SKIP_WITHOUT_DOLPHIN();
   Scratch scratch;
-  DolphinOptions options;
-  options.executable = (scratch / "hangs").string();
-  write_script(options.executable, "trap '' INT\nsleep 600 &\nwait\nwait\n");
-  options.deadline_seconds = 2;
-  const auto start = Clock::now();
-  const std::string what = input_error_of([&] { play_fifo_log(some_bytes(), options); });
-  const auto took = Clock::now() - start;
-  EXPECT_NE(what.find("dolphin: no frame dumped within 2 s"), std::string::npos) << what;
+  const auto got = play_stand_in(scratch, "trap '' INT\nsleep 600 &\nwait\nwait\n", 2);
+  EXPECT_NE(got.what.find("dolphin: no frame dumped within 2 s"), std::string::npos) << got.what;
   // The deadline, then SIGINT's 3 s of grace, then SIGKILL.
-  EXPECT_GE(took, std::chrono::seconds(2));
-  EXPECT_LT(took, std::chrono::seconds(8));
-  EXPECT_TRUE(processes_of_sessions_in(scratch.tmp()).empty());
-  EXPECT_TRUE(scratch.tmp_is_empty());
+  EXPECT_GE(got.took, std::chrono::seconds(2));
+  EXPECT_LT(got.took, std::chrono::seconds(8));
+  expect_nothing_left(scratch);
 }
 
 TEST(DolphinPlayer, DeadlineStopsWhatAProgramLeftAfterItsCleanExit) {
   SKIP_WITHOUT_DOLPHIN();
   Scratch scratch;
-  DolphinOptions options;
-  options.executable = (scratch / "leaves_a_child").string();
   // SIGINT ends the script at once; its background `sleep` (which ignores SIGINT, as background
   // jobs of a script do) stays unless the whole group is killed.
-  write_script(options.executable, "trap 'exit 0' INT\nsleep 600 &\nwait\n");
-  options.deadline_seconds = 2;
-  const auto start = Clock::now();
-  const std::string what = input_error_of([&] { play_fifo_log(some_bytes(), options); });
-  EXPECT_NE(what.find("no frame dumped within 2 s"), std::string::npos) << what;
-  EXPECT_LT(Clock::now() - start, std::chrono::seconds(5));
-  EXPECT_TRUE(processes_of_sessions_in(scratch.tmp()).empty());
-  EXPECT_TRUE(scratch.tmp_is_empty());
+  const auto got = play_stand_in(scratch, "trap 'exit 0' INT\nsleep 600 &\nwait\n", 2);
+  EXPECT_NE(got.what.find("no frame dumped within 2 s"), std::string::npos) << got.what;
+  EXPECT_LT(got.took, std::chrono::seconds(5));
+  expect_nothing_left(scratch);
 }
 
 TEST(DolphinPlayer, ACrashIsOneLineNamingTheSignalAndQuotingTheOutput) {
   SKIP_WITHOUT_DOLPHIN();
   Scratch scratch;
-  DolphinOptions options;
-  options.executable = (scratch / "crashes").string();
-  write_script(options.executable, "echo 'last words'\nsleep 600 &\nkill -SEGV $$\n");
-  options.deadline_seconds = 20;
-  const std::string what = input_error_of([&] { play_fifo_log(some_bytes(), options); });
-  EXPECT_NE(what.find("dolphin: was killed by signal 11 (Segmentation fault) before dumping a "
-                      "frame; its output ends: last words"),
+  const auto got = play_stand_in(scratch, "echo 'last words'\nsleep 600 &\nkill -SEGV $$\n", 20);
+  EXPECT_NE(got.what.find("dolphin: was killed by signal 11 (Segmentation fault) before dumping "
+                          "a frame; its output ends: last words"),
             std::string::npos)
-      << what;
-  EXPECT_TRUE(processes_of_sessions_in(scratch.tmp()).empty());
-  EXPECT_TRUE(scratch.tmp_is_empty());
+      << got.what;
+  expect_nothing_left(scratch);
 }
 
 TEST(DolphinPlayer, AnExitWithoutAFrameSaysSo) {
   SKIP_WITHOUT_DOLPHIN();
   Scratch scratch;
-  DolphinOptions options;
-  options.executable = (scratch / "shows_nothing").string();
-  write_script(options.executable, "echo 'nothing to show'\n");
-  options.deadline_seconds = 20;
-  const std::string what = input_error_of([&] { play_fifo_log(some_bytes(), options); });
-  EXPECT_NE(what.find("dolphin: exited without dumping a frame"), std::string::npos) << what;
-  EXPECT_NE(what.find("its output ends: nothing to show"), std::string::npos) << what;
-  EXPECT_TRUE(scratch.tmp_is_empty());
+  const auto got = play_stand_in(scratch, "echo 'nothing to show'\n", 20);
+  EXPECT_NE(got.what.find("dolphin: exited without dumping a frame"), std::string::npos)
+      << got.what;
+  EXPECT_NE(got.what.find("its output ends: nothing to show"), std::string::npos) << got.what;
+  expect_nothing_left(scratch);
 }
 
 // A stand-in that dumps `count` frames the way Dolphin names them (framedump_1.png ...), frame
@@ -268,8 +269,7 @@ TEST(DolphinPlayer, FramesComeBackInTheOrderDolphinNumberedThem) {
   // ... playing the log once, so that it exits by itself.
   EXPECT_NE(test::read_file(record.string() + ".ini").find("LoopReplay = False"),
             std::string::npos);
-  EXPECT_TRUE(processes_of_sessions_in(scratch.tmp()).empty());
-  EXPECT_TRUE(scratch.tmp_is_empty());
+  expect_nothing_left(scratch);
 }
 
 TEST(DolphinPlayer, TheKeepVariableKeepsTheSessionDirectory) {
