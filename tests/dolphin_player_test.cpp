@@ -114,15 +114,29 @@ struct FailedPlay {
   std::string what;
   Clock::duration took;
 };
-FailedPlay play_stand_in(const Scratch& scratch, const std::string& script, double deadline) {
-  DolphinOptions options;
-  options.executable = (scratch / "stand_in").string();
-  write_script(options.executable, script);
-  options.deadline_seconds = deadline;
+FailedPlay failed_play(const DolphinOptions& options) {
   const auto start = Clock::now();
   const std::string what = input_error_of([&] { play_fifo_log(some_bytes(), options); });
   EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   return {what, Clock::now() - start};
+}
+
+// Options whose Dolphin (or, with `program` "xvfb", whose X server) is a script in `scratch`.
+DolphinOptions stand_in(const Scratch& scratch, const std::string& program,
+                        const std::string& script, double deadline) {
+  DolphinOptions options;
+  options.executable = (scratch / "dolphin").string();
+  write_script(options.executable, program == "dolphin" ? script : "exit 0\n");
+  if (program == "xvfb") {
+    options.xvfb = (scratch / "xvfb").string();
+    write_script(options.xvfb, script);
+  }
+  options.deadline_seconds = deadline;
+  return options;
+}
+
+FailedPlay play_stand_in(const Scratch& scratch, const std::string& script, double deadline) {
+  return failed_play(stand_in(scratch, "dolphin", script, deadline));
 }
 
 // No process of a play is running (whatever started it) and no session directory is left.
@@ -153,6 +167,31 @@ TEST(DolphinPlayer, MissingXvfbIsOneLineNamingItAndItsPackage) {
             std::string::npos)
       << what;
   EXPECT_TRUE(scratch.tmp_is_empty());
+}
+
+// Xvfb stand-ins: one that fails at once, one that never says it is ready.
+FailedPlay play_with_xvfb(const Scratch& scratch, const std::string& script, double deadline) {
+  return failed_play(stand_in(scratch, "xvfb", script, deadline));
+}
+
+TEST(DolphinPlayer, AnXServerThatFailsIsOneLineQuotingIt) {
+  Scratch scratch;
+  const auto got = play_with_xvfb(scratch, "echo 'Fatal server error: no screens'\nexit 1\n", 20);
+  EXPECT_NE(got.what.find("dolphin: Xvfb exited with status 1 before it was ready; its output "
+                          "ends: Fatal server error: no screens"),
+            std::string::npos)
+      << got.what;
+  expect_nothing_left(scratch);
+}
+
+TEST(DolphinPlayer, AnXServerThatNeverGetsReadyMeetsTheDeadline) {
+  Scratch scratch;
+  const auto got = play_with_xvfb(scratch, "sleep 600\n", 1);
+  EXPECT_NE(got.what.find("dolphin: Xvfb was not ready before the deadline"), std::string::npos)
+      << got.what;
+  EXPECT_GE(got.took, std::chrono::seconds(1));
+  EXPECT_LT(got.took, std::chrono::seconds(5));  // the deadline, then at most 2 s of SIGTERM
+  expect_nothing_left(scratch);
 }
 
 TEST(DolphinPlayer, AFileThatIsNotAFifoLogIsDolphinsOwnLineWithNothingLeft) {
