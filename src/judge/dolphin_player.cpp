@@ -73,6 +73,11 @@ std::filesystem::path require_executable(const std::string& name, const char* pa
   return found;
 }
 
+// Where Dolphin's standard output and error go.
+std::filesystem::path dolphin_output(const std::filesystem::path& session) {
+  return session / "dolphin.out";
+}
+
 std::string seconds_text(double seconds) {
   std::ostringstream s;
   s << seconds << " s";
@@ -130,6 +135,34 @@ std::filesystem::path quiet_screensaver_dir(const std::filesystem::path& session
   return dir;
 }
 
+// What a play that is over gave: every frame dumped, or the InputError that says why none is
+// to be trusted (the deadline, a failed or crashed Dolphin, no frame).
+std::vector<Image> frames_or_why_not(bool ended, int status, const std::filesystem::path& session,
+                                     const DolphinOptions& options) {
+  const auto frames = dumped_frames(frame_dump_dir(session / "user"));
+  const std::string said = what_dolphin_said(dolphin_output(session), log_file(session / "user"));
+  if (!ended) {
+    throw InputError(
+        kWho, "",
+        (frames.empty() ? "no frame dumped within " : "did not finish within ") +
+            seconds_text(options.deadline_seconds) +
+            (frames.empty() ? "" : " (" + std::to_string(frames.size()) + " frames dumped)") +
+            said);
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw InputError(kWho, "",
+                     describe_wait_status(status) + " " + frames_so_far(frames.size()) + said);
+  if (frames.empty()) {
+    throw InputError(kWho, "",
+                     "exited without dumping a frame (the last frame of a log is never shown: "
+                     "it must hold its frame 3 times or more, see docs/dolphin-judge.md)" +
+                         said);
+  }
+  std::vector<Image> images;
+  for (const auto& frame : frames) images.push_back(read_image(frame));
+  return images;
+}
+
 using PrepareLog = std::function<void(const std::filesystem::path& dff_in_session)>;
 
 std::vector<Image> play(const PrepareLog& prepare_log, const DolphinOptions& options) {
@@ -158,7 +191,7 @@ std::vector<Image> play(const PrepareLog& prepare_log, const DolphinOptions& opt
     throw InputError(kWho, "", e.what());
   }
 
-  const std::filesystem::path output = session.path() / "dolphin.out";
+  const std::filesystem::path output = dolphin_output(session.path());
   std::vector<std::string> environment = marker;
   environment.push_back("DISPLAY=" + display->name());
   environment.push_back("PATH=" + quiet_screensaver_dir(session.path()).string() + ":" +
@@ -178,29 +211,7 @@ std::vector<Image> play(const PrepareLog& prepare_log, const DolphinOptions& opt
   const bool ended = emulator->wait_until(deadline);
   emulator->stop(SIGINT, kDolphinGrace);
   display.reset();
-  const auto frames = dumped_frames(frame_dump_dir(user));
-  const std::string said = what_dolphin_said(output, log_file(user));
-  if (!ended) {
-    throw InputError(
-        kWho, "",
-        (frames.empty() ? "no frame dumped within " : "did not finish within ") +
-            seconds_text(options.deadline_seconds) +
-            (frames.empty() ? "" : " (" + std::to_string(frames.size()) + " frames dumped)") +
-            said);
-  }
-  const int status = emulator->wait_status();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw InputError(kWho, "",
-                     describe_wait_status(status) + " " + frames_so_far(frames.size()) + said);
-  if (frames.empty()) {
-    throw InputError(kWho, "",
-                     "exited without dumping a frame (the last frame of a log is never shown: "
-                     "it must hold its frame 3 times or more, see docs/dolphin-judge.md)" +
-                         said);
-  }
-  std::vector<Image> images;
-  for (const auto& frame : frames) images.push_back(read_image(frame));
-  return images;
+  return frames_or_why_not(ended, emulator->wait_status(), session.path(), options);
 }
 
 }  // namespace
