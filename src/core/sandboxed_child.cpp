@@ -12,6 +12,8 @@
 #include <exception>
 #include <iostream>
 
+#include "core/child_process.h"
+
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/common_interface_defs.h>
 #endif
@@ -114,7 +116,7 @@ SandboxOutcome run_in_sandboxed_child(const SandboxLimits& limits,
     const auto left = deadline - std::chrono::steady_clock::now();
     if (left <= std::chrono::steady_clock::duration::zero()) {
       ::kill(pid, SIGKILL);
-      ::waitpid(pid, nullptr, 0);
+      reap(pid);
       ::close(pipe_fds[0]);
       outcome.end = SandboxOutcome::End::TimedOut;
       return outcome;
@@ -131,9 +133,7 @@ SandboxOutcome run_in_sandboxed_child(const SandboxLimits& limits,
     outcome.payload.append(buf, static_cast<std::size_t>(n));
   }
   ::close(pipe_fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  const int status = reap(pid);
   if (WIFSIGNALED(status)) {
     outcome.end = SandboxOutcome::End::Signalled;
     outcome.code = WTERMSIG(status);
