@@ -121,10 +121,12 @@ std::vector<Color8> decode_xfb(const std::vector<XfbPixel>& xfb, int width, int 
            "XFB size does not match");
   std::vector<Color8> rgb(xfb.size());
   for (size_t p = 0; p < xfb.size(); p += 2) {
-    const int u = xfb[p].uv - 128, v = xfb[p + 1].uv - 128;
+    // Small integers, exact in float: the same operands Dolphin's int-to-float promotion gives.
+    const auto f = [](int i) { return static_cast<float>(i); };
+    const float u = f(xfb[p].uv - 128), v = f(xfb[p + 1].uv - 128);
     for (size_t k = 0; k < 2; ++k) {
       // The inverse BT.601 with Dolphin's rounded constants, in float [DHW TexDecoder_DecodeXFB].
-      const int y = xfb[p + k].y - 16;
+      const float y = f(xfb[p + k].y - 16);
       rgb[p + k] = {to_channel(1.164f * y + 1.596f * v),
                     to_channel(1.164f * y - 0.392f * u - 0.813f * v),
                     to_channel(1.164f * y + 2.017f * u), 255};
