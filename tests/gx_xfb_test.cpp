@@ -75,7 +75,9 @@ TEST(GxXfb, FlatPrimaries) {
 // (255, 128, 0) as (255, 127, 0). Y = 33342 >> 8 = 130, U = -19162 >> 8 = -75, V = 16528 >> 8 =
 // 64 + 1 = 65 -> R = 151.32 + 103.74 -> 255, G = 151.32 + 29.4 - 52.845 = 127.875 -> 127,
 // B = 151.32 - 151.275 = 0.045 -> 0.
-TEST(GxXfb, OrangeAsDolphinShowedIt) { expect_flat({255, 128, 0, 255}, {255, 127, 0, 255}); }
+TEST(GxXfb, OrangeAsDolphinShowedIt) {
+  expect_flat({255, 128, 0, 255}, {255, 127, 0, 255});
+}
 
 // The bytes in RAM for flat red: Y + 16 = 82 on both pixels, 128 + U = 90 on the even one,
 // 128 + V = 240 on the odd one.
@@ -211,10 +213,10 @@ TEST(GxXfb, OddSizesAreRefused) {
 
 TEST(GxXfb, OddWidthOnTheCommandLineIsOneLineAndExit2) {
   test::TempDir dir;
-  const test::RunResult r = test::run_ltrender(
-      "render " + (test::source_dir() / "scenes/backlit_sphere.json").string() +
-      " --path gx --variant t=vertex:out=xfb --width 321 --height 240 -o " +
-      (dir / "o.png").string());
+  const test::RunResult r =
+      test::run_ltrender("render " + (test::source_dir() / "scenes/backlit_sphere.json").string() +
+                         " --path gx --variant t=vertex:out=xfb --width 321 --height 240 -o " +
+                         (dir / "o.png").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("even width and height"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -63,7 +63,9 @@ Yuv444 to_yuv(const Color8& c) {
 }
 
 // One decoded channel: truncated toward zero, then clamped [DHW TexDecoder_DecodeXFB].
-u8 to_channel(float v) { return static_cast<u8>(std::clamp(static_cast<int>(v), 0, 255)); }
+u8 to_channel(float v) {
+  return static_cast<u8>(std::clamp(static_cast<int>(v), 0, 255));
+}
 
 }  // namespace
 
