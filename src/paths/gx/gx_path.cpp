@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/error.h"
 #include "image/image.h"
 #include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/generator.h"
@@ -16,6 +17,7 @@
 #include "paths/gx/program/printer.h"
 #include "paths/gx/program_check.h"
 #include "paths/gx/vertex_stage.h"
+#include "paths/gx/xfb_copy.h"
 
 namespace lt::gx {
 
@@ -77,6 +79,10 @@ class GxPath final : public Path {
         programs_(scene_programs_for(ctx.scene, variant_, ctx.options.program_file)),
         view_(SceneView::of(ctx.scene)) {
     const Scene& s = ctx.scene;
+    if (variant_.out == GxVariant::Output::Xfb) {
+      const std::string why = xfb_size_refusal(ctx.width, ctx.height);
+      if (!why.empty()) throw InputError("--variant", to_string(variant_), "gx: " + why);
+    }
     int texgens = 0;
     for (const auto& passes : programs_.by_material) {
       for (const PassProgram& p : passes) texgens = std::max(texgens, p.state.texgen.num_texgens);
@@ -141,15 +147,21 @@ class GxPath final : public Path {
     if (pixel_programs_.empty()) rasteriser_->rasterise(drawn, cull);
   }
 
-  // The EFB as the console shows it (RGB8), alpha = coverage, top row first.
+  // The EFB (RGB8), or with out=xfb what the TV shows of it (xfb_copy.h); alpha = coverage (the
+  // copy leaves it alone). Top row first, as the image and GX number rows; efb_ is bottom-up.
   Image result() override {
-    Image img(ctx_.width, ctx_.height);
-    for (int gy = 0; gy < ctx_.height; ++gy) {
-      for (int x = 0; x < ctx_.width; ++x) {
-        const Color8& c = efb_[static_cast<size_t>(gy) * ctx_.width + x];
-        float* out = img.at(x, ctx_.height - 1 - gy);
+    const int w = ctx_.width, h = ctx_.height;
+    std::vector<Color8> shown(efb_.size());
+    for (int y = 0; y < h; ++y)
+      std::copy_n(&efb_[static_cast<size_t>(h - 1 - y) * w], w, &shown[static_cast<size_t>(y) * w]);
+    if (variant_.out == GxVariant::Output::Xfb) shown = efb_as_displayed(shown, w, h, copy_);
+    Image img(w, h);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const Color8& c = shown[static_cast<size_t>(y) * w + x];
+        float* out = img.at(x, y);
         for (int ch = 0; ch < 3; ++ch) out[ch] = c[ch] / 255.0f;
-        out[3] = rasteriser_->covered(rasteriser_->index(x, gy)) ? 1.0f : 0.0f;
+        out[3] = rasteriser_->covered(rasteriser_->index(x, h - 1 - y)) ? 1.0f : 0.0f;
       }
     }
     return img;
@@ -242,6 +254,8 @@ class GxPath final : public Path {
   std::vector<VertexStream> streams_;
   std::vector<std::vector<PixelProgram>> pixel_programs_;  // [pass][material]
   std::vector<Color8> efb_;
+  // The copy to the XFB: GX_Init's, which the exported program never changes.
+  EfbCopyState copy_;
   Color8 background_;
   double vertex_seconds_ = 0, pixel_seconds_ = 0;
   size_t stage_pixels_ = 0, light_vertices_ = 0;
@@ -261,7 +275,7 @@ PathInfo gx_path_info() {
       "8-bit channels, the power LUT as an I8 texture with 7-bit filtering, TEV stages, EFB "
       "blending; programs are libogc calls (`ltrender export gx`). Variants are a grammar: "
       "t=vertex | t=texgen with :lut=N (2..1024), or lobe=xf-spec; any with :colors=round, "
-      ":lights=round-each";
+      ":lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of the EFB)";
   info.variants = {
       {"t=vertex",
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "
@@ -277,6 +291,10 @@ PathInfo gx_path_info() {
       {"t=texgen",
        "t from the raw normal through a 2x4 texture matrix: no CPU per-vertex work "
        "(directional lights and an orthographic camera only)"},
+      {"t=vertex:out=xfb",
+       "t=vertex as the TV shows it: the EFB copied to the XFB as YUYV 4:2:2 (BT.601, chroma "
+       "filtered [1 2 1]/4 per pixel pair) and decoded again, as Dolphin's software renderer "
+       "dumps the frame"},
       {"lobe=xf-spec",
        "no texture: the lobe as the XF specular attenuation, a rational fitted per material, "
        "per vertex, 2 TEV stages (directional lights and an orthographic camera only)"},

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "model/translucency.h"
+#include "paths/gx/xfb_copy.h"
 
 namespace lt::gx {
 
@@ -13,14 +14,14 @@ namespace {
 
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
-    "any of them with :colors=round, :lights=round-each and :map=rgb565";
+    "any of them with :colors=round, :lights=round-each, :map=rgb565 and :out=xfb (or :out=efb)";
 
 }  // namespace
 
 GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
   bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
-       seen_lights = false, seen_map = false;
+       seen_lights = false, seen_map = false, seen_out = false;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -69,6 +70,10 @@ GxVariant parse_gx_variant(const std::string& text) {
       seen_map = true;
       if (value != "rgb565" && value != "rgba8") bad("map=" + value + " is not rgba8 or rgb565");
       v.map_rgb565 = value == "rgb565";
+    } else if (key == "out" && !seen_out) {
+      seen_out = true;
+      if (value != "efb" && value != "xfb") bad("out=" + value + " is not efb or xfb");
+      v.out = value == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
     } else {
       bad("'" + key + "' is not a gx variant axis, or is given twice");
     }
@@ -90,10 +95,16 @@ std::string to_string(const GxVariant& v) {
   if (v.round_colors) s += ":colors=round";
   if (v.round_each_light) s += ":lights=round-each";
   if (v.map_rgb565) s += ":map=rgb565";
+  if (v.out == GxVariant::Output::Xfb) s += ":out=xfb";
   return s;
 }
 
 std::string refusal(const Scene& scene, const GxVariant& v) {
+  // At the scene's size; the path checks a --width/--height override again when it is built.
+  if (v.out == GxVariant::Output::Xfb) {
+    std::string why = xfb_size_refusal(scene.width, scene.height);
+    if (!why.empty()) return "out=xfb: " + why;
+  }
   if (v.lobe == GxVariant::Lobe::XfSpec) {
     for (const Material& m : scene.materials) {
       if (m.translucency && m.translucency->ramp)

@@ -14,6 +14,10 @@
 // One axis picks the texture format of a colour thickness map (a grey map is always GX_TF_I8):
 //   :map=rgb565         GX_TF_RGB565, 16 bits a texel (default :map=rgba8, GX_TF_RGBA8, 32 bits:
 //                       the map's 8 bits kept, as the vertex colours it replaces keep theirs)
+// One axis picks which image the path returns (xfb_copy.h):
+//   :out=xfb            what the TV shows: the EFB copied to the XFB as YUYV 4:2:2 and decoded
+//                       again, as Dolphin's software renderer dumps it (default :out=efb, the
+//                       EFB itself)
 #pragma once
 
 #include <string>
@@ -25,12 +29,14 @@ namespace lt::gx {
 struct GxVariant {
   enum class Lobe { Lut, XfSpec };
   enum class TexCoord { Vertex, Texgen };
+  enum class Output { Efb, Xfb };
   Lobe lobe = Lobe::Lut;
   TexCoord t = TexCoord::Vertex;
   int lut_size = 256;
   bool round_colors = false;
   bool round_each_light = false;
   bool map_rgb565 = false;  // colour thickness maps as GX_TF_RGB565 instead of GX_TF_RGBA8
+  Output out = Output::Efb;
 
   bool operator==(const GxVariant&) const = default;
 };
@@ -44,7 +50,7 @@ std::string to_string(const GxVariant& v);
 
 // Why the variant cannot be exact for this scene (empty when it can): t=texgen and lobe=xf-spec
 // need t affine in the normal, so every light directional, an orthographic camera and H not
-// normalised (gx-hardware.md §3.1).
+// normalised (gx-hardware.md §3.1); out=xfb needs an even width and height (xfb_copy.h).
 std::string refusal(const Scene& scene, const GxVariant& v);
 
 }  // namespace lt::gx
