@@ -220,6 +220,11 @@ void write_gx_init_bp(CommandStream& out, FrameSize size) {
   out.load_bp(bp::kScissorBottomRight,
               place(kScreenOffset + h - 1, 0, 11) | place(kScreenOffset + w - 1, 12, 11));
   out.load_bp(bp::kScissorOffset, place(kScreenOffset >> 1, 0, 10) | place(kScreenOffset >> 1, 10, 10));
+  // GX_Init's z mode and blend mode (GxState's defaults), so the frame's clearing copy - which
+  // clears only what the colour update and z update bits let through [DHW BPStructs.cpp
+  // BPMEM_TRIGGER_EFB_COPY, ClearScreen] - starts from them, as after GX_Init.
+  out.load_bp(bp::kZMode, z_mode(ZMode{}));
+  out.load_bp(bp::kBlendMode, blend_mode(BlendMode{}));
   // GX_SetDstAlpha(GX_DISABLE, 0): constant alpha off [OGC gx.c GX_SetDstAlpha].
   out.load_bp(bp::kConstantAlpha, 0);
   // GX_SetPixelFmt(GX_PF_RGB8_Z24, GX_ZC_LINEAR): format 0-2 = 0, z format 3-5 = 0;
@@ -263,7 +268,7 @@ namespace {
 // then source, size, stride, destination, the trigger, and the mirror's values restored
 // [OGC gx.c L2010-2054, L2056-2097].
 void write_clearing_copy(CommandStream& out, FrameSize size, u32 address, u32 stride,
-                         u32 trigger) {
+                         u32 trigger, bool restore) {
   const u32 zmode = out.bp[bp::kZMode], cmode0 = out.bp[bp::kBlendMode];
   const u32 pe = out.bp[bp::kPixelControl];
   out.load_bp(bp::kZMode, (zmode & ~0xfu) | 0xf, false);
@@ -276,6 +281,7 @@ void write_clearing_copy(CommandStream& out, FrameSize size, u32 address, u32 st
   out.load_bp(bp::kCopyStride, stride);
   out.load_bp(bp::kCopyDestination, place(address >> 5, 0, 24));
   out.load_bp(bp::kCopyTrigger, trigger, false);
+  if (!restore) return;
   out.load_bp(bp::kZMode, zmode);
   out.load_bp(bp::kBlendMode, cmode0);
   if (pe & 0x40) out.load_bp(bp::kPixelControl, pe);
@@ -290,17 +296,20 @@ void write_clearing_copy(CommandStream& out, FrameSize size, u32 address, u32 st
 void write_clearing_texture_copy(CommandStream& out, FrameSize size, u32 address) {
   const u32 stride = static_cast<u32>((size.width + 3) / 4) * 2;
   write_clearing_copy(out, size, address, stride,
-                      place(6, 4, 3) | place(1, 11, 1) | place(1, 16, 1));
+                      place(6, 4, 3) | place(1, 11, 1) | place(1, 16, 1), true);
 }
 
 // GX_SetDispCopyDst(w, h): stride w / 16 (32-byte lines of YUYV) [OGC gx.c L1996-2000];
 // GX_CopyDisp(xfb, GX_TRUE): the display copy control with clear (11) and copy-to-XFB (14)
-// [OGC gx.c L2040-2044].
+// [OGC gx.c L2040-2044]. The frame ends at its trigger: Dolphin's FIFO player cuts a frame into
+// parts at EFB copies and requires the last command to be one [DHW FifoPlayer.cpp AnalyzeFrames
+// "The frame should end with an EFB copy"], so the restores GX_CopyDisp sends after it are left
+// to the next frame, which writes every register again.
 void write_display_copy(CommandStream& out, FrameSize size, u32 address) {
   const DisplayCopy copy = gx_init_display_copy();
   out.load_bp(bp::kCopyYScale, copy.y_scale);
   write_clearing_copy(out, size, address, static_cast<u32>(size.width) >> 4,
-                      display_copy_control(copy) | place(1, 11, 1) | place(1, 14, 1));
+                      display_copy_control(copy) | place(1, 11, 1) | place(1, 14, 1), false);
 }
 
 }  // namespace lt::gx::fifo

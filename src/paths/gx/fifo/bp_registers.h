@@ -78,7 +78,8 @@ void write_copy_clear(CommandStream& out, const Color8& color);
 // An EFB copy of the whole frame with clear: to an RGBA8 texture at `address` (the frame's
 // initial clear), or to the XFB at `address` (GX_CopyDisp(xfb, GX_TRUE), the frame's end).
 // Both clear as GX_CopyDisp does: z mode forced to ALWAYS with update, blending off, then both
-// restored from the mirror [OGC gx.c L2010-2054].
+// restored from the mirror [OGC gx.c L2010-2054] - the texture copy only: the display copy ends
+// the frame.
 void write_clearing_texture_copy(CommandStream& out, FrameSize size, u32 address);
 void write_display_copy(CommandStream& out, FrameSize size, u32 address);
 

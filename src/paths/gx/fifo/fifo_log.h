@@ -47,7 +47,11 @@ struct FifoLog {
   std::array<u32, kCpRegisters> cp{};
   std::array<u32, kXfMemoryWords> xf_memory{};
   std::array<u32, kXfRegisters> xf_registers{};
-  bool wii = true;  // header flag bit 0 [DHW FifoDataFile.h FLAG_IS_WII]
+  // Header flag bit 0 [DHW FifoDataFile.h FLAG_IS_WII]. Off: the GX of the Wii is the
+  // GameCube's, and Dolphin plays a GameCube log at 4:3 - a Wii log takes the emulated Wii's
+  // 16:9 display setting and its dump is stretched (measured: a 320 x 240 frame dumps as
+  // 424 x 240).
+  bool wii = false;
   std::vector<FifoFrame> frames;
   bool operator==(const FifoLog&) const = default;
 };
