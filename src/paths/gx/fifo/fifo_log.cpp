@@ -102,9 +102,7 @@ std::vector<u8> write_fifo_log(const FifoLog& log) {
     data_at = updates_at + kMemoryUpdateBytes * f.updates.size();
     for (const MemoryUpdate& u : f.updates) data_at += u.data.size();
   }
-  // BP snapshot: BP 0xFE (the mask of the next write) must read all ones, as the hardware
-  // resets it after every write [DHW BPMemory.h BPMEM_BP_MASK].
-  for (size_t i = 0; i < kBpRegisters; ++i) w.u32_(i == 0xfe ? 0xffffff : log.bp[i]);
+  for (u32 v : log.bp) w.u32_(v);
   for (u32 v : log.cp) w.u32_(v);
   for (u32 v : log.xf_memory) w.u32_(v);
   for (u32 v : log.xf_registers) w.u32_(v);

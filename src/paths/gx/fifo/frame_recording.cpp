@@ -116,6 +116,9 @@ FifoLog record_frames(const Scene& scene, const std::vector<FrameInput>& frames,
     write_pass_bp(init, gx_init, {}, {});
     write_copy_clear(init, Color8{64, 64, 64, 255});  // GX_DEFAULT_BG [OGC gx.c L66]
     log.bp = init.bp;
+    // BP 0xFE, the mask of the next BP write, reads all ones: the hardware resets it after every
+    // write [DHW BPMemory.h BPMEM_BP_MASK].
+    log.bp[0xfe] = 0xffffff;
     log.cp = init.cp;
     log.xf_memory = init.xf_memory;
     log.xf_registers = init.xf_registers;
