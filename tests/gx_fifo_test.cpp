@@ -452,6 +452,14 @@ TEST(GxFifoCli, ExportWritesALogDolphinDumpsAndRefusesWhatTheConsoleCannotShow) 
   ASSERT_EQ(log.frames.size(), 2u);  // the frame and the copy that makes Dolphin show it
   EXPECT_TRUE(log.frames[0] == log.frames[1]);
 
+  // The exported C read back with --program draws the very same frame, byte for byte.
+  const fs::path c = dir / "exported.c", replayed = dir / "replayed.dff";
+  ASSERT_EQ(test::run_ltrender("export gx " + scene + " -o " + c.string()).exit_code, 0);
+  const test::RunResult rp = test::run_ltrender("export gx " + scene + " --format dff --program " + c.string() + " --width 320 --height 240 -o " + replayed.string());
+  ASSERT_EQ(rp.exit_code, 0) << rp.err;
+  std::ifstream in2(replayed, std::ios::binary);
+  EXPECT_TRUE(std::vector<u8>((std::istreambuf_iterator<char>(in2)), {}) == bytes);
+
   // Wider than the EFB, or not a multiple of 16: one line naming the key and the size, nothing
   // written.
   for (const std::string size : {"--width 656 --height 240", "--width 328 --height 240",

@@ -22,6 +22,7 @@ Action add_export(CLI::App& app) {
   auto format = std::make_shared<std::string>("c");
   auto width = std::make_shared<int>(0);
   auto height = std::make_shared<int>(0);
+  auto program = std::make_shared<std::string>();
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
   sub->add_option("TARGET", *target, "gx (libogc C for the Wii / GameCube)")->required();
@@ -31,6 +32,8 @@ Action add_export(CLI::App& app) {
                   "c: libogc C (default); dff: the frame as a Dolphin FIFO log");
   sub->add_option("--width", *width, "dff: frame width (default: the scene's)");
   sub->add_option("--height", *height, "dff: frame height (default: the scene's)");
+  sub->add_option("--program", *program,
+                  "dff: a gx program file drawn instead of the generated programs");
   sub->add_option("-o,--output", *output, "FILE.c or FILE.dff")->required();
   return [=]() -> int {
     if (*target != "gx") throw InputError("export", *target, "unknown export target (valid: gx)");
@@ -39,12 +42,14 @@ Action add_export(CLI::App& app) {
     const std::string extension = "." + *format;
     if (fs::path(*output).extension() != extension)
       throw InputError(*output, "", "the exported file must end in " + extension);
-    if (*format == "c" && (*width != 0 || *height != 0))
-      throw InputError("export", "--width", "--width and --height are for --format dff");
+    if (*format == "c" && (*width != 0 || *height != 0 || !program->empty()))
+      throw InputError("export", !program->empty() ? "--program" : "--width",
+                       "--width, --height and --program are for --format dff");
     const PathInfo& info = find_path("gx");
     const std::string v = resolve_variant(info, *variant);
     const Scene scene = load_scene(*scene_path);
     std::vector<fs::path> inputs = {*scene_path};
+    if (!program->empty()) inputs.push_back(*program);
     for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);
     ensure_not_an_input(*output, inputs);
     if (*format == "dff") {
@@ -53,7 +58,7 @@ Action add_export(CLI::App& app) {
       gx::fifo::check_frame_size(size, *scene_path, *width ? "--width" : "width",
                                  *height ? "--height" : "height");
       const std::vector<std::uint8_t> bytes =
-          info.fifo_log(scene, v, PathOptions{}, size.width, size.height);
+          info.fifo_log(scene, v, PathOptions{*program, ""}, size.width, size.height);
       write_atomically(*output, [&](const fs::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         out.write(reinterpret_cast<const char*>(bytes.data()),
