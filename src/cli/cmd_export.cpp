@@ -4,34 +4,69 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "paths/gx/c_exporter.h"
+#include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_budget.h"
 #include "render/session.h"
 
 namespace lt::cli {
 
-// `ltrender export gx SCENE [--variant V] -o FILE.c` (gx.md §2): the generated GX programs as C,
-// with the error of exactly that program measured against the reference at the scene's size.
+// `ltrender export gx SCENE [--variant V] [--format c|dff] -o FILE` (gx.md §2): the generated GX
+// programs as C, with the error of exactly that program measured against the reference at the
+// scene's size; or (`--format dff`) the frame as the console receives it, a Dolphin FIFO log
+// (paths/gx/fifo/) at the scene's size or --width x --height.
 Action add_export(CLI::App& app) {
   auto target = std::make_shared<std::string>();
   auto scene_path = std::make_shared<std::string>();
   auto variant = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
+  auto format = std::make_shared<std::string>("c");
+  auto width = std::make_shared<int>(0);
+  auto height = std::make_shared<int>(0);
+  auto program = std::make_shared<std::string>();
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
   sub->add_option("TARGET", *target, "gx (libogc C for the Wii / GameCube)")->required();
   sub->add_option("SCENE", *scene_path, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_option("--variant", *variant, "The gx variant (default t=vertex)");
-  sub->add_option("-o,--output", *output, "FILE.c")->required();
+  sub->add_option("--format", *format,
+                  "c: libogc C (default); dff: the frame as a Dolphin FIFO log");
+  sub->add_option("--width", *width, "dff: frame width (default: the scene's)");
+  sub->add_option("--height", *height, "dff: frame height (default: the scene's)");
+  sub->add_option("--program", *program,
+                  "dff: a gx program file drawn instead of the generated programs");
+  sub->add_option("-o,--output", *output, "FILE.c or FILE.dff")->required();
   return [=]() -> int {
     if (*target != "gx") throw InputError("export", *target, "unknown export target (valid: gx)");
-    if (fs::path(*output).extension() != ".c")
-      throw InputError(*output, "", "the exported file must end in .c");
+    if (*format != "c" && *format != "dff")
+      throw InputError("export", "--format", *format + ": unknown format (valid: c, dff)");
+    const std::string extension = "." + *format;
+    if (fs::path(*output).extension() != extension)
+      throw InputError(*output, "", "the exported file must end in " + extension);
+    if (*format == "c" && (*width != 0 || *height != 0 || !program->empty()))
+      throw InputError("export", !program->empty() ? "--program" : "--width",
+                       "--width, --height and --program are for --format dff");
     const PathInfo& info = find_path("gx");
     const std::string v = resolve_variant(info, *variant);
     const Scene scene = load_scene(*scene_path);
     std::vector<fs::path> inputs = {*scene_path};
+    if (!program->empty()) inputs.push_back(*program);
     for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);
     ensure_not_an_input(*output, inputs);
+    if (*format == "dff") {
+      const gx::fifo::FrameSize size{*width ? *width : scene.width,
+                                     *height ? *height : scene.height};
+      gx::fifo::check_frame_size(size, *scene_path, *width ? "--width" : "width",
+                                 *height ? "--height" : "height");
+      const std::vector<std::uint8_t> bytes =
+          info.fifo_log(scene, v, PathOptions{*program, ""}, size.width, size.height);
+      write_atomically(*output, [&](const fs::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+        if (!out) throw InputError(*output, "", "cannot write");
+      });
+      return 0;
+    }
     const gx::GxVariant gv = gx::parse_gx_variant(v);
     const gx::ScenePrograms programs = gx::scene_programs_for(scene, gv, "");
     gx::ExportFigures f;

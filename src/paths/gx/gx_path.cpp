@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "image/image.h"
 #include "paths/gx/attribute_rasteriser.h"
+#include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/lobe_lut.h"
@@ -307,6 +308,16 @@ PathInfo gx_path_info() {
     return gx::refusal(scene, gx::parse_gx_variant(v));
   };
   info.takes_program_file = true;
+  // One frame as a Dolphin FIFO log: the programs the emulator runs (generated, or the program
+  // file), encoded on GX_Init's state, with the frame repeated so Dolphin dumps it.
+  info.fifo_log = [](const Scene& scene, const std::string& v, const PathOptions& options,
+                     int width, int height) {
+    const gx::GxVariant variant = gx::parse_gx_variant(v);
+    const gx::ScenePrograms programs =
+        gx::scene_programs_for(scene, variant, options.program_file);
+    return gx::fifo::write_fifo_log(gx::fifo::for_dolphin(
+        gx::fifo::record_frames(scene, {{variant, &programs}}, {width, height})));
+  };
   // TEV stages, texgens, texture maps, channels, lights, konst colours, registers and passes
   // against the Wii's GX, for generated programs and for program files alike.
   auto print = [](const gx::GxBudgetReport& r, const BudgetRequest& rq) {

@@ -1,0 +1,22 @@
+#include "paths/gx/fifo/display_copy.h"
+
+#include "paths/gx/fifo/bp_registers.h"
+
+namespace lt::gx::fifo {
+
+DisplayCopy gx_init_display_copy() { return {}; }
+
+void write_copy_filter(CommandStream& out, const DisplayCopy& c) {
+  for (int i = 0; i < 4; ++i)
+    out.load_bp(static_cast<u8>(bp::kCopyFilterPattern0 + i), c.sample_pattern);
+  const auto& f = c.vertical_filter;
+  out.load_bp(bp::kCopyFilter0,
+              place(f[0], 0, 6) | place(f[1], 6, 6) | place(f[2], 12, 6) | place(f[3], 18, 6));
+  out.load_bp(bp::kCopyFilter1, place(f[4], 0, 6) | place(f[5], 6, 6) | place(f[6], 12, 6));
+}
+
+u32 display_copy_control(const DisplayCopy& c) {
+  return place(c.clamp, 0, 2) | place(c.gamma, 7, 2) | place(c.y_scale != 256, 10, 1);
+}
+
+}  // namespace lt::gx::fifo
