@@ -252,7 +252,7 @@ void write_gx_init_bp(CommandStream& out, FrameSize size) {
   out.load_bp(bp::kIndirectMask, 0xff);
   // __GX_InitRevBits: BP 0x58 = 0x0f [OGC gx.c L238-253].
   out.load_bp(bp::kRevisionBits, 0x0f);
-  write_copy_filter(out, gx_init_display_copy());
+  write_copy_filter(out, EfbCopyState{});  // GX_Init's [OGC gx.c __GX_InitGX L728]
 }
 
 void write_copy_clear(CommandStream& out, const Color8& c) {
@@ -306,7 +306,7 @@ void write_clearing_texture_copy(CommandStream& out, FrameSize size, u32 address
 // "The frame should end with an EFB copy"], so the restores GX_CopyDisp sends after it are left
 // to the next frame, which writes every register again.
 void write_display_copy(CommandStream& out, FrameSize size, u32 address) {
-  const DisplayCopy copy = gx_init_display_copy();
+  const EfbCopyState copy{};  // what the exported program leaves: GX_Init's
   out.load_bp(bp::kCopyYScale, copy.y_scale);
   write_clearing_copy(out, size, address, static_cast<u32>(size.width) >> 4,
                       display_copy_control(copy) | place(1, 11, 1) | place(1, 14, 1), false);

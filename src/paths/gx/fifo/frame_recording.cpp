@@ -177,7 +177,8 @@ FifoLog record_frames(const Scene& scene, const std::vector<FrameInput>& frames,
 }
 
 FifoLog for_dolphin(FifoLog log) {
-  if (!log.frames.empty()) log.frames.push_back(log.frames.back());
+  for (int i = 0; i < kDolphinTrailingCopies && !log.frames.empty(); ++i)
+    log.frames.push_back(log.frames.back());
   return log;
 }
 

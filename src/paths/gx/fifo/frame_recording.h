@@ -43,9 +43,15 @@ FifoLog record_frames(const Scene& scene, const std::vector<FrameInput>& frames,
 
 // The log Dolphin's FIFO player shows every frame of: Dolphin presents a frame's XFB copy when
 // the next frame starts, so the last frame of a log is never dumped (the probe: 4 copies give 3
-// dumps); the frames are followed by one more copy of the last. Measured with three frames of
+// dumps); the frames are followed by copies of the last. Measured with three frames of
 // different clear colours (Dolphin 5.0-17995, software renderer): framedump_N.png shows frame
 // N - 1 (frames counted from 0).
+// With one copy, logs of a few hundred kilobytes (three_point_blob, baked_blob at 320x240)
+// ended before Dolphin dumped anything: the player powers down after the last frame [DHW
+// FifoPlayer.cpp AdvanceFrame], and the first video field may fall after the first frame
+// (judge/dolphin_player.h). Three copies left every demo scene dumped; the dumps of the copies
+// show the last frame.
+inline constexpr int kDolphinTrailingCopies = 3;
 FifoLog for_dolphin(FifoLog log);
 
 }  // namespace lt::gx::fifo
