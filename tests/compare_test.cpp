@@ -193,9 +193,9 @@ TEST(CompareMetrics, CoverageIsAlphaOverOneHalf) {
   EXPECT_FALSE(is_covered(0.0f));
   Image ref = filled(2, 1, 0, 0, 0, 0.5f);
   ref.at(1, 0)[3] = 0.75f;
-  const Comparison cmp = compare_images(ref, ref, TestEncoding::kFloat);
+  const Comparison cmp = compare_images(filled(2, 1, 0.5f, 0, 0), ref, TestEncoding::kFloat);
   EXPECT_EQ(cmp.covered.pixels, 1u);
-  EXPECT_EQ(cmp.covered.max_x, 1);
+  EXPECT_EQ(cmp.covered.max_x, 1);  // the same error on both: the covered one is pixel 1
 }
 
 TEST(CompareMetrics, EmptyCoverageHasNoFigures) {
@@ -391,6 +391,43 @@ TEST_F(CompareFiles, PngOfReferenceIsWithinHalfAnLsb) {
   EXPECT_EQ(self.image.max_lsb, 0.0);
 }
 
+// Issue 24: `compare a.png a.png` printed a PSNR of 159 dB and a max location for no error: an
+// 8-bit reference is compared as its bytes, so identical files have no error at all.
+TEST_F(CompareFiles, IdenticalEightBitFilesHaveNoErrorAndNoMaxLocation) {
+  Image img(16, 4);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      float* p = img.at(x, y);
+      p[0] = byte(x * 16 + y), p[1] = byte(255 - x * 16), p[2] = byte(3 * x + 7 * y), p[3] = 1;
+    }
+  }
+  write_image(path("a.png"), img);
+  const Comparison cmp = compare_files(path("a.png"), path("a.png"));
+  for (const ErrorStats* s : {&cmp.covered, &cmp.image}) {
+    EXPECT_EQ(s->max_lsb, 0.0);
+    EXPECT_EQ(s->rmse_lsb, 0.0);
+    EXPECT_TRUE(std::isinf(s->psnr_db));
+    EXPECT_EQ(s->max_channel, -1);
+    EXPECT_EQ(s->max_x, -1);
+  }
+  const Verdict v = judge(cmp, Tolerance{});
+  const std::string table = to_table(cmp, Tolerance{}, v);
+  EXPECT_NE(table.find("PSNR dB                   inf            inf"), std::string::npos) << table;
+  EXPECT_NE(table.find("  at x,y ch                 -              -"), std::string::npos) << table;
+  const auto j = to_json(cmp, Tolerance{}, v);
+  EXPECT_TRUE(j["image"]["psnr_db"].is_null());
+  EXPECT_TRUE(j["image"]["max_at"].is_null());
+
+  // One byte off against an 8-bit reference is 1 LSB exactly, so not over --fail-lsb 1 (the
+  // float k/255 made it 1 +- 8e-6, over it about half the time).
+  Image step = img;
+  for (int x = 0; x < 16; ++x) step.at(x, 0)[1] = byte(256 - x * 16 - (x == 0 ? 2 : 0));
+  write_image(path("step.png"), step);
+  const Comparison one = compare_files(path("step.png"), path("a.png"));
+  EXPECT_EQ(one.image.max_lsb, 1.0);
+  EXPECT_EQ(judge(one, Tolerance{}).failing_pixels, 0u);
+}
+
 TEST_F(CompareFiles, ReferenceWithoutAlphaIsAllCovered) {
   write_image(path("ref.png"), filled(5, 3, 0.5f, 0.5f, 0.5f, 0.0f));  // PNG drops alpha
   const Comparison cmp = compare_files(path("ref.png"), path("ref.png"));
@@ -563,6 +600,21 @@ TEST_F(CompareCli, JsonHasEveryFigure) {
   EXPECT_EQ(self["encoding"], "float");
   EXPECT_TRUE(self["covered"]["psnr_db"].is_null());
   EXPECT_EQ(self["covered"]["max_lsb"], 0.0);
+}
+
+// Issue 24: `compare REF TEST` swapped was silently accepted.
+TEST_F(CompareCli, SwappedArgumentsAreRefusedWithTheRightOrder) {
+  write_scene();
+  const CliResult r = run(q("ref.exr") + " " + q("same.png"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "ltrender: error: " + path("same.png") + ": REF is an 8-bit image and TEST " +
+                       path("ref.exr") +
+                       " a float one: the float reference comes second (ltrender compare " +
+                       path("same.png") + " " + path("ref.exr") + ")\n");
+  // Two 8-bit files (a render against a golden) and two float files are compared as given.
+  EXPECT_EQ(run(q("same.png") + " " + q("off.png") + " --fail-lsb 20").code, 0);
+  EXPECT_EQ(run(q("ref.exr") + " " + q("ref.exr")).code, 0);
 }
 
 TEST_F(CompareCli, OverThresholdExitsOne) {

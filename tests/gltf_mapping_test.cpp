@@ -185,6 +185,37 @@ TEST_F(GltfMapping, ACameraIsChosenByItsNameOrItsNodes) {
   EXPECT_THROW(load_scene(file, {"top"}), InputError);
 }
 
+// Issue 24: unnamed cameras could not be picked, and the error listed them as "none".
+TEST_F(GltfMapping, AnUnnamedCameraIsChosenByItsIndexAndListedAsOne) {
+  test::GltfWriter w = test::volume_quad();
+  w.doc["cameras"][0].erase("name");
+  w.doc["nodes"].back().erase("name");
+  w.doc["cameras"].push_back(
+      {{"type", "orthographic"},
+       {"orthographic", {{"xmag", 1}, {"ymag", 4}, {"znear", 0.1}, {"zfar", 10}}}});
+  w.root({{"camera", 1}, {"translation", {0, 0, 5}}});
+  const fs::path file = w.write_gltf(dir_.path(), "m");
+  EXPECT_EQ(load_scene(file).camera.height, 3);  // the first one, as before
+  for (const char* second : {"#1", "1"}) {
+    const Scene s = load_scene(file, {second});
+    EXPECT_EQ(s.camera.height, 8) << second;  // 2 x ymag
+    EXPECT_EQ(s.camera.eye.z, 5) << second;
+  }
+  EXPECT_EQ(load_scene(file, {"#0"}).camera.height, 3);
+  try {
+    load_scene(file, {"#2"});
+    FAIL() << "no camera #2";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "--camera");
+    EXPECT_NE(std::string(e.what()).find("(cameras: #0, #1)"), std::string::npos) << e.what();
+  }
+  // A name wins over an index: a camera named "1" is the one "1" picks.
+  w.doc["cameras"][0]["name"] = "1";
+  const fs::path named = w.write_gltf(dir_.path(), "named");
+  EXPECT_EQ(load_scene(named, {"1"}).camera.height, 3);
+  EXPECT_EQ(load_scene(named, {"#1"}).camera.height, 8);
+}
+
 TEST_F(GltfMapping, NodeTransformsComposeDownTheHierarchy) {
   test::GltfWriter w = test::volume_quad();
   // Parent: translate (10, 0, 0), scale 2 (TRS); child: a matrix translating (0, 1, 0)

@@ -1,6 +1,8 @@
 // A glTF file as an object of a JSON scene: {"gltf": FILE, "node": NAME, "material": M}.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "core/error.h"
 #include "gltf_test_util.h"
 #include "scene/scene.h"
@@ -54,6 +56,37 @@ TEST_F(GltfObject, WithoutAMaterialTheFilesMaterialsAreMappedAndAppended) {
   bool noted = false;
   for (const auto& n : s.import_notes) noted |= n.find("brings no lights") != std::string::npos;
   EXPECT_TRUE(noted);
+}
+
+// Two objects of one file share its materials and its notes (issue 24: `info` listed each
+// twice, and gx refused the scene for two materials with one C name).
+TEST_F(GltfObject, TwoObjectsOfOneFileShareItsMaterialsAndNotes) {
+  const json s = {
+      {"image", {{"width", 32}, {"height", 24}}},
+      {"camera", {{"eye", {0, 0, 4}}, {"target", {0, 0, 0}}}},
+      {"materials", {{"white", {{"albedo", {1, 1, 1}}}}}},
+      {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
+      {"objects",
+       {{{"gltf", "m.gltf"}}, {{"gltf", "./m.gltf"}, {"transform", {{"translate", {3, 0, 0}}}}}}}};
+  test::write_file(dir_ / "two.json", s.dump());
+  const Scene scene = load_scene(dir_ / "two.json");
+  ASSERT_EQ(scene.objects.size(), 2u);
+  ASSERT_EQ(scene.materials.size(), 2u) << "white, and jade once";
+  EXPECT_EQ(scene.objects[0].material, 1);
+  EXPECT_EQ(scene.objects[1].material, 1);
+  EXPECT_NE(scene.objects[0].mesh.positions[0], scene.objects[1].mesh.positions[0]);
+  std::set<std::string> unique(scene.import_notes.begin(), scene.import_notes.end());
+  EXPECT_EQ(unique.size(), scene.import_notes.size());
+  EXPECT_FALSE(scene.import_notes.empty());
+
+  const auto info = test::run_ltrender("info " + (dir_ / "two.json").string());
+  EXPECT_EQ(info.exit_code, 0) << info.err;
+  size_t jade_lines = 0;
+  for (size_t at = info.out.find("  material jade:"); at != std::string::npos;
+       at = info.out.find("  material jade:", at + 1))
+    ++jade_lines;
+  EXPECT_EQ(jade_lines, 1u) << info.out;
+  EXPECT_NE(info.out.find("path gx"), std::string::npos) << info.out;
 }
 
 TEST_F(GltfObject, AnUnknownNodeOrAMissingFileNamesTheScenesKey) {

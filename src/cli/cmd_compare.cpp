@@ -104,7 +104,9 @@ Action add_compare(CLI::App& app) {
   sub->add_option("TEST", opt->test, "Image under test (8-bit PNG, or EXR compared unquantised)")
       ->required()
       ->type_name("FILE");
-  sub->add_option("REF", opt->reference, "Reference image (EXR; alpha is the coverage mask)")
+  sub->add_option("REF", opt->reference,
+                  "Reference image (EXR; alpha is the coverage mask); an 8-bit REF with a float "
+                  "TEST is refused as the two swapped")
       ->required()
       ->type_name("FILE");
   sub->add_option("--fail-lsb", opt->fail_lsb,

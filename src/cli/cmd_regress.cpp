@@ -21,12 +21,16 @@ Action add_regress(CLI::App& app) {
       "regress", "Render scenes through paths and compare each image with its golden");
   sub->add_option("SCENE_OR_DIR", *inputs, "Scene files, or folders of them (their *.json)")
       ->required();
-  sub->add_option("--goldens", *goldens, "Folder of goldens: SCENE__PATH[__VARIANT].png")
+  sub->add_option("--goldens", *goldens,
+                  "Folder of goldens: SCENE__PATH[__VARIANT].png; it must exist unless --update "
+                  "(which creates it)")
       ->required();
   sub->add_option("--paths", o->paths,
                   "Comma-separated PATH (default variant), PATH:VARIANT or PATH:* (every "
                   "variant); default: every path but flat");
-  sub->add_flag("--update", o->update, "Write the goldens that are missing or fail, and list them");
+  sub->add_flag("--update", o->update,
+                "Write the goldens that are missing or fail, and list them (created: the file "
+                "written; updated: the figures that moved it)");
   sub->add_option("--junit", *junit, "Write JUnit XML (one testcase per scene, path, variant)");
   sub->add_option("--json", *json, "Write every case's figures as JSON");
   sub->add_option("--shard", *shard, "Run shard I of N of the cases (1-based), e.g. 2/4")

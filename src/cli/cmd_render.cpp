@@ -93,7 +93,9 @@ Action add_render(CLI::App& app) {
   sub->add_option("--height", a->height, "Override the scene's height")
       ->check(CLI::Range(1, 16384));
   sub->add_option("--camera", a->camera,
-                  "glTF scenes: the camera (or the node holding it) to look through, by name");
+                  "glTF scenes: the camera to look through, by its name or its node's, or by "
+                  "its index '#N' (or N) for /cameras/N; a name wins over an index")
+      ->type_name("NAME|#N");
   sub->add_option("-o,--output", a->output, "OUT.png (8-bit) or OUT.exr (float, A = coverage)")
       ->required();
   sub->add_option("--program", a->program,

@@ -34,6 +34,20 @@ int main(int argc, char** argv) {
   std::vector<lt::cli::Action> actions;
   for (auto reg : registrations) actions.push_back(reg(app));
 
+  // CLI11 takes an unknown first word for a stray argument and reports "A subcommand is
+  // required"; name the word and the subcommands instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+      known = known || sub->check_name(argv[1]);
+    }
+    if (!known)
+      return usage_error(std::string("usage: unknown subcommand '") + argv[1] +
+                         "' (subcommands: " + names + ")");
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -26,8 +26,9 @@ class RegionAccumulator {
     for (int c = 0; c < 3; ++c) {
       sum_ += e[c];
       sum_sq_ += e[c] * e[c];
-      // Strictly greater: the first pixel in reading order (top-left first, R first) wins ties.
-      if (e[c] > stats_.max_lsb || stats_.max_x < 0) {
+      // Strictly greater: the first pixel in reading order (top-left first, R first) wins ties,
+      // and a region without error keeps no location (max_lsb starts at 0).
+      if (e[c] > stats_.max_lsb) {
         stats_.max_lsb = e[c];
         stats_.max_x = x, stats_.max_y = y, stats_.max_channel = c;
       }
@@ -119,7 +120,17 @@ std::string location_string(const ErrorStats& s) {
 
 }  // namespace
 
-double channel_error_lsb(float test, float reference, TestEncoding encoding) {
+double channel_error_lsb(float test, float reference, TestEncoding encoding,
+                         TestEncoding reference_encoding) {
+  if (reference_encoding == TestEncoding::kUnorm8) {
+    // An 8-bit reference (a golden) holds k/255, which a float only approximates: float(k/255)
+    // * 255 is k give or take 8e-6, enough to print a PSNR of 159 dB for two identical files and
+    // to count a 1 LSB step as more than 1 LSB. to_unorm8 gives back its byte k exactly, the
+    // value metrics.md's formula means (and k/255 is in [0, 1] already).
+    const double k = to_unorm8(reference);
+    return encoding == TestEncoding::kUnorm8 ? std::abs(to_unorm8(test) - k)
+                                             : std::abs(clamp01(test) * 255.0 - k);
+  }
   // The reference is clamped because the displayed range is [0, 1]: a reference value of 1.3
   // shows as white, and an output that shows white is right.
   const double r = clamp01(reference);
@@ -135,7 +146,8 @@ double channel_error_lsb(float test, float reference, TestEncoding encoding) {
   return std::abs(clamp01(test) - r) * 255.0;
 }
 
-Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding) {
+Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding,
+                          TestEncoding reference_encoding) {
   LT_CHECK(test.width == reference.width && test.height == reference.height,
            "test " + size_string(test) + " vs reference " + size_string(reference));
   LT_CHECK(test.rgba.size() == test.pixel_count() * 4 &&
@@ -164,7 +176,8 @@ Comparison compare_images(const Image& test, const Image& reference, TestEncodin
         continue;
       }
       double e[3];
-      for (int c = 0; c < 3; ++c) e[c] = channel_error_lsb(o[c], r[c], encoding);
+      for (int c = 0; c < 3; ++c)
+        e[c] = channel_error_lsb(o[c], r[c], encoding, reference_encoding);
       out.pixel_error_lsb[i] = std::max({e[0], e[1], e[2]});
       image.add(x, y, e);
       if (out.covered_mask[i]) covered.add(x, y, e);
@@ -200,7 +213,8 @@ Verdict judge(const Comparison& comparison, const Tolerance& tolerance) {
                         " non-finite values (NaN/Inf) in the test image, in " +
                         std::to_string(comparison.test_non_finite_pixels) + " pixels");
   }
-  if (v.failing_percent > tolerance.fail_percent) {
+  v.over_fail_percent = v.failing_percent > tolerance.fail_percent;
+  if (v.over_fail_percent) {
     v.reasons.push_back(format("%g", v.failing_percent) + "% of " + where + " pixels (" +
                         std::to_string(v.failing_pixels) + " of " + std::to_string(stats.pixels) +
                         ") have error > " + format("%g", tolerance.fail_lsb) + " LSB, allowed " +
@@ -225,6 +239,16 @@ Comparison compare_files(const std::filesystem::path& test,
   const Image test_image = read_image(test);
   const Image reference_image = read_image(reference);
   const TestEncoding encoding = encoding_of(test);
+  const TestEncoding reference_encoding = encoding_of(reference);
+  // What makes a reference: the float image (the reference path's EXR, alpha = coverage) that an
+  // 8-bit render is judged against. An 8-bit REF with a float TEST can only be the two swapped:
+  // judged that way round the float image would be measured against a quantised copy of itself.
+  if (encoding == TestEncoding::kFloat && reference_encoding == TestEncoding::kUnorm8) {
+    throw InputError(reference.string(), "",
+                     "REF is an 8-bit image and TEST " + test.string() +
+                         " a float one: the float reference comes second (ltrender compare " +
+                         reference.string() + " " + test.string() + ")");
+  }
   if (test_image.width != reference_image.width || test_image.height != reference_image.height) {
     throw InputError(test.string(), "",
                      "size " + size_string(test_image) + " does not match the reference " +
@@ -240,7 +264,7 @@ Comparison compare_files(const std::filesystem::path& test,
       }
     }
   }
-  return compare_images(test_image, reference_image, encoding);
+  return compare_images(test_image, reference_image, encoding, reference_encoding);
 }
 
 nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& tolerance,

@@ -33,8 +33,11 @@ enum class TestEncoding {
 };
 
 // Per-channel error in LSB of one TEST value against one reference value (the formula of
-// metrics.md; see compare.cpp for why each side is clamped).
-double channel_error_lsb(float test, float reference, TestEncoding encoding);
+// metrics.md; see compare.cpp for why each side is clamped). `reference_encoding` is how the
+// reference stores its values, with the same two meanings: kUnorm8 for an 8-bit golden, whose
+// values are k/255 exactly and are compared as the bytes k (see compare.cpp).
+double channel_error_lsb(float test, float reference, TestEncoding encoding,
+                         TestEncoding reference_encoding = TestEncoding::kFloat);
 
 // A pixel is covered when the reference's alpha (coverage) is over one half.
 inline bool is_covered(float reference_alpha) {
@@ -44,7 +47,9 @@ inline bool is_covered(float reference_alpha) {
 struct ErrorStats {
   size_t pixels = 0;  // finite pixels in the region (the channel figures use 3 * pixels values)
   double max_lsb = 0.0;
-  int max_x = -1, max_y = -1, max_channel = -1;  // where max_lsb is; -1 when the region is empty
+  // Where max_lsb is (the first such value in reading order); -1 when the region is empty or has
+  // no error at all: a location of "the largest of zeros" would point at a pixel for nothing.
+  int max_x = -1, max_y = -1, max_channel = -1;
   double mean_lsb = 0.0;
   double rmse_lsb = 0.0;
   double psnr_db = std::numeric_limits<double>::infinity();  // peak 1.0; inf when RMSE is 0
@@ -87,6 +92,7 @@ struct Verdict {
   bool pass = true;
   size_t failing_pixels = 0;  // error > fail_lsb in the region
   double failing_percent = 0.0;
+  bool over_fail_percent = false;    // failing_percent > fail_percent: one of the reasons
   size_t hard_failing_pixels = 0;    // error > hard_fail_lsb in the region
   std::vector<std::string> reasons;  // one line per failed criterion; empty when pass
 };
@@ -94,7 +100,8 @@ struct Verdict {
 // Pure computation on in-memory images. Both must have the same size (LT_CHECK: callers that
 // take images from the user go through compare_files, which reports a mismatch as an
 // InputError) and the reference must be finite (LT_CHECK, likewise).
-Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding);
+Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding,
+                          TestEncoding reference_encoding = TestEncoding::kFloat);
 
 Verdict judge(const Comparison& comparison, const Tolerance& tolerance);
 
@@ -103,14 +110,17 @@ Verdict judge(const Comparison& comparison, const Tolerance& tolerance);
 TestEncoding encoding_of(const std::filesystem::path& path);
 
 // Reads both files and compares them. Throws InputError for a missing or unreadable file, a
-// size mismatch (naming both sizes) or a reference with non-finite values.
+// size mismatch (naming both sizes), a reference with non-finite values, or a float TEST against
+// an 8-bit REF: the arguments swapped, since a reference is never coarser than what it judges
+// (the message says which file comes first).
 Comparison compare_files(const std::filesystem::path& test, const std::filesystem::path& reference);
 
 // All figures as one JSON object, keys in this order: "encoding", "width", "height", "covered" and
-// "image" (ErrorStats; "max_at" is null for an empty region), "test_non_finite", "thresholds",
-// "failing_pixels", "failing_percent", "hard_failing_pixels", "reasons", "pass". Infinite values (a
-// PSNR of identical images, the default hard_fail_lsb) are written as null: JSON has no infinity,
-// and null cannot be mistaken for a measured number.
+// "image" (ErrorStats; "max_at" is null for a region that is empty or has no error),
+// "test_non_finite", "thresholds", "failing_pixels", "failing_percent", "hard_failing_pixels",
+// "reasons", "pass". Infinite values (the PSNR of a region without error, the default
+// hard_fail_lsb) are written as null: JSON has no infinity, and null cannot be mistaken for a
+// measured number (the text table prints "inf").
 nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& tolerance,
                                const Verdict& verdict);
 

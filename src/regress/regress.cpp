@@ -20,10 +20,18 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string figures_line(const ErrorStats& s, const Verdict& v) {
-  return "max " + fixed(s.max_lsb, 2) + " LSB, mean " + fixed(s.mean_lsb, 3) + " LSB, " +
-         std::to_string(v.failing_pixels) + " pixels (" + fixed(v.failing_percent, 3) +
-         "%) over fail_lsb";
+// The figures, then the verdict's reasons. A reason states its own figures (the failing share,
+// the max and where it is), so the figures line leaves out what a reason states: each figure
+// once per line.
+std::string case_message(const ErrorStats& s, const Verdict& v) {
+  const bool max_in_reason = v.hard_failing_pixels > 0;
+  std::string line = max_in_reason ? "" : "max " + fixed(s.max_lsb, 2) + " LSB, ";
+  line += "mean " + fixed(s.mean_lsb, 3) + " LSB";
+  if (!v.over_fail_percent)
+    line += ", " + std::to_string(v.failing_pixels) + " pixels (" + fixed(v.failing_percent, 3) +
+            "%) over fail_lsb";
+  for (const std::string& reason : v.reasons) line += "; " + reason;
+  return line;
 }
 
 // A directory every output needs before any work: its parent must exist (as for every output
@@ -62,6 +70,22 @@ struct Plan {
   std::vector<RegressCase> cases;  // every shard's
 };
 
+// A scene a path cannot take at all (gx: two materials with one C name, a thickness map over
+// 1024 texels) is refused when the path is built: bad input like a bad scene. Every case's path
+// is built once here, at 1x1 (enough to build programs, as `info` does), every shard's cases,
+// so that the run stops before any golden is written. A variant that cannot be exact is a
+// skipped case instead (expand_cases).
+void check_every_path_builds(const Plan& plan) {
+  for (size_t s = 0; s < plan.scenes.size(); ++s) {
+    std::optional<RenderSession> session;
+    for (const RegressCase& c : plan.cases) {
+      if (c.scene_index != s || !c.skip_reason.empty()) continue;
+      if (!session) session.emplace(plan.scenes[s], 1, 1);
+      (void)session->build(*c.path, c.variant);
+    }
+  }
+}
+
 Plan make_plan(const RegressOptions& o) {
   Plan plan;
   plan.scene_files = collect_scene_files(o.inputs);
@@ -85,6 +109,12 @@ Plan make_plan(const RegressOptions& o) {
   std::error_code ec;
   if (fs::exists(o.goldens, ec) && !fs::is_directory(o.goldens, ec))
     throw InputError(o.goldens.string(), "", "--goldens must be a folder");
+  // Without --update a missing folder is a wrong path, not a dozen missing goldens; --update
+  // creates it (the first run of a new suite).
+  if (!o.update && !fs::exists(o.goldens, ec))
+    throw InputError(o.goldens.string(), "",
+                     "no such folder of goldens (--update creates it and writes them)");
+  check_every_path_builds(plan);
   return plan;
 }
 
@@ -123,8 +153,8 @@ CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& se
         // the pixels the scene draws (the default judges every pixel).
         for (size_t i = 0; i < golden.pixel_count(); ++i)
           golden.rgba[i * 4 + 3] = render.rgba[i * 4 + 3];
-        // Compared as the 8-bit image it would be written as: the golden is one.
-        comparison = compare_images(render, golden, TestEncoding::kUnorm8);
+        // Compared as the 8-bit image it would be written as, against the golden's bytes.
+        comparison = compare_images(render, golden, TestEncoding::kUnorm8, TestEncoding::kUnorm8);
       }
     } catch (const InputError& e) {
       r.message = std::string("cannot read the golden: ") + e.what();
@@ -135,8 +165,7 @@ CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& se
     r.figures = c.tolerance.region == Region::kCovered ? comparison->covered : comparison->image;
     r.comparison_json = to_json(*comparison, c.tolerance, r.verdict);
     r.details = to_table(*comparison, c.tolerance, r.verdict);
-    r.message = figures_line(*r.figures, r.verdict);
-    for (const std::string& reason : r.verdict.reasons) r.message += "; " + reason;
+    r.message = case_message(*r.figures, r.verdict);
     if (!o.report_dir.empty()) {
       r.golden_image = "images/" + stem + "__golden.png";
       copy_file_atomically(r.golden, o.report_dir / r.golden_image);
@@ -148,6 +177,7 @@ CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& se
   if (o.update) {
     r.status = pass ? CaseStatus::kKept : have_golden ? CaseStatus::kUpdated : CaseStatus::kCreated;
     if (!pass) write_image(r.golden, render);
+    if (!have_golden) r.message = "wrote " + r.golden.string();
   } else if (!have_golden) {
     r.status = CaseStatus::kMissing;
     r.message = "no golden " + r.golden.string() +
@@ -167,7 +197,8 @@ void print_case(const RegressOptions& o, const CaseResult& r) {
   std::string status = to_string(r.status);
   if (is_failure(r.status))
     for (char& ch : status) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-  std::printf("%-7s %s: %s\n", status.c_str(), r.regress_case.id().c_str(), r.message.c_str());
+  std::printf("%-7s %s%s%s\n", status.c_str(), r.regress_case.id().c_str(),
+              r.message.empty() ? "" : ": ", r.message.c_str());
   std::fflush(stdout);
 }
 

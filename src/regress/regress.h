@@ -70,8 +70,10 @@ struct RegressRun {
   bool failed() const;
 };
 
-// Reads and checks every input first: a bad scene, path list or output path throws InputError
-// before anything is rendered or written. Prints one line per case (to stderr) unless quiet.
+// Reads and checks every input first: a bad scene, path list or output path, a --goldens folder
+// that does not exist (without --update), or a scene one of the paths refuses when it is built
+// throws InputError before anything is rendered or written. Prints one line per case (to
+// stdout) unless quiet.
 RegressRun run_regress(const RegressOptions& options);
 
 // --junit, --json and the report page (-o), each written atomically; what the options name.

@@ -530,7 +530,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
     transform_to_world(mesh, obj.transform.matrix());
     obj.mesh = std::move(mesh);
   }
-  for (const gltf::ObjectImport& g : gltf_objects) gltf::import_objects(g, file, scene);
+  gltf::import_objects(gltf_objects, file, scene);
   return scene;
 }
 

@@ -1,10 +1,12 @@
 #include "scene/gltf/gltf_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "core/error.h"
 #include "scene/gltf/gltf_document.h"
@@ -234,6 +236,46 @@ bool camera_named(const Document& doc, const CameraInstance& c, const std::strin
          doc.model.nodes[static_cast<std::size_t>(c.node)].name == name;
 }
 
+// `--camera #N` (or N): the camera at /cameras/N, the one way to pick a camera without a name.
+// -1 when `text` is not an index.
+int camera_index(const std::string& text) {
+  const std::string digits = text.rfind('#', 0) == 0 ? text.substr(1) : text;
+  if (digits.empty() || digits.size() > 6 ||
+      !std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
+    return -1;
+  return std::stoi(digits);
+}
+
+// How `--camera` can name a camera the scene places: its name, else its node's, else #N.
+std::string camera_label(const Document& doc, const CameraInstance& c) {
+  const std::string& name = doc.model.cameras[static_cast<std::size_t>(c.camera)].name;
+  if (!name.empty()) return name;
+  const std::string& node = doc.model.nodes[static_cast<std::size_t>(c.node)].name;
+  if (!node.empty()) return node;
+  std::string index = "#";  // appended, not "#" + ...: GCC 12 warns falsely (-Wrestrict) on that
+  return index += std::to_string(c.camera);
+}
+
+// The camera `--camera` asks for: by name (of the camera or its node) first, so a camera named
+// "2" stays reachable by its name, then by index.
+const CameraInstance& chosen_camera(const Document& doc, const std::vector<CameraInstance>& cameras,
+                                    const std::string& wanted) {
+  auto it = std::find_if(cameras.begin(), cameras.end(),
+                         [&](const CameraInstance& c) { return camera_named(doc, c, wanted); });
+  const int index = camera_index(wanted);
+  if (it == cameras.end() && index >= 0)
+    it = std::find_if(cameras.begin(), cameras.end(),
+                      [&](const CameraInstance& c) { return c.camera == index; });
+  if (it != cameras.end()) return *it;
+  std::string labels;
+  for (const CameraInstance& c : cameras)
+    labels += (labels.empty() ? "" : ", ") + camera_label(doc, c);
+  throw InputError("--camera", wanted,
+                   "no camera of that name or index (#N: /cameras/N) on a node of the scene in " +
+                       doc.path.string() + " (cameras: " + (labels.empty() ? "none" : labels) +
+                       ")");
+}
+
 // The product of a node's ancestors' transforms (glTF 2.0 §3.5.3: world = parent's world x
 // local), found through the children lists.
 glm::dmat4 ancestors_matrix(const Document& doc, int node) {
@@ -262,10 +304,22 @@ const std::vector<int>& scene_roots(const Document& doc, int& scene_index) {
 
 }  // namespace
 
-void import_objects(const ObjectImport& object, const std::string& scene_file, Scene& scene) {
-  const Document doc = read_document(object.path);
-  Importer im{doc, scene, {}, {}, 0};
-  scene.import_notes.insert(scene.import_notes.end(), doc.warnings.begin(), doc.warnings.end());
+namespace {
+
+// A file the JSON scene imports, read once however many objects take it: its materials are
+// mapped once (two objects of one file share them; appended twice they would be two materials
+// of one name, listed twice by `info` and refused by gx's C names), and a note it gives once.
+struct ImportedFile {
+  Document doc;
+  std::map<int, int> material_of;  // as Importer::material_of, kept between its objects
+  std::set<std::string> notes;
+};
+
+void import_object(const ObjectImport& object, ImportedFile& file, const std::string& scene_file,
+                   Scene& scene) {
+  const Document& doc = file.doc;
+  const std::size_t first_note = scene.import_notes.size();
+  Importer im{doc, scene, file.material_of, {}, 0};
   for (const SceneObject& o : scene.objects) im.vertices += o.mesh.positions.size();
   im.import_lights = false;
   im.material_override = object.material;
@@ -291,6 +345,35 @@ void import_objects(const ObjectImport& object, const std::string& scene_file, S
             " of " + object.path.string());
   for (std::size_t i = first; i < scene.objects.size(); ++i)
     scene.objects[i].transform = Transform{};
+  file.material_of = im.material_of;
+  // The file's notes once: a second object of the file repeats what the first one noted.
+  auto kept = scene.import_notes.begin() + static_cast<std::ptrdiff_t>(first_note);
+  for (auto it = kept; it != scene.import_notes.end(); ++it) {
+    if (!file.notes.insert(*it).second) continue;
+    if (kept != it) *kept = std::move(*it);
+    ++kept;
+  }
+  scene.import_notes.erase(kept, scene.import_notes.end());
+}
+
+}  // namespace
+
+void import_objects(const std::vector<ObjectImport>& objects, const std::string& scene_file,
+                    Scene& scene) {
+  std::map<fs::path, ImportedFile> files;
+  for (const ObjectImport& object : objects) {
+    auto it = files.find(object.path.lexically_normal());
+    if (it == files.end()) {
+      it = files
+               .emplace(object.path.lexically_normal(),
+                        ImportedFile{read_document(object.path), {}, {}})
+               .first;
+      for (const std::string& w : it->second.doc.warnings) {
+        if (it->second.notes.insert(w).second) scene.import_notes.push_back(w);
+      }
+    }
+    import_object(object, it->second, scene_file, scene);
+  }
 }
 
 Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
@@ -313,19 +396,7 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
     doc.fail("/scenes/" + std::to_string(scene_index), "the scene has no mesh to render");
 
   if (!camera.empty()) {
-    auto it = std::find_if(im.cameras.begin(), im.cameras.end(),
-                           [&](const CameraInstance& c) { return camera_named(doc, c, camera); });
-    if (it == im.cameras.end()) {
-      std::string names;
-      for (const CameraInstance& c : im.cameras) {
-        names += (names.empty() ? "" : ", ") +
-                 doc.model.cameras[static_cast<std::size_t>(c.camera)].name;
-      }
-      throw InputError("--camera", camera,
-                       "no camera of that name in " + path.string() +
-                           " (cameras: " + (names.empty() ? "none" : names) + ")");
-    }
-    im.camera_from(*it);
+    im.camera_from(chosen_camera(doc, im.cameras, camera));
   } else if (!im.cameras.empty()) {
     im.camera_from(im.cameras.front());
   } else {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -31,11 +32,13 @@ struct ObjectImport {
   glm::dmat4 placement{1.0};  // the object's transform, applied after the file's
 };
 
-// Appends the meshes of the node (its subtree, in the node's world transform in the file) or of
-// the whole scene to `scene`, with the file's materials (mapped as above, appended) unless one
-// is given. The file's lights and cameras are not imported (noted): the JSON scene has its own.
+// Appends, for each object, the meshes of the node (its subtree, in the node's world transform
+// in the file) or of the whole scene to `scene`, with the file's materials (mapped as above,
+// appended once per file however many objects import it) unless one is given; each note once
+// per file. The file's lights and cameras are not imported (noted): the JSON scene has its own.
 // The scene limits count these objects, vertices and materials with the scene's. Throws
 // InputError naming `scene_file` and the key for a node the file does not have.
-void import_objects(const ObjectImport& object, const std::string& scene_file, Scene& scene);
+void import_objects(const std::vector<ObjectImport>& objects, const std::string& scene_file,
+                    Scene& scene);
 
 }  // namespace lt::gltf
