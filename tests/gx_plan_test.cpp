@@ -33,8 +33,7 @@ void expect_vertex_format(const VertexFormatPlan& v, const GxState& st, const st
   if (v.t) EXPECT_EQ(st.texcoord_formats.kind[0], TexCoordFormats::S) << at;
   if (v.uv) {
     EXPECT_TRUE(st.vertex.has(kVaTex0 + v.uv_attribute())) << at;
-    EXPECT_EQ(st.texcoord_formats.kind[static_cast<size_t>(v.uv_attribute())],
-              TexCoordFormats::ST)
+    EXPECT_EQ(st.texcoord_formats.kind[static_cast<size_t>(v.uv_attribute())], TexCoordFormats::ST)
         << at;
   }
   expected += v.t + v.uv;
@@ -92,9 +91,11 @@ void expect_texgens(const MaterialPlan& m, const PassPlan& p, const GxState& st,
     EXPECT_EQ(s.matrix, g.matrix.value()) << at;
     if (g.matrix_values) {
       // GX_MTX2x4 loads two rows [OGC gx.c L2902-2918].
-      const TexMatrix& mtx = st.texgen.matrices[static_cast<size_t>(g.matrix_values->slot.value() / 3)];
+      const TexMatrix& mtx =
+          st.texgen.matrices[static_cast<size_t>(g.matrix_values->slot.value() / 3)];
       for (size_t r = 0; r < 2; ++r)
-        for (size_t c = 0; c < 4; ++c) EXPECT_EQ(mtx[r][c], g.matrix_values->values[r * 4 + c]) << at;
+        for (size_t c = 0; c < 4; ++c)
+          EXPECT_EQ(mtx[r][c], g.matrix_values->values[r * 4 + c]) << at;
     }
     if (!g.texture) continue;
     const TexturePlan& t = *g.texture;
@@ -153,11 +154,10 @@ void expect_pixel_engine(const PixelEnginePlan& p, const GxState& st, const std:
   EXPECT_EQ(st.z.enable, p.z_enable.value() != 0) << at;
   EXPECT_EQ(st.z.func, p.z_func.value()) << at;
   EXPECT_EQ(st.z.update, p.z_update.value() != 0) << at;
-  EXPECT_EQ(st.alpha_compare, (AlphaCompare{static_cast<u8>(p.alpha_comp0.value()),
-                                            static_cast<u8>(p.alpha_ref0),
-                                            static_cast<u8>(p.alpha_op.value()),
-                                            static_cast<u8>(p.alpha_comp1.value()),
-                                            static_cast<u8>(p.alpha_ref1)}))
+  EXPECT_EQ(st.alpha_compare,
+            (AlphaCompare{static_cast<u8>(p.alpha_comp0.value()), static_cast<u8>(p.alpha_ref0),
+                          static_cast<u8>(p.alpha_op.value()),
+                          static_cast<u8>(p.alpha_comp1.value()), static_cast<u8>(p.alpha_ref1)}))
       << at;
   EXPECT_EQ(st.cull_mode, p.cull.value()) << at;
   EXPECT_EQ(st.cull_mode, kCullNone) << at << ": every generated pass draws both sides";
@@ -200,8 +200,8 @@ int expect_plan_matches_program(const Scene& scene, const GxVariant& v, const st
 }
 
 TEST(GxPlan, EveryDemoSceneAndVariantProgramSetsWhatThePlanSays) {
-  const char* const variants[] = {"t=vertex", "t=vertex:lut=16", "t=vertex:map=rgb565",
-                                  "t=texgen", "lobe=xf-spec"};
+  const char* const variants[] = {"t=vertex", "t=vertex:lut=16", "t=vertex:map=rgb565", "t=texgen",
+                                  "lobe=xf-spec"};
   int compared = 0, xf_spec = 0, maps = 0;
   for (const char* folder : {"scenes", "scenes/ortho", "scenes/maps", "scenes/figures"}) {
     for (const std::string& s : test::json_files(folder)) {
@@ -253,8 +253,9 @@ TEST(GxNames, CollidingMaterialNamesGetUniqueCNames) {
     m.name = n;
     scene.materials.push_back(m);
   }
-  EXPECT_EQ(material_c_names(scene), (std::vector<std::string>{"Material_20", "Material_20_2",
-                                                               "Material_20_2_2", "Material_20_3"}));
+  EXPECT_EQ(material_c_names(scene),
+            (std::vector<std::string>{"Material_20", "Material_20_2", "Material_20_2_2",
+                                      "Material_20_3"}));
   EXPECT_EQ(pass_function_name("Material_20_2", 1), "ltrender_Material_20_2_pass1");
 }
 
@@ -273,19 +274,20 @@ TEST(GxNames, CollidingMaterialsRenderExportAndReadBackToTheSameImage) {
       { "mesh": "quad.obj", "material": "Material.20", "transform": { "translate": [-1.1, 0, 0] } },
       { "mesh": "quad.obj", "material": "Material_20", "transform": { "translate": [1.1, 0, 0] } } ] })");
   const std::string scene = (dir / "two.json").string();
-  const test::RunResult ex = test::run_ltrender("export gx " + scene + " -o " + (dir / "e.c").string());
+  const test::RunResult ex =
+      test::run_ltrender("export gx " + scene + " -o " + (dir / "e.c").string());
   ASSERT_EQ(ex.exit_code, 0) << ex.err;
   const std::string c = test::read_file(dir / "e.c");
   EXPECT_NE(c.find("void ltrender_Material_20_pass0(void)"), std::string::npos);
   EXPECT_NE(c.find("void ltrender_Material_20_2_pass0(void)"), std::string::npos);
   EXPECT_NE(c.find("//   Material_20: \"Material.20\"\n"), std::string::npos) << c.substr(0, 3000);
   EXPECT_NE(c.find("//   Material_20_2: \"Material_20\"\n"), std::string::npos);
-  const test::RunResult gen = test::run_ltrender("render " + scene + " --path gx -o " +
-                                                 (dir / "gen.png").string());
+  const test::RunResult gen =
+      test::run_ltrender("render " + scene + " --path gx -o " + (dir / "gen.png").string());
   ASSERT_EQ(gen.exit_code, 0) << gen.err;
-  const test::RunResult back = test::run_ltrender("render " + scene + " --path gx --program " +
-                                                  (dir / "e.c").string() + " -o " +
-                                                  (dir / "back.png").string());
+  const test::RunResult back =
+      test::run_ltrender("render " + scene + " --path gx --program " + (dir / "e.c").string() +
+                         " -o " + (dir / "back.png").string());
   ASSERT_EQ(back.exit_code, 0) << back.err;
   EXPECT_EQ(test::read_file(dir / "gen.png"), test::read_file(dir / "back.png"));
   // Each quad shows its own material: the left one red, the right one green (the lookup maps

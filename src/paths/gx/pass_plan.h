@@ -10,11 +10,10 @@
 #pragma once
 
 #include <array>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "paths/gx/gx_types.h"
 #include "paths/gx/program/gx_names.h"
@@ -41,12 +40,12 @@ struct LightObjectPlan {
   Kind kind = Kind::Distance;
   std::string name;  // the C variable
   GxConst<NameGroup::Light> slot{"GX_LIGHT0"};
-  glm::vec3 position{0};          // eye space
-  Color8 color{};                 // normalised to 255 at its largest component
-  glm::vec3 direction_arg{0};     // what GX_InitLightDir is passed (it stores the negation)
+  glm::vec3 position{0};            // eye space
+  Color8 color{};                   // normalised to 255 at its largest component
+  glm::vec3 direction_arg{0};       // what GX_InitLightDir is passed (it stores the negation)
   std::array<float, 3> k{1, 0, 0};  // distance: (kc, kl, kq) / gain; fit: the denominator
   std::array<float, 3> a{1, 0, 0};  // fit: the numerator x the channel's magnitude
-  double gain = 1;                // distance: the magnitude moved into k
+  double gain = 1;                  // distance: the magnitude moved into k
 };
 
 // Which hardware lights a channel sums: printed as GX_LIGHTn when the plan names one light,
@@ -120,7 +119,8 @@ struct TevStagePlan {
   GxConst<NameGroup::Channel> channel{"GX_COLORNULL"};
   CombinerPlan<NameGroup::ColorArg> color{{"GX_CC_ZERO", "GX_CC_ZERO", "GX_CC_ZERO", "GX_CC_ZERO"}};
   // An alpha of 255 (KASEL 1) everywhere: the EFB keeps no alpha (RGB8_Z24).
-  CombinerPlan<NameGroup::AlphaArg> alpha{{"GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_KONST"}};
+  CombinerPlan<NameGroup::AlphaArg> alpha{
+      {"GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_KONST"}};
   GxConst<NameGroup::KAlphaSel> konst_alpha{"GX_TEV_KASEL_1"};
   std::string what;  // "Stage 0: out = COLOR0 x 2"
 };
@@ -150,7 +150,7 @@ struct PixelEnginePlan {
 // The figures the note reports: what the planner chose and what it could not hold.
 struct PassFigures {
   bool diffuse_only = false;
-  size_t light = 0;                // the pass's light (a diffuse-only pass: its first)
+  size_t light = 0;  // the pass's light (a diffuse-only pass: its first)
   int translucency_scale = 1, diffuse_scale = 1;
   bool translucency_saturates = false, diffuse_saturates = false;
   std::optional<double> fit_error;  // lobe=xf-spec: the fit's max error, in units of (a+s)

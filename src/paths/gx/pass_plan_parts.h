@@ -22,8 +22,7 @@ Color8 rgb8(const glm::dvec3& c);
 // One stage's order and colour inputs, scaled x1, x2 or x4; the rest as pass_plan.h's defaults.
 TevStagePlan tev_stage(int stage, GxConst<NameGroup::TexCoord> texcoord,
                        GxConst<NameGroup::TexMap> texmap, GxConst<NameGroup::Channel> channel,
-                       std::array<GxConst<NameGroup::ColorArg>, 4> in, int scale,
-                       std::string what);
+                       std::array<GxConst<NameGroup::ColorArg>, 4> in, int scale, std::string what);
 PixelEnginePlan pixel_engine(int pass);
 
 // A material's thickness map as GX_TEXMAP1's texture, and the thickness a texel of 255 means.
@@ -63,8 +62,7 @@ class PassPlanner {
   // pass_planner_textures.cpp
   TexturePlan lut_texture(MaterialPlan& mp) const;
   MapTexture map_texture(MaterialPlan& mp, const MapTexels& texels) const;
-  TexGenPlan lut_texgen(const Translucency& tr, const Light& light,
-                        const TexturePlan& lut) const;
+  TexGenPlan lut_texgen(const Translucency& tr, const Light& light, const TexturePlan& lut) const;
   static TexGenPlan map_texgen(const MapTexture& map, int texcoord, int uv_attribute);
   LightObjectPlan specular_light(const Translucency& tr, const Light& light,
                                  const glm::dvec3& color, double inv_gain,

@@ -253,11 +253,11 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
               c.uses_map};
   const glm::dvec3 pos = light_position_eye(view_, light);
   if (c.translucent && c.xf) {
-    p.lights.push_back(specular_light(*mat.translucency, light, c.trans_color, st_scale / c.s0,
-                                      p.figures));
+    p.lights.push_back(
+        specular_light(*mat.translucency, light, c.trans_color, st_scale / c.s0, p.figures));
   } else if (c.translucent) {
-    p.lights.push_back(distance_light("trans_light", 0, pos, c.trans_color, light,
-                                      c.s0 / st_scale));
+    p.lights.push_back(
+        distance_light("trans_light", 0, pos, c.trans_color, light, c.s0 / st_scale));
   }
   p.lights.push_back(
       distance_light("diffuse_light", 1, pos, light.color, light, max3(light.color) / c.sd));
@@ -282,8 +282,8 @@ void PassPlanner::light_channels(PassPlan& p, const PassChoice& c, const glm::dv
     if (c.vertex_t) c0.material_source = {"GX_SRC_VTX"};
     c0.lights = {1, true};
     c0.diffuse_fn = {"GX_DF_NONE"};
-    c0.attenuation_fn = c.xf ? GxConst<NameGroup::AttnFn>{"GX_AF_SPEC"}
-                             : GxConst<NameGroup::AttnFn>{"GX_AF_SPOT"};
+    c0.attenuation_fn =
+        c.xf ? GxConst<NameGroup::AttnFn>{"GX_AF_SPEC"} : GxConst<NameGroup::AttnFn>{"GX_AF_SPOT"};
     c0.what = c.xf ? "COLOR0A0 = T x clamp(light x albedo x (a + s lobe)): the lobe fitted as "
                      "the XF\nspecular attenuation (x = N.dir, rational in x)"
                    : "COLOR0A0 = T x clamp(att x light x albedo): the translucency base";
@@ -317,9 +317,8 @@ void PassPlanner::light_stages(PassPlan& p, const PassChoice& c, const Transluce
   if (c.lut) {
     const int a8 = to_unorm8(tr.ambient / (tr.ambient + light.translucency_scale));
     if (a8 > 0)
-      p.tev_register = TevRegisterPlan{{"GX_TEVREG0"},
-                                       Color8{u8(a8), u8(a8), u8(a8), 255},
-                                       "REG0 = 255 a / (a + s)"};
+      p.tev_register = TevRegisterPlan{
+          {"GX_TEVREG0"}, Color8{u8(a8), u8(a8), u8(a8), 255}, "REG0 = 255 a / (a + s)"};
     p.stages.push_back(tev_stage(
         stage++, {"GX_TEXCOORD0"}, {"GX_TEXMAP0"}, {"GX_COLORNULL"},
         {a8 ? GxConst<NameGroup::ColorArg>{"GX_CC_C0"} : GxConst<NameGroup::ColorArg>{"GX_CC_ZERO"},

@@ -63,20 +63,19 @@ TexturePlan PassPlanner::lut_texture(MaterialPlan& mp) const {
   t.array = "ltrender_lut_" + mp.c_name;
   t.width = w;
   t.height = 1;
-  t.format = i8 ? GxConst<NameGroup::TexFormat>{"GX_TF_I8"}
-                : GxConst<NameGroup::TexFormat>{"GX_TF_RGBA8"};
+  t.format =
+      i8 ? GxConst<NameGroup::TexFormat>{"GX_TF_I8"} : GxConst<NameGroup::TexFormat>{"GX_TF_RGBA8"};
   t.map = {"GX_TEXMAP0"};
   t.bytes = lut.data.size();
   t.what = std::string("The LUT: ") + (t.format.name() + 6) +
            ", linear, clamped (the clamp saturates t per pixel)";
-  const std::string what = tr.ramp ? "the lobe ramp " + tr.ramp->file.filename().string() +
-                                         " sampled at t"
-                                   : "lobe(t) = t^" + note_number(tr.power);
+  const std::string what =
+      tr.ramp ? "the lobe ramp " + tr.ramp->file.filename().string() + " sampled at t"
+              : "lobe(t) = t^" + note_number(tr.power);
   mp.arrays.push_back(
       {t.array, std::vector<u8>(lut.data.begin(), lut.data.end()),
        (tr.ramp ? "Lobe LUT" : "Power LUT") + std::string(" of material ") + mat.name + ": " +
-           what + ", " + std::to_string(w) + " texels " + t.format.name() +
-           " in GX tile order (" +
+           what + ", " + std::to_string(w) + " texels " + t.format.name() + " in GX tile order (" +
            (i8 ? "8x4 tiles, 32 bytes" : "4x4 tiles, 64 bytes: (a, r) then (g, b) pairs") +
            ";\nrow 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."});
   return t;
@@ -91,8 +90,8 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels) c
                      "gx: the thickness map is " + std::to_string(texels.width) + "x" +
                          std::to_string(texels.height) +
                          " texels; a GX texture is at most 1024 a side (resize the map)");
-  const ThicknessTexture tex = thickness_texture(texels.width, texels.height, *texels.rgb,
-                                                 texels.grey, variant_.map_rgb565);
+  const ThicknessTexture tex =
+      thickness_texture(texels.width, texels.height, *texels.rgb, texels.grey, variant_.map_rgb565);
   const TextureObject& o = tex.texture;
   MapTexture m;
   m.scale = tex.scale;
@@ -166,8 +165,8 @@ TexGenPlan PassPlanner::map_texgen(const MapTexture& map, int texcoord, int uv_a
       GxConst<NameGroup::TexGenSource>{"GX_TG_TEX0"}.value() + uv_attribute);
   g.matrix = {"GX_IDENTITY"};
   g.texture = map.texture;
-  g.what = "Texgen: (s, t) = (u, v) of the mesh, as sent in GX_VA_TEX" +
-           std::to_string(uv_attribute);
+  g.what =
+      "Texgen: (s, t) = (u, v) of the mesh, as sent in GX_VA_TEX" + std::to_string(uv_attribute);
   return g;
 }
 

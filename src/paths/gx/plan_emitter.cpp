@@ -101,7 +101,8 @@ void channels(Writer& w, const PassPlan& p) {
             light_mask(c.lights), gx(c.diffuse_fn), gx(c.attenuation_fn)},
            c.what);
     if (c.ambient) w.call("GX_SetChanAmbColor", {gx(c.channel), rgb(*c.ambient)});
-    if (c.material) w.call("GX_SetChanMatColor", {gx(c.channel), rgb(*c.material)}, c.material_what);
+    if (c.material)
+      w.call("GX_SetChanMatColor", {gx(c.channel), rgb(*c.material)}, c.material_what);
   }
 }
 

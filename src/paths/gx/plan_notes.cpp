@@ -28,8 +28,8 @@ std::string textures(const PassPlan& p) {
   if (lut) s += ", 1 texture (LUT " + std::to_string(lut->width) + " texels)";
   if (map)
     s += std::string(lut ? " + " : ", 1 texture (") + "thickness map " +
-         std::to_string(map->width) + "x" + std::to_string(map->height) + " " +
-         map->format.name() + ", " + std::to_string(map->bytes) + " bytes" + (lut ? "" : ")");
+         std::to_string(map->width) + "x" + std::to_string(map->height) + " " + map->format.name() +
+         ", " + std::to_string(map->bytes) + " bytes" + (lut ? "" : ")");
   return s;
 }
 
