@@ -32,6 +32,10 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
     << "\n"
     << "Budget (ltrender budget --path gx):\n"
     << f.budget << "\n"
+    << "Materials (C name: the scene's name):\n";
+  for (const auto& [c_name, name] : programs.material_names)
+    h << "  " << c_name << ": \"" << name << "\"\n";
+  h << "\n"
     << "Per pass:\n";
   for (const Function& fn : programs.file.functions) {
     const auto note = programs.notes.find(fn.name);

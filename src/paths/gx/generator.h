@@ -1,6 +1,7 @@
 // Generates the GX program of every material and pass of a scene, as libogc calls (the one
 // program representation, program/program_file.h): what a porter pastes into the game, what the
-// emulator runs and what the budget counts. Only what the scene uses is generated: a material
+// emulator runs and what the budget counts. Three steps over one typed plan (pass_plan.h):
+// plan_scene chooses, emit_programs writes the calls, describe_pass writes the note. Only what the scene uses is generated: a material
 // without translucency gets one diffuse stage, a constant thickness needs no vertex colour, a
 // flat lobe (power 0 or scale 0) no texture.
 //
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "paths/gx/gx_variant.h"
+#include "paths/gx/pass_plan.h"
 #include "paths/gx/program/program_file.h"
 #include "scene/scene.h"
 
@@ -43,7 +45,17 @@ struct GeneratedPrograms {
   std::map<std::string, std::string> notes;
 };
 
-// Throws InputError("--variant", ...) where refusal() says the variant cannot be exact.
+// The choices for every material some object uses (pass_planner.cpp). Throws
+// InputError("--variant", ...) where refusal() says the variant cannot be exact, and InputError
+// naming the scene key for a ramp or thickness map GX cannot hold.
+ScenePlan plan_scene(const Scene& scene, const GxVariant& variant);
+// The plan as libogc calls (plan_emitter.cpp): the LUT and map arrays at the top, one function
+// per material and pass, each commented with its note.
+GeneratedPrograms emit_programs(const ScenePlan& plan);
+// One pass's note (plan_notes.cpp): its light, stages, textures, scales and what saturates.
+std::string describe_pass(const PassPlan& pass);
+
+// emit_programs(plan_scene(scene, variant)).
 GeneratedPrograms generate_programs(const Scene& scene, const GxVariant& variant);
 
 }  // namespace lt::gx

@@ -42,6 +42,12 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
     out.source = program_file;
   }
   out.by_material = scene_programs(out.file, scene);
+  const std::vector<std::string> c_names = material_c_names(scene);
+  std::vector<bool> used(scene.materials.size(), false);
+  for (const SceneObject& o : scene.objects) used[static_cast<size_t>(o.material)] = true;
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    if (used[m]) out.material_names.emplace_back(c_names[m], scene.materials[m].name);
+  }
   for (size_t m = 0; m < out.by_material.size(); ++m) {
     // A material's programs may read UVs when every mesh drawn with it has them.
     bool has_uvs = true;

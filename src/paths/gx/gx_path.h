@@ -22,6 +22,9 @@ struct ScenePrograms {
   std::map<std::string, std::string> notes;  // generated programs: per pass function
   std::vector<std::vector<PassProgram>> by_material;
   std::string source;  // where the programs come from, for messages ("generated", the file)
+  // (C name, scene name) of every material some object uses, in scene order: the export's
+  // comment maps each pass function back to the scene's (or glTF's) material.
+  std::vector<std::pair<std::string, std::string>> material_names;
 
   int passes() const;  // the most any used material needs
 };

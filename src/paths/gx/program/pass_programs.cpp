@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <map>
+#include <set>
 
 #include "core/error.h"
 #include "paths/gx/program/interpreter.h"
@@ -26,8 +27,21 @@ std::string c_identifier(const std::string& name) {
   return s;
 }
 
-std::string pass_function_name(const std::string& material, int pass) {
-  return kPrefix + c_identifier(material) + "_pass" + std::to_string(pass);
+std::vector<std::string> material_c_names(const Scene& scene) {
+  std::vector<std::string> out;
+  std::set<std::string> taken;
+  for (const Material& m : scene.materials) {
+    const std::string base = c_identifier(m.name);
+    std::string name = base;
+    for (int n = 2; taken.count(name); ++n) name = base + "_" + std::to_string(n);
+    taken.insert(name);
+    out.push_back(name);
+  }
+  return out;
+}
+
+std::string pass_function_name(const std::string& c_name, int pass) {
+  return kPrefix + c_name + "_pass" + std::to_string(pass);
 }
 
 std::vector<PassProgram> file_programs(const ProgramFile& file) {
@@ -67,12 +81,13 @@ std::vector<std::vector<PassProgram>> scene_programs(const ProgramFile& file, co
   std::vector<std::vector<PassProgram>> out(scene.materials.size());
   std::vector<bool> used(scene.materials.size(), false);
   for (const SceneObject& o : scene.objects) used[static_cast<size_t>(o.material)] = true;
+  const std::vector<std::string> c_names = material_c_names(scene);
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     if (file.functions.empty()) {
       out[m] = all;
       continue;
     }
-    const std::string id = c_identifier(scene.materials[m].name);
+    const std::string& id = c_names[m];
     std::map<int, PassProgram> passes;
     for (const PassProgram& p : all) {
       if (p.material == id) passes[p.pass] = p;
@@ -81,14 +96,14 @@ std::vector<std::vector<PassProgram>> scene_programs(const ProgramFile& file, co
     if (passes.empty())
       throw InputError(file.file, "",
                        "no pass function for material " + scene.materials[m].name + " (expected " +
-                           pass_function_name(scene.materials[m].name, 0) + ")");
+                           pass_function_name(id, 0) + ")");
     for (const auto& [pass, program] : passes) {
       if (pass != static_cast<int>(out[m].size()))
         throw InputError(
             file.file, "",
             "material " + scene.materials[m].name + " has no pass " +
                 std::to_string(out[m].size()) + " (" +
-                pass_function_name(scene.materials[m].name, static_cast<int>(out[m].size())) +
+                pass_function_name(id, static_cast<int>(out[m].size())) +
                 ") before pass " + std::to_string(pass));
       out[m].push_back(program);
     }

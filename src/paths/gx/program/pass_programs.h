@@ -30,9 +30,14 @@ std::vector<PassProgram> file_programs(const ProgramFile& file);
 // InputError naming a material some object uses that the file has no pass for.
 std::vector<std::vector<PassProgram>> scene_programs(const ProgramFile& file, const Scene& scene);
 
-// `ltrender_<material>_pass<N>`, with every character of the name that C does not allow in an
-// identifier replaced by '_'.
-std::string pass_function_name(const std::string& material, int pass);
+// The C identifier of every scene material (index = material), used both to write the pass
+// functions and to read them back: the name with every character C does not allow in an
+// identifier replaced by '_', and where that is already an earlier material's (e.g.
+// "Material.20" and "Material_20"), suffixed _2, _3, ... until it is unique. Materials no object
+// uses take part too, so a name does not depend on which objects a scene draws.
+std::vector<std::string> material_c_names(const Scene& scene);
+// `ltrender_<c_name>_pass<N>`.
+std::string pass_function_name(const std::string& c_name, int pass);
 std::string c_identifier(const std::string& name);
 
 }  // namespace lt::gx

@@ -1,0 +1,202 @@
+// The planner's textures: the lobe LUT and the thickness map (u8 arrays at the top of the file,
+// texture objects and texgens in each pass), and lobe=xf-spec's fitted specular light.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "model/rational_fit.h"
+#include "model/translucency.h"
+#include "paths/gx/lobe_lut.h"
+#include "paths/gx/pass_plan_parts.h"
+#include "paths/gx/texture_unit.h"
+
+namespace lt::gx {
+
+namespace {
+
+// A directional light at libogc's "large number" (pass_planner.cpp, [OGC gx.c L23-25]).
+constexpr double kFarAway = 1.0e18;
+
+double max3(const glm::dvec3& v) {
+  return std::max({v.r, v.g, v.b});
+}
+
+// lobe=xf-spec: x = max(0, N . u) with u = -+k in eye space (the sign that makes x >= 0 on
+// front faces, where N . V >= 0), so t = c0 + sign x with x in [0, |d|]; the curve
+// (a + s lobe(sat(t))) / (a + s) is fitted as a rational of x in double.
+model::RationalFit lobe_fit(const Scene& scene, const SceneView& view, const Translucency& tr,
+                            const Light& light, glm::dvec3& dir_eye) {
+  const glm::dvec3 V = -scene.camera.forward(), L = -light.direction;
+  const double c0 = -glm::dot(V, L), d = tr.distortion;
+  const double sign = d >= 0 ? -1.0 : 1.0;
+  const glm::dvec3 k_eye = view.view * (-d * V);
+  dir_eye = d >= 0 ? -k_eye : k_eye;
+  const double a = tr.ambient, s = light.translucency_scale, p = tr.power;
+  return model::fit_rational22(
+      [&](double x) {
+        return (a + s * model::lobe(std::clamp(c0 + sign * x, 0.0, 1.0), p)) / (a + s);
+      },
+      std::abs(d));
+}
+
+}  // namespace
+
+// The lobe LUT as a texture of one row in GX tile order (lobe_lut.h): t^p, or the material's
+// lobe ramp.
+TexturePlan PassPlanner::lut_texture(MaterialPlan& mp) const {
+  const Material& mat = scene_.materials[static_cast<size_t>(mp.material)];
+  const int w = variant_.lut_size;
+  const Translucency& tr = *mat.translucency;
+  if (tr.ramp) {
+    const std::vector<float>& v = tr.ramp->texture.texels;
+    const float top = v.empty() ? 0.0f : *std::max_element(v.begin(), v.end());
+    if (top > 1.0f)
+      throw InputError(scene_.file.string(), "materials." + mat.name + ".translucency.ramp",
+                       "gx: the ramp holds values up to " + note_number(top) +
+                           "; the 8-bit lobe LUT holds 0..1");
+  }
+  const TextureObject lut = lobe_lut(mat, w);
+  const bool i8 = lut.format == kTexFormatI8;
+  TexturePlan t;
+  t.role = TexturePlan::Role::Lut;
+  t.object = "lut";
+  t.array = "ltrender_lut_" + mp.c_name;
+  t.width = w;
+  t.height = 1;
+  t.format =
+      i8 ? GxConst<NameGroup::TexFormat>{"GX_TF_I8"} : GxConst<NameGroup::TexFormat>{"GX_TF_RGBA8"};
+  t.map = {"GX_TEXMAP0"};
+  t.bytes = lut.data.size();
+  t.what = std::string("The LUT: ") + (t.format.name() + 6) +
+           ", linear, clamped (the clamp saturates t per pixel)";
+  const std::string what =
+      tr.ramp ? "the lobe ramp " + tr.ramp->file.filename().string() + " sampled at t"
+              : "lobe(t) = t^" + note_number(tr.power);
+  mp.arrays.push_back(
+      {t.array, std::vector<u8>(lut.data.begin(), lut.data.end()),
+       (tr.ramp ? "Lobe LUT" : "Power LUT") + std::string(" of material ") + mat.name + ": " +
+           what + ", " + std::to_string(w) + " texels " + t.format.name() + " in GX tile order (" +
+           (i8 ? "8x4 tiles, 32 bytes" : "4x4 tiles, 64 bytes: (a, r) then (g, b) pairs") +
+           ";\nrow 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."});
+  return t;
+}
+
+// The thickness map as GX_TEXMAP1's texture (thickness_texture.h), one u8 array per material
+// that every pass loads.
+MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels) const {
+  const Material& mat = scene_.materials[static_cast<size_t>(mp.material)];
+  if (texels.width > kMaxTextureSize || texels.height > kMaxTextureSize)
+    throw InputError(scene_.file.string(), "materials." + mat.name + ".translucency.thickness",
+                     "gx: the thickness map is " + std::to_string(texels.width) + "x" +
+                         std::to_string(texels.height) +
+                         " texels; a GX texture is at most 1024 a side (resize the map)");
+  const ThicknessTexture tex =
+      thickness_texture(texels.width, texels.height, *texels.rgb, texels.grey, variant_.map_rgb565);
+  const TextureObject& o = tex.texture;
+  MapTexture m;
+  m.scale = tex.scale;
+  TexturePlan& t = m.texture;
+  t.role = TexturePlan::Role::ThicknessMap;
+  t.object = "thickness";
+  t.array = "ltrender_thickness_" + mp.c_name;
+  t.width = o.width;
+  t.height = o.height;
+  t.format = GxConst<NameGroup::TexFormat>::with_value(o.format);
+  t.map = {"GX_TEXMAP1"};
+  t.bytes = o.data.size();
+  t.what = std::string("The thickness map: ") + t.format.name() + ", linear, clamped";
+  const bool i8 = o.format == kTexFormatI8, rgba8 = o.format == kTexFormatRGBA8;
+  mp.arrays.push_back(
+      {t.array, std::vector<u8>(o.data.begin(), o.data.end()),
+       "Thickness map of material " + mat.name + ": " + std::to_string(o.width) + "x" +
+           std::to_string(o.height) + " texels " + t.format.name() + " in GX tile order (" +
+           (i8      ? "8x4 tiles of 32 bytes"
+            : rgba8 ? "4x4 tiles of 64 bytes: 16 (a, r) pairs, then 16 (g, b) pairs"
+                    : "4x4 tiles of 32 bytes, big-endian r5 g6 b5") +
+           "),\nrows from the image's bottom row up (v = 0 first), so the identity texgen's "
+           "t = v reads the\ntexel a GL path samples at (u, v); a converter that stores the "
+           "top row first needs\nt = 1 - v (a texture matrix with row 1 = (0, -1, 0, 1)). A "
+           "texel of 255 is thickness " +
+           note_number(tex.scale) + ". Flush it (DCFlushRange)\nbefore the GPU reads it."});
+  return m;
+}
+
+// t = c0 + k . N, affine in the normal when V and L are constant (the refusal rule): c0 =
+// -V.L, k = -d V. t=vertex sends t itself as GX_VA_TEX0; t=texgen computes it from the raw
+// normal. Either way the texture matrix folds in the LUT's texel-centre remap
+// s = t (W-1)/W + 0.5/W (model/power_lut.h, gx-hardware.md §3.4).
+TexGenPlan PassPlanner::lut_texgen(const Translucency& tr, const Light& light,
+                                   const TexturePlan& lut) const {
+  const bool vertex = variant_.t == GxVariant::TexCoord::Vertex;
+  const double n = variant_.lut_size, scale = (n - 1) / n, offset = 0.5 / n;
+  std::array<double, 12> m{};
+  if (vertex) {
+    m[0] = scale;  // row 0 . (s, t, 1, 1): the TEX0 source form AB11 [OGC gx.c L2690]
+    m[3] = offset;
+  } else {
+    // The raw normal is the mesh's world-space normal as sent (objects are pre-transformed),
+    // so k stays in world space.
+    const glm::dvec3 V = -scene_.camera.forward(), L = -light.direction;
+    const glm::dvec3 k = -tr.distortion * V;
+    const double c0 = -glm::dot(V, L);
+    for (int c = 0; c < 3; ++c) m[static_cast<size_t>(c)] = k[c] * scale;
+    m[3] = c0 * scale + offset;  // row 0 . (nx, ny, nz, 1): the NRM source form ABC1
+  }
+  TexGenPlan g;
+  g.source = vertex ? GxConst<NameGroup::TexGenSource>{"GX_TG_TEX0"}
+                    : GxConst<NameGroup::TexGenSource>{"GX_TG_NRM"};
+  g.matrix = {"GX_TEXMTX0"};
+  TexMatrixPlan mtx{"lut_matrix", {"GX_TEXMTX0"}, {}, ""};
+  for (size_t i = 0; i < m.size(); ++i) mtx.values[i] = static_cast<float>(m[i]);
+  mtx.what = vertex ? "Texgen: s = t (W-1)/W + 0.5/W from the CPU's t in GX_VA_TEX0"
+                    : "Texgen: s = (c0 + k . N) (W-1)/W + 0.5/W from the raw normal";
+  g.matrix_values = mtx;
+  g.texture = lut;
+  return g;
+}
+
+// The thickness map's texgen: (s, t) = the mesh's UV through GX_IDENTITY (the map is stored
+// bottom row first, thickness_texture.h, so t = v needs no flip), fetched from GX_TEXMAP1,
+// linear and clamped as the reference's CLAMP_TO_EDGE bilinear.
+TexGenPlan PassPlanner::map_texgen(const MapTexture& map, int texcoord, int uv_attribute) {
+  TexGenPlan g;
+  g.coord = GxConst<NameGroup::TexCoord>::with_value(texcoord);
+  g.source = GxConst<NameGroup::TexGenSource>::with_value(
+      GxConst<NameGroup::TexGenSource>{"GX_TG_TEX0"}.value() + uv_attribute);
+  g.matrix = {"GX_IDENTITY"};
+  g.texture = map.texture;
+  g.what =
+      "Texgen: (s, t) = (u, v) of the mesh, as sent in GX_VA_TEX" + std::to_string(uv_attribute);
+  return g;
+}
+
+// The specular light: its position far along V (so N . l >= 0 on front faces and the XF's
+// condition passes), the direction slot u, and the fit's coefficients with the numerator
+// scaled by the channel's magnitude.
+LightObjectPlan PassPlanner::specular_light(const Translucency& tr, const Light& light,
+                                            const glm::dvec3& color, double inv_gain,
+                                            PassFigures& figures) const {
+  glm::dvec3 dir_eye(0);
+  const model::RationalFit fit = lobe_fit(scene_, view_, tr, light, dir_eye);
+  figures.fit_error = fit.max_error;
+  const model::Rational22& r = fit.r;
+  const double m = max3(color);
+  const double g = m > 0 ? 1.0 / inv_gain : 0.0;
+  const glm::dvec3 V_eye = view_.view * -scene_.camera.forward();
+  LightObjectPlan o;
+  o.kind = LightObjectPlan::Kind::SpecularFit;
+  o.name = "trans_light";
+  o.slot = {"GX_LIGHT0"};
+  o.position = glm::vec3(V_eye * kFarAway);
+  o.color = rgb8(m > 0 ? color / m : glm::dvec3(0));
+  // GX_InitLightDir stores the negated direction: pass -u so the slot holds u.
+  o.direction_arg = glm::vec3(-dir_eye);
+  for (size_t i = 0; i < 3; ++i) {
+    o.a[i] = static_cast<float>(r.a[i] * g);
+    o.k[i] = static_cast<float>(r.k[i]);
+  }
+  o.gain = g;
+  return o;
+}
+
+}  // namespace lt::gx

@@ -1,0 +1,207 @@
+// emit_programs: the plan as libogc calls, in the order a porter reads a pass (vertex format,
+// lights, channels, texgens and textures, TEV, pixel engine). It chooses nothing: every value
+// comes from the plan, every constant is a GxConst checked at compile time.
+#include "paths/gx/generator.h"
+#include "paths/gx/program/pass_programs.h"
+
+namespace lt::gx {
+
+namespace {
+
+using NG = NameGroup;
+
+template <NameGroup Group>
+Arg gx(GxConst<Group> c) {
+  return Arg::integer(c.name(), c.value());
+}
+Arg num(float v) {
+  return Arg::f32(v);
+}
+Arg lit(long long v) {
+  return Arg::literal(v);
+}
+Arg rgb(const Color8& c) {
+  return Arg::rgba({c.r, c.g, c.b, c.a});
+}
+
+// One program being written: statements in order, with comments for the porter.
+class Writer {
+ public:
+  void call(const std::string& f, std::vector<Arg> args, const std::string& comment = "") {
+    body.push_back(Statement::of(Call(f, std::move(args)), comment));
+  }
+  void declare(Declaration::Type t, const std::string& name, std::vector<double> values = {},
+               const std::string& comment = "") {
+    Declaration d;
+    d.type = t;
+    d.name = name;
+    d.values = std::move(values);
+    body.push_back(Statement::of(std::move(d), comment));
+  }
+  std::vector<Statement> body;
+};
+
+void vertex_format(Writer& w, const VertexFormatPlan& v) {
+  const GxConst<NG::VtxFmt> fmt0{"GX_VTXFMT0"};
+  const GxConst<NG::VtxAttrType> direct{"GX_DIRECT"};
+  const GxConst<NG::CompType> f32{"GX_F32"};
+  w.call("GX_ClearVtxDesc", {},
+         v.uv ? "Vertex format: position and normal (and t) as sent, and the mesh's UV for the "
+                "thickness map"
+              : "Vertex format: position and normal (and the baked thickness colour / t) as sent");
+  const GxConst<NG::VtxAttr> pos{"GX_VA_POS"}, nrm{"GX_VA_NRM"}, clr0{"GX_VA_CLR0"},
+      tex0{"GX_VA_TEX0"};
+  const auto uv_va = GxConst<NG::VtxAttr>::with_value(tex0.value() + v.uv_attribute());
+  w.call("GX_SetVtxDesc", {gx(pos), gx(direct)});
+  w.call("GX_SetVtxDesc", {gx(nrm), gx(direct)});
+  if (v.colour) w.call("GX_SetVtxDesc", {gx(clr0), gx(direct)});
+  if (v.t) w.call("GX_SetVtxDesc", {gx(tex0), gx(direct)});
+  if (v.uv) w.call("GX_SetVtxDesc", {gx(uv_va), gx(direct)});
+  auto format = [&](GxConst<NG::VtxAttr> a, GxConst<NG::CompCount> n, GxConst<NG::CompType> t) {
+    w.call("GX_SetVtxAttrFmt", {gx(fmt0), gx(a), gx(n), gx(t), lit(0)});
+  };
+  format(pos, {"GX_POS_XYZ"}, f32);
+  format(nrm, {"GX_NRM_XYZ"}, f32);
+  if (v.colour) format(clr0, {"GX_CLR_RGBA"}, {"GX_RGBA8"});
+  if (v.t) format(tex0, {"GX_TEX_S"}, f32);
+  if (v.uv) format(uv_va, {"GX_TEX_ST"}, f32);
+}
+
+void light_object(Writer& w, const LightObjectPlan& o) {
+  const Arg self = Arg::address_of(o.name);
+  w.declare(Declaration::Type::LightObj, o.name);
+  w.call("GX_InitLightPos", {self, num(o.position.x), num(o.position.y), num(o.position.z)});
+  w.call("GX_InitLightColor", {self, rgb(o.color)});
+  w.call("GX_InitLightDir",
+         {self, num(o.direction_arg.x), num(o.direction_arg.y), num(o.direction_arg.z)});
+  if (o.kind == LightObjectPlan::Kind::Distance) {
+    w.call("GX_InitLightSpot", {self, num(90), gx(GxConst<NG::SpotFn>{"GX_SP_OFF"})});
+    const std::string g = note_number(o.gain);
+    w.call("GX_InitLightAttnK", {self, num(o.k[0]), num(o.k[1]), num(o.k[2])},
+           "k = (kc, kl, kq) / " + g + ": XF attenuation = " + g + " x att, the light's magnitude");
+  } else {
+    w.call("GX_InitLightAttn",
+           {self, num(o.a[0]), num(o.a[1]), num(o.a[2]), num(o.k[0]), num(o.k[1]), num(o.k[2])},
+           "A(x) = (a0 + a1 x + a2 x^2) / (k0 + k1 x + k2 x^2), fitted to the lobe");
+  }
+  w.call("GX_LoadLightObj", {self, gx(o.slot)});
+}
+
+Arg light_mask(const LightMask& m) {
+  if (m.bits == 0) return gx(GxConst<NG::Light>{"GX_LIGHTNULL"});
+  if (m.named) return gx(GxConst<NG::Light>::with_value(m.bits));
+  return lit(m.bits);
+}
+
+void channels(Writer& w, const PassPlan& p) {
+  w.call("GX_SetNumChans", {lit(static_cast<long long>(p.channels.size()))}, p.channels_what);
+  for (const ChannelPlan& c : p.channels) {
+    w.call("GX_SetChanCtrl",
+           {gx(c.channel), gx(c.enable), gx(c.ambient_source), gx(c.material_source),
+            light_mask(c.lights), gx(c.diffuse_fn), gx(c.attenuation_fn)},
+           c.what);
+    if (c.ambient) w.call("GX_SetChanAmbColor", {gx(c.channel), rgb(*c.ambient)});
+    if (c.material)
+      w.call("GX_SetChanMatColor", {gx(c.channel), rgb(*c.material)}, c.material_what);
+  }
+}
+
+void texture(Writer& w, const TexturePlan& t) {
+  const Arg self = Arg::address_of(t.object);
+  w.declare(Declaration::Type::TexObj, t.object);
+  w.call("GX_InitTexObj",
+         {self, Arg::identifier(t.array), lit(t.width), lit(t.height), gx(t.format), gx(t.wrap_s),
+          gx(t.wrap_t), gx(GxConst<NG::Bool>{"GX_FALSE"})},
+         t.what);
+  w.call("GX_LoadTexObj", {self, gx(t.map)});
+}
+
+// The matrices first (GX_LoadTexMtxImm), then the count, then each texgen with the texture its
+// coordinates fetch.
+void texgens(Writer& w, const PassPlan& p) {
+  for (const TexGenPlan& g : p.texgens) {
+    if (!g.matrix_values) continue;
+    const TexMatrixPlan& m = *g.matrix_values;
+    w.declare(Declaration::Type::Mtx, m.name, std::vector<double>(m.values.begin(), m.values.end()),
+              m.what);
+    w.call("GX_LoadTexMtxImm",
+           {Arg::identifier(m.name), gx(m.slot), gx(GxConst<NG::MtxType>{"GX_MTX2x4"})});
+  }
+  w.call("GX_SetNumTexGens", {lit(static_cast<long long>(p.texgens.size()))});
+  for (const TexGenPlan& g : p.texgens) {
+    w.call("GX_SetTexCoordGen", {gx(g.coord), gx(g.type), gx(g.source), gx(g.matrix)}, g.what);
+    if (g.texture) texture(w, *g.texture);
+  }
+}
+
+template <NameGroup In>
+std::vector<Arg> combiner_in(const Arg& stage, const CombinerPlan<In>& c) {
+  return {stage, gx(c.in[0]), gx(c.in[1]), gx(c.in[2]), gx(c.in[3])};
+}
+template <NameGroup In>
+std::vector<Arg> combiner_op(const Arg& stage, const CombinerPlan<In>& c) {
+  return {stage, gx(c.op), gx(c.bias), gx(c.scale), gx(c.clamp), gx(c.dest)};
+}
+
+void tev(Writer& w, const PassPlan& p) {
+  w.call("GX_SetNumTevStages", {lit(static_cast<long long>(p.stages.size()))});
+  if (p.tev_register)
+    w.call("GX_SetTevColor", {gx(p.tev_register->reg), rgb(p.tev_register->value)},
+           p.tev_register->what);
+  for (const TevStagePlan& s : p.stages) {
+    const Arg stage = gx(s.stage);
+    w.call("GX_SetTevOrder", {stage, gx(s.texcoord), gx(s.texmap), gx(s.channel)}, s.what);
+    w.call("GX_SetTevColorIn", combiner_in(stage, s.color));
+    w.call("GX_SetTevColorOp", combiner_op(stage, s.color));
+    w.call("GX_SetTevAlphaIn", combiner_in(stage, s.alpha));
+    w.call("GX_SetTevKAlphaSel", {stage, gx(s.konst_alpha)});
+    w.call("GX_SetTevAlphaOp", combiner_op(stage, s.alpha));
+  }
+}
+
+void pixel_engine(Writer& w, const PixelEnginePlan& p) {
+  w.call("GX_SetBlendMode", {gx(p.blend), gx(p.src), gx(p.dst), gx(p.logic)}, p.what);
+  w.call("GX_SetZMode", {gx(p.z_enable), gx(p.z_func), gx(p.z_update)});
+  w.call("GX_SetAlphaCompare", {gx(p.alpha_comp0), lit(p.alpha_ref0), gx(p.alpha_op),
+                                gx(p.alpha_comp1), lit(p.alpha_ref1)});
+  w.call("GX_SetCullMode", {gx(p.cull)},
+         "Draw both sides (GX_Init's GX_CULL_BACK would cull the faces wound counter-clockwise)");
+}
+
+std::vector<Statement> pass_body(const PassPlan& p) {
+  Writer w;
+  vertex_format(w, p.vertex);
+  for (const LightObjectPlan& o : p.lights) light_object(w, o);
+  channels(w, p);
+  texgens(w, p);
+  tev(w, p);
+  pixel_engine(w, p.pixel);
+  return std::move(w.body);
+}
+
+}  // namespace
+
+GeneratedPrograms emit_programs(const ScenePlan& plan) {
+  GeneratedPrograms out;
+  for (const MaterialPlan& m : plan.materials) {
+    for (const ArrayPlan& a : m.arrays) {
+      Declaration d;
+      d.type = Declaration::Type::ByteArray;
+      d.name = a.name;
+      d.values.assign(a.bytes.begin(), a.bytes.end());
+      out.file.top_level.push_back(Statement::of(std::move(d), a.what));
+    }
+    for (size_t p = 0; p < m.passes.size(); ++p) {
+      Function f;
+      f.name = pass_function_name(m.c_name, static_cast<int>(p));
+      const std::string note = describe_pass(m.passes[p]);
+      f.comment = "Material " + m.name + ", pass " + std::to_string(p) + ": " + note;
+      f.body = pass_body(m.passes[p]);
+      out.notes[f.name] = note;
+      out.file.functions.push_back(std::move(f));
+    }
+  }
+  return out;
+}
+
+}  // namespace lt::gx
