@@ -73,15 +73,35 @@ std::string work_cell(const BenchRow& r) {
          fmt(r.work->vertex_ops / 1e6) + ")";
 }
 
+// Which timing mode made the report and what it measured: "quick timing (bench --quick): 1
+// round, at least 10 pairs and 0.25 s of each path, no more for the interval", then the options
+// given after the mode ("; --max-time given").
+std::string timing_summary(const BenchOptions& o) {
+  std::ostringstream s;
+  s << to_string(o.timing_mode) << " timing (bench --" << to_string(o.timing_mode)
+    << "): " << o.rounds << (o.rounds == 1 ? " round" : " rounds") << ", at least " << o.frames
+    << " pairs and " << fmt(o.min_time_s) << " s of each path";
+  if (o.max_time_s > o.min_time_s) {
+    s << ", then more while the ratio's interval is wider than +-" << fmt(100 * o.target_interval)
+      << "%, up to " << fmt(o.max_time_s) << " s";
+  } else {
+    s << ", no more for the interval";
+  }
+  for (std::size_t i = 0; i < o.timing_overrides.size(); ++i)
+    s << (i == 0 ? "; given: " : ", ") << o.timing_overrides[i];
+  return s.str();
+}
+
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
+    << "**" << timing_summary(o) << ".**\n\n"
     << "Frames, each bounded by glFinish: at the scene's size, median and min of " << o.frames
     << " after " << o.warmup << " warm-up; at " << o.wide_width << "x" << o.wide_height
-    << ", each path in interleaved pairs with `flat` in the same session (at least " << o.frames
-    << " pairs and " << fmt(o.min_time_s) << " s of the path, then more while the interval is "
-    << "wider than +-" << fmt(100 * o.target_interval) << "%, up to " << fmt(o.max_time_s)
-    << " s of the path), after a warm-up that lasts until the frame time settles; flat frames "
+    << ", each path in interleaved pairs with `flat` in the same session, over " << o.rounds
+    << (o.rounds == 1 ? " round" : " rounds")
+    << " (each in a session of its own), after a warm-up that lasts until the frame time settles; "
+       "flat frames "
        "right after a path frame are not timed until flat is back within 10% of its level. "
        "`ratio` = median of the per-pair ratios; `95% interval` from "
        "order statistics, marked *wide* beyond +-10%. Cores: "
@@ -161,6 +181,9 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
   j["min_time_s"] = o.min_time_s;
   j["target_interval"] = o.target_interval;
   j["max_time_s"] = o.max_time_s;
+  j["timing_mode"] = to_string(o.timing_mode);
+  j["rounds"] = o.rounds;
+  j["timing_overrides"] = o.timing_overrides;
   j["llvmpipe_threads"] = o.llvmpipe_threads;
   j["pinning"] = o.pinning;
   j["cpu_threads"] = o.cpu_threads;
@@ -182,7 +205,8 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                           {"high", r.ratio.high},
                           {"pairs", r.ratio.pairs},
                           {"wide", r.ratio.wide()},
-                          {"settling_frames", r.settling_frames}}},
+                          {"settling_frames", r.settling_frames},
+                          {"rounds", r.rounds}}},
                         {"image", r.image},
                         {"heatmap", r.heatmap},
                         {"stats", stats_json(r)},
@@ -413,7 +437,7 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
                  "covered pixels in LSB of 8 bits; ms = median of the timed frames at " +
                  std::to_string(o.wide_width) + "x" + std::to_string(o.wide_height) +
                  " (at least " + std::to_string(o.frames) + ", in pairs with flat; " + o.pinning +
-                 ")";
+                 "); " + timing_summary(o);
   page.chart_svg = svg_chart(rows, time_axis(o)) + svg_chart(rows, work_axis(o));
   for (const BenchRow& r : rows) {
     PageCard c;
