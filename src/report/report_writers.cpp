@@ -13,7 +13,7 @@
 #include "core/markup.h"
 #include "render/session.h"
 #include "report/bench.h"
-#include "report/contact_sheet.h"
+#include "report/bench_contact_sheet.h"
 #include "report/label_placement.h"
 #include "report/report_page.h"
 
@@ -130,8 +130,9 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   s << "\n![speed against error](chart.svg)\n\n![work against error](chart_work.svg)\n\n"
        "Contact sheet: `contact.png` (one row per scene: "
        "the reference, then each path's render followed by its error heatmap, in the table's "
-       "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background) and "
-       "`index.html` with labels.\n";
+       "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background; "
+       "scenes that are the talk's figure pairs, `<fig>_<parameter>_a_<value>` then `_b_`, get "
+       "one row per figure, left and right side by side) and `index.html` with labels.\n";
   return s.str();
 }
 
@@ -398,32 +399,8 @@ ChartAxis work_axis(const BenchOptions& o) {
           }};
 }
 
-// One row per scene: the reference, then each path's default variant with its heatmap (every
-// variant is in index.html; all of them here would make a sheet too wide to look at).
 void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
-  ContactSheet sheet;
-  sheet.column_labels.push_back({path_with_role(PathRole::GroundTruth).name, "(float, clamped)"});
-  for (const BenchRow& r : rows) {
-    const PathInfo& info = find_path(r.path);
-    if (info.role == PathRole::GroundTruth || info.variants.front().name != r.variant) continue;
-    const std::pair<std::string, std::string> column{r.path, r.variant};
-    if (std::find(sheet.column_labels.begin(), sheet.column_labels.end(), column) ==
-        sheet.column_labels.end())
-      sheet.column_labels.push_back(column);
-  }
-  for (const BenchRow& r : rows) {
-    if (sheet.row_labels.empty() || sheet.row_labels.back() != r.scene) {
-      sheet.row_labels.push_back(r.scene);
-      sheet.cells.emplace_back(sheet.column_labels.size());
-      sheet.cells.back()[0].image = o.out_dir / "images" / (r.scene + "__reference.exr");
-    }
-    const auto column = std::find(sheet.column_labels.begin() + 1, sheet.column_labels.end(),
-                                  std::pair<std::string, std::string>{r.path, r.variant});
-    if (column == sheet.column_labels.end()) continue;
-    ContactCell& cell = sheet.cells.back()[column - sheet.column_labels.begin()];
-    cell.image = o.out_dir / r.image;
-    if (!r.heatmap.empty()) cell.heatmap = o.out_dir / r.heatmap;
-  }
+  const ContactSheet sheet = bench_contact_sheet(o.out_dir, rows);
   if (sheet.row_labels.empty()) return;
   write_image(o.out_dir / "contact.png", draw_contact_sheet(sheet));
 }
