@@ -61,7 +61,7 @@ if $full; then
     -o out/tessellation --quiet "${args[@]}"
   # Replacing the thickness map by vertex colours, per tessellation (issue 13): UV spheres of 4 to
   # 64 rings, each baked as vertex colours and as a 512x256 map (256 rays), both rendered by the
-  # reference and compared (README "Map or vertex colours?"; ~20 s).
+  # reference and compared (docs/maps.md "Map or vertex colours?"; ~20 s).
   step "map or vertex colours, per tessellation"
   python3 scripts/map_vs_vertex.py --bin "$bin" --table out/tessellation/map_vs_vertex.md
   # Thickness maps (issue 13, scenes/maps/): the addendum's red teapot with its baked 1024x1024
@@ -74,8 +74,8 @@ if $full; then
   step "bench: a glTF scene"
   "$bin" bench scenes/gltf/blob.glb --max-time 0.5 -o out/gltf --quiet "${args[@]}"
 fi
-# The Wii port of one demo scene, as the libogc C a porter pastes into the game (README,
-# "Porting to the Wii").
+# The Wii port of one demo scene, as the libogc C a porter pastes into the game (docs/
+# porting-to-the-wii.md).
 step "the Wii export of backlit_sphere, and its budget"
 "$bin" export gx scenes/backlit_sphere.json -o out/backlit_sphere_gx.c
 "$bin" budget out/backlit_sphere_gx.c
