@@ -307,7 +307,7 @@ TEST(BenchVariants, DefaultIsEachPathsFirstStoryAddsTheMarkedOnes) {
 }
 
 TEST(BenchVariants, TheStoryHasTheLutTheTexgenAndTheXfLobe) {
-  // Issue 28: ./run.sh's quick run shows the variants the README's story is about.
+  // Issue 28: ./run.sh's quick run shows the variants the docs' story is about.
   std::set<std::string> story;
   for (const PathInfo& p : all_paths())
     for (const VariantInfo& v : p.variants)

@@ -92,7 +92,7 @@ Action add_bench(CLI::App& app) {
   auto variants = std::make_shared<std::string>("all");
   sub->add_option("--variants", *variants,
                   "Which variants of each path: all (default), default (each path's first), "
-                  "story (the default and those the README compares it with: ./run.sh's run)")
+                  "story (the default and those the docs compare it with: ./run.sh's run)")
       ->check(CLI::IsMember(selections));
   auto compare_with = std::make_shared<std::string>();
   sub->add_option("--compare", *compare_with,

@@ -89,7 +89,7 @@ struct BudgetRequest {
 
 // Which runs a variant is in: a full bench runs every variant; the quick one (./run.sh, bench
 // --variants story) runs each path's default and its Story variants, those whose comparison
-// with the default the README tells (the LUT's width, texgen, the XF lobe, ...).
+// with the default the docs tell (the LUT's width, texgen, the XF lobe, ...).
 enum class VariantRun { Full, Story };
 
 struct VariantInfo {

@@ -251,7 +251,7 @@ PathInfo arbfp_path_info() {
           // The default: the cheapest variant (fewest ALU + TEX on every demo scene, no texture)
           // whose max error is <= 2 LSB on every demo scene (bench, see the closing note).
           {"pow=mul", "t^p by repeated squaring (integer p; non-integer p uses exact POW)"},
-          // The Story variants (./run.sh's quick run) are the rows of the README's sample table:
+          // The Story variants (./run.sh's quick run) are the rows of docs/measurements.md's table:
           // the cheapest fragment program, the 256-texel LUTs, the two spherical Gaussians.
           // The cheapest fragment program (t and the lobe in the vertex program), not the default:
           // its error is the lobe's Gouraud interpolation, which grows with triangle size.
