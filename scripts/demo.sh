@@ -2,7 +2,7 @@
 # The demo of ./run.sh (after scripts/setup.sh built everything), written under out/
 # (out/report.md is the table; out/index.html shows renders and heatmaps).
 #   ./run.sh         the quick run, results in a few minutes: every demo scene through every path
-#                    at its default variant and the variants the README's story is about (bench
+#                    at its default variant and the variants the docs' story is about (bench
 #                    --variants story: the LUT width, texgen, the XF lobe, ...), timed in one pass
 #                    (bench --quick); the report page and contact sheet; the talk's figures; the
 #                    Wii export.
