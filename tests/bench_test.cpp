@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "render/session.h"
 #include "test_util.h"
@@ -238,6 +239,89 @@ TEST(Bench, NotANumberForATimeOrIntervalIsAnInputError) {
       EXPECT_FALSE(fs::exists(dir / "out")) << option << " " << value;
     }
   }
+}
+
+// `ltrender bench --quick` end to end on one small scene: the report says the timing was quick,
+// and every figure was timed in one round (the rounds the bench ran, as the report records
+// them; never the wall time). Also `--variants`: which rows a bench has.
+TEST(BenchQuick, TheReportSaysQuickAndEveryRowWasTimedInOneRound) {
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  const fs::path out = dir / "out";
+  // glsl at its default variant only (not pow=exact:f32); flat is timed but no row of its own.
+  const test::RunResult r =
+      test::run_ltrender("bench " + (dir / "quad.json").string() +
+                         " --quick --paths glsl --variants default -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Not a terminal: no progress line (its carriage returns), only the result.
+  EXPECT_EQ(r.err.find('\r'), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(test::read_file(out / "report.json"));
+  EXPECT_EQ(j["timing_mode"], "quick");
+  EXPECT_EQ(j["rounds"], 1);
+  EXPECT_TRUE(j["timing_overrides"].empty());
+  std::set<std::string> rows;
+  for (const auto& row : j["rows"]) {
+    rows.insert(row["path"].get<std::string>() + " " + row["variant"].get<std::string>());
+    EXPECT_EQ(row["ratio_interval"]["rounds"], 1) << row["path"];
+    // One round still holds --frames pairs (10 by default).
+    EXPECT_GE(row["ratio_interval"]["pairs"].get<int>(), 10) << row["path"];
+  }
+  EXPECT_EQ(rows, (std::set<std::string>{"glsl pow=exact"}));
+  const std::string md = test::read_file(out / "report.md");
+  EXPECT_NE(md.find("quick timing (bench --quick): 1 round"), std::string::npos) << md;
+  const std::string page = test::read_file(out / "index.html");
+  EXPECT_NE(page.find("quick timing (bench --quick)"), std::string::npos);
+}
+
+TEST(BenchQuick, AnOptionAfterQuickIsInTheReport) {
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  const fs::path out = dir / "out";
+  const test::RunResult r =
+      test::run_ltrender("bench " + (dir / "quad.json").string() +
+                         " --quick --rounds 2 --paths flat -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(test::read_file(out / "report.json"));
+  EXPECT_EQ(j["timing_mode"], "quick");
+  EXPECT_EQ(j["rounds"], 2);
+  EXPECT_EQ(j["timing_overrides"], nlohmann::json::array({"--rounds"}));
+  EXPECT_NE(test::read_file(out / "report.md").find("; given: --rounds"), std::string::npos);
+}
+
+TEST(BenchQuick, AnUnknownVariantSelectionIsAUsageError) {
+  const test::RunResult r = test::run_ltrender("bench --variants some -o /nonexistent/out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--variants"), std::string::npos) << r.err;
+}
+
+TEST(BenchVariants, DefaultIsEachPathsFirstStoryAddsTheMarkedOnes) {
+  for (const PathInfo& p : all_paths()) {
+    for (const VariantInfo& v : p.variants) {
+      const bool first = v.name == p.variants.front().name;
+      EXPECT_TRUE(selected(p, v, VariantSelection::All)) << p.name << " " << v.name;
+      EXPECT_EQ(selected(p, v, VariantSelection::Defaults), first) << p.name << " " << v.name;
+      EXPECT_EQ(selected(p, v, VariantSelection::Story), first || v.run == VariantRun::Story)
+          << p.name << " " << v.name;
+    }
+  }
+}
+
+TEST(BenchVariants, TheStoryHasTheLutTheTexgenAndTheXfLobe) {
+  // Issue 28: ./run.sh's quick run shows the variants the docs' story is about.
+  std::set<std::string> story;
+  for (const PathInfo& p : all_paths())
+    for (const VariantInfo& v : p.variants)
+      if (selected(p, v, VariantSelection::Story)) story.insert(p.name + " " + v.name);
+  for (const char* expected :
+       {"gx t=vertex", "gx t=vertex:lut=16", "gx t=texgen", "gx lobe=xf-spec", "combiners t=vertex",
+        "combiners t=texgen", "combiners lobe=cube", "arbfp pow=mul", "arbfp pow=lut:256:u8",
+        "arbfp pow=sg-simplified", "glsl pow=exact", "reference exact", "flat constant",
+        "half pow=exact"})
+    EXPECT_EQ(story.count(expected), 1u) << expected;
+  // And not every variant: the convention axes and the other LUT widths wait for --full.
+  EXPECT_EQ(story.count("gx t=vertex:lut=64"), 0u);
+  EXPECT_EQ(story.count("gx t=vertex:colors=round"), 0u);
+  EXPECT_EQ(story.count("arbfp pow=lut:16:u8"), 0u);
 }
 
 }  // namespace

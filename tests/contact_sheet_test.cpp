@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <utility>
+
 #include "image/text.h"
 #include "test_util.h"
 
@@ -68,6 +71,68 @@ TEST(ContactSheet, RowAndColumnLabelsAreInThePixels) {
     }
   }
   EXPECT_GT(coloured, 300u) << "no heatmap legend";
+}
+
+// The pixels of exactly this colour: their bounding box, x0 y0 x1 y1 (inclusive); x0 > x1 when
+// there is none.
+std::array<int, 4> box_of(const Image& img, const float rgb[3]) {
+  std::array<int, 4> box = {img.width, img.height, -1, -1};
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      const float* p = img.at(x, y);
+      if (p[0] != rgb[0] || p[1] != rgb[1] || p[2] != rgb[2]) continue;
+      box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
+    }
+  }
+  return box;
+}
+
+// A figure's pair (bench_contact_sheet.h): two renders in one row under their captions, and no
+// heatmap legend on a sheet without heatmaps.
+TEST(ContactSheet, APairSitsSideBySideUnderItsCaptions) {
+  test::TempDir dir;
+  const float red[3] = {1, 0, 0}, blue[3] = {0, 0, 1};
+  for (const auto& [name, rgb] : {std::pair{"left.png", red}, std::pair{"right.png", blue}}) {
+    Image img(64, 48);
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) img.at(x, y)[0] = rgb[0], img.at(x, y)[2] = rgb[2];
+    for (int i = 0; i < img.width * img.height; ++i) img.rgba[4 * i + 3] = 1;
+    write_image(dir / name, img);
+  }
+  ContactSheet pair;
+  pair.row_labels = {"fig16 power"};
+  pair.column_labels = {{"left", "reference"}, {"right", "reference"}};
+  pair.cells = {{{dir / "left.png", "", "power 4"}, {dir / "right.png", "", "power 12"}}};
+  pair.thumb_width = 64;
+  pair.thumb_height = 48;
+  ContactSheet uncaptioned = pair;
+  for (ContactCell& c : uncaptioned.cells[0]) c.caption.clear();
+  const Image a = draw_contact_sheet(pair), b = draw_contact_sheet(uncaptioned);
+  const std::array<int, 4> left = box_of(a, red), right = box_of(a, blue);
+  // Whole, at their size, in the same row, left before right.
+  EXPECT_EQ(left[2] - left[0] + 1, 64);
+  EXPECT_EQ(left[3] - left[1] + 1, 48);
+  EXPECT_EQ(right[2] - right[0] + 1, 64);
+  EXPECT_EQ(left[1], right[1]);
+  EXPECT_EQ(left[3], right[3]);
+  EXPECT_LT(left[2], right[0]);
+  // The captions: ink above each render, where the uncaptioned sheet has none.
+  const int caption_top = left[1] - 17;
+  EXPECT_GT(differing_pixels(a, b, left[0], caption_top, left[2] + 1, left[1]), 20u);
+  EXPECT_GT(differing_pixels(a, b, right[0], caption_top, right[2] + 1, right[1]), 20u);
+  // No legend: nothing coloured but the two renders (text is grey).
+  size_t coloured = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      const float* p = a.at(x, y);
+      const bool grey = p[0] == p[1] && p[1] == p[2];
+      const bool inside = (x >= left[0] && x <= left[2] && y >= left[1] && y <= left[3]) ||
+                          (x >= right[0] && x <= right[2] && y >= right[1] && y <= right[3]);
+      coloured += !grey && !inside;
+    }
+  }
+  EXPECT_EQ(coloured, 0u);
+  EXPECT_LT(a.height, left[3] + 20);  // the row is the sheet's last thing
 }
 
 }  // namespace

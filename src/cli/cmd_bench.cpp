@@ -1,11 +1,15 @@
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
 
+#include "cli/bench_timing_options.h"
 #include "cli/commands.h"
 #include "core/cpu_affinity.h"
 #include "core/error.h"
@@ -80,19 +84,16 @@ Action add_bench(CLI::App& app) {
       ->check(CLI::Range(10, 100000));
   sub->add_option("--warmup", o->warmup, "Warm-up frames (at least; at 1280x720 until settled)")
       ->check(CLI::Range(0, 1000));
-  sub->add_option("--min-time", o->min_time_s,
-                  "Least measuring time per path at 1280x720, in seconds (interleaved with flat)")
-      ->check(FiniteRange(0.0, 60.0));
-  sub->add_option("--target-interval", o->target_interval,
-                  "Beyond --min-time, keep pairing while the ratio's 95% interval is wider than "
-                  "+- this fraction of it (default 0.02)")
-      ->check(FiniteRange(0.0, 1.0));
-  sub->add_option("--max-time", o->max_time_s,
-                  "Most measuring time per path at 1280x720 while the interval is wider than the "
-                  "target, in seconds (default 2.5; never below --min-time)")
-      ->check(FiniteRange(0.0, 60.0))
-      // scripts/demo.sh sets it for its error-only benches and passes run.sh's arguments on.
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  auto apply_timing = add_timing_options(*sub, *o);
+  const std::map<std::string, VariantSelection> selections = {
+      {"all", VariantSelection::All},
+      {"default", VariantSelection::Defaults},
+      {"story", VariantSelection::Story}};
+  auto variants = std::make_shared<std::string>("all");
+  sub->add_option("--variants", *variants,
+                  "Which variants of each path: all (default), default (each path's first), "
+                  "story (the default and those the docs compare it with: ./run.sh's run)")
+      ->check(CLI::IsMember(selections));
   auto compare_with = std::make_shared<std::string>();
   sub->add_option("--compare", *compare_with,
                   "An earlier report.json: rows whose ratio intervals do not overlap are listed "
@@ -112,11 +113,17 @@ Action add_bench(CLI::App& app) {
                   "one per core the bench may use: 1 when pinned)")
       ->check(CLI::Range(1, 64));
   sub->add_option("-o,--output", *out, "Output directory")->required();
-  sub->add_flag("--quiet", o->quiet, "No progress lines");
+  sub->add_flag("--quiet", o->quiet,
+                "No progress line and no notes (the progress line is drawn only on a terminal)");
   sub->add_option("--profile", o->profile,
                   "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
                   "drawn in additive passes (the cost column says how many)");
-  return [o, scenes, paths, out, lp_threads, cpu_threads, pin_core, compare_with]() -> int {
+  return [o, scenes, paths, out, lp_threads, cpu_threads, pin_core, compare_with, apply_timing,
+          variants, selections]() -> int {
+    apply_timing();
+    o->variants = selections.at(*variants);
+    // A line redrawn in place means nothing in a log: only a person at a terminal gets it.
+    o->live_progress = ::isatty(STDERR_FILENO) == 1;
     // Before any thread or context exists: what is started later inherits the core.
     bool pinned = false;
     o->pinning = pin_to_core(*pin_core, pinned);

@@ -87,9 +87,15 @@ struct BudgetRequest {
   std::string* first_overrun = nullptr;
 };
 
+// Which runs a variant is in: a full bench runs every variant; the quick one (./run.sh, bench
+// --variants story) runs each path's default and its Story variants, those whose comparison
+// with the default the docs tell (the LUT's width, texgen, the XF lobe, ...).
+enum class VariantRun { Full, Story };
+
 struct VariantInfo {
   std::string name;     // as given to --variant, e.g. "pow=exact"
   std::string summary;  // one line: what it trades
+  VariantRun run = VariantRun::Full;
 };
 
 // What a path is to the bench and the goldens: the ground truth every error is against, the

@@ -17,6 +17,7 @@
 #include "metrics/heatmap.h"
 #include "paths/common/gbuffer.h"
 #include "render/session.h"
+#include "report/bench_progress.h"
 
 namespace lt {
 
@@ -50,17 +51,14 @@ void collect_stats(const Path& path, StatSamples& stats) {
   }
 }
 
-// Rounds a figure is timed in at 1280x720 (pass 2 of run_bench).
-constexpr int kTimingRounds = 5;
-
 // One round's share of the bench's measuring options: the minimums and the maximum time split
 // over the rounds (at least --frames pairs and --min-time in all), the target judged on every
 // round's pairs so far.
 InterleaveOptions round_options(const BenchOptions& o, const std::vector<double>& earlier) {
   InterleaveOptions io;
-  io.min_pairs = (o.frames + kTimingRounds - 1) / kTimingRounds;
-  io.min_seconds = o.min_time_s / kTimingRounds;
-  io.max_seconds = o.max_time_s / kTimingRounds;
+  io.min_pairs = (o.frames + o.rounds - 1) / o.rounds;
+  io.min_seconds = o.min_time_s / o.rounds;
+  io.max_seconds = o.max_time_s / o.rounds;
   io.target_half_width = o.target_interval;
   io.min_warmup = o.warmup;
   io.earlier_ratios = earlier;
@@ -85,6 +83,34 @@ std::string scene_name(const fs::path& p) {
   return p.stem().string();
 }
 
+// One row a scene will have: a path and one of its variants.
+struct PlannedRow {
+  const PathInfo* path;
+  const VariantInfo* variant;
+};
+
+// The rows of a scene: each selected variant of each path asked for, except those the scene
+// refuses (noted with the reason).
+std::vector<PlannedRow> plan_rows(const Scene& scene, const std::string& sname,
+                                  const std::vector<const PathInfo*>& paths, const BenchOptions& o,
+                                  BenchProgress& progress) {
+  std::vector<PlannedRow> planned;
+  for (const PathInfo* p : paths) {
+    for (const VariantInfo& v : p->variants) {
+      if (!selected(*p, v, o.variants)) continue;
+      // A variant that cannot be exact for this scene (gx t=texgen under perspective) is
+      // no row: render would refuse it too.
+      const std::string why = p->refusal ? p->refusal(scene, v.name) : "";
+      if (!why.empty()) {
+        progress.note("bench: " + sname + ": " + p->name + " " + v.name + " skipped: " + why);
+        continue;
+      }
+      planned.push_back({p, &v});
+    }
+  }
+  return planned;
+}
+
 // Pass 2 of run_bench, at 1280x720: timing only, each path in interleaved pairs with flat in the
 // same session (report/interleaved_timing.h), so every ratio is the median of per-pair ratios.
 // A figure is timed in rounds (round 1 of every row of every scene, then round 2, ...), each in
@@ -97,22 +123,32 @@ std::string scene_name(const fs::path& p) {
 // 8-14% below another run's, every interval within +-5%.
 void time_at_wide_size(const std::vector<Scene>& scenes,
                        std::vector<std::vector<BenchRow>>& rows_by_scene, const PathInfo& flat,
-                       const BenchOptions& o) {
+                       const BenchOptions& o, BenchProgress& progress) {
   struct RowTiming {
     std::vector<double> ratios, path_ms;
     StatSamples stats;
     std::size_t settling_frames = 0;
+    int rounds = 0;
   };
   struct SceneTiming {
     std::vector<RowTiming> rows;
     std::vector<double> flat_ms;  // every timed flat frame of the scene, over the rounds
+    int rounds = 0;               // rounds with timed flat frames
     std::optional<SceneCoverage> coverage;
   };
   std::vector<SceneTiming> timing(scenes.size());
   for (std::size_t si = 0; si < scenes.size(); ++si)
     timing[si].rows.resize(rows_by_scene[si].size());
-  for (int round = 0; round < kTimingRounds; ++round) {
-    if (!o.quiet) std::fprintf(stderr, "bench: timing, round %d of %d\n", round + 1, kTimingRounds);
+  std::size_t timed_rows = 0;
+  for (const auto& scene_rows : rows_by_scene) {
+    timed_rows += static_cast<std::size_t>(
+        std::count_if(scene_rows.begin(), scene_rows.end(),
+                      [&](const BenchRow& r) { return r.path != flat.name; }));
+  }
+  progress.start_phase(
+      "timing at " + std::to_string(o.wide_width) + "x" + std::to_string(o.wide_height),
+      timed_rows * static_cast<std::size_t>(o.rounds));
+  for (int round = 0; round < o.rounds; ++round) {
     for (std::size_t si = 0; si < scenes.size(); ++si) {
       const Scene& scene = scenes[si];
       SceneTiming& st = timing[si];
@@ -134,6 +170,8 @@ void time_at_wide_size(const std::vector<Scene>& scenes,
           continue;
         }
         timed_any = true;
+        progress.step("round " + std::to_string(round + 1) + " of " + std::to_string(o.rounds) +
+                      ", " + row.scene + ", " + row.path + " " + row.variant);
         const PathInfo& p = find_path(row.path);
         auto path = session.build(p, row.variant, profile_options(p, o));
         if (round == 0) count_work(row, *path);
@@ -148,12 +186,14 @@ void time_at_wide_size(const std::vector<Scene>& scenes,
         rt.ratios.insert(rt.ratios.end(), t.pair_ratios.begin(), t.pair_ratios.end());
         rt.path_ms.insert(rt.path_ms.end(), t.path_ms.begin(), t.path_ms.end());
         rt.settling_frames += t.settling_frames;
+        ++rt.rounds;
         st.flat_ms.insert(st.flat_ms.end(), t.baseline_ms.begin(), t.baseline_ms.end());
       }
       // flat alone (the only path asked for): its own frames, in the first round.
       if (!timed_any && round == 0) {
         for (int i = 0; i < std::max(o.frames, 10); ++i) st.flat_ms.push_back(timed_frame(*base));
       }
+      if (timed_any || round == 0) ++st.rounds;
     }
   }
   for (std::size_t si = 0; si < scenes.size(); ++si) {
@@ -165,12 +205,14 @@ void time_at_wide_size(const std::vector<Scene>& scenes,
         row.at_wide = summarize_frames(timing[si].flat_ms);
         row.ratio = estimate_ratio(std::vector<double>(timing[si].flat_ms.size(), 1.0));
         row.ratio_to_flat = 1.0;
+        row.rounds = timing[si].rounds;
         continue;
       }
       row.at_wide = summarize_frames(rt.path_ms);
       row.ratio = estimate_ratio(rt.ratios);
       row.ratio_to_flat = row.ratio.median;
       row.settling_frames = rt.settling_frames;
+      row.rounds = rt.rounds;
       // Every figure a path reports, as the median over the timed frames.
       for (size_t k = 0; k < rt.stats.size(); ++k) {
         if (!rt.stats[k].empty()) row.stats.*(FrameStats::kFields[k].second) = median(rt.stats[k]);
@@ -184,6 +226,32 @@ void time_at_wide_size(const std::vector<Scene>& scenes,
 }
 
 }  // namespace
+
+const char* to_string(TimingMode mode) {
+  return mode == TimingMode::Quick ? "quick" : "precise";
+}
+
+void set_timing_mode(BenchOptions& o, TimingMode mode) {
+  const BenchOptions precise;
+  o.timing_mode = mode;
+  o.rounds = precise.rounds;
+  o.min_time_s = precise.min_time_s;
+  o.target_interval = precise.target_interval;
+  o.max_time_s = precise.max_time_s;
+  if (mode == TimingMode::Quick) {
+    // One session a figure and a quarter second of the path (at least --frames pairs, which a
+    // CPU path's 100 ms frames exceed anyway), no time beyond it for the interval: a ratio to
+    // within a few percent, enough to tell two variants apart, in seconds a row.
+    o.rounds = 1;
+    o.min_time_s = 0.25;
+    o.max_time_s = o.min_time_s;
+  }
+}
+
+bool selected(const PathInfo& path, const VariantInfo& variant, VariantSelection selection) {
+  if (selection == VariantSelection::All || variant.name == path.variants.front().name) return true;
+  return selection == VariantSelection::Story && variant.run == VariantRun::Story;
+}
 
 FrameTiming summarize_frames(std::vector<double> frame_ms) {
   FrameTiming t;
@@ -212,12 +280,19 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
   fs::create_directories(o.out_dir / "images", ec);
   if (ec)
     throw InputError(o.out_dir.string(), "", "cannot create output directory: " + ec.message());
+  BenchProgress progress(o.live_progress && !o.quiet, !o.quiet);
+  std::vector<std::vector<PlannedRow>> planned;
+  std::size_t planned_rows = 0;
+  for (size_t si = 0; si < scenes.size(); ++si) {
+    planned.push_back(plan_rows(scenes[si], scene_name(o.scenes[si]), paths, o, progress));
+    planned_rows += planned.back().size();
+  }
+  progress.start_phase("renders at each scene's size", planned_rows);
   std::vector<std::vector<BenchRow>> rows_by_scene;
   for (size_t si = 0; si < scenes.size(); ++si) {
     const fs::path& scene_path = o.scenes[si];
     const Scene& scene = scenes[si];
     const std::string sname = scene_name(scene_path);
-    if (!o.quiet) std::fprintf(stderr, "bench: %s\n", sname.c_str());
 
     // Pass 1, at the scene's size: the reference image, every path's image, error, timing.
     // Pass 2, the timing at 1280x720, follows for every scene at once (time_at_wide_size).
@@ -231,45 +306,35 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       write_image(o.out_dir / "images" / (sname + "__reference.exr"), ref_image);
       // The same at 8 bits, for the report page (a browser shows no EXR): what each card flips to.
       write_image(o.out_dir / "images" / (sname + "__reference.png"), ref_image);
-      for (const PathInfo* p : paths) {
-        for (const VariantInfo& v : p->variants) {
-          // A variant that cannot be exact for this scene (gx t=texgen under perspective) is
-          // no row: render would refuse it too.
-          const std::string why = p->refusal ? p->refusal(scene, v.name) : "";
-          if (!why.empty()) {
-            if (!o.quiet)
-              std::fprintf(stderr, "bench: %s: %s %s skipped: %s\n", sname.c_str(), p->name.c_str(),
-                           v.name.c_str(), why.c_str());
-            continue;
-          }
-          BenchRow row;
-          row.scene = sname;
-          row.path = p->name;
-          row.variant = v.name;
-          auto path = session.build(*p, v.name, profile_options(*p, o));
-          row.at_scene_size = time_frames(*path, o);
-          row.cost = path->cost();
-          const Image img = path->result();
-          const std::string base = sname + "__" + file_name_safe(p->name + "_" + v.name);
-          row.image = "images/" + base + ".png";
-          row.width = img.width;
-          row.height = img.height;
-          write_image(o.out_dir / row.image, img);
-          if (p->name != flat.name) {
-            const TestEncoding enc =
-                path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8;
-            const Comparison cmp = compare_images(img, ref_image, enc);
-            row.error = cmp.covered;
-            row.heatmap = "images/" + base + "__heatmap.png";
-            write_image(o.out_dir / row.heatmap, error_heatmap(cmp));
-          }
-          scene_rows.push_back(std::move(row));
+      for (const auto& [p, v] : planned[si]) {
+        progress.step(sname + ", " + p->name + " " + v->name);
+        BenchRow row;
+        row.scene = sname;
+        row.path = p->name;
+        row.variant = v->name;
+        auto path = session.build(*p, v->name, profile_options(*p, o));
+        row.at_scene_size = time_frames(*path, o);
+        row.cost = path->cost();
+        const Image img = path->result();
+        const std::string base = sname + "__" + file_name_safe(p->name + "_" + v->name);
+        row.image = "images/" + base + ".png";
+        row.width = img.width;
+        row.height = img.height;
+        write_image(o.out_dir / row.image, img);
+        if (p->name != flat.name) {
+          const TestEncoding enc =
+              path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8;
+          const Comparison cmp = compare_images(img, ref_image, enc);
+          row.error = cmp.covered;
+          row.heatmap = "images/" + base + "__heatmap.png";
+          write_image(o.out_dir / row.heatmap, error_heatmap(cmp));
         }
+        scene_rows.push_back(std::move(row));
       }
     }
     rows_by_scene.push_back(std::move(scene_rows));
   }
-  time_at_wide_size(scenes, rows_by_scene, flat, o);
+  time_at_wide_size(scenes, rows_by_scene, flat, o, progress);
   std::vector<BenchRow> rows;
   for (auto& scene_rows : rows_by_scene) {
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());

@@ -12,27 +12,47 @@
 
 #include "metrics/compare.h"
 #include "paths/frame_stats.h"
+#include "paths/path.h"
 #include "report/frame_work.h"
 #include "report/interleaved_timing.h"
 
 namespace lt {
 
+// How long the timing at 1280x720 goes on, by name: `precise` (the default, to the CI
+// standard: BenchOptions' own values) or `quick` (bench --quick: one round and a short minimum,
+// for a person comparing two variants). set_timing_mode is the one place a mode's values live.
+enum class TimingMode { Precise, Quick };
+const char* to_string(TimingMode mode);
+
+// Which variants of each path get rows (bench --variants): every one, each path's default, or
+// the default and the variants marked VariantRun::Story (./run.sh's quick run).
+enum class VariantSelection { All, Defaults, Story };
+bool selected(const PathInfo& path, const VariantInfo& variant, VariantSelection selection);
+
 struct BenchOptions {
   std::vector<std::filesystem::path> scenes;
   std::vector<std::string> paths;  // empty: every path
+  VariantSelection variants = VariantSelection::All;
   std::filesystem::path out_dir;
   int frames = 10;  // >= 10 (metrics.md); at 1280x720, the least number of interleaved pairs
   int warmup = 2;   // at least; at 1280x720 warm-up goes on until the frame time settles
+  // The timing mode's settings (set_timing_mode), each of which an option may override:
+  // rounds the figures are timed in at 1280x720 (--rounds; pass 2 of run_bench), each in a
+  // session of its own;
+  int rounds = 5;
   double min_time_s = 0.5;  // at 1280x720, the least measuring time of each path (--min-time)
-  // Beyond it, pairs go on while the ratio's 95% interval is wider than +-target_interval
+  // beyond it, pairs go on while the ratio's 95% interval is wider than +-target_interval
   // (--target-interval, a fraction), up to max_time_s of the path (--max-time).
   double target_interval = 0.02;
   double max_time_s = 2.5;
+  TimingMode timing_mode = TimingMode::Precise;  // for the report
+  std::vector<std::string> timing_overrides;     // for the report: options that changed the mode
   std::string llvmpipe_threads = "as the environment says";  // for the report (--lp-threads)
   std::string pinning = "not pinned";                        // for the report (--pin-core)
   unsigned cpu_threads = 0;  // for the report: the CPU paths' workers (--cpu-threads)
   int wide_width = 1280, wide_height = 720;
-  bool quiet = false;
+  bool quiet = false;          // no progress lines and no notes (--quiet)
+  bool live_progress = false;  // a progress line redrawn in place (stderr is a terminal)
   std::string profile;  // --profile: the paths that take one split their programs into passes
 };
 
@@ -46,7 +66,8 @@ struct BenchRow {
   double ratio_to_flat = 0;  // at 1280x720: the median of interleaved per-pair ratios
   RatioEstimate ratio;       // the same, with its 95% interval and pair count
   std::size_t settling_frames =
-      0;  // flat frames run untimed after a path frame (interleaved_timing.h)
+      0;           // flat frames run untimed after a path frame (interleaved_timing.h)
+  int rounds = 0;  // sessions the row was timed in at 1280x720 (flat: those of its scene)
   std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
   FrameStats stats;                 // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
@@ -56,6 +77,9 @@ struct BenchRow {
   std::string image, heatmap;     // relative to out_dir
   int width = 0, height = 0;      // of the image
 };
+
+// Sets rounds, min_time_s, target_interval, max_time_s and timing_mode to the mode's values.
+void set_timing_mode(BenchOptions& options, TimingMode mode);
 
 std::vector<BenchRow> run_bench(const BenchOptions& options);
 

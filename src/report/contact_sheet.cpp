@@ -50,7 +50,7 @@ void draw_fitted(Image& img, int x, int y, std::string text, int width, const fl
 constexpr int kRampOffset = 210, kRampWidth = 320, kSwatchGap = 24, kSecondSwatch = 210;
 constexpr const char* kLastLegendWord = "NaN/Inf";
 
-// The width the legend takes: a sheet of one column (the figures' sheet) must still hold it.
+// The width the legend takes: a sheet of one column must still hold it.
 int legend_width() {
   return kRampOffset + kRampWidth + kSwatchGap + kSecondSwatch + 16 +
          text_width(kLastLegendWord, kLabelSize) + 2 * kPad;
@@ -89,6 +89,17 @@ Image draw_contact_sheet(const ContactSheet& s) {
                  "sheet has no labels\n");
   }
   const int tw = s.thumb_width, th = s.thumb_height;
+  bool captions = false, heatmaps = false;
+  for (const auto& row : s.cells) {
+    for (const ContactCell& cell : row) {
+      captions = captions || !cell.caption.empty();
+      heatmaps = heatmaps || !cell.heatmap.empty();
+    }
+  }
+  // A cell: its caption, the render, and the heatmap under it, each only where the sheet has one.
+  const int caption_height = captions ? kPad + kLabelSize + 4 : 0;
+  const int heatmap_height = heatmaps ? th + kPad : 0;
+  const int cell_height = caption_height + th + heatmap_height + 2 * kPad;
   int label_column = 0;
   for (const std::string& r : s.row_labels)
     label_column = std::max(label_column, text_width(r, kLabelSize));
@@ -96,9 +107,9 @@ Image draw_contact_sheet(const ContactSheet& s) {
   const int header = 2 * (kLabelSize + 4) + kPad;
   const int cols = static_cast<int>(s.column_labels.size());
   const int rows = static_cast<int>(s.row_labels.size());
-  const int cell_height = 2 * th + 3 * kPad;
-  Image sheet(std::max(label_column + cols * (tw + kPad) + kPad, legend_width()),
-              header + rows * cell_height + kLegendHeight);
+  const int grid_width = label_column + cols * (tw + kPad) + kPad;
+  Image sheet(heatmaps ? std::max(grid_width, legend_width()) : grid_width,
+              header + rows * cell_height + (heatmaps ? kLegendHeight : kPad));
   const float white[3] = {1, 1, 1};
   fill_rect(sheet, 0, 0, sheet.width, sheet.height, white);
   for (int c = 0; c < cols; ++c) {
@@ -108,17 +119,21 @@ Image draw_contact_sheet(const ContactSheet& s) {
   }
   for (int r = 0; r < rows; ++r) {
     const int y = header + r * cell_height;
-    draw_fitted(sheet, kPad, y + th - kLabelSize / 2, s.row_labels[r], label_column - 2 * kPad,
+    // The row label beside the middle of the render(s) and heatmap(s).
+    const int middle = y + caption_height + (th + heatmap_height) / 2;
+    draw_fitted(sheet, kPad, middle - kLabelSize / 2, s.row_labels[r], label_column - 2 * kPad,
                 kInk);
     for (int c = 0; c < cols && c < static_cast<int>(s.cells[r].size()); ++c) {
       const ContactCell& cell = s.cells[r][c];
       const int x = label_column + c * (tw + kPad);
-      if (!cell.image.empty()) paste_thumbnail(sheet, read_image(cell.image), x, y, tw, th);
+      if (!cell.caption.empty()) draw_fitted(sheet, x, y + kPad, cell.caption, tw, kInk);
+      const int image_y = y + caption_height;
+      if (!cell.image.empty()) paste_thumbnail(sheet, read_image(cell.image), x, image_y, tw, th);
       if (!cell.heatmap.empty())
-        paste_thumbnail(sheet, read_image(cell.heatmap), x, y + th + kPad, tw, th);
+        paste_thumbnail(sheet, read_image(cell.heatmap), x, image_y + th + kPad, tw, th);
     }
   }
-  draw_legend(sheet, kPad, header + rows * cell_height + kPad);
+  if (heatmaps) draw_legend(sheet, kPad, header + rows * cell_height + kPad);
   return sheet;
 }
 

@@ -1,8 +1,8 @@
 // The contact sheet (contact.png of `ltrender bench`): every render of a run as thumbnails a
-// person can read without the page. One row per scene, labelled at its left; one column per
-// path and variant, labelled at its top; each cell the render with its error heatmap under it;
-// the heatmap's scale as a legend at the bottom. Labels are drawn into the pixels
-// (image/text.h).
+// person can read without the page. One row per scene (or figure), labelled at its left; one
+// column per path and variant, labelled at its top; each cell the render, under its caption if
+// it has one, with its error heatmap under it; the heatmap's scale as a legend at the bottom
+// when there is a heatmap. Labels are drawn into the pixels (image/text.h).
 #pragma once
 
 #include <filesystem>
@@ -15,6 +15,7 @@ namespace lt {
 
 struct ContactCell {
   std::filesystem::path image, heatmap;  // empty: nothing there (a blank cell or no heatmap)
+  std::string caption;                   // above the image (a figure's value); empty: none
 };
 
 struct ContactSheet {

@@ -13,7 +13,7 @@
 #include "core/markup.h"
 #include "render/session.h"
 #include "report/bench.h"
-#include "report/contact_sheet.h"
+#include "report/bench_contact_sheet.h"
 #include "report/label_placement.h"
 #include "report/report_page.h"
 
@@ -73,15 +73,35 @@ std::string work_cell(const BenchRow& r) {
          fmt(r.work->vertex_ops / 1e6) + ")";
 }
 
+// Which timing mode made the report and what it measured: "quick timing (bench --quick): 1
+// round, at least 10 pairs and 0.25 s of each path, no more for the interval", then the options
+// given after the mode ("; --max-time given").
+std::string timing_summary(const BenchOptions& o) {
+  std::ostringstream s;
+  s << to_string(o.timing_mode) << " timing (bench --" << to_string(o.timing_mode)
+    << "): " << o.rounds << (o.rounds == 1 ? " round" : " rounds") << ", at least " << o.frames
+    << " pairs and " << fmt(o.min_time_s) << " s of each path";
+  if (o.max_time_s > o.min_time_s) {
+    s << ", then more while the ratio's interval is wider than +-" << fmt(100 * o.target_interval)
+      << "%, up to " << fmt(o.max_time_s) << " s";
+  } else {
+    s << ", no more for the interval";
+  }
+  for (std::size_t i = 0; i < o.timing_overrides.size(); ++i)
+    s << (i == 0 ? "; given: " : ", ") << o.timing_overrides[i];
+  return s.str();
+}
+
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
+    << "**" << timing_summary(o) << ".**\n\n"
     << "Frames, each bounded by glFinish: at the scene's size, median and min of " << o.frames
     << " after " << o.warmup << " warm-up; at " << o.wide_width << "x" << o.wide_height
-    << ", each path in interleaved pairs with `flat` in the same session (at least " << o.frames
-    << " pairs and " << fmt(o.min_time_s) << " s of the path, then more while the interval is "
-    << "wider than +-" << fmt(100 * o.target_interval) << "%, up to " << fmt(o.max_time_s)
-    << " s of the path), after a warm-up that lasts until the frame time settles; flat frames "
+    << ", each path in interleaved pairs with `flat` in the same session, over " << o.rounds
+    << (o.rounds == 1 ? " round" : " rounds")
+    << " (each in a session of its own), after a warm-up that lasts until the frame time settles; "
+       "flat frames "
        "right after a path frame are not timed until flat is back within 10% of its level. "
        "`ratio` = median of the per-pair ratios; `95% interval` from "
        "order statistics, marked *wide* beyond +-10%. Cores: "
@@ -110,8 +130,9 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   s << "\n![speed against error](chart.svg)\n\n![work against error](chart_work.svg)\n\n"
        "Contact sheet: `contact.png` (one row per scene: "
        "the reference, then each path's render followed by its error heatmap, in the table's "
-       "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background) and "
-       "`index.html` with labels.\n";
+       "order; heatmap scale 0..8 LSB black-blue-green-yellow-red-white, grey = background; "
+       "scenes that are the talk's figure pairs, `<fig>_<parameter>_a_<value>` then `_b_`, get "
+       "one row per figure, left and right side by side) and `index.html` with labels.\n";
   return s.str();
 }
 
@@ -161,6 +182,9 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
   j["min_time_s"] = o.min_time_s;
   j["target_interval"] = o.target_interval;
   j["max_time_s"] = o.max_time_s;
+  j["timing_mode"] = to_string(o.timing_mode);
+  j["rounds"] = o.rounds;
+  j["timing_overrides"] = o.timing_overrides;
   j["llvmpipe_threads"] = o.llvmpipe_threads;
   j["pinning"] = o.pinning;
   j["cpu_threads"] = o.cpu_threads;
@@ -182,7 +206,8 @@ nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& row
                           {"high", r.ratio.high},
                           {"pairs", r.ratio.pairs},
                           {"wide", r.ratio.wide()},
-                          {"settling_frames", r.settling_frames}}},
+                          {"settling_frames", r.settling_frames},
+                          {"rounds", r.rounds}}},
                         {"image", r.image},
                         {"heatmap", r.heatmap},
                         {"stats", stats_json(r)},
@@ -374,32 +399,8 @@ ChartAxis work_axis(const BenchOptions& o) {
           }};
 }
 
-// One row per scene: the reference, then each path's default variant with its heatmap (every
-// variant is in index.html; all of them here would make a sheet too wide to look at).
 void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
-  ContactSheet sheet;
-  sheet.column_labels.push_back({path_with_role(PathRole::GroundTruth).name, "(float, clamped)"});
-  for (const BenchRow& r : rows) {
-    const PathInfo& info = find_path(r.path);
-    if (info.role == PathRole::GroundTruth || info.variants.front().name != r.variant) continue;
-    const std::pair<std::string, std::string> column{r.path, r.variant};
-    if (std::find(sheet.column_labels.begin(), sheet.column_labels.end(), column) ==
-        sheet.column_labels.end())
-      sheet.column_labels.push_back(column);
-  }
-  for (const BenchRow& r : rows) {
-    if (sheet.row_labels.empty() || sheet.row_labels.back() != r.scene) {
-      sheet.row_labels.push_back(r.scene);
-      sheet.cells.emplace_back(sheet.column_labels.size());
-      sheet.cells.back()[0].image = o.out_dir / "images" / (r.scene + "__reference.exr");
-    }
-    const auto column = std::find(sheet.column_labels.begin() + 1, sheet.column_labels.end(),
-                                  std::pair<std::string, std::string>{r.path, r.variant});
-    if (column == sheet.column_labels.end()) continue;
-    ContactCell& cell = sheet.cells.back()[column - sheet.column_labels.begin()];
-    cell.image = o.out_dir / r.image;
-    if (!r.heatmap.empty()) cell.heatmap = o.out_dir / r.heatmap;
-  }
+  const ContactSheet sheet = bench_contact_sheet(o.out_dir, rows);
   if (sheet.row_labels.empty()) return;
   write_image(o.out_dir / "contact.png", draw_contact_sheet(sheet));
 }
@@ -413,7 +414,7 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
                  "covered pixels in LSB of 8 bits; ms = median of the timed frames at " +
                  std::to_string(o.wide_width) + "x" + std::to_string(o.wide_height) +
                  " (at least " + std::to_string(o.frames) + ", in pairs with flat; " + o.pinning +
-                 ")";
+                 "); " + timing_summary(o);
   page.chart_svg = svg_chart(rows, time_axis(o)) + svg_chart(rows, work_axis(o));
   for (const BenchRow& r : rows) {
     PageCard c;

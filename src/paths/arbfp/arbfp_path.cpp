@@ -251,22 +251,29 @@ PathInfo arbfp_path_info() {
           // The default: the cheapest variant (fewest ALU + TEX on every demo scene, no texture)
           // whose max error is <= 2 LSB on every demo scene (bench, see the closing note).
           {"pow=mul", "t^p by repeated squaring (integer p; non-integer p uses exact POW)"},
+          // The Story variants (./run.sh's quick run) are the rows of docs/measurements.md's table:
+          // the cheapest fragment program, the 256-texel LUTs, the two spherical Gaussians.
           // The cheapest fragment program (t and the lobe in the vertex program), not the default:
           // its error is the lobe's Gouraud interpolation, which grows with triangle size.
           {"pow=mul:vertex",
            "t^p by repeated squaring per vertex, lobe interpolated: fewest fragment ALU, error "
-           "grows with triangle size (a ramp: t per vertex, the ramp per pixel)"},
+           "grows with triangle size (a ramp: t per vertex, the ramp per pixel)",
+           VariantRun::Story},
           {"pow=exact", "POW with 0^0 guarded by CMP: float error only"},
           {"pow=lut:256:u8",
-           "256-texel 8-bit LUT: 1 MAD + 1 TEX, u8 rounding (0.5/255 of the lobe)"},
+           "256-texel 8-bit LUT: 1 MAD + 1 TEX, u8 rounding (0.5/255 of the lobe)",
+           VariantRun::Story},
           {"pow=lut:64:u8", "64-texel 8-bit LUT: interpolation error grows with p"},
           {"pow=lut:16:u8", "16-texel 8-bit LUT: coarse, large error for p > 2"},
-          {"pow=lut:256:f16", "256-texel half-float LUT"},
+          {"pow=lut:256:f16", "256-texel half-float LUT", VariantRun::Story},
           {"pow=lut:64:f16", "64-texel half-float LUT"},
           {"pow=lut:32:f32", "32-texel float LUT: interpolation error only"},
-          {"pow=sg", "exp2(n'(t-1)), n' = 1.4427p + 1.4427: 2 ALU, a close but different curve"},
+          {"pow=sg", "exp2(n'(t-1)), n' = 1.4427p + 1.4427: 2 ALU, a close but different curve",
+           VariantRun::Story},
           {"pow=sg-fitted", "exp2(n'(t-1)) with n' fitted per material to the max error"},
-          {"pow=sg-simplified", "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)"},
+          {"pow=sg-simplified",
+           "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)",
+           VariantRun::Story},
       },
       [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
         return std::make_unique<ArbfpPath>(ctx, variant);

@@ -396,11 +396,13 @@ PathInfo combiners_path_info() {
                   "an 8-bit LUT per pixel (error grows with triangle size)"},
                  {"t=texgen",
                   "t by texgen NORMAL_MAP and the texture matrix (directional lights, "
-                  "orthographic camera; else as t=vertex)"},
+                  "orthographic camera; else as t=vertex)",
+                  VariantRun::Story},
                  {"lobe=cube",
                   "per pixel: a cube map by the normal holds each directional light's "
                   "whole term (exact view only for an orthographic camera); point "
-                  "lights as t=vertex"}},
+                  "lights as t=vertex",
+                  VariantRun::Story}},
                 [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
                   return std::make_unique<CombinersPath>(ctx, variant);
                 }};

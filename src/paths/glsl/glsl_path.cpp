@@ -240,7 +240,8 @@ PathInfo glsl_path_info() {
   return {"glsl",
           "per-pixel GLSL 1.10 shaders, exact pow, float arithmetic, 8-bit framebuffer",
           {{"pow=exact", "pow() with 0^0 guarded, 8-bit framebuffer"},
-           {"pow=exact:f32", "the same shaders into an RGBA32F target: shader precision alone"}},
+           {"pow=exact:f32", "the same shaders into an RGBA32F target: shader precision alone",
+            VariantRun::Story}},
           [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
             return std::make_unique<GlslPath>(ctx, variant == "pow=exact:f32");
           }};

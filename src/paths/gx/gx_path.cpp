@@ -288,7 +288,7 @@ PathInfo gx_path_info() {
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "
        "light, any camera)"},
       {"t=vertex:lut=64", "the same with a 64-texel LUT"},
-      {"t=vertex:lut=16", "the same with a 16-texel LUT"},
+      {"t=vertex:lut=16", "the same with a 16-texel LUT", VariantRun::Story},
       {"t=vertex:colors=round",
        "the interpolated channel colours rounded, as Dolphin's shader backends do (the default "
        "truncates, as its software rasteriser does): how far that choice moves the image"},
@@ -297,14 +297,16 @@ PathInfo gx_path_info() {
        "truncation of the float sum (software renderer)"},
       {"t=texgen",
        "t from the raw normal through a 2x4 texture matrix: no CPU per-vertex work "
-       "(directional lights and an orthographic camera only)"},
+       "(directional lights and an orthographic camera only)",
+       VariantRun::Story},
       {"t=vertex:out=xfb",
        "t=vertex as the TV shows it: the EFB copied to the XFB as YUYV 4:2:2 (BT.601, chroma "
        "filtered [1 2 1]/4 per pixel pair) and decoded again, as Dolphin's software renderer "
        "dumps the frame"},
       {"lobe=xf-spec",
        "no texture: the lobe as the XF specular attenuation, a rational fitted per material, "
-       "per vertex, 2 TEV stages (directional lights and an orthographic camera only)"},
+       "per vertex, 2 TEV stages (directional lights and an orthographic camera only)",
+       VariantRun::Story},
   };
   info.create = [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
     return std::make_unique<gx::GxPath>(ctx, variant);
