@@ -49,6 +49,7 @@ constexpr double kEdgeFraction = 0.10;
 struct Case {
   std::string scene, variant;
 };
+void PrintTo(const Case& c, std::ostream* out) { *out << c.scene << " --variant " << c.variant; }
 
 std::vector<Case> cases() {
   std::vector<std::string> scenes;
