@@ -40,9 +40,11 @@ std::string byte_array(const std::string& name, const std::vector<gx::u8>& bytes
   return s + "};\n";
 }
 
-// One stage showing GX_TEXMAP1's texel (GX_REPLACE: TEXC, TEXA) at the UV in GX_VA_TEX0.
+// One stage showing GX_TEXMAP1's texel (GX_REPLACE: TEXC, TEXA) at the UV in GX_VA_TEX0, every
+// face drawn (GX_Init's GX_CULL_BACK would cull the quad, wound as GL's front face).
 std::string map_program(const std::vector<gx::u8>& tiles, const std::string& format) {
   return byte_array("map", tiles) + R"(GXTexObj tex;
+GX_SetCullMode(GX_CULL_NONE);
 GX_ClearVtxDesc();
 GX_SetVtxDesc(GX_VA_POS, GX_DIRECT);
 GX_SetVtxDesc(GX_VA_TEX0, GX_DIRECT);

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "map_test_util.h"
 #include "regress/junit.h"
 #include "regress_fixture.h"
 #include "test_util.h"
@@ -179,17 +180,22 @@ TEST_F(Regress, BadSceneAmongGoodOnesWritesNothing) {
 TEST_F(Regress, AScenePathRefusesStopsTheRunBeforeAnyGoldenIsWritten) {
   fs::create_directories(dir / "set");
   test::write_quad_scene(dir / "set", "a_good", 4);
+  // A lobe ramp over 1 (a float ramp): gx's 8-bit LUT cannot hold it, which gx finds when it
+  // builds the path, not when it reads the scene.
+  test::write_test_image(dir / "set" / "hot_ramp.exr", 4, 1, 3, std::vector<float>(12, 2.0f));
   test::write_file(dir / "set" / "b_refused.json", R"({
     "image": {"width": 48, "height": 32},
     "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "fov_y_deg": 40},
-    "materials": {"m-1": {"albedo": [0.8, 0.7, 0.6]}, "m_1": {"albedo": [0.5, 0.7, 0.6]}},
+    "materials": {"m_1": {"albedo": [0.5, 0.7, 0.6], "translucency": {"power": 4,
+                  "distortion": 0.2, "ambient": 0.1, "thickness": 0.5, "ramp": "hot_ramp.exr"}}},
     "lights": [{"type": "directional", "direction": [0.3, 0.2, 1]}],
-    "objects": [{"mesh": "quad.obj", "material": "m-1"}, {"mesh": "quad.obj", "material": "m_1"}]})");
+    "objects": [{"mesh": "quad.obj", "material": "m_1"}]})");
   const auto cli = test::run_ltrender("regress " + (dir / "set").string() + " --goldens " +
                                       (dir / "goldens").string() + " --paths glsl,gx --update");
   EXPECT_EQ(cli.exit_code, 2) << cli.out << cli.err;
   EXPECT_EQ(cli.err, "ltrender: error: " + (dir / "set" / "b_refused.json").string() +
-                         ":materials.m_1: gx: two materials share the C name m_1\n");
+                         ":materials.m_1.translucency.ramp: gx: the ramp holds values up to 2; "
+                         "the 8-bit lobe LUT holds 0..1\n");
   EXPECT_EQ(cli.out, "") << "no case ran";
   EXPECT_FALSE(fs::exists(dir / "goldens"));
   // Without the path that refuses it, the scene runs.
