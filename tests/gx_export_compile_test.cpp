@@ -62,8 +62,15 @@ TEST_P(GxExportCompiles, WithThePowerPcCompilerAgainstLibogc) {
   for (const VariantInfo& v : gx.variants) {
     if (!gx.refusal(scene, v.name).empty()) continue;
     const fs::path c = dir / (test::test_param_name(v.name) + ".c");
-    const test::RunResult r = test::run_ltrender("export gx " + scene_file.string() +
-                                                 " --variant " + v.name + " -o " + c.string());
+    auto export_c = [&](const std::string& variant) {
+      return test::run_ltrender("export gx " + scene_file.string() + " --variant " + variant +
+                                " -o " + c.string());
+    };
+    test::RunResult r = export_c(v.name);
+    // A 1024x1024 RGBA8 thickness map makes a C file over the program input cap (the teapot of
+    // scenes/maps): export refuses it and names :map=rgb565, which halves the array.
+    if (r.exit_code == 2 && r.err.find("program file may be") != std::string::npos)
+      r = export_c(v.name + ":map=rgb565");
     ASSERT_EQ(r.exit_code, 0) << v.name << ": " << r.err;
     for (const fs::path& ogc : checkouts) {
       const fs::path log = dir / "cc.log";
