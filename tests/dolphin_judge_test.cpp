@@ -49,7 +49,9 @@ constexpr double kEdgeFraction = 0.10;
 struct Case {
   std::string scene, variant;
 };
-void PrintTo(const Case& c, std::ostream* out) { *out << c.scene << " --variant " << c.variant; }
+void PrintTo(const Case& c, std::ostream* out) {
+  *out << c.scene << " --variant " << c.variant;
+}
 
 std::vector<Case> cases() {
   std::vector<std::string> scenes;
@@ -96,8 +98,10 @@ std::vector<bool> edge_band(const Image& img, int reach) {
   std::vector<bool> stepped(static_cast<size_t>(w) * h, false);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      if (x + 1 < w && step(at(x, y), at(x + 1, y))) stepped[at(x, y)] = stepped[at(x + 1, y)] = true;
-      if (y + 1 < h && step(at(x, y), at(x, y + 1))) stepped[at(x, y)] = stepped[at(x, y + 1)] = true;
+      if (x + 1 < w && step(at(x, y), at(x + 1, y)))
+        stepped[at(x, y)] = stepped[at(x + 1, y)] = true;
+      if (y + 1 < h && step(at(x, y), at(x, y + 1)))
+        stepped[at(x, y)] = stepped[at(x, y + 1)] = true;
     }
   }
   std::vector<bool> band(stepped.size(), false);
@@ -105,7 +109,8 @@ std::vector<bool> edge_band(const Image& img, int reach) {
     for (int x = 0; x < w; ++x) {
       if (!stepped[at(x, y)]) continue;
       for (int v = std::max(0, y - reach); v <= std::min(h - 1, y + reach); ++v) {
-        for (int u = std::max(0, x - reach); u <= std::min(w - 1, x + reach); ++u) band[at(u, v)] = true;
+        for (int u = std::max(0, x - reach); u <= std::min(w - 1, x + reach); ++u)
+          band[at(u, v)] = true;
       }
     }
   }
@@ -150,7 +155,8 @@ TEST_P(DolphinJudge, DolphinsFrameIsLtrendersXfbPicture) {
               differ, max, interior_differ, interior_max, edge_differ);
   ASSERT_GT(covered, ours.pixel_count() / 50) << "the scene covers almost nothing";
   EXPECT_LE(interior_max, kInteriorMaxLsb);
-  EXPECT_LE(static_cast<double>(interior_differ), kInteriorFraction * static_cast<double>(interior));
+  EXPECT_LE(static_cast<double>(interior_differ),
+            kInteriorFraction * static_cast<double>(interior));
   EXPECT_LE(static_cast<double>(edge_differ), kEdgeFraction * static_cast<double>(covered));
 }
 

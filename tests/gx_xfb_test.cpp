@@ -71,10 +71,10 @@ TEST(GxXfb, FlatPrimaries) {
   expect_flat(kBlue, {0, 0, 255, 255});
 }
 
-// The probe's frame (../shared/tools/dolphin-probe): Dolphin itself showed an EFB of
-// (255, 128, 0) as (255, 127, 0). Y = 33342 >> 8 = 130, U = -19162 >> 8 = -75, V = 16528 >> 8 =
-// 64 + 1 = 65 -> R = 151.32 + 103.74 -> 255, G = 151.32 + 29.4 - 52.845 = 127.875 -> 127,
-// B = 151.32 - 151.275 = 0.045 -> 0.
+// A hand-written probe FIFO log (a throwaway writer, not in this repository): Dolphin showed
+// an EFB of (255, 128, 0) as (255, 127, 0). Y = 33342 >> 8 = 130, U = -19162 >> 8 = -75,
+// V = 16528 >> 8 = 64 + 1 = 65 -> R = 151.32 + 103.74 -> 255,
+// G = 151.32 + 29.4 - 52.845 = 127.875 -> 127, B = 151.32 - 151.275 = 0.045 -> 0.
 TEST(GxXfb, OrangeAsDolphinShowedIt) {
   expect_flat({255, 128, 0, 255}, {255, 127, 0, 255});
 }

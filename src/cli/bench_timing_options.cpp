@@ -38,8 +38,10 @@ std::function<void()> add_timing_options(CLI::App& sub, BenchOptions& o) {
   CLI::Option* quick = sub.add_flag("--quick")->description(
       "Quick timing: one round and a short minimum time, for comparing variants by hand (the "
       "report says it was quick)");
-  CLI::Option* precise = sub.add_flag("--precise")->description(
-      "Precise timing, the default: rounds to a +-2% interval (the CI standard of metrics.md)");
+  CLI::Option* precise = sub.add_flag("--precise")
+                             ->description(
+                                 "Precise timing, the default: rounds to a +-2% interval (the CI "
+                                 "standard of metrics.md)");
   struct Setting {
     CLI::Option* option;
     std::function<void(BenchOptions&)> take;  // copies the given value into the options

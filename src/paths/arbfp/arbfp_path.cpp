@@ -271,8 +271,7 @@ PathInfo arbfp_path_info() {
           {"pow=sg", "exp2(n'(t-1)), n' = 1.4427p + 1.4427: 2 ALU, a close but different curve",
            VariantRun::Story},
           {"pow=sg-fitted", "exp2(n'(t-1)) with n' fitted per material to the max error"},
-          {"pow=sg-simplified",
-           "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)",
+          {"pow=sg-simplified", "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)",
            VariantRun::Story},
       },
       [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {

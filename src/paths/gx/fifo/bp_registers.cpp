@@ -113,8 +113,8 @@ u32 tev_konst_select(const TevState& tev, int i) {
 // ref0 0-7, ref1 8-15, comp0 16-18, comp1 19-21, op 22-23 [OGC gx.c GX_SetAlphaCompare
 // L4039-4044] [DHW BPMemory.h AlphaTest].
 u32 alpha_compare(const AlphaCompare& a) {
-  return place(a.ref0, 0, 8) | place(a.ref1, 8, 8) | place(a.comp0, 16, 3) |
-         place(a.comp1, 19, 3) | place(a.op, 22, 2);
+  return place(a.ref0, 0, 8) | place(a.ref1, 8, 8) | place(a.comp0, 16, 3) | place(a.comp1, 19, 3) |
+         place(a.op, 22, 2);
 }
 
 // cmode0: blend enable 0 (GX_BM_BLEND or GX_BM_SUBTRACT), logic 1, dither 2, colour update 3,
@@ -168,7 +168,8 @@ void write_pass_bp(CommandStream& out, const GxState& s,
   // extra writes "should obviously flush the Write Gather Pipe" [OGC gx.c L3785-3787]).
   auto write_pair = [&](int index, const std::array<u32, 2>& halves) {
     out.load_bp(static_cast<u8>(bp::kTevRegisterRA0 + 2 * index), halves[0]);
-    for (int i = 0; i < 3; ++i) out.load_bp(static_cast<u8>(bp::kTevRegisterBG0 + 2 * index), halves[1]);
+    for (int i = 0; i < 3; ++i)
+      out.load_bp(static_cast<u8>(bp::kTevRegisterBG0 + 2 * index), halves[1]);
   };
   for (int r = 0; r < kTevRegisters; ++r)
     write_pair(r, tev_register(tev.registers[static_cast<size_t>(r)]));
@@ -219,7 +220,8 @@ void write_gx_init_bp(CommandStream& out, FrameSize size) {
   out.load_bp(bp::kScissorTopLeft, place(kScreenOffset, 0, 11) | place(kScreenOffset, 12, 11));
   out.load_bp(bp::kScissorBottomRight,
               place(kScreenOffset + h - 1, 0, 11) | place(kScreenOffset + w - 1, 12, 11));
-  out.load_bp(bp::kScissorOffset, place(kScreenOffset >> 1, 0, 10) | place(kScreenOffset >> 1, 10, 10));
+  out.load_bp(bp::kScissorOffset,
+              place(kScreenOffset >> 1, 0, 10) | place(kScreenOffset >> 1, 10, 10));
   // GX_Init's z mode and blend mode (GxState's defaults), so the frame's clearing copy - which
   // clears only what the colour update and z update bits let through [DHW BPStructs.cpp
   // BPMEM_TRIGGER_EFB_COPY, ClearScreen] - starts from them, as after GX_Init.
@@ -267,8 +269,8 @@ namespace {
 // (update kept), blend and logic off, z-compare-before-texture off while the copy clears,
 // then source, size, stride, destination, the trigger, and the mirror's values restored
 // [OGC gx.c L2010-2054, L2056-2097].
-void write_clearing_copy(CommandStream& out, FrameSize size, u32 address, u32 stride,
-                         u32 trigger, bool restore) {
+void write_clearing_copy(CommandStream& out, FrameSize size, u32 address, u32 stride, u32 trigger,
+                         bool restore) {
   const u32 zmode = out.bp[bp::kZMode], cmode0 = out.bp[bp::kBlendMode];
   const u32 pe = out.bp[bp::kPixelControl];
   out.load_bp(bp::kZMode, (zmode & ~0xfu) | 0xf, false);

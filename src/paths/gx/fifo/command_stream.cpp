@@ -10,7 +10,9 @@ void CommandStream::put_u32(u32 v) {
   for (int shift = 24; shift >= 0; shift -= 8) bytes_.push_back(static_cast<u8>(v >> shift));
 }
 
-void CommandStream::put_f32(float v) { put_u32(float_bits(v)); }
+void CommandStream::put_f32(float v) {
+  put_u32(float_bits(v));
+}
 
 void CommandStream::load_bp(u8 reg, u32 value, bool mirror) {
   put_u8(0x61);
@@ -52,7 +54,11 @@ void CommandStream::begin(u8 primitive, u8 vat, u16 count) {
   put_u8(static_cast<u8>(count));
 }
 
-u32 float_bits(float v) { return std::bit_cast<u32>(v); }
-float bits_float(u32 v) { return std::bit_cast<float>(v); }
+u32 float_bits(float v) {
+  return std::bit_cast<u32>(v);
+}
+float bits_float(u32 v) {
+  return std::bit_cast<float>(v);
+}
 
 }  // namespace lt::gx::fifo

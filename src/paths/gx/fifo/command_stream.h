@@ -17,11 +17,11 @@
 
 namespace lt::gx::fifo {
 
-inline constexpr size_t kBpRegisters = 256;    // BP address space [DHW BPMemory.h BPMemory]
-inline constexpr size_t kCpRegisters = 256;    // CP register snapshot [DHW FifoDataFile.h]
+inline constexpr size_t kBpRegisters = 256;       // BP address space [DHW BPMemory.h BPMemory]
+inline constexpr size_t kCpRegisters = 256;       // CP register snapshot [DHW FifoDataFile.h]
 inline constexpr size_t kXfMemoryWords = 0x1000;  // XF matrix and light memory
 inline constexpr u32 kXfRegisterBase = 0x1000;
-inline constexpr size_t kXfRegisters = 0x58;   // XF 0x1000..0x1057 [DHW XFMemory.h XFMemory]
+inline constexpr size_t kXfRegisters = 0x58;  // XF 0x1000..0x1057 [DHW XFMemory.h XFMemory]
 
 // GX_TRIANGLES: primitive 2 [OGC gx.h GX_TRIANGLES 0x90] [DHW OpcodeDecoding.h Primitive].
 inline constexpr u8 kPrimitiveTriangles = 2;
@@ -61,7 +61,11 @@ u32 float_bits(float v);
 float bits_float(u32 v);
 
 // The value of `bits` bits at `shift` of `reg`, and `v` placed there (masked to the field).
-constexpr u32 field(u32 reg, int shift, int bits) { return (reg >> shift) & ((1u << bits) - 1); }
-constexpr u32 place(u32 v, int shift, int bits) { return (v & ((1u << bits) - 1)) << shift; }
+constexpr u32 field(u32 reg, int shift, int bits) {
+  return (reg >> shift) & ((1u << bits) - 1);
+}
+constexpr u32 place(u32 v, int shift, int bits) {
+  return (v & ((1u << bits) - 1)) << shift;
+}
 
 }  // namespace lt::gx::fifo

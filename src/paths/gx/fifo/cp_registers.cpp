@@ -38,13 +38,16 @@ u32 vcd_low(const VertexDescriptor& v) {
 
 u32 vcd_high(const VertexDescriptor& v) {
   u32 r = 0;
-  for (int n = 0; n < kMaxTexGens; ++n) r |= place(v.type[static_cast<size_t>(kVaTex0 + n)], 2 * n, 2);
+  for (int n = 0; n < kMaxTexGens; ++n)
+    r |= place(v.type[static_cast<size_t>(kVaTex0 + n)], 2 * n, 2);
   return r;
 }
 
 std::array<u32, 3> vertex_attribute_formats(const TexCoordFormats& formats) {
   const TexCoordFormats f = sent_formats(formats);
-  auto st = [&](int n) { return f.kind[static_cast<size_t>(n)] == TexCoordFormats::ST ? kTexSt : 0u; };
+  auto st = [&](int n) {
+    return f.kind[static_cast<size_t>(n)] == TexCoordFormats::ST ? kTexSt : 0u;
+  };
   // VAT A: position count 0, format 1-3; normal count 9, format 10-12; colour 0 count 13,
   // format 14-16; colour 1 17, 18-20; TEX0 count 21, format 22-24 (fractions 0: floats).
   const u32 a = place(kPosXyz, 0, 1) | place(kF32, 1, 3) | place(kF32, 10, 3) |

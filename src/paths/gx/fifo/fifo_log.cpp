@@ -42,8 +42,8 @@ class Reader {
   template <size_t N>
   void words(uint64_t at, u32 count, std::array<u32, N>& out, const std::string& what) const {
     if (count != N)
-      throw InputError(file_, what, "holds " + std::to_string(count) + " words, expected " +
-                                        std::to_string(N));
+      throw InputError(file_, what,
+                       "holds " + std::to_string(count) + " words, expected " + std::to_string(N));
     for (size_t i = 0; i < N; ++i) out[i] = u32_at(at + 4 * i, what);
   }
   std::vector<u8> slice(uint64_t at, uint64_t n, const std::string& what) const {

@@ -6,14 +6,18 @@ namespace lt::gx::fifo {
 
 namespace {
 
-float xf_float(const RegisterFile& r, u32 address) { return bits_float(r.xf_memory[address]); }
+float xf_float(const RegisterFile& r, u32 address) {
+  return bits_float(r.xf_memory[address]);
+}
 
 Color8 xf_color(u32 w) {
   return {static_cast<u8>(w >> 24), static_cast<u8>(w >> 16), static_cast<u8>(w >> 8),
           static_cast<u8>(w)};
 }
 
-s16 s11(u32 v) { return static_cast<s16>((v & 0x400) ? static_cast<int>(v) - 0x800 : static_cast<int>(v)); }
+s16 s11(u32 v) {
+  return static_cast<s16>((v & 0x400) ? static_cast<int>(v) - 0x800 : static_cast<int>(v));
+}
 
 TevCombiner combiner(u32 env, bool alpha) {
   TevCombiner c;
@@ -71,8 +75,9 @@ DecodedPass decode_pass(const RegisterFile& r) {
         static_cast<u8>(field(rg, 0, 2)), static_cast<u8>(field(rg, 2, 2)),
         static_cast<u8>(field(ba, 0, 2)), static_cast<u8>(field(ba, 2, 2))};
     const auto& reg = r.tev_registers[static_cast<size_t>(t)];
-    s.tev.registers[static_cast<size_t>(t)] = {s11(field(reg[0], 0, 11)), s11(field(reg[1], 12, 11)),
-                                               s11(field(reg[1], 0, 11)), s11(field(reg[0], 12, 11))};
+    s.tev.registers[static_cast<size_t>(t)] = {
+        s11(field(reg[0], 0, 11)), s11(field(reg[1], 12, 11)), s11(field(reg[1], 0, 11)),
+        s11(field(reg[0], 12, 11))};
     const auto& k = r.tev_konst[static_cast<size_t>(t)];
     s.tev.konst[static_cast<size_t>(t)] = {
         static_cast<u8>(field(k[0], 0, 8)), static_cast<u8>(field(k[1], 12, 8)),
