@@ -49,8 +49,8 @@ TEST(GxFifoBits, TevAlphaCombinerCarriesTheSwaps) {
   s.alpha = TevCombiner{4, 5, 6, 7, 1, 1, 1, false, 1};
   s.ras_swap = 1;
   s.tex_swap = 2;
-  EXPECT_EQ(tev_alpha_env(s), 0x8000u + 0x1400 + 0x300 + 0x70 + 1 + 8 + 0x40000 + 0x10000 +
-                                  0x100000 + 0x400000);
+  EXPECT_EQ(tev_alpha_env(s),
+            0x8000u + 0x1400 + 0x300 + 0x70 + 1 + 8 + 0x40000 + 0x10000 + 0x100000 + 0x400000);
 }
 
 // GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLOR0A0) writes 0 in the low
@@ -173,9 +173,7 @@ TEST(GxFifoBits, ProjectionClipsZToMinusWToZero) {
   cam.near = 0.5;
   cam.far = 10;
   const auto p = projection_words(cam, {320, 240});
-  auto z_over_w = [&](double z) {
-    return (bits_float(p[4]) * z + bits_float(p[5])) / -z;
-  };
+  auto z_over_w = [&](double z) { return (bits_float(p[4]) * z + bits_float(p[5])) / -z; };
   EXPECT_EQ(p[6], 0u);
   EXPECT_NEAR(z_over_w(-0.5), -1.0, 1e-6);
   EXPECT_NEAR(z_over_w(-10), 0.0, 1e-6);
@@ -245,8 +243,8 @@ TEST_P(GxFifoScene, EveryPassDecodesToTheStateTheEmulatorRuns) {
         std::array<const TextureObject*, kMaxTexMaps> textures{};
         std::array<u32, kMaxTexMaps> addresses{};
         for (size_t map = 0; map < kMaxTexMaps; ++map) {
-          textures[map] = p.state.textures[map] ? &*p.state.textures[map]
-                                                : (map == 0 ? &lut : nullptr);
+          textures[map] =
+              p.state.textures[map] ? &*p.state.textures[map] : (map == 0 ? &lut : nullptr);
           addresses[map] = 0x01040000 + 0x20000 * static_cast<u32>(map);
         }
         CommandStream out;
@@ -293,7 +291,8 @@ TEST_P(GxFifoScene, FrameDrawsEveryPassWithItsStateTexturesAndVertices) {
         if (static_cast<size_t>(scene.objects[o].material) != m) continue;
         const size_t n = scene.objects[o].mesh.triangles.size() * 3;
         for (size_t first = 0; first < n; first += 65535)
-          expected.push_back({&programs.by_material[m][static_cast<size_t>(pass)].state, m, o, first});
+          expected.push_back(
+              {&programs.by_material[m][static_cast<size_t>(pass)].state, m, o, first});
       }
     }
   const SceneView view = SceneView::of(scene);
@@ -303,43 +302,45 @@ TEST_P(GxFifoScene, FrameDrawsEveryPassWithItsStateTexturesAndVertices) {
   const FifoFrame& frame = log.frames[0];
   RegisterFile regs;
   size_t k = 0;
-  const StreamEvents events = read_stream(frame.fifo, regs, GetParam(), [&](const RegisterFile& r,
-                                                                             const StreamDraw& d) {
-    ASSERT_LT(k, expected.size());
-    const Expected& e = expected[k++];
-    const std::string where = GetParam() + " draw " + std::to_string(k - 1);
-    const TextureObject lut = lobe_lut(scene.materials[e.material], gv.lut_size);
-    DecodedPass dp = decode_pass(r);
-    const GxState want = canonical_state(*e.state, &lut);
-    // A map an earlier pass loaded keeps its registers; the pass test above checks that each
-    // pass writes exactly its own maps.
-    for (size_t m = 0; m < kMaxTexMaps; ++m)
-      if (!want.textures[m]) dp.state.textures[m].reset();
-    expect_same_state(dp.state, want, where);
-    for (int st = 0; st < dp.state.tev.num_stages; ++st) {
-      const u8 map = dp.state.tev.stages[static_cast<size_t>(st)].texmap;
-      if (map == kTexMapNull) continue;
-      const auto& t = e.state->textures[map];
-      const std::vector<u8>& tiles = t ? t->data : lut.data;
-      const u32 address = dp.texture_addresses[map];
-      bool found = false;
-      for (const MemoryUpdate& u : frame.updates)
-        if (u.address == address && u.fifo_position <= d.offset) found |= u.data == tiles;
-      EXPECT_TRUE(found) << where << ": map " << int{map} << " has no memory update of its tiles";
-    }
-    // Vertices: the position of every vertex, and the whole first vertex's size.
-    const TriangleMesh& mesh = scene.objects[e.object].mesh;
-    EXPECT_EQ(d.vertex_size, vertex_size(sent_attributes(*e.state), e.state->texcoord_formats));
-    for (u32 v = 0; v < d.count; ++v) {
-      const size_t flat = e.first + v;
-      const u32 index = mesh.triangles[flat / 3][static_cast<int>(flat % 3)];
-      for (int c = 0; c < 3; ++c) {
-        const u8* p = &frame.fifo[d.offset + v * d.vertex_size + 4 * static_cast<size_t>(c)];
-        const u32 w = (u32{p[0]} << 24) | (u32{p[1]} << 16) | (u32{p[2]} << 8) | p[3];
-        ASSERT_EQ(bits_float(w), streams[e.object].position[index][c]) << where << " vertex " << v;
-      }
-    }
-  });
+  const StreamEvents events =
+      read_stream(frame.fifo, regs, GetParam(), [&](const RegisterFile& r, const StreamDraw& d) {
+        ASSERT_LT(k, expected.size());
+        const Expected& e = expected[k++];
+        const std::string where = GetParam() + " draw " + std::to_string(k - 1);
+        const TextureObject lut = lobe_lut(scene.materials[e.material], gv.lut_size);
+        DecodedPass dp = decode_pass(r);
+        const GxState want = canonical_state(*e.state, &lut);
+        // A map an earlier pass loaded keeps its registers; the pass test above checks that each
+        // pass writes exactly its own maps.
+        for (size_t m = 0; m < kMaxTexMaps; ++m)
+          if (!want.textures[m]) dp.state.textures[m].reset();
+        expect_same_state(dp.state, want, where);
+        for (int st = 0; st < dp.state.tev.num_stages; ++st) {
+          const u8 map = dp.state.tev.stages[static_cast<size_t>(st)].texmap;
+          if (map == kTexMapNull) continue;
+          const auto& t = e.state->textures[map];
+          const std::vector<u8>& tiles = t ? t->data : lut.data;
+          const u32 address = dp.texture_addresses[map];
+          bool found = false;
+          for (const MemoryUpdate& u : frame.updates)
+            if (u.address == address && u.fifo_position <= d.offset) found |= u.data == tiles;
+          EXPECT_TRUE(found) << where << ": map " << int{map}
+                             << " has no memory update of its tiles";
+        }
+        // Vertices: the position of every vertex, and the whole first vertex's size.
+        const TriangleMesh& mesh = scene.objects[e.object].mesh;
+        EXPECT_EQ(d.vertex_size, vertex_size(sent_attributes(*e.state), e.state->texcoord_formats));
+        for (u32 v = 0; v < d.count; ++v) {
+          const size_t flat = e.first + v;
+          const u32 index = mesh.triangles[flat / 3][static_cast<int>(flat % 3)];
+          for (int c = 0; c < 3; ++c) {
+            const u8* p = &frame.fifo[d.offset + v * d.vertex_size + 4 * static_cast<size_t>(c)];
+            const u32 w = (u32{p[0]} << 24) | (u32{p[1]} << 16) | (u32{p[2]} << 8) | p[3];
+            ASSERT_EQ(bits_float(w), streams[e.object].position[index][c])
+                << where << " vertex " << v;
+          }
+        }
+      });
   EXPECT_EQ(k, expected.size());
   ASSERT_EQ(events.copies.size(), 2u);
   EXPECT_EQ(events.copies[0] >> 11 & 1, 1u);  // clears
@@ -373,10 +374,10 @@ TEST(GxFifoLog, HeaderSnapshotIsGxInitsState) {
   regs.xf_memory = log.xf_memory;
   regs.xf_registers = log.xf_registers;
   expect_same_state(decode_pass(regs).state, canonical_state(GxState{}, nullptr), "header");
-  EXPECT_EQ(log.bp[0x00], 0x4001u);  // genmode: 1 texgen, 1 stage, GX_CULL_BACK
-  EXPECT_EQ(log.bp[0x41], 0x4BCu);   // GX_BM_NONE, SRCALPHA, INVSRCALPHA, dither, updates
-  EXPECT_EQ(log.bp[0x40], 0x17u);    // GX_SetZMode(GX_ENABLE, GX_LEQUAL, GX_TRUE)
-  EXPECT_EQ(log.bp[0x43], 0x40u);    // RGB8_Z24, z compare before texturing
+  EXPECT_EQ(log.bp[0x00], 0x4001u);    // genmode: 1 texgen, 1 stage, GX_CULL_BACK
+  EXPECT_EQ(log.bp[0x41], 0x4BCu);     // GX_BM_NONE, SRCALPHA, INVSRCALPHA, dither, updates
+  EXPECT_EQ(log.bp[0x40], 0x17u);      // GX_SetZMode(GX_ENABLE, GX_LEQUAL, GX_TRUE)
+  EXPECT_EQ(log.bp[0x43], 0x40u);      // RGB8_Z24, z compare before texturing
   EXPECT_EQ(log.bp[0x53], 0x595000u);  // GX_SetCopyFilter's default vertical filter [L1965]
   EXPECT_EQ(log.bp[0x54], 0x15u);
   EXPECT_EQ(log.xf_registers[0x12], 1u);  // dual texture transform on [__GX_InitRevBits]
@@ -397,14 +398,14 @@ TEST(GxFifoLog, ContainerHasDolphinsLayout) {
   };
   EXPECT_EQ(u32_at(0), 0x0D01F1F0u);
   EXPECT_EQ(u32_at(4), 5u);
-  EXPECT_EQ(u32_at(20), 256u);          // bpMemSize
-  EXPECT_EQ(u32_at(56), 88u);           // xfRegsSize
-  EXPECT_EQ(u32_at(60), 128u);          // frameListOffset
-  EXPECT_EQ(u32_at(68), 2u);            // frameCount
-  EXPECT_EQ(u32_at(72), 0u);            // flags: GameCube (4:3)
-  EXPECT_EQ(u32_at(84), 1024u * 1024);  // texMemSize
-  EXPECT_EQ(u32_at(88), 0x01800000u);   // mem1_size
-  EXPECT_EQ(u32_at(92), 0x04000000u);   // mem2_size
+  EXPECT_EQ(u32_at(20), 256u);                         // bpMemSize
+  EXPECT_EQ(u32_at(56), 88u);                          // xfRegsSize
+  EXPECT_EQ(u32_at(60), 128u);                         // frameListOffset
+  EXPECT_EQ(u32_at(68), 2u);                           // frameCount
+  EXPECT_EQ(u32_at(72), 0u);                           // flags: GameCube (4:3)
+  EXPECT_EQ(u32_at(84), 1024u * 1024);                 // texMemSize
+  EXPECT_EQ(u32_at(88), 0x01800000u);                  // mem1_size
+  EXPECT_EQ(u32_at(92), 0x04000000u);                  // mem2_size
   EXPECT_EQ(u32_at(128 + 2 * 64 + 4 * 0x41), 0x123u);  // BP snapshot right after the frame list
   EXPECT_TRUE(read_fifo_log(b, "x.dff") == log);
   std::vector<u8> cut(b.begin(), b.end() - 2);
@@ -444,7 +445,8 @@ TEST(GxFifoCli, ExportWritesALogDolphinDumpsAndRefusesWhatTheConsoleCannotShow) 
   const std::string scene = (test::source_dir() / "scenes/backlit_sphere.json").string();
   test::TempDir dir;
   const fs::path dff = dir / "frame.dff";
-  const test::RunResult ok = test::run_ltrender("export gx " + scene + " --format dff --width 320 --height 240 -o " + dff.string());
+  const test::RunResult ok = test::run_ltrender(
+      "export gx " + scene + " --format dff --width 320 --height 240 -o " + dff.string());
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   std::ifstream in(dff, std::ios::binary);
   const std::vector<u8> bytes((std::istreambuf_iterator<char>(in)), {});
@@ -456,15 +458,17 @@ TEST(GxFifoCli, ExportWritesALogDolphinDumpsAndRefusesWhatTheConsoleCannotShow) 
   // The exported C read back with --program draws the very same frame, byte for byte.
   const fs::path c = dir / "exported.c", replayed = dir / "replayed.dff";
   ASSERT_EQ(test::run_ltrender("export gx " + scene + " -o " + c.string()).exit_code, 0);
-  const test::RunResult rp = test::run_ltrender("export gx " + scene + " --format dff --program " + c.string() + " --width 320 --height 240 -o " + replayed.string());
+  const test::RunResult rp =
+      test::run_ltrender("export gx " + scene + " --format dff --program " + c.string() +
+                         " --width 320 --height 240 -o " + replayed.string());
   ASSERT_EQ(rp.exit_code, 0) << rp.err;
   std::ifstream in2(replayed, std::ios::binary);
   EXPECT_TRUE(std::vector<u8>((std::istreambuf_iterator<char>(in2)), {}) == bytes);
 
   // Wider than the EFB, or not a multiple of 16: one line naming the key and the size, nothing
   // written.
-  for (const std::string size : {"--width 656 --height 240", "--width 328 --height 240",
-                                  "--width 320 --height 530"}) {
+  for (const std::string size :
+       {"--width 656 --height 240", "--width 328 --height 240", "--width 320 --height 530"}) {
     const fs::path bad = dir / "bad.dff";
     const test::RunResult r =
         test::run_ltrender("export gx " + scene + " --format dff " + size + " -o " + bad.string());
@@ -480,8 +484,13 @@ TEST(GxFifoCli, ExportWritesALogDolphinDumpsAndRefusesWhatTheConsoleCannotShow) 
   EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
   EXPECT_FALSE(fs::exists(dir / "m.dff"));
   // The extension follows the format; an unknown format is refused.
-  EXPECT_EQ(test::run_ltrender("export gx " + scene + " --format dff -o " + (dir / "x.c").string()).exit_code, 2);
-  EXPECT_EQ(test::run_ltrender("export gx " + scene + " --format png -o " + (dir / "x.png").string()).exit_code, 2);
+  EXPECT_EQ(test::run_ltrender("export gx " + scene + " --format dff -o " + (dir / "x.c").string())
+                .exit_code,
+            2);
+  EXPECT_EQ(
+      test::run_ltrender("export gx " + scene + " --format png -o " + (dir / "x.png").string())
+          .exit_code,
+      2);
   EXPECT_FALSE(fs::exists(dir / "x.c"));
 }
 

@@ -1,9 +1,9 @@
 // Generates the GX program of every material and pass of a scene, as libogc calls (the one
 // program representation, program/program_file.h): what a porter pastes into the game, what the
 // emulator runs and what the budget counts. Three steps over one typed plan (pass_plan.h):
-// plan_scene chooses, emit_programs writes the calls, describe_pass writes the note. Only what the scene uses is generated: a material
-// without translucency gets one diffuse stage, a constant thickness needs no vertex colour, a
-// flat lobe (power 0 or scale 0) no texture.
+// plan_scene chooses, emit_programs writes the calls, describe_pass writes the note. Only what the
+// scene uses is generated: a material without translucency gets one diffuse stage, a constant
+// thickness needs no vertex colour, a flat lobe (power 0 or scale 0) no texture.
 //
 // One light's term in one pass (gx-hardware.md §5.2, with the scales made explicit):
 //   COLOR0A0 = T' x clamp(att' * LC')       thickness x light colour x albedo (x tint), XF

@@ -321,8 +321,7 @@ PathInfo gx_path_info() {
   info.fifo_log = [](const Scene& scene, const std::string& v, const PathOptions& options,
                      int width, int height) {
     const gx::GxVariant variant = gx::parse_gx_variant(v);
-    const gx::ScenePrograms programs =
-        gx::scene_programs_for(scene, variant, options.program_file);
+    const gx::ScenePrograms programs = gx::scene_programs_for(scene, variant, options.program_file);
     return gx::fifo::write_fifo_log(gx::fifo::for_dolphin(
         gx::fifo::record_frames(scene, {{variant, &programs}}, {width, height})));
   };

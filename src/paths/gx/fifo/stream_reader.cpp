@@ -14,7 +14,7 @@ size_t stream_vertex_size(const RegisterFile& r) {
   if (field(lo, 15, 2)) n += 4;
   // Each TEXn's element count bit: VAT A 21; VAT B 0, 9, 18, 27; VAT C 5, 14, 23
   // [DHW CPMemory.h UVAT_group0..2].
-  const bool st[8] = {field(vat_a, 21, 1) != 0, field(vat_b, 0, 1) != 0, field(vat_b, 9, 1) != 0,
+  const bool st[8] = {field(vat_a, 21, 1) != 0, field(vat_b, 0, 1) != 0,  field(vat_b, 9, 1) != 0,
                       field(vat_b, 18, 1) != 0, field(vat_b, 27, 1) != 0, field(vat_c, 5, 1) != 0,
                       field(vat_c, 14, 1) != 0, field(vat_c, 23, 1) != 0};
   for (int t = 0; t < 8; ++t)

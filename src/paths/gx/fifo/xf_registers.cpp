@@ -44,8 +44,8 @@ u32 texgen_word(const TexGen& t) {
 }
 
 std::array<u32, 16> light_words(const XfLight& l) {
-  const float v[12] = {l.a[0],       l.a[1],       l.a[2],       l.k[0],
-                       l.k[1],       l.k[2],       l.position.x, l.position.y,
+  const float v[12] = {l.a[0],       l.a[1],        l.a[2],        l.k[0],
+                       l.k[1],       l.k[2],        l.position.x,  l.position.y,
                        l.position.z, l.direction.x, l.direction.y, l.direction.z};
   std::array<u32, 16> w{};
   w[3] = color_word(l.color);
@@ -61,11 +61,16 @@ std::array<u32, 7> projection_words(const Camera& cam, FrameSize size) {
   u32 type = 0;  // GX_PERSPECTIVE 0, GX_ORTHOGRAPHIC 1 [OGC gx.h]
   if (cam.projection == Camera::Projection::Perspective) {
     const double t = std::tan(glm::radians(cam.fov_y_deg) / 2);
-    p = {static_cast<float>(1 / (aspect * t)), 0.0f, static_cast<float>(1 / t), 0.0f,
-         static_cast<float>(-n / (f - n)), static_cast<float>(-f * n / (f - n))};
+    p = {static_cast<float>(1 / (aspect * t)),
+         0.0f,
+         static_cast<float>(1 / t),
+         0.0f,
+         static_cast<float>(-n / (f - n)),
+         static_cast<float>(-f * n / (f - n))};
   } else {
     const double h = cam.height / 2, w = h * aspect;
-    p = {static_cast<float>(1 / w), 0.0f, static_cast<float>(1 / h), 0.0f,
+    p = {static_cast<float>(1 / w),        0.0f,
+         static_cast<float>(1 / h),        0.0f,
          static_cast<float>(-1 / (f - n)), static_cast<float>(-f / (f - n))};
     type = 1;
   }
@@ -77,8 +82,11 @@ std::array<u32, 7> projection_words(const Camera& cam, FrameSize size) {
 
 std::array<u32, 6> viewport_words(FrameSize size) {
   const float w = static_cast<float>(size.width), h = static_cast<float>(size.height);
-  return {float_bits(w * 0.5f),          float_bits(-h * 0.5f),         float_bits(kZMax),
-          float_bits(w * 0.5f + kScreenOffset), float_bits(h * 0.5f + kScreenOffset),
+  return {float_bits(w * 0.5f),
+          float_bits(-h * 0.5f),
+          float_bits(kZMax),
+          float_bits(w * 0.5f + kScreenOffset),
+          float_bits(h * 0.5f + kScreenOffset),
           float_bits(kZMax)};
 }
 
@@ -129,8 +137,7 @@ void write_gx_init_xf(CommandStream& out) {
   out.load_xf(xf::kError, 0x3f);
   out.load_xf(xf::kDualTexture, 1);
   out.load_xf(xf::kClipDisable, 0);
-  load_floats(out, xf::kPostMatrices + 4 * xf::kPostIdentity,
-              {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
+  load_floats(out, xf::kPostMatrices + 4 * xf::kPostIdentity, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
 }
 
 }  // namespace lt::gx::fifo

@@ -6,8 +6,8 @@
 #include <array>
 #include <glm/glm.hpp>
 
-#include "paths/gx/fifo/command_stream.h"
 #include "paths/gx/fifo/bp_registers.h"
+#include "paths/gx/fifo/command_stream.h"
 #include "paths/gx/gx_state.h"
 #include "scene/scene.h"
 

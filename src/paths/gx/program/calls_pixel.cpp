@@ -22,7 +22,8 @@ void add_pixel_calls(CallTable& table) {
           m.state.blend = {m.u(0), m.u(1), m.u(2), m.u(3)};
         }}},
       // Every mode is modelled: the rasteriser culls as the setup unit does (gx_state.h).
-      {"GX_SetCullMode", {{integer(G::CullMode, 0, 3)}, [](Machine& m) { m.state.cull_mode = m.u(0); }}},
+      {"GX_SetCullMode",
+       {{integer(G::CullMode, 0, 3)}, [](Machine& m) { m.state.cull_mode = m.u(0); }}},
       // Visibility comes from one depth buffer shared by every pass (the first pass's depth, as
       // an EQUAL/LEQUAL test without update gives on hardware), so only those modes are modelled.
       {"GX_SetZMode",

@@ -99,12 +99,11 @@ std::vector<std::vector<PassProgram>> scene_programs(const ProgramFile& file, co
                            pass_function_name(id, 0) + ")");
     for (const auto& [pass, program] : passes) {
       if (pass != static_cast<int>(out[m].size()))
-        throw InputError(
-            file.file, "",
-            "material " + scene.materials[m].name + " has no pass " +
-                std::to_string(out[m].size()) + " (" +
-                pass_function_name(id, static_cast<int>(out[m].size())) +
-                ") before pass " + std::to_string(pass));
+        throw InputError(file.file, "",
+                         "material " + scene.materials[m].name + " has no pass " +
+                             std::to_string(out[m].size()) + " (" +
+                             pass_function_name(id, static_cast<int>(out[m].size())) +
+                             ") before pass " + std::to_string(pass));
       out[m].push_back(program);
     }
   }
