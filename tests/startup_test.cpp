@@ -3,6 +3,7 @@
 // `budget FILE` and `info` use no image and must not pay that. The image module
 // (image/image_codec.h) is found beside the executable or in the build directory.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -34,6 +35,25 @@ TEST(Startup, TheBinaryMapsNoImageLibrary) {
   EXPECT_EQ(libs.find("libOpenImageIO"), std::string::npos) << libs;
   EXPECT_EQ(libs.find("libopencv"), std::string::npos) << libs;
   EXPECT_EQ(libs.find("libltrender_imageio"), std::string::npos) << libs;
+}
+
+// gtest builds every parameter list in every test process, and ctest starts one process per
+// test: a list made by loading scenes (a map's image opens the image module, ~0.3 s) was paid
+// ~1,700 times and was half the suite's CPU time (issue 28). Listing the tests must load none.
+// LD_DEBUG=files makes ld.so print each library it opens, dlopen's included, to stderr.
+TEST(Startup, ListingTheTestsLoadsNoImage) {
+  const std::string cmd = "LD_DEBUG=files /proc/" + std::to_string(::getpid()) +
+                          "/exe --gtest_list_tests 2>&1 >/dev/null";
+  std::string out;
+  FILE* p = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  ::pclose(p);
+  // The trace itself worked: the GL library the binary links is opened at start.
+  ASSERT_NE(out.find("libOSMesa"), std::string::npos) << out.substr(0, 2000);
+  EXPECT_EQ(out.find("libltrender_imageio"), std::string::npos)
+      << "a parameter list loads a scene or an image; build it from file names (bounds_test.cpp)";
 }
 
 // A copy of the binary elsewhere (no module beside it) finds the module in the build directory
