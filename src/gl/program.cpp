@@ -39,25 +39,37 @@ GLuint compile(GLenum type, const std::string& src, const std::string& name) {
 
 GlslProgram::GlslProgram(const std::string& vs, const std::string& fs, const std::string& name)
     : vs_(vs), fs_(fs) {
-  vertex_ = compile(GL_VERTEX_SHADER, vs, name);
-  fragment_ = compile(GL_FRAGMENT_SHADER, fs, name);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vertex_);
-  glAttachShader(program_, fragment_);
-  glLinkProgram(program_);
-  GLint ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-    throw std::runtime_error("GLSL link error in " + name + ": " + log);
+  // A constructor that throws runs no destructor: every object made so far is released here
+  // before the error leaves (a failed fragment compile or link used to leak the rest).
+  try {
+    vertex_ = compile(GL_VERTEX_SHADER, vs, name);
+    fragment_ = compile(GL_FRAGMENT_SHADER, fs, name);
+    program_ = glCreateProgram();
+    glAttachShader(program_, vertex_);
+    glAttachShader(program_, fragment_);
+    glLinkProgram(program_);
+    GLint ok = 0;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+      char log[4096];
+      glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+      throw std::runtime_error("GLSL link error in " + name + ": " + log);
+    }
+  } catch (...) {
+    release();
+    throw;
   }
 }
 
 GlslProgram::~GlslProgram() {
+  release();
+}
+
+void GlslProgram::release() {
   if (program_) glDeleteProgram(program_);
   if (vertex_) glDeleteShader(vertex_);
   if (fragment_) glDeleteShader(fragment_);
+  program_ = vertex_ = fragment_ = 0;
 }
 
 FloatTarget::FloatTarget(int width, int height, int count) : width_(width), height_(height) {

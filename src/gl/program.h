@@ -25,6 +25,7 @@ class GlslProgram {
   const std::string& fragment_source() const { return fs_; }
 
  private:
+  void release();  // deletes what exists of the program and its shaders
   GLuint program_ = 0, vertex_ = 0, fragment_ = 0;
   std::string vs_, fs_;
 };

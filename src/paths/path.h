@@ -1,5 +1,7 @@
-// A path is one way of rendering a scene (reference, glsl, flat, later arbfp and combiners).
-// Each lives in its own folder behind this interface; adding one touches only registry.cpp.
+// A path is one way of rendering a scene: the reference (the ground truth), flat (the timing
+// baseline) and the ports (glsl, arbfp, combiners, half, gx). Each lives in its own folder under
+// paths/ behind this interface: a PathInfo says what the path is, takes and refuses, and a Path
+// renders one scene. Adding a path touches its folder and registry.cpp; the commands name none.
 #pragma once
 
 #include <cstdint>
