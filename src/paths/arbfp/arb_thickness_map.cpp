@@ -5,8 +5,7 @@
 namespace lt::arbfp {
 
 void emit_map_uv(ir::Block& code) {
-  code.text(
-      "# Thickness map: the mesh's UVs (texture coordinate set 1) to the fragment program.\n");
+  code.text("# The maps' UVs (texture coordinate set 1) to the fragment program.\n");
   code.op(ir::Op::MOV, ir::output("result.texcoord[2]"), {ir::attrib("vertex.texcoord[1]")});
 }
 

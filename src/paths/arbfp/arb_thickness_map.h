@@ -15,7 +15,8 @@ namespace lt::arbfp {
 // a map material does not read.
 inline constexpr int kThicknessMapUnit = 1;
 
-// Vertex program: MOV result.texcoord[2], vertex.texcoord[1].
+// Vertex program: MOV result.texcoord[2], vertex.texcoord[1] (the albedo map reads them too,
+// arb_albedo_map.h).
 void emit_map_uv(ir::Block& code);
 
 // Fragment program: TEX T, fragment.texcoord[2], texture[1], 2D, then MUL T.xyz by the tint
