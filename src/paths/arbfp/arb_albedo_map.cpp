@@ -1,7 +1,7 @@
 #include "paths/arbfp/arb_albedo_map.h"
 
 #include "core/error.h"
-#include "paths/arbfp/arb_emitters.h"
+#include "paths/arbfp/arb_thickness_map.h"
 
 namespace lt::arbfp {
 
@@ -16,15 +16,11 @@ void check_albedo_map_texcoord(const Material& material, const std::string& scen
 
 ir::Reg emit_albedo_map(ir::Program& p, ir::Block& decls, ir::Block& code,
                         const glm::dvec3& albedo) {
-  decls.text("# A = albedo map at the UV (texture[2], 2D, linear rgb) * albedo\n");
-  const ir::Reg A = p.temp("A");
-  code.text("# A: one bilinear fetch of the albedo map, first, so it adds no indirection.\n");
-  code.tex(A, ir::attrib("fragment.texcoord[2]"), kAlbedoMapUnit, "2D");
-  if (albedo != glm::dvec3(1)) {
-    const ir::Reg a = decls.param("albedo_rgb", vec4(albedo, 0));
-    code.op(ir::Op::MUL, A.masked("xyz"), {A, a});
-  }
-  return A;
+  return emit_map_texel(
+      p, decls, code,
+      {"A", kAlbedoMapUnit, albedo, "albedo_rgb",
+       "# A = albedo map at the UV (texture[2], 2D, linear rgb) * albedo\n",
+       "# A: one bilinear fetch of the albedo map, first, so it adds no indirection.\n"});
 }
 
 }  // namespace lt::arbfp
