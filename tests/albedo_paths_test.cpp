@@ -1,9 +1,9 @@
 // An albedo map through every path (scene/albedo_map.h): a constant map of value a renders
 // a x (the image without the map) up to each path's quantisation, with the bound derived from
 // the format (not measured and loosened); each path's budget shows the map's cost (one TEX, one
-// pass, one TEV stage and texture); the profiles and sizes a path cannot take are refused with
-// the scene's key. The scene is a 32 x 32 orthographic UV quad with two directional lights whose
-// sums stay below 1 (so gx's scales are x1 and no path clamps). One process per test (GL).
+// pass, one TEV stage and texture); what a path cannot take is refused with the scene's key. The
+// scene is a 32 x 32 orthographic UV quad with two directional lights whose sums stay below 1 (so
+// gx's scales are x1 and no path clamps). One process per test (GL).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +13,7 @@
 #include "map_test_util.h"
 #include "paths/arbfp/arb_budget.h"
 #include "paths/combiners/combiner_budget.h"
+#include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
 #include "render/session.h"
 
@@ -158,26 +159,36 @@ TEST(AlbedoPaths, ArbfpRefusesVertexThicknessWithAnAlbedoMap) {
   EXPECT_NE(why.find("materials.skin.albedo_map: arbfp"), std::string::npos) << why;
 }
 
-// gx: repeat and mirror need power-of-two sides [OGC gx.h L4287-4288]; texels over 1 have no
-// GX texture format.
-TEST(AlbedoPaths, GxRefusesWhatItsTexturesCannotHold) {
+// gx: repeat and mirror need power-of-two sides [OGC gx.h L4287-4288], so a 5 x 4 map that
+// repeats along s is resampled to 8 x 4 (the array's comment says so) and renders; texels over
+// 1 have no GX texture format and are refused with the scene's key.
+TEST(AlbedoPaths, GxResamplesARepeatingMapToPowerOfTwoAndRefusesTexelsOverOne) {
   const auto s = write_scenes();
   auto map = std::make_shared<TextureMap>(*s->with.materials[0].albedo_map);
-  map->texture.width = 3;  // 3 x 4 with repeat
-  map->texture.texels.resize(3 * 4 * 3, 0.5f);
+  map->texture.width = 5;
+  map->texture.texels.assign(5 * 4 * 3, 0.5f);
   map->texture.wrap_s = model::Wrap::Repeat;
   Scene repeat = s->with;
   repeat.materials[0].albedo_map = map;
-  const std::string why = refusal(repeat, "gx");
-  EXPECT_NE(why.find("materials.skin.albedo_map: gx: the albedo map's sampler wraps with REPEAT"),
-            std::string::npos)
-      << why;
+  const gx::GeneratedPrograms g = gx::generate_programs(repeat, gx::GxVariant{});
+  std::string comment;
+  for (const gx::Statement& st : g.file.top_level) {
+    if (st.kind == gx::Statement::Kind::Declaration &&
+        st.declaration.name == "ltrender_albedo_skin")
+      comment = st.comment;
+  }
+  EXPECT_NE(comment.find("8x4 texels"), std::string::npos) << comment;
+  EXPECT_NE(comment.find("Resampled bilinearly from the map's 5x4"), std::string::npos) << comment;
+  EXPECT_EQ(render_scene(repeat, "gx", "").width, 32);
+
   auto bright = std::make_shared<TextureMap>(*s->with.materials[0].albedo_map);
   bright->texture.texels[0] = 1.5f;
   Scene over = s->with;
   over.materials[0].albedo_map = bright;
   const std::string over_why = refusal(over, "gx");
-  EXPECT_NE(over_why.find("holds values up to 1.5"), std::string::npos) << over_why;
+  EXPECT_NE(over_why.find("materials.skin.albedo_map: gx: the albedo map holds values up to 1.5"),
+            std::string::npos)
+      << over_why;
 }
 
 }  // namespace

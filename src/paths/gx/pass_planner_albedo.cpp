@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "model/texture_sampling.h"
 #include "paths/gx/pass_plan_parts.h"
 #include "paths/gx/texture_unit.h"
 
@@ -18,8 +19,28 @@ namespace lt::gx {
 
 namespace {
 
-bool power_of_two(int n) {
-  return n > 0 && (n & (n - 1)) == 0;
+int next_power_of_two(int n) {
+  int p = 1;
+  while (p < n) p *= 2;
+  return p;
+}
+
+// `t` with each side that wraps (REPEAT, MIRRORED_REPEAT) at the next power of two, sampled
+// bilinearly at the new texel centres with t's wrap modes; `t` itself when nothing changes.
+model::Texture power_of_two_sides(const model::Texture& t) {
+  model::Texture out = t;
+  if (t.wrap_s != model::Wrap::ClampToEdge) out.width = next_power_of_two(t.width);
+  if (t.wrap_t != model::Wrap::ClampToEdge) out.height = next_power_of_two(t.height);
+  if (out.width == t.width && out.height == t.height) return out;
+  out.texels.clear();
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      const glm::dvec3 v =
+          model::sample_bilinear(t, {(x + 0.5) / out.width, (y + 0.5) / out.height});
+      for (int c = 0; c < 3; ++c) out.texels.push_back(static_cast<float>(v[c]));
+    }
+  }
+  return out;
 }
 
 GxConst<NameGroup::TexWrap> gx_wrap(model::Wrap w) {
@@ -50,21 +71,24 @@ std::optional<MapTexture> PassPlanner::albedo_texture(MaterialPlan& mp) const {
     throw InputError(file, key,
                      "gx: the albedo map holds values up to " + note_number(top) +
                          "; GX's 8-bit texture formats hold 0..1 (put the factor in \"albedo\")");
-  // Planar textures repeat and mirror only at power-of-two sizes [OGC gx.h L4287-4288].
-  const std::pair<model::Wrap, int> axes[] = {{t.wrap_s, t.width}, {t.wrap_t, t.height}};
-  for (const auto& [wrap, size] : axes) {
-    if (wrap == model::Wrap::ClampToEdge || power_of_two(size)) continue;
-    throw InputError(file, key,
-                     std::string("gx: the albedo map's sampler wraps with ") +
-                         model::wrap_name(wrap) + " but the map is " + std::to_string(t.width) +
-                         "x" + std::to_string(t.height) +
-                         "; GX_REPEAT and GX_MIRROR need a power-of-two side (resize the map)");
-  }
-  MapTexture m = map_texture(mp, MapTexels{t.width, t.height, &t.texels, map.grey}, kAlbedoMapRole);
+  // Planar textures repeat and mirror only at power-of-two sizes [OGC gx.h L4287-4288]: a side
+  // that wraps and is not one is resampled to the next power of two, as a porter's texture
+  // converter would (the reference's bilinear filter with the map's own wrap, at the new texel
+  // centres); the loss shows in the error report, and the array's comment says so.
+  const model::Texture pot = power_of_two_sides(t);
+  const bool resized = pot.width != t.width || pot.height != t.height;
+  MapTexture m =
+      map_texture(mp, MapTexels{pot.width, pot.height, &pot.texels, map.grey}, kAlbedoMapRole);
   m.texture.wrap_s = gx_wrap(t.wrap_s);
   m.texture.wrap_t = gx_wrap(t.wrap_t);
   m.texture.what = std::string("The albedo map: ") + m.texture.format.name() + ", linear, " +
                    m.texture.wrap_s.name() + " x " + m.texture.wrap_t.name();
+  if (resized) {
+    const std::string from = std::to_string(t.width) + "x" + std::to_string(t.height);
+    m.texture.what += " (resampled from " + from + ": GX wraps power-of-two sides only)";
+    mp.arrays.back().what += "\nResampled bilinearly from the map's " + from +
+                             " texels: GX_REPEAT and GX_MIRROR need power-of-two sides.";
+  }
   return m;
 }
 

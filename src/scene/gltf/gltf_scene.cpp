@@ -62,7 +62,7 @@ struct CameraInstance {
 struct Importer {
   const Document& doc;
   Scene& scene;
-  std::map<int, int> material_of;           // glTF material (-1: default) -> Scene::materials index
+  std::map<int, int> material_of;  // glTF material (-1: default) -> Scene::materials index
   std::vector<CameraInstance> cameras;
   std::size_t vertices = 0;
   bool import_lights = true;  // false for a JSON scene's object: the scene has its own
@@ -414,11 +414,23 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
     scene.import_notes.push_back(
         "no KHR_lights_punctual light in the scene: it renders black (ambient_light is 0)");
 
-  note_unmapped_keys(
-      doc.json, "",
-      {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
-       "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
-      "not used by the term", scene.import_notes);
+  // Textures, images and samplers are read through a base colour texture (its own notes say
+  // which); without one they are listed as ignored.
+  const bool sampled = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                   [](const Material& m) { return m.albedo_map != nullptr; });
+  if (sampled) {
+    note_unmapped_keys(doc.json, "",
+                       {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews",
+                        "buffers", "textures", "images", "samplers", "materials", "cameras",
+                        "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+                       "not used by the term", scene.import_notes);
+  } else {
+    note_unmapped_keys(
+        doc.json, "",
+        {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
+         "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+        "not used by the term", scene.import_notes);
+  }
   return scene;
 }
 
