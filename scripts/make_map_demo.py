@@ -8,6 +8,8 @@
 # - sphere_rgb.png: 32x16 8-bit RGB, each channel its own smooth pattern.
 # - zero_one.png: 8x4 8-bit grey checker of 0 and 255 (thickness zero and one).
 # - warm_ramp.png: 16x1 8-bit RGB, an artist's lobe ramp (a warm tint rising with t).
+# - albedo_checker.png: 32x16 8-bit RGB, a checker of 4x4-texel cells in two sRGB colours
+#   (terracotta and cream): an albedo map (a picture, sRGB; scenes/albedo_checker.json).
 import math, struct, sys, zlib, json, os
 
 out = sys.argv[1]
@@ -41,6 +43,9 @@ png('sphere_rgb.png', 32, 16, 3, lambda x, y: [
 png('zero_one.png', 8, 4, 1, lambda x, y: [255 if (x + y) % 2 else 0])
 png('warm_ramp.png', 16, 1, 3, lambda x, y: [
     byte(((x / 15) ** 2) * 1.0), byte(((x / 15) ** 3) * 0.8), byte(((x / 15) ** 5) * 0.6)])
+
+png('albedo_checker.png', 32, 16, 3, lambda x, y:
+    [196, 98, 60] if (x // 4 + y // 4) % 2 else [236, 226, 204])
 
 # The UV sphere.
 seg, rings = 48, 24

@@ -84,8 +84,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"unknown_required_extension", "/extensionsRequired/1", "EXT_meshopt_compression"},
         BadFile{"spot_light", "/extensions/KHR_lights_punctual/lights/0/type", "spot lights"},
         BadFile{"line_mode", "/meshes/0/primitives/0/mode", "LINES"},
-        BadFile{"base_colour_texture", "/materials/0/pbrMetallicRoughness/baseColorTexture",
-                "not sampled"},
+        BadFile{"base_colour_texture", "/textures/0", "has no source image"},
         BadFile{"index_out_of_range", "/accessors/2", "index 1 is 9"}),
     [](const auto& info) { return info.param.name; });
 

@@ -206,7 +206,9 @@ TEST(GxProgram, PrintedProgramsParseBackToTheSameState) {
 }
 
 // The bar of the issue: one light's term (diffuse + translucency) in at most 3 TEV stages in one
-// pass, and no texture beyond the LUT, on every demo scene and every variant that applies.
+// pass, and no texture beyond the LUT, on every demo scene and every variant that applies. An
+// albedo map (scenes/albedo_checker.json) is not the term: it costs exactly one stage and one
+// texture more (docs/maps.md "Albedo maps").
 TEST(GxProgram, OneLightTakesAtMostThreeStagesInOnePass) {
   for (const std::string& s : test::json_files("scenes")) {
     const Scene scene = load_scene(test::source_dir() / s);
@@ -214,8 +216,10 @@ TEST(GxProgram, OneLightTakesAtMostThreeStagesInOnePass) {
     EXPECT_TRUE(r.fits()) << s;
     EXPECT_EQ(r.passes, static_cast<int>(std::max<size_t>(1, scene.lights.size()))) << s;
     for (const GxBudgetProgram& p : r.programs) {
-      EXPECT_LE(p.counts.tev_stages, 3) << s << " " << p.name;
-      EXPECT_LE(p.counts.texture_maps, 1) << s << " " << p.name;
+      int albedo = 0;
+      for (const Material& m : scene.materials) albedo += m.name == p.material && m.albedo_map;
+      EXPECT_LE(p.counts.tev_stages, 3 + albedo) << s << " " << p.name;
+      EXPECT_LE(p.counts.texture_maps, 1 + albedo) << s << " " << p.name;
       EXPECT_LE(p.counts.lights_per_channel, 1) << s << " " << p.name;
     }
   }

@@ -19,6 +19,9 @@ uniform vec3 u_thickness;  // constant thickness * tint, or the tint alone (vert
 #if LT_THICKNESS_MAP
 uniform sampler2D u_thickness_map;  // GL_LINEAR, CLAMP_TO_EDGE (gl/map_texture.h)
 #endif
+#if LT_ALBEDO_MAP
+uniform sampler2D u_albedo_map;  // linear rgb (sRGB decoded on load), its sampler's wrap
+#endif
 #if LT_RAMP
 uniform sampler2D u_ramp;  // the artist's W x 1 ramp: its value at t replaces pow(t, p)
 #endif
@@ -28,7 +31,7 @@ varying vec3 v_normal;
 #if LT_VERTEX_THICKNESS
 varying vec3 v_thickness;
 #endif
-#if LT_THICKNESS_MAP
+#if LT_THICKNESS_MAP || LT_ALBEDO_MAP
 varying vec2 v_uv;
 #endif
 
@@ -100,5 +103,10 @@ void main() {
 #if LT_AMBIENT_LIGHT
   sum += u_ambient_light;
 #endif
+#if LT_ALBEDO_MAP
+  // The seed's cDiffuseAlbedo from a texture: it multiplies diffuse and translucency alike.
+  gl_FragColor = vec4(texture2D(u_albedo_map, v_uv).rgb * u_albedo * sum, 1.0);
+#else
   gl_FragColor = vec4(u_albedo * sum, 1.0);
+#endif
 }

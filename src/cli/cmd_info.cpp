@@ -22,6 +22,16 @@ std::string thickness_description(const Translucency& t) {
   }
   return "?";
 }
+// "albedo map wood.png (64x64, 8-bit sRGB decoded, REPEAT x REPEAT) x albedo [1, 1, 1]"
+std::string albedo_description(const Material& m) {
+  if (!m.albedo_map) return "";
+  const TextureMap& a = *m.albedo_map;
+  const model::Texture& t = a.texture;
+  return ", albedo map " + a.file.string() + " (" + std::to_string(t.width) + "x" +
+         std::to_string(t.height) + ", " + std::to_string(a.source_bits) + "-bit " +
+         (a.srgb_decoded ? "sRGB decoded" : "float linear") + ", " + model::wrap_name(t.wrap_s) +
+         " x " + model::wrap_name(t.wrap_t) + ") times the albedo";
+}
 const char* yes_no(bool b) {
   return b ? "yes" : "no";
 }
@@ -54,7 +64,7 @@ Action add_info(CLI::App& app) {
       << " point lights (attenuation " << yes_no(n.point_lights > 0) << "), translucency "
       << yes_no(n.any_translucency) << ", vertex thickness " << yes_no(n.any_vertex_thickness)
       << ", normalised H " << yes_no(n.any_normalized_h) << ", ambient light "
-      << yes_no(n.ambient_light) << "\n";
+      << yes_no(n.ambient_light) << ", albedo map " << yes_no(n.any_albedo_map) << "\n";
     // A glTF import: what each property of the file became, and what was left out.
     if (!scene.import_notes.empty())
       o << "glTF import (" << scene.import_notes.size() << " notes):\n";
@@ -62,13 +72,13 @@ Action add_info(CLI::App& app) {
     for (const Material& m : scene.materials) {
       o << "  material " << m.name << ": ";
       if (!m.translucency) {
-        o << "diffuse only (no translucency stage)\n";
+        o << "diffuse only (no translucency stage)" << albedo_description(m) << "\n";
         continue;
       }
       const Translucency& t = *m.translucency;
       o << "power " << t.power << ", distortion " << t.distortion << ", ambient " << t.ambient
         << ", thickness " << thickness_description(t)
-        << (t.normalize_distorted_light ? ", normalised H" : "");
+        << (t.normalize_distorted_light ? ", normalised H" : "") << albedo_description(m);
       if (t.ramp) {
         o << ", lobe from the ramp " << t.ramp->file.string() << " (" << t.ramp->texture.width
           << " texels" << (t.ramp->grey ? ", grey" : ", rgb")

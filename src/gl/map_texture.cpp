@@ -15,11 +15,26 @@ void set_linear_clamp_to_edge(GLenum target) {
   glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);  // a 1D texture ignores it
 }
 
+GLint gl_wrap(model::Wrap wrap) {
+  switch (wrap) {
+    case model::Wrap::Repeat:
+      return GL_REPEAT;
+    case model::Wrap::MirroredRepeat:
+      return GL_MIRRORED_REPEAT;
+    case model::Wrap::ClampToEdge:
+      break;
+  }
+  return GL_CLAMP_TO_EDGE;
+}
+
 MapTexture::MapTexture(const Context& gl, const TextureMap& map, MapTexelClass texel_class) {
   const model::Texture& t = map.texture;
   glGenTextures(1, &id_);
   glBindTexture(GL_TEXTURE_2D, id_);
   set_linear_clamp_to_edge(GL_TEXTURE_2D);
+  // An albedo map's glTF sampler may repeat (model::Wrap); thickness maps and ramps clamp.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(t.wrap_s));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(t.wrap_t));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   const std::string size = std::to_string(t.width) + "x" + std::to_string(t.height);
   const bool float_textures = gl.has_extension("GL_ARB_texture_float");
@@ -32,12 +47,21 @@ MapTexture::MapTexture(const Context& gl, const TextureMap& map, MapTexelClass t
     }
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, t.width, t.height, 0, GL_RGB, GL_UNSIGNED_BYTE,
                  bytes.data());
-    description_ =
-        "GL_RGB8 " + size +
-        (map.exact_in_8_bits() ? " (exact: 8-bit file)"
-                               : std::string(map.source_float ? " (a float" : " (a 16-bit") +
-                                     " file rounded to 1/255, clamped to [0, 1]: "
-                                     "GL 1.3 parts filter only 8-bit texels)");
+    description_ = "GL_RGB8 " + size +
+                   (map.exact_in_8_bits() ? " (exact: 8-bit file)"
+                    : map.srgb_decoded
+                        ? " (sRGB decoded to linear, rounded to 1/255: GL 1.3 parts have no sRGB "
+                          "textures, a port stores the linear colour)"
+                        : std::string(map.source_float ? " (a float" : " (a 16-bit") +
+                              " file rounded to 1/255, clamped to [0, 1]: "
+                              "GL 1.3 parts filter only 8-bit texels)");
+  } else if (map.srgb_decoded && float_textures) {
+    // The decoded linear colour as half: sRGB decoding before the filter [glTF 2.0 spec 3.9.2]
+    // without GL_EXT_texture_sRGB (a GL 2.1 extension the GL 2.0 class lacks); half keeps the
+    // decoded darks (1/255 encoded is 3e-4 linear) that an 8-bit linear texture would flatten.
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F_ARB, t.width, t.height, 0, GL_RGB, GL_FLOAT,
+                 t.texels.data());
+    description_ = "GL_RGB16F " + size + " (sRGB decoded to linear, rounded to half)";
   } else if (!map.source_float || !float_textures) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16, t.width, t.height, 0, GL_RGB, GL_FLOAT,
                  t.texels.data());
@@ -57,7 +81,10 @@ MapTexture::MapTexture(const Context& gl, const TextureMap& map, MapTexelClass t
                          : " (float file rounded to half: fp16 is the widest float texture "
                            "GL 2.0-class parts filter)");
   }
-  description_ += ", GL_LINEAR, CLAMP_TO_EDGE";
+  description_ += ", GL_LINEAR, ";
+  description_ += t.wrap_s == t.wrap_t ? std::string(model::wrap_name(t.wrap_s))
+                                       : std::string(model::wrap_name(t.wrap_s)) + " x " +
+                                             model::wrap_name(t.wrap_t);
   glBindTexture(GL_TEXTURE_2D, 0);
   check_error("uploading a thickness map or ramp");
 }

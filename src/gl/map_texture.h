@@ -1,5 +1,6 @@
-// A thickness map or a lobe ramp (scene/thickness_map.h) as a GL texture: GL_TEXTURE_2D,
-// GL_LINEAR without mipmaps, GL_CLAMP_TO_EDGE, the texels uploaded in the widest format the
+// A thickness map, a lobe ramp (scene/thickness_map.h) or an albedo map (scene/albedo_map.h) as
+// a GL texture: GL_TEXTURE_2D, GL_LINEAR without mipmaps, GL_CLAMP_TO_EDGE (an albedo map: its
+// sampler's wrap), the texels uploaded in the widest format the
 // path's hardware class filters (row 0 = v = 0, model/texture_sampling.h), so GL's sampling is
 // the reference's, in that format's precision. Shared by the glsl, arbfp and combiners paths:
 // one upload, one description of its precision.
@@ -30,6 +31,9 @@ enum class MapTexelClass {
 // (model/texture_sampling.h), and every lookup table's: coordinates beyond the end texel centres
 // read the end texels, which saturates a table's t.
 void set_linear_clamp_to_edge(GLenum target);
+
+// GL_CLAMP_TO_EDGE, GL_REPEAT or GL_MIRRORED_REPEAT (GL 1.4 core).
+GLint gl_wrap(model::Wrap wrap);
 
 class MapTexture {
  public:

@@ -53,7 +53,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
       g.has_colors = true;
     }
     const Material& mat = scene.materials[static_cast<size_t>(obj.material)];
-    if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Texture) {
+    if (samples_uvs(mat)) {
       std::vector<float> uv(m.uvs.size() * 2);
       for (size_t i = 0; i < m.uvs.size(); ++i) {
         uv[i * 2] = static_cast<float>(m.uvs[i].x);

@@ -26,7 +26,7 @@ struct GpuMesh {
   GLsizei index_count = 0;
   int material = 0;
   bool has_colors = false;
-  bool has_uvs = false;  // uploaded only where the material samples a thickness map
+  bool has_uvs = false;  // uploaded only where the material samples a map (samples_uvs)
   size_t vertex_count = 0;
 };
 
@@ -46,7 +46,7 @@ class SceneGeometry {
   // Loads PROJECTION and MODELVIEW (camera-relative view) into fixed-function state.
   void load_matrices() const;
   // Binds the conventional vertex arrays of one mesh; colours only where the mesh has them, UVs
-  // (texture coordinate set kUvTexCoordSet) only where its material reads a thickness map.
+  // (texture coordinate set kUvTexCoordSet) only where its material reads a map.
   void bind(const GpuMesh& mesh) const;
   void draw(const GpuMesh& mesh) const;
   void unbind() const;

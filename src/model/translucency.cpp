@@ -49,6 +49,11 @@ glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness,
   return tr.thickness * tr.tint;
 }
 
+glm::dvec3 diffuse_albedo(const Material& material, glm::dvec2 uv) {
+  if (!material.albedo_map) return material.albedo;
+  return material.albedo * sample_bilinear(material.albedo_map->texture, uv);
+}
+
 glm::dvec3 material_lobe(const Translucency& tr, double t) {
   return tr.ramp ? sample_ramp(tr.ramp->texture, t) : glm::dvec3(lobe(t, tr.power));
 }
@@ -70,7 +75,7 @@ glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoin
     }
     sum += light.color * term;
   }
-  return material.albedo * (scene.ambient_light + sum);
+  return diffuse_albedo(material, sp.uv) * (scene.ambient_light + sum);
 }
 
 std::string why_t_is_not_affine_in_the_normal(const Scene& scene, const Material& material) {

@@ -48,8 +48,12 @@ struct SurfacePoint {
   glm::dvec3 N;
   glm::dvec3 V;
   glm::dvec3 vertex_thickness{1, 1, 1};  // interpolated vertex colour (used for "vertex")
-  glm::dvec2 uv{0, 0};                   // interpolated UV (used for a thickness map)
+  glm::dvec2 uv{0, 0};                   // interpolated UV (used for a thickness or albedo map)
 };
+
+// The diffuse albedo at uv: the material's albedo, times its albedo map bilinearly sampled in
+// double with the map's wrap modes (scene/albedo_map.h) when it has one.
+glm::dvec3 diffuse_albedo(const Material& material, glm::dvec2 uv);
 
 // The thickness T of model.md: (vertex colour, the map bilinearly sampled at uv in double, or the
 // constant) times tint.
@@ -60,7 +64,8 @@ glm::dvec3 thickness(const Translucency& tr, const glm::dvec3& vertex_thickness,
 // (model/texture_sampling.h: linear between texel centres, clamped), per channel.
 glm::dvec3 material_lobe(const Translucency& tr, double t);
 
-// c = albedo * (ambient_light + sum over lights of color * (diffuse + trans)).
+// c = albedo * (ambient_light + sum over lights of color * (diffuse + trans)), albedo the
+// diffuse_albedo at the point's uv.
 glm::dvec3 shade(const Scene& scene, const Material& material, const SurfacePoint& sp);
 
 // Why t = dot(V, -(L + N d)) is not affine in the normal for `material` in this scene (empty when

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "mesh/mesh_io.h"
+#include "scene/albedo_map.h"
 #include "scene/gltf/gltf_document.h"
 #include "scene/gltf/gltf_scene.h"
 #include "scene/scene_limits.h"
@@ -189,16 +190,22 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file,
   }
 }
 
+bool samples_uvs(const Material& material) {
+  return material.albedo_map || (material.translucency && material.translucency->thickness_source ==
+                                                              ThicknessSource::Texture);
+}
+
 void check_uvs_for_material(const TriangleMesh& mesh, const Material& material,
                             const std::string& file, const std::string& where,
                             const std::string& mesh_name) {
-  if (!material.translucency ||
-      material.translucency->thickness_source != ThicknessSource::Texture || !mesh.uvs.empty())
-    return;
-  throw InputError(file, where,
-                   "material \"" + material.name + "\" samples the thickness map " +
-                       material.translucency->thickness_map->file.string() + " but " + mesh_name +
-                       " has no texture coordinates (UVs)");
+  if (!samples_uvs(material) || !mesh.uvs.empty()) return;
+  const bool thickness = material.translucency && material.translucency->thickness_map;
+  throw InputError(
+      file, where,
+      "material \"" + material.name + "\" samples the " +
+          (thickness ? "thickness map " + material.translucency->thickness_map->file.string()
+                     : "albedo map " + material.albedo_map->file.string()) +
+          " but " + mesh_name + " has no texture coordinates (UVs)");
 }
 
 namespace {
@@ -297,8 +304,9 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
   std::vector<std::string> material_names;
   // Thickness maps and ramps, read after the JSON like the meshes.
   struct TextureLoad {
+    enum class Kind { ThicknessMap, Ramp, AlbedoMap };
     std::size_t material;
-    bool ramp;
+    Kind kind;
     fs::path file;
     std::string channels, key;
   };
@@ -316,6 +324,13 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       Material mat;
       mat.name = it.key();
       mat.albedo = m.vec3("albedo", glm::dvec3(1), 0, kMaxColour);
+      if (m.has("albedo_map")) {
+        // A picture in sRGB (scene/albedo_map.h), multiplying "albedo".
+        const std::string texture = m.string("albedo_map");
+        refuse_nul(m, "albedo_map", texture);
+        texture_loads.push_back({scene.materials.size(), TextureLoad::Kind::AlbedoMap,
+                                 base_dir / texture, "rgb", m.key_path("albedo_map")});
+      }
       if (m.has("translucency")) {
         ObjectReader t = m.object("translucency");
         Translucency tr;
@@ -339,8 +354,8 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
             }
             map.finish();
             tr.thickness_source = ThicknessSource::Texture;
-            texture_loads.push_back({scene.materials.size(), false, base_dir / texture, channels,
-                                     map.key_path("texture")});
+            texture_loads.push_back({scene.materials.size(), TextureLoad::Kind::ThicknessMap,
+                                     base_dir / texture, channels, map.key_path("texture")});
           } else if (th.is_string()) {
             if (th.get<std::string>() != "vertex") {
               t.fail(kp, "must be \"vertex\", a number, an rgb triple or {\"texture\": ...}");
@@ -356,8 +371,8 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
         if (t.has("ramp")) {
           const std::string ramp = t.string("ramp");
           refuse_nul(t, "ramp", ramp);
-          texture_loads.push_back(
-              {scene.materials.size(), true, base_dir / ramp, "rgb", t.key_path("ramp")});
+          texture_loads.push_back({scene.materials.size(), TextureLoad::Kind::Ramp, base_dir / ramp,
+                                   "rgb", t.key_path("ramp")});
         }
         t.finish();
         mat.translucency = tr;
@@ -495,10 +510,18 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 
   // Textures and meshes last, so a typo in the JSON is reported before any file I/O.
   for (const TextureLoad& l : texture_loads) {
-    Translucency& tr = *scene.materials[l.material].translucency;
-    (l.ramp ? tr.ramp : tr.thickness_map) =
-        l.ramp ? load_lobe_ramp(l.file, file, l.key)
-               : load_thickness_map(l.file, l.channels, file, l.key);
+    Material& m = scene.materials[l.material];
+    switch (l.kind) {
+      case TextureLoad::Kind::AlbedoMap:
+        m.albedo_map = load_albedo_map(l.file, file, l.key);
+        break;
+      case TextureLoad::Kind::Ramp:
+        m.translucency->ramp = load_lobe_ramp(l.file, file, l.key);
+        break;
+      case TextureLoad::Kind::ThicknessMap:
+        m.translucency->thickness_map = load_thickness_map(l.file, l.channels, file, l.key);
+        break;
+    }
   }
   std::size_t scene_vertices = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -557,6 +580,7 @@ SceneNeeds scene_needs(const Scene& scene) {
   }
   for (const SceneObject& o : scene.objects) {
     const Material& m = scene.materials[o.material];
+    n.any_albedo_map |= m.albedo_map != nullptr;
     if (!m.translucency) continue;
     n.any_translucency = true;
     n.any_vertex_thickness |= m.translucency->thickness_source == ThicknessSource::Vertex;

@@ -48,8 +48,14 @@ struct Translucency {
 struct Material {
   std::string name;
   glm::dvec3 albedo{1, 1, 1};
+  // Set: the diffuse albedo is `albedo` times this map at the mesh's UVs (linear rgb, decoded
+  // from sRGB: scene/albedo_map.h), the seed's cDiffuseAlbedo read from a texture.
+  std::shared_ptr<const TextureMap> albedo_map;
   std::optional<Translucency> translucency;  // absent: plain diffuse, no translucency stage
 };
+
+// The material reads the mesh's UVs: it samples a thickness map or an albedo map.
+bool samples_uvs(const Material& material);
 
 struct Light {
   enum class Type { Directional, Point };
@@ -123,6 +129,7 @@ struct SceneNeeds {
   bool any_translucency = false;
   bool any_vertex_thickness = false;
   bool any_thickness_map = false;  // a material samples a thickness map (UVs are uploaded)
+  bool any_albedo_map = false;     // a material samples an albedo map (UVs are uploaded)
   bool any_ramp = false;           // a material's lobe is an artist's ramp
   bool any_normalized_h = false;
   bool ambient_light = false;  // scene ambient_light non-zero

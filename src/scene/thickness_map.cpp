@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "image/image.h"
+#include "image/srgb.h"
 #include "scene/scene_limits.h"
 
 namespace lt {
@@ -32,10 +33,12 @@ int channel_index(char name, const ImageFileFormat& format) {
   return -1;
 }
 
-std::shared_ptr<const TextureMap> load_texture_map(const std::filesystem::path& file,
-                                                   const std::string& channels,
-                                                   const std::string& scene_file,
-                                                   const std::string& key, const char* what) {
+}  // namespace
+
+std::shared_ptr<TextureMap> load_texture_map(const std::filesystem::path& file,
+                                             const std::string& channels,
+                                             const std::string& scene_file, const std::string& key,
+                                             const char* what, TexelEncoding encoding) {
   const std::string name = file.string();
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) {
@@ -53,6 +56,7 @@ std::shared_ptr<const TextureMap> load_texture_map(const std::filesystem::path& 
   map->channels = channels;
   map->source_bits = format.bits;
   map->source_float = format.floating;
+  map->srgb_decoded = encoding == TexelEncoding::Srgb && !format.floating;
   int source[3] = {0, 1, 2};
   if (channels == "rgb") {
     map->grey = format.colour_channels < 3;
@@ -79,7 +83,8 @@ std::shared_ptr<const TextureMap> load_texture_map(const std::filesystem::path& 
       const float* px = image.at(x, y);
       float* texel = &t.texels[(static_cast<size_t>(row) * image.width + x) * 3];
       for (int c = 0; c < 3; ++c) {
-        const float v = px[source[c]];
+        const float v =
+            map->srgb_decoded ? static_cast<float>(srgb_to_linear(px[source[c]])) : px[source[c]];
         if (!(v >= 0 && v <= kMaxColour)) {
           std::string msg = std::string(what) + " file " + name + ": texel x " + std::to_string(x) +
                             ", y " + std::to_string(y) + " (from the top left) is ";
@@ -95,8 +100,6 @@ std::shared_ptr<const TextureMap> load_texture_map(const std::filesystem::path& 
   }
   return map;
 }
-
-}  // namespace
 
 std::shared_ptr<const TextureMap> load_thickness_map(const std::filesystem::path& file,
                                                      const std::string& channels,

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "paths/arbfp/arb_albedo_map.h"
 #include "paths/arbfp/arb_emitters.h"
 #include "paths/arbfp/arb_guards.h"
 #include "paths/arbfp/arb_ir_counter.h"
@@ -83,6 +84,7 @@ struct Key {
   bool ramp_lobe = false;         // the material's ramp replaces t^p in every variant (lobe_ramp)
   bool vertex_thickness = false;  // T comes from the vertex colour
   bool map_thickness = false;     // T comes from a thickness map (arb_thickness_map.h)
+  bool albedo_map = false;        // the albedo is a map's texel times albedo (arb_albedo_map.h)
   bool ortho = false, ambient = false, any_point = false;
   size_t lights = 0, groups = 0;
   PowMethod method = PowMethod::Exact;  // the variant's, after pow=mul's fallback
@@ -238,6 +240,8 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
   k.groups = group_count(k.lights);
   k.vertex_thickness = k.term && k.tr.thickness_source == ThicknessSource::Vertex;
   k.map_thickness = k.term && k.tr.thickness_source == ThicknessSource::Texture;
+  check_albedo_map_texcoord(material, scene.file.string());
+  k.albedo_map = material.albedo_map != nullptr;
   k.ortho = scene.camera.projection == Camera::Projection::Orthographic;
   k.ambient = scene.ambient_light != glm::dvec3(0);
   k.ramp_lobe = k.term && k.tr.ramp != nullptr;
@@ -378,11 +382,11 @@ ir::Program vertex_program(Key& k) {
     b.text("# Vertex thickness: the mesh colour times the material's tint.\n");
     const Reg tint = b.param("tint", vec4(k.tr.tint, 0));
     b.op(Op::MUL, output("result.texcoord[2]"), {attrib("vertex.color"), tint});
-  } else if (k.map_thickness) {
-    emit_map_uv(b);
-  } else {
+  } else if (!k.map_thickness && !k.albedo_map) {
     b.text("# (constant thickness: nothing more to pass)\n");
   }
+  // The UVs, once, for the thickness map and the albedo map alike.
+  if (k.map_thickness || k.albedo_map) emit_map_uv(b);
   if (k.view_dots) {
     b.text("# (d P, P.L) per directional light, linear in P: interpolated exactly.\n");
     const Reg d = declare_material(b, k.tr).distortion;
@@ -427,9 +431,10 @@ struct Fragment {
   ir::Block head, decls, temps, code;
   Shading s;
   Reg albedo, sum, T, ambient;
-  Reg dnv;                                        // sum.w = d * (N.V), for the packed groups' t
-  std::array<Reg, 3> d;                           // packed point groups: position - P, x y z
-  Reg dist2, one;                                 // packed point groups without lobe registers
+  Reg albedo_rgb;        // what the sum is multiplied by: the albedo, or the albedo map's A
+  Reg dnv;               // sum.w = d * (N.V), for the packed groups' t
+  std::array<Reg, 3> d;  // packed point groups: position - P, x y z
+  Reg dist2, one;        // packed point groups without lobe registers
   std::vector<Reg> diffuse, tv, lobe, att;        // per group
   std::vector<PackedRows> rows;                   // per packed group
   std::vector<std::array<Reg, 3>> colour_rows;    // per group summed by dot products
@@ -449,8 +454,13 @@ struct Fragment {
 
 // The ambient light goes into the final multiply when the first group sums by dot products
 // (which have no addend): (sum + ambient) * albedo = sum * albedo + ambient * albedo.
-bool ambient_in_final(const Key& k) {
+bool ambient_after_sum(const Key& k) {
   return k.ambient && k.groups > 0 && k.dot_sums[0];
+}
+// With an albedo map the albedo is a texel, not a PARAM, so ambient * albedo is no constant: the
+// ambient light is added to the sum first (one ADD) and the final multiply is a MUL.
+bool ambient_in_final(const Key& k) {
+  return ambient_after_sum(k) && !k.albedo_map;
 }
 
 // Declarations in print order (the TEMP statement lists the temporaries in allocation order).
@@ -459,6 +469,7 @@ void declare_fragment(Fragment& f, const Key& k, const Material& material) {
   ir::Block& d = f.decls;
   d.text("# albedo.w = 1 is the output alpha (coverage for the comparison).\n");
   f.albedo = d.param("albedo", vec4(material.albedo, 1));
+  f.albedo_rgb = k.albedo_map ? emit_albedo_map(p, d, f.code, material.albedo) : f.albedo;
   f.s.guard = declare_guards(d);
   f.s.zero_normal_guard = k.guards.zero_normal;
   f.s.P = attrib("fragment.texcoord[0]");
@@ -855,7 +866,8 @@ ir::Program fragment_program(Key& k, const Material& material,
         "ambient_albedo", vec4(k.scene.ambient_light * material.albedo, 0), "ambient * albedo");
     f.code.op(Op::MAD, color.masked("xyz"), {f.sum, f.albedo, ambient_albedo});
   } else {
-    f.code.op(Op::MUL, color.masked("xyz"), {f.sum, f.albedo});
+    if (ambient_after_sum(k)) f.code.op(Op::ADD, f.sum.masked("xyz"), {f.sum, f.ambient});
+    f.code.op(Op::MUL, color.masked("xyz"), {f.sum, f.albedo_rgb});
   }
   f.code.op(Op::MOV, color.masked("w"), {f.albedo.swz("w")});
   // Known only now: every temporary (the LUT's) and every note (sg-fitted's).

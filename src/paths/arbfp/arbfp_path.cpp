@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "gl/map_texture.h"
+#include "paths/arbfp/arb_albedo_map.h"
 #include "paths/arbfp/arb_budget.h"
 #include "paths/arbfp/arb_file_budget.h"
 #include "paths/arbfp/arb_generator.h"
@@ -29,6 +30,7 @@ struct PassState {
 struct MaterialState {
   std::vector<PassState> passes;
   std::unique_ptr<gl::MapTexture> thickness_map;  // on texture unit kThicknessMapUnit
+  std::unique_ptr<gl::MapTexture> albedo_map;     // on texture unit kAlbedoMapUnit
   // A lobe ramp on kLobeTableUnit (2D): every pass's program reads it instead of a power LUT.
   std::unique_ptr<gl::MapTexture> ramp;
 };
@@ -58,12 +60,14 @@ GLuint upload_lut(const model::PowerLut& lut) {
   return tex;
 }
 
-// The material's 2D textures: the thickness map (texture[1]) and the lobe ramp (texture[0], whose
-// 1D target holds the power LUT of pow=lut: a program reads one of the two).
+// The material's 2D textures: the thickness map (texture[1]), the lobe ramp (texture[0], whose
+// 1D target holds the power LUT of pow=lut: a program reads one of the two) and the albedo map
+// (texture[2]).
 void bind_material_textures(const MaterialState* st) {
   const std::pair<int, const gl::MapTexture*> units[] = {
       {arbfp::kThicknessMapUnit, st ? st->thickness_map.get() : nullptr},
-      {arbfp::kLobeTableUnit, st ? st->ramp.get() : nullptr}};
+      {arbfp::kLobeTableUnit, st ? st->ramp.get() : nullptr},
+      {arbfp::kAlbedoMapUnit, st ? st->albedo_map.get() : nullptr}};
   for (const auto& [unit, texture] : units) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, texture ? texture->id() : 0);
@@ -103,6 +107,10 @@ class ArbfpPath final : public Path {
       if (mat.translucency && mat.translucency->thickness_map)
         st->thickness_map = std::make_unique<gl::MapTexture>(
             ctx.gl, *mat.translucency->thickness_map, gl::MapTexelClass::Fp16);
+      // The glsl path's upload of the same albedo map: decoded linear colour as half.
+      if (mat.albedo_map)
+        st->albedo_map =
+            std::make_unique<gl::MapTexture>(ctx.gl, *mat.albedo_map, gl::MapTexelClass::Fp16);
       // The glsl path's upload of the same ramp (gl/map_texture.h): both sample one texture.
       if (mat.translucency && mat.translucency->ramp)
         st->ramp = std::make_unique<gl::MapTexture>(ctx.gl, *mat.translucency->ramp,
@@ -221,6 +229,11 @@ class ArbfpPath final : public Path {
       if (st.thickness_map) {
         out.push_back({material + ": thickness map, one TEX from texture[1]: " +
                            st.thickness_map->description(),
+                       "texture", ""});
+      }
+      if (st.albedo_map) {
+        out.push_back({material + ": albedo map, one TEX from texture[2] times the albedo: " +
+                           st.albedo_map->description(),
                        "texture", ""});
       }
       if (st.ramp) {

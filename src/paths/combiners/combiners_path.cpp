@@ -34,6 +34,8 @@ const char* program_file(PassKind kind) {
       return "lobe_cube_full.comb";
     case PassKind::LobeVertexMap:
       return "lobe_vertex_map.comb";
+    case PassKind::AlbedoModulate:
+      return "albedo_modulate.comb";
   }
   return "";
 }
@@ -77,6 +79,8 @@ std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::
         }
       }
     }
+    // Last, once the framebuffer holds the whole term (combiners/albedo_modulate.comb).
+    if (m.albedo_map) p.pass_kinds.push_back(PassKind::AlbedoModulate);
     for (PassKind k : p.pass_kinds) {
       if (!p.programs.count(k))
         p.programs.emplace(k, combiners::load_combiner_program(program_file(k)));
@@ -124,10 +128,16 @@ class CombinersPath final : public Path {
     tables_.resize(s.materials.size());
     table_textures_.resize(s.materials.size(), 0);
     maps_.resize(s.materials.size());
+    albedo_maps_.resize(s.materials.size());
     map_tables_.resize(s.materials.size());
     cubes_.assign(s.materials.size(), std::vector<CubeLobe>(s.lights.size()));
     for (const CombinerMaterialPlan& p : plans_) {
       const Material& m = s.materials[p.material];
+      // GL 1.3 parts have no sRGB textures: the decoded linear colour in 8 bits (map_texture.h).
+      if (p.used && m.albedo_map) {
+        albedo_maps_[p.material] =
+            std::make_unique<gl::MapTexture>(ctx.gl, *m.albedo_map, gl::MapTexelClass::Unorm8);
+      }
       if (!p.used || !m.translucency) continue;
       // 8-bit texels: what a GL 1.3 (or Wii I8) texture holds: t^p, or the material's ramp.
       tables_[p.material] = lobe_table(*m.translucency);
@@ -254,6 +264,11 @@ class CombinersPath final : public Path {
                      : " (rgb lobe ramp with per-vertex thickness: the cube's alpha holds one "
                        "channel; t per vertex)";
         }
+        if (kind == PassKind::AlbedoModulate) {
+          note = " (albedo map on unit 0: " +
+                 albedo_maps_[static_cast<size_t>(p.material)]->description() +
+                 "; blend GL_DST_COLOR, GL_ZERO over the passes before)";
+        }
         if (kind == PassKind::LobeVertexMap) {
           note = " (thickness map on unit 1: " +
                  maps_[static_cast<size_t>(p.material)]->description() +
@@ -266,7 +281,7 @@ class CombinersPath final : public Path {
           note = " (cube " + std::to_string(kCombinerCubeSize) + "^2 x 6, RGBA8" +
                  (c.constant_clamped ? "; albedo*color*g > 4 clamped" : "") +
                  (ramp ? "; the lobe ramp baked in" : "") + ")";
-        } else if (kind != PassKind::DiffuseOnly) {
+        } else if (kind != PassKind::DiffuseOnly && kind != PassKind::AlbedoModulate) {
           const size_t m = static_cast<size_t>(p.material);
           note += describe_ramp(*ctx_.scene.materials[m].translucency, tables_[m]);
         }
@@ -295,6 +310,10 @@ class CombinersPath final : public Path {
     const CombinerMaterialPlan& plan = plans_[static_cast<size_t>(mesh.material)];
     const PassKind kind = plan.kind(pass);
     const combiners::CombinerProgram& program = plan.program(pass);
+    if (kind == PassKind::AlbedoModulate) {
+      draw_albedo_pass(mesh, program);
+      return;
+    }
     const Material& mat = s.materials[static_cast<size_t>(mesh.material)];
     const size_t l = static_cast<size_t>(pass);
     const auto& buf = buffers_[object];
@@ -363,6 +382,33 @@ class CombinersPath final : public Path {
     ctx_.geometry.unbind();
   }
 
+  // The framebuffer times the albedo map where `mesh` is visible (combiners/albedo_modulate.comb):
+  // a pass after the light passes (pass >= 1, so the additive passes' depth EQUAL is on).
+  void draw_albedo_pass(const gl::GpuMesh& mesh, const combiners::CombinerProgram& program) {
+    combiners::ProgramInputs in;
+    in.textures["albedo_map"] = {GL_TEXTURE_2D,
+                                 albedo_maps_[static_cast<size_t>(mesh.material)]->id()};
+    combiners::apply(program, in);
+    glActiveTexture(GL_TEXTURE0);
+    glMatrixMode(GL_TEXTURE);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glBlendFunc(GL_DST_COLOR, GL_ZERO);
+    ctx_.geometry.bind(mesh);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glColor4f(1, 1, 1, 1);
+    // The UVs (uploaded as set kUvTexCoordSet) on unit 0's set, which this pass's stage reads.
+    glClientActiveTexture(GL_TEXTURE0);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, mesh.uvs);
+    glTexCoordPointer(2, GL_FLOAT, 0, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    ctx_.geometry.unbind();
+    glBlendFunc(GL_ONE, GL_ONE);  // the additive passes' blend, for the passes still to come
+  }
+
   // The lobe table object `i`'s material samples; null for a material without translucency.
   const LobeTable* table_of(size_t i) const {
     const int m = ctx_.scene.objects[i].material;
@@ -376,10 +422,11 @@ class CombinersPath final : public Path {
   std::vector<CombinerMaterialPlan> plans_;
   std::vector<LobeTable> tables_;  // [material]: t^p or its ramp
   std::vector<GLuint> table_textures_;
-  std::vector<std::unique_ptr<gl::MapTexture>> maps_;  // [material], thickness-map materials
-  std::vector<std::vector<GLuint>> map_tables_;        // [material][light], their tables
-  std::vector<std::vector<CubeLobe>> cubes_;           // [material][light], lobe=cube passes only
-  std::vector<std::array<GLuint, 3>> buffers_;         // per object: primary, texcoord, secondary
+  std::vector<std::unique_ptr<gl::MapTexture>> maps_;         // [material], thickness-map materials
+  std::vector<std::unique_ptr<gl::MapTexture>> albedo_maps_;  // [material], albedo-map materials
+  std::vector<std::vector<GLuint>> map_tables_;               // [material][light], their tables
+  std::vector<std::vector<CubeLobe>> cubes_;    // [material][light], lobe=cube passes only
+  std::vector<std::array<GLuint, 3>> buffers_;  // per object: primary, texcoord, secondary
   GLuint white_ = 0;
   double cpu_seconds_ = 0, cube_seconds_ = 0;
   int passes_drawn_ = 0;

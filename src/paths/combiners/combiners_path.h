@@ -17,12 +17,13 @@ PathInfo combiners_path_info();
 
 // What one pass draws, chosen once by plan_combiners; every later decision reads the kind.
 enum class PassKind {
-  DiffuseOnly,    // a material without translucency: the diffuse sum per vertex
-  LobeVertex,     // the lobe table (lobe_table.h) at a per-vertex t
-  LobeTexgen,     // the lobe table at t from texgen NORMAL_MAP and the texture matrix
-  LobeCube,       // the lobe from a cube map of the normal (its alpha), thickness per vertex
-  LobeCubeFull,   // the whole term in the cube map (constant thickness)
-  LobeVertexMap,  // a thickness map's material: the table at a per-vertex t, the map on unit 1
+  DiffuseOnly,     // a material without translucency: the diffuse sum per vertex
+  LobeVertex,      // the lobe table (lobe_table.h) at a per-vertex t
+  LobeTexgen,      // the lobe table at t from texgen NORMAL_MAP and the texture matrix
+  LobeCube,        // the lobe from a cube map of the normal (its alpha), thickness per vertex
+  LobeCubeFull,    // the whole term in the cube map (constant thickness)
+  LobeVertexMap,   // a thickness map's material: the table at a per-vertex t, the map on unit 1
+  AlbedoModulate,  // an albedo map's material, last: the framebuffer times the map (blend)
 };
 // Its program in combiners/ ("lobe_vertex.comb").
 const char* program_file(PassKind kind);
@@ -33,6 +34,7 @@ inline bool uses_cube(PassKind k) {
 // The plan for one scene: which program each pass of each material uses (shared by the path and
 // the budget checker, so both count the same thing). Pass l of a translucent material draws
 // light l and adds onto the passes before it; a material without translucency takes one pass.
+// A material with an albedo map takes one more, last: AlbedoModulate.
 struct CombinerMaterialPlan {
   int material = 0;
   bool used = false;                                        // some object draws with it

@@ -1,5 +1,7 @@
 #include "paths/common/gbuffer.h"
 
+#include <algorithm>
+
 namespace lt {
 
 Scene camera_relative_lights(const PathContext& ctx) {
@@ -20,7 +22,9 @@ GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
     : ctx_(ctx),
       program_(gl::read_shader_source("legacy_shaders/glsl/gbuffer.vert"),
                gl::read_shader_source("legacy_shaders/glsl/gbuffer.frag"), "gbuffer"),
-      target_(ctx.width, ctx.height, 3) {
+      uv_target_(std::any_of(ctx.scene.materials.begin(), ctx.scene.materials.end(),
+                             [](const Material& m) { return samples_uvs(m); })),
+      target_(ctx.width, ctx.height, uv_target_ ? 4 : 3) {
   ctx.gl.require_extension("GL_ARB_texture_float", user);
   ctx.gl.require_extension("GL_ARB_draw_buffers", user);
 }
@@ -34,7 +38,6 @@ void GBuffer::rasterise() {
   ctx_.geometry.load_matrices();
   for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
     glUniform1f(program_.uniform("u_material"), static_cast<float>(m.material));
-    glUniform1f(program_.uniform("u_uv_thickness"), m.has_uvs ? 1.0f : 0.0f);
     ctx_.geometry.draw(m);
   }
   glUseProgram(0);
@@ -42,12 +45,14 @@ void GBuffer::rasterise() {
   target_.read(0, position_);
   target_.read(1, normal_);
   target_.read(2, thickness_);
+  if (uv_target_) target_.read(3, uv_);
   gl::check_error("reference G-buffer");
 }
 
 std::vector<BuiltStage> GBuffer::stages() const {
-  return {{"G-buffer: 3 x RGBA32F (position, normal + material, thickness)", "glsl-vertex",
-           program_.vertex_source()},
+  return {{uv_target_ ? "G-buffer: 4 x RGBA32F (position, normal + material, thickness, map UV)"
+                      : "G-buffer: 3 x RGBA32F (position, normal + material, thickness)",
+           "glsl-vertex", program_.vertex_source()},
           {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
 }
 

@@ -42,6 +42,11 @@ class GBuffer {
   const float* position(size_t g) const { return &position_[g]; }
   const float* normal(size_t g) const { return &normal_[g]; }
   const float* thickness(size_t g) const { return &thickness_[g]; }
+  // The interpolated (u, v) of a material that samples a map; (0, 0) in a scene without maps
+  // (the fourth target is only built for a scene with one).
+  glm::dvec2 uv(size_t g) const {
+    return uv_.empty() ? glm::dvec2(0) : glm::dvec2(uv_[g], uv_[g + 1]);
+  }
 
   // Threads the CPU paths shade on: every core.
   static unsigned threads() { return worker_threads(); }
@@ -82,8 +87,9 @@ class GBuffer {
  private:
   PathContext ctx_;
   gl::GlslProgram program_;
+  bool uv_target_ = false;  // a material samples a map: the fourth target holds (u, v)
   gl::FloatTarget target_;
-  std::vector<float> position_, normal_, thickness_;
+  std::vector<float> position_, normal_, thickness_, uv_;
 };
 
 }  // namespace lt

@@ -54,7 +54,8 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
       define("LT_AMBIENT_LIGHT", scene.ambient_light != glm::dvec3(0)) +
       define("LT_ORTHOGRAPHIC", scene.camera.projection == Camera::Projection::Orthographic) +
       define("LT_THICKNESS_MAP", translucent && tr.thickness_source == ThicknessSource::Texture) +
-      define("LT_RAMP", translucent && tr.ramp != nullptr);
+      define("LT_RAMP", translucent && tr.ramp != nullptr) +
+      define("LT_ALBEDO_MAP", material.albedo_map != nullptr);
   GlslSources s;
   s.vertex = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.vert"),
                                {{"DEFINES", defines}}, "translucency.vert");
@@ -68,8 +69,9 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
 namespace {
 
 // The textures of the materials that have programs: the thickness map on unit 1 (its UVs are
-// texture coordinate set 1, gl/scene_geometry.h), the ramp on unit 0.
-constexpr int kRampTextureUnit = 0, kMapTextureUnit = 1;
+// texture coordinate set 1, gl/scene_geometry.h), the ramp on unit 0, the albedo map on unit 2
+// (read at the same UVs).
+constexpr int kRampTextureUnit = 0, kMapTextureUnit = 1, kAlbedoTextureUnit = 2;
 // GLSL 1.10 is the GL 2.0 class, whose parts filter fp16 but not fp32 textures: a float map or
 // ramp is uploaded as half (gl/map_texture.h).
 constexpr gl::MapTexelClass kTexelClass = gl::MapTexelClass::Fp16;
@@ -80,7 +82,12 @@ class MaterialTextures {
                    const std::vector<std::unique_ptr<gl::GlslProgram>>& programs) {
     maps_.resize(programs.size());
     ramps_.resize(programs.size());
+    albedo_maps_.resize(programs.size());
     for (size_t i = 0; i < programs.size(); ++i) {
+      if (programs[i] && ctx.scene.materials[i].albedo_map) {
+        albedo_maps_[i] = std::make_shared<gl::MapTexture>(
+            ctx.gl, *ctx.scene.materials[i].albedo_map, kTexelClass);
+      }
       if (!programs[i] || !ctx.scene.materials[i].translucency) continue;
       const Translucency& tr = *ctx.scene.materials[i].translucency;
       if (tr.thickness_map)
@@ -91,10 +98,12 @@ class MaterialTextures {
   void bind(int material) const {
     bind_unit(kMapTextureUnit, maps_[material].get());
     bind_unit(kRampTextureUnit, ramps_[material].get());
+    bind_unit(kAlbedoTextureUnit, albedo_maps_[material].get());
   }
   void unbind() const {
     bind_unit(kMapTextureUnit, nullptr);
     bind_unit(kRampTextureUnit, nullptr);
+    bind_unit(kAlbedoTextureUnit, nullptr);
   }
   void describe(const Scene& scene, std::vector<BuiltStage>& out) const {
     for (size_t i = 0; i < maps_.size(); ++i) {
@@ -109,6 +118,11 @@ class MaterialTextures {
                            ramps_[i]->description(),
                        "texture", ""});
       }
+      if (albedo_maps_[i]) {
+        out.push_back({name + ": albedo map, one texture2D on unit 2 times the albedo: " +
+                           albedo_maps_[i]->description(),
+                       "texture", ""});
+      }
     }
   }
 
@@ -119,7 +133,7 @@ class MaterialTextures {
     glActiveTexture(GL_TEXTURE0);
   }
   // shared_ptr: the path moves this into place after building it.
-  std::vector<std::shared_ptr<gl::MapTexture>> maps_, ramps_;
+  std::vector<std::shared_ptr<gl::MapTexture>> maps_, ramps_, albedo_maps_;
 };
 
 void set3(const gl::GlslProgram& p, const std::string& name, const glm::dvec3& v) {
@@ -201,6 +215,7 @@ class GlslPath final : public Path {
     const Scene& s = ctx_.scene;
     glUseProgram(p.id());
     set3(p, "u_albedo", mat.albedo);
+    if (mat.albedo_map) glUniform1i(p.uniform("u_albedo_map"), kAlbedoTextureUnit);
     set3(p, "u_ambient_light", s.ambient_light);
     set3(p, "u_view_dir", -s.camera.forward());
     if (mat.translucency) {

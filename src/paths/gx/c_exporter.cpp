@@ -57,10 +57,10 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
        "clamps)\n"
     << "    GX_TexCoord2f32(u, v);      // if it declares a GX_VA_TEXn as GX_TEX_ST: the mesh's "
        "UV\n"
-    << "                                // (v = 0 at the thickness map's bottom row), after t\n"
+    << "                                // (v = 0 at the maps' bottom row), after t\n"
     << "  GX_End();\n"
-    << "Call DCFlushRange(array, sizeof array) once for each texture array (LUT, thickness map)\n"
-    << "before the first draw.";
+    << "Call DCFlushRange(array, sizeof array) once for each texture array (LUT, thickness map,\n"
+    << "albedo map) before the first draw.";
   ProgramFile file = programs.file;
   file.comment.clear();
   std::ostringstream out;

@@ -71,7 +71,7 @@ struct ChannelPlan {
 // A texture object and the map it is loaded into: GX_InitTexObj(array, size, format, wrap,
 // no mipmaps), linear filtering.
 struct TexturePlan {
-  enum class Role { Lut, ThicknessMap };
+  enum class Role { Lut, ThicknessMap, AlbedoMap };
   Role role = Role::Lut;
   std::string object, array;  // the GXTexObj and the u8 array
   int width = 0, height = 0;

@@ -1,6 +1,6 @@
-// The planner's pieces, shared by its two files (pass_planner.cpp: passes, lights, channels,
+// The planner's pieces, shared by its files (pass_planner.cpp: passes, lights, channels,
 // stages; pass_planner_textures.cpp: the LUT, the thickness map, their texgens and the xf-spec
-// fit). Internal to the generator.
+// fit; pass_planner_albedo.cpp: the albedo map and its stage). Internal to the generator.
 #pragma once
 
 #include <optional>
@@ -25,11 +25,25 @@ TevStagePlan tev_stage(int stage, GxConst<NameGroup::TexCoord> texcoord,
                        std::array<GxConst<NameGroup::ColorArg>, 4> in, int scale, std::string what);
 PixelEnginePlan pixel_engine(int pass);
 
-// A material's thickness map as GX_TEXMAP1's texture, and the thickness a texel of 255 means.
+// A material's thickness map as GX_TEXMAP1's texture (or its albedo map as GX_TEXMAP2's), and
+// the value a texel of 255 means.
 struct MapTexture {
   TexturePlan texture;
   double scale = 1;
 };
+
+// Which map a MapTexture is: its role, names, slot and the scene key its errors name.
+struct MapRole {
+  TexturePlan::Role role;
+  const char* object;              // the GXTexObj
+  const char* array_prefix;        // the u8 array's name before the material's C name
+  GxConst<NameGroup::TexMap> map;  // the GX_TEXMAP it is loaded into
+  const char* what;                // "thickness map", in errors and comments
+  const char* title;               // "Thickness map", starting the array's comment
+  const char* key;                 // after "materials.<name>" in errors
+  const char* unit_meaning;        // what a texel of 255 is (times the scale)
+};
+extern const MapRole kThicknessMapRole, kAlbedoMapRole;
 
 // What one light's pass needs and the scales chosen for it (generator.h's term).
 struct PassChoice {
@@ -51,6 +65,7 @@ class PassPlanner {
 
  private:
   void material_passes(MaterialPlan& mp);
+  void light_passes(MaterialPlan& mp);  // the passes of the term, before the albedo map
   PassPlan diffuse_pass(int m, int pass, size_t first_light);
   PassChoice choose(int m, size_t l, const MapTexture* map) const;
   PassPlan light_pass(int m, size_t l, const std::optional<TexturePlan>& lut,
@@ -61,7 +76,10 @@ class PassPlanner {
                     int st_scale) const;
   // pass_planner_textures.cpp
   TexturePlan lut_texture(MaterialPlan& mp) const;
-  MapTexture map_texture(MaterialPlan& mp, const MapTexels& texels) const;
+  MapTexture map_texture(MaterialPlan& mp, const MapTexels& texels, const MapRole& role) const;
+  // pass_planner_albedo.cpp
+  std::optional<MapTexture> albedo_texture(MaterialPlan& mp) const;
+  static void add_albedo_stage(PassPlan& p, const MapTexture& albedo);
   TexGenPlan lut_texgen(const Translucency& tr, const Light& light, const TexturePlan& lut) const;
   static TexGenPlan map_texgen(const MapTexture& map, int texcoord, int uv_attribute);
   LightObjectPlan specular_light(const Translucency& tr, const Light& light,

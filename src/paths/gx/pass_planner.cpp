@@ -159,6 +159,15 @@ ScenePlan PassPlanner::plan() {
 }
 
 void PassPlanner::material_passes(MaterialPlan& mp) {
+  light_passes(mp);
+  const std::optional<MapTexture> albedo = albedo_texture(mp);
+  // The albedo map multiplies every part of each pass's sum (pass_planner_albedo.cpp).
+  if (albedo) {
+    for (PassPlan& p : mp.passes) add_albedo_stage(p, *albedo);
+  }
+}
+
+void PassPlanner::light_passes(MaterialPlan& mp) {
   const Material& mat = scene_.materials[static_cast<size_t>(mp.material)];
   if (!mat.translucency || scene_.lights.empty()) {
     // Diffuse only: the XF sums up to 8 lights in one channel, one stage shows it.
@@ -172,7 +181,7 @@ void PassPlanner::material_passes(MaterialPlan& mp) {
   if (variant_.lobe == GxVariant::Lobe::Lut && !flat_lobe) lut = lut_texture(mp);
   std::optional<MapTexture> map;
   if (const std::optional<MapTexels> texels = thickness_map_texels(mat))
-    map = map_texture(mp, *texels);
+    map = map_texture(mp, *texels, kThicknessMapRole);
   for (size_t l = 0; l < scene_.lights.size(); ++l)
     mp.passes.push_back(light_pass(mp.material, l, lut, map ? &*map : nullptr));
 }

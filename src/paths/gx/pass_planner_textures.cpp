@@ -81,14 +81,32 @@ TexturePlan PassPlanner::lut_texture(MaterialPlan& mp) const {
   return t;
 }
 
-// The thickness map as GX_TEXMAP1's texture (thickness_texture.h), one u8 array per material
-// that every pass loads.
-MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels) const {
+const MapRole kThicknessMapRole{TexturePlan::Role::ThicknessMap,
+                                "thickness",
+                                "ltrender_thickness_",
+                                {"GX_TEXMAP1"},
+                                "thickness map",
+                                "Thickness map",
+                                ".translucency.thickness",
+                                "thickness"};
+const MapRole kAlbedoMapRole{TexturePlan::Role::AlbedoMap,
+                             "albedo",
+                             "ltrender_albedo_",
+                             {"GX_TEXMAP2"},
+                             "albedo map",
+                             "Albedo map",
+                             ".albedo_map",
+                             "albedo (linear: decoded from sRGB by ltrender)"};
+
+// A material's map as `role` says (thickness_texture.h: GX_TEXMAP1's thickness map, GX_TEXMAP2's
+// albedo map), one u8 array per material that every pass loads.
+MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
+                                    const MapRole& role) const {
   const Material& mat = scene_.materials[static_cast<size_t>(mp.material)];
   if (texels.width > kMaxTextureSize || texels.height > kMaxTextureSize)
-    throw InputError(scene_.file.string(), "materials." + mat.name + ".translucency.thickness",
-                     "gx: the thickness map is " + std::to_string(texels.width) + "x" +
-                         std::to_string(texels.height) +
+    throw InputError(scene_.file.string(), "materials." + mat.name + role.key,
+                     std::string("gx: the ") + role.what + " is " + std::to_string(texels.width) +
+                         "x" + std::to_string(texels.height) +
                          " texels; a GX texture is at most 1024 a side (resize the map)");
   const ThicknessTexture tex =
       thickness_texture(texels.width, texels.height, *texels.rgb, texels.grey, variant_.map_rgb565);
@@ -96,19 +114,19 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels) c
   MapTexture m;
   m.scale = tex.scale;
   TexturePlan& t = m.texture;
-  t.role = TexturePlan::Role::ThicknessMap;
-  t.object = "thickness";
-  t.array = "ltrender_thickness_" + mp.c_name;
+  t.role = role.role;
+  t.object = role.object;
+  t.array = role.array_prefix + mp.c_name;
   t.width = o.width;
   t.height = o.height;
   t.format = GxConst<NameGroup::TexFormat>::with_value(o.format);
-  t.map = {"GX_TEXMAP1"};
+  t.map = role.map;
   t.bytes = o.data.size();
-  t.what = std::string("The thickness map: ") + t.format.name() + ", linear, clamped";
+  t.what = std::string("The ") + role.what + ": " + t.format.name() + ", linear, clamped";
   const bool i8 = o.format == kTexFormatI8, rgba8 = o.format == kTexFormatRGBA8;
   mp.arrays.push_back(
       {t.array, std::vector<u8>(o.data.begin(), o.data.end()),
-       "Thickness map of material " + mat.name + ": " + std::to_string(o.width) + "x" +
+       std::string(role.title) + " of material " + mat.name + ": " + std::to_string(o.width) + "x" +
            std::to_string(o.height) + " texels " + t.format.name() + " in GX tile order (" +
            (i8      ? "8x4 tiles of 32 bytes"
             : rgba8 ? "4x4 tiles of 64 bytes: 16 (a, r) pairs, then 16 (g, b) pairs"
@@ -116,8 +134,9 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels) c
            "),\nrows from the image's bottom row up (v = 0 first), so the identity texgen's "
            "t = v reads the\ntexel a GL path samples at (u, v); a converter that stores the "
            "top row first needs\nt = 1 - v (a texture matrix with row 1 = (0, -1, 0, 1)). A "
-           "texel of 255 is thickness " +
-           note_number(tex.scale) + ". Flush it (DCFlushRange)\nbefore the GPU reads it."});
+           "texel of 255 is " +
+           std::string(role.unit_meaning) + " " + note_number(tex.scale) +
+           ". Flush it (DCFlushRange)\nbefore the GPU reads it."});
   return m;
 }
 
@@ -155,9 +174,9 @@ TexGenPlan PassPlanner::lut_texgen(const Translucency& tr, const Light& light,
   return g;
 }
 
-// The thickness map's texgen: (s, t) = the mesh's UV through GX_IDENTITY (the map is stored
-// bottom row first, thickness_texture.h, so t = v needs no flip), fetched from GX_TEXMAP1,
-// linear and clamped as the reference's CLAMP_TO_EDGE bilinear.
+// A map's texgen: (s, t) = the mesh's UV through GX_IDENTITY (the map is stored bottom row first,
+// thickness_texture.h, so t = v needs no flip), fetched from the map's GX_TEXMAP, linear and
+// clamped as the reference's CLAMP_TO_EDGE bilinear (an albedo map: its sampler's wrap).
 TexGenPlan PassPlanner::map_texgen(const MapTexture& map, int texcoord, int uv_attribute) {
   TexGenPlan g;
   g.coord = GxConst<NameGroup::TexCoord>::with_value(texcoord);

@@ -2,6 +2,7 @@
 // `info --source` / the export's header ("light 0, 3 stages, 1 texture (LUT 256 texels), scales:
 // translucency x2, diffuse x1").
 #include <sstream>
+#include <vector>
 
 #include "paths/gx/generator.h"
 
@@ -15,22 +16,26 @@ std::string note_number(double v) {
 
 namespace {
 
-// ", 1 texture (LUT 256 texels)", " + thickness map 64x64 GX_TF_I8, 4096 bytes": what the pass's
-// texgens fetch, the LUT first.
+// ", 1 texture (LUT 256 texels)", " + thickness map 64x64 GX_TF_I8, 4096 bytes", " + albedo map
+// 16x16 GX_TF_RGBA8, 1024 bytes": what the pass's texgens fetch, in texgen order (the LUT first).
 std::string textures(const PassPlan& p) {
-  const TexturePlan* lut = nullptr;
-  const TexturePlan* map = nullptr;
+  std::vector<std::string> parts;
   for (const TexGenPlan& g : p.texgens) {
     if (!g.texture) continue;
-    (g.texture->role == TexturePlan::Role::Lut ? lut : map) = &*g.texture;
+    const TexturePlan& t = *g.texture;
+    if (t.role == TexturePlan::Role::Lut) {
+      parts.push_back("LUT " + std::to_string(t.width) + " texels");
+      continue;
+    }
+    parts.push_back(std::string(t.role == TexturePlan::Role::AlbedoMap ? "albedo" : "thickness") +
+                    " map " + std::to_string(t.width) + "x" + std::to_string(t.height) + " " +
+                    t.format.name() + ", " + std::to_string(t.bytes) + " bytes");
   }
-  std::string s;
-  if (lut) s += ", 1 texture (LUT " + std::to_string(lut->width) + " texels)";
-  if (map)
-    s += std::string(lut ? " + " : ", 1 texture (") + "thickness map " +
-         std::to_string(map->width) + "x" + std::to_string(map->height) + " " + map->format.name() +
-         ", " + std::to_string(map->bytes) + " bytes" + (lut ? "" : ")");
-  return s;
+  if (parts.empty()) return "";
+  std::string s = ", " + std::to_string(parts.size()) +
+                  (parts.size() == 1 ? " texture (" : " textures (") + parts[0];
+  for (size_t i = 1; i < parts.size(); ++i) s += " + " + parts[i];
+  return s + ")";
 }
 
 }  // namespace
@@ -38,7 +43,9 @@ std::string textures(const PassPlan& p) {
 std::string describe_pass(const PassPlan& p) {
   const PassFigures& f = p.figures;
   if (f.diffuse_only) {
-    std::string note = "diffuse only, 1 stage, scale x" + std::to_string(f.diffuse_scale);
+    const size_t n = p.stages.size();
+    std::string note = "diffuse only, " + std::to_string(n) + (n == 1 ? " stage" : " stages") +
+                       textures(p) + ", scale x" + std::to_string(f.diffuse_scale);
     if (f.diffuse_saturates) note += "; diffuse over x4 saturates";
     return note;
   }

@@ -48,9 +48,9 @@ class HalfPath final : public CpuShadedPath {
   void shade() override {
     std::vector<size_t> nonfinite(threads(), 0);
     covered_ = gbuffer_.shade_covered(image_, background_, [&](size_t g, float* out, unsigned w) {
-      const glm::vec3 c =
-          fp16::shade_pixel(scene_, scene_.materials[gbuffer_.material(g)], mode_,
-                            gbuffer_.position(g), gbuffer_.normal(g), gbuffer_.thickness(g));
+      const glm::vec3 c = fp16::shade_pixel(scene_, scene_.materials[gbuffer_.material(g)], mode_,
+                                            gbuffer_.position(g), gbuffer_.normal(g),
+                                            gbuffer_.thickness(g), gbuffer_.uv(g));
       const bool finite = std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
       nonfinite[w] += !finite;
       for (int ch = 0; ch < 3; ++ch) out[ch] = finite ? c[ch] : kNonFiniteMarker[ch];

@@ -97,7 +97,7 @@ half to_half(double v) {
 }
 
 TextureH to_half(const model::Texture& t) {
-  TextureH h{t.width, t.height, {}};
+  TextureH h{t.width, t.height, {}, t.wrap_s, t.wrap_t};
   h.texels.reserve(t.texels.size() / 3);
   for (size_t i = 0; i < t.texels.size(); i += 3) h.texels.push_back(to_half(&t.texels[i]));
   return h;
@@ -141,6 +141,8 @@ SceneH prepare_scene(const Scene& scene, PowMode mode) {
   for (const Material& m : scene.materials) {
     MaterialH h;
     h.albedo = to_half(m.albedo);
+    h.albedo_mapped = m.albedo_map != nullptr;
+    if (h.albedo_mapped) h.albedo_map = to_half(m.albedo_map->texture);
     if (m.translucency) {
       const Translucency& tr = *m.translucency;
       h.translucent = true;
@@ -168,7 +170,7 @@ namespace {
 // The sampling arithmetic: texture units round as the guarded shader does (no Inf texels: the
 // scene's texels are at most 1e4).
 Vec3h sample_with(const Fp16& f, const TextureH& t, glm::dvec2 uv) {
-  const model::BilinearTaps k = model::bilinear_taps(t.width, t.height, uv);
+  const model::BilinearTaps k = model::bilinear_taps(t.width, t.height, uv, t.wrap_s, t.wrap_t);
   const half fx = to_half(k.fx), fy = to_half(k.fy);
   const half gx = f.sub(half(1.0f), fx), gy = f.sub(half(1.0f), fy);
   auto texel = [&](int x, int y) { return t.texels[static_cast<size_t>(y) * t.width + x]; };
@@ -183,7 +185,7 @@ Vec3h sample_half(const TextureH& texture, glm::dvec2 uv) {
 }
 
 glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, const float* position,
-                      const float* normal, const float* vertex_thickness) {
+                      const float* normal, const float* vertex_thickness, glm::dvec2 uv) {
   const Fp16 f(mode != PowMode::Unguarded);
   const Vec3h zero{half(0.0f), half(0.0f), half(0.0f)};
   // A half-precision pipeline sees its G-buffer in half: round the inputs first. Positions are
@@ -194,7 +196,7 @@ glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, con
   Vec3h T = zero;
   if (m.translucent) {
     if (m.map_thickness) {
-      T = f.mul(sample_with(f, m.map, {vertex_thickness[0], vertex_thickness[1]}), m.thickness);
+      T = f.mul(sample_with(f, m.map, uv), m.thickness);
     } else {
       T = m.vertex_thickness ? f.mul(to_half(vertex_thickness), m.thickness) : m.thickness;
     }
@@ -237,7 +239,10 @@ glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, con
     // model's order: c = albedo * (ambient_light + sum of color * (diffuse + trans)).)
     sum = f.add(sum, f.mul(l.color, term));
   }
-  const Vec3h c = f.mul(m.albedo, f.add(scene.ambient_light, sum));
+  // The seed's cDiffuseAlbedo from a texture: tex2D(albedo, uv).rgb * albedo, in half.
+  const Vec3h albedo =
+      m.albedo_mapped ? f.mul(sample_with(f, m.albedo_map, uv), m.albedo) : m.albedo;
+  const Vec3h c = f.mul(albedo, f.add(scene.ambient_light, sum));
   return {float(c.x), float(c.y), float(c.z)};
 }
 

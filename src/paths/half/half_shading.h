@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "model/texture_sampling.h"
 #include "scene/scene.h"
 
 namespace lt::fp16 {
@@ -44,12 +45,15 @@ struct LightH {
 struct TextureH {
   int width = 0, height = 0;
   std::vector<Vec3h> texels;
+  model::Wrap wrap_s = model::Wrap::ClampToEdge, wrap_t = model::Wrap::ClampToEdge;
 };
 
 // A material's constants in half. `thickness` is constant * tint, or the tint alone when the
 // thickness comes from the vertex colour or a map (multiplied in per pixel, like the glsl path).
 struct MaterialH {
   Vec3h albedo;
+  bool albedo_mapped = false;  // `albedo_map` at the G-buffer's UV multiplies `albedo`
+  TextureH albedo_map;         // its linear (sRGB-decoded) texels rounded to half
   bool translucent = false;
   bool vertex_thickness = false;
   bool map_thickness = false;  // `map` is sampled at the G-buffer's UV
@@ -79,11 +83,12 @@ SceneH prepare_scene(const Scene& scene, PowMode mode);
 // ((1-fy)((1-fx) t00 + fx t10) + fy((1-fx) t01 + fx t11)) rounds every product and sum to half.
 Vec3h sample_half(const TextureH& texture, glm::dvec2 uv);
 
-// One covered pixel from its float G-buffer values (position, normal and vertex thickness, or a
-// map material's (u, v, 0): xyz).
+// One covered pixel from its float G-buffer values (position, normal and vertex thickness: xyz;
+// a map material's (u, v)).
 // Returns the half result widened to float. With PowMode::Unguarded it may be NaN or Inf; the
 // guarded modes are finite by construction.
 glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& material, PowMode mode,
-                      const float* position, const float* normal, const float* vertex_thickness);
+                      const float* position, const float* normal, const float* vertex_thickness,
+                      glm::dvec2 uv);
 
 }  // namespace lt::fp16

@@ -24,9 +24,8 @@ class ReferencePath final : public CpuShadedPath {
       sp.P = glm::dvec3(pos[0], pos[1], pos[2]);
       sp.N = glm::dvec3(nrm[0], nrm[1], nrm[2]);
       sp.V = model::view_vector(s.camera, sp.P);
-      // The G-buffer's third target: the vertex colour, or a map material's (u, v, 0).
       sp.vertex_thickness = glm::dvec3(thk[0], thk[1], thk[2]);
-      sp.uv = glm::dvec2(thk[0], thk[1]);
+      sp.uv = gbuffer_.uv(g);  // a map material's (u, v)
       const glm::dvec3 c = model::shade(s, s.materials[gbuffer_.material(g)], sp);
       for (int ch = 0; ch < 3; ++ch) out[ch] = static_cast<float>(c[ch]);
     });

@@ -20,7 +20,8 @@ using json = nlohmann::json;
 // requires any other is refused, since glTF 2.0 §3.12 says a loader that does not support a
 // required extension must not load the asset.
 const std::set<std::string> kImplementedExtensions = {
-    "KHR_materials_volume", "KHR_materials_diffuse_transmission", "KHR_lights_punctual"};
+    "KHR_materials_volume", "KHR_materials_diffuse_transmission", "KHR_lights_punctual",
+    "KHR_texture_transform"};
 
 // What FsCallbacks reads: every file through read_input_file, its refusal kept so that the error
 // can name the file's own reason ("is a FIFO", "over the 256 MiB limit") and the buffer's pointer.
@@ -57,10 +58,14 @@ bool write_nothing(std::string*, const std::string&, const std::vector<unsigned 
   return false;  // reading never writes
 }
 
-// The importer uses no pixels yet (a base colour texture is refused, thickness textures wait for
-// the thickness-map issue), so images are not decoded: their files are still read and capped.
-bool skip_image_pixels(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                       const unsigned char*, int, void*) {
+// Images are kept as their encoded bytes (as_is), whether they come from a file, a data URI or
+// a GLB buffer view: a base colour texture is decoded when its material is mapped
+// (gltf_textures.h), through the same image reader as every other input; an unused image is
+// never decoded.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
   return true;
 }
 
@@ -171,7 +176,8 @@ Document read_document(const fs::path& path) {
         doc.fail(
             "/extensionsRequired/" + std::to_string(i),
             "required extension " + name + " is not supported (supported: " +
-                "KHR_materials_volume, KHR_materials_diffuse_transmission, KHR_lights_punctual)");
+                "KHR_materials_volume, KHR_materials_diffuse_transmission, KHR_lights_punctual, "
+                "KHR_texture_transform)");
       }
     }
   }
@@ -179,7 +185,7 @@ Document read_document(const fs::path& path) {
   FileReads reads;
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&file_exists, &keep_path, &read_whole_file, &write_nothing, &reads});
-  loader.SetImageLoader(&skip_image_pixels, nullptr);
+  loader.SetImageLoader(&keep_encoded_image, nullptr);
   std::string err, warn;
   const std::string base_dir = path.parent_path().string();
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());

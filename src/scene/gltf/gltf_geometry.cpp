@@ -28,15 +28,16 @@ const char* mode_name(int mode) {
   return "unknown";
 }
 
-// The attributes the importer reads; any other (TANGENT, TEXCOORD_1, JOINTS_0, ...) is listed
-// as ignored.
-bool is_read_attribute(const std::string& name) {
-  return name == "POSITION" || name == "NORMAL" || name == "COLOR_0" || name == "TEXCOORD_0";
+// The attributes the importer reads; any other (TANGENT, another TEXCOORD_n, JOINTS_0, ...) is
+// listed as ignored.
+bool is_read_attribute(const std::string& name, const std::string& uv_name) {
+  return name == "POSITION" || name == "NORMAL" || name == "COLOR_0" || name == uv_name;
 }
 
 }  // namespace
 
-PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_index) {
+PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_index,
+                             const TextureCoordinates& uv_source) {
   const std::string ptr =
       "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(primitive_index);
   const tinygltf::Primitive& prim = doc.model.meshes[static_cast<std::size_t>(mesh_index)]
@@ -145,21 +146,24 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
       for (int c = 0; c < 3; ++c) mesh.colors[v][c] = a.values[v * a.components + c];
     }
   }
-  const int uv = attribute("TEXCOORD_0");
+  const std::string uv_name = "TEXCOORD_" + std::to_string(uv_source.set);
+  const int uv = attribute(uv_name.c_str());
   if (uv >= 0) {
-    const AccessorValues a = read_accessor(doc, uv, "TEXCOORD_0", {2});
-    same_count(a, uv, "TEXCOORD_0");
+    const AccessorValues a = read_accessor(doc, uv, uv_name.c_str(), {2});
+    same_count(a, uv, uv_name.c_str());
     mesh.uvs.resize(n);
     // glTF's UV origin is the image's top-left (glTF 2.0 §3.8.4.3: v grows downwards);
     // TriangleMesh::uvs follow OpenGL (v = 0 at the bottom row, model/texture_sampling.h), as
-    // OBJ's vt and the UV baker do: v flips here, once.
-    for (std::size_t v = 0; v < n; ++v) mesh.uvs[v] = {a.values[v * 2], 1 - a.values[v * 2 + 1]};
-    out.notes.push_back("kept " + ptr +
-                        "/attributes/TEXCOORD_0 (for thickness maps; v flipped to OpenGL's "
-                        "bottom-up convention)");
+    // OBJ's vt and the UV baker do: v flips here, once, after a KHR_texture_transform.
+    for (std::size_t v = 0; v < n; ++v)
+      mesh.uvs[v] = importer_uv(uv_source, {a.values[v * 2], a.values[v * 2 + 1]});
+    out.notes.push_back(
+        "kept " + ptr + "/attributes/" + uv_name +
+        " (for maps; v flipped to OpenGL's bottom-up convention" +
+        (uv_source.transform ? ", after the material's KHR_texture_transform" : "") + ")");
   }
   for (const auto& [name, index] : prim.attributes) {
-    if (!is_read_attribute(name)) {
+    if (!is_read_attribute(name, uv_name)) {
       out.notes.push_back("ignored " + ptr + "/attributes/" + name + ": not part of the term");
     }
   }

@@ -1,11 +1,12 @@
 // Mesh primitives (glTF 2.0 §3.7.2) as TriangleMesh: POSITION, NORMAL (computed where missing),
-// COLOR_0, TEXCOORD_0 and the indices; triangles only.
+// COLOR_0, TEXCOORD_n and the indices; triangles only.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "scene/gltf/gltf_document.h"
+#include "scene/gltf/gltf_textures.h"
 #include "scene/triangle_mesh.h"
 
 namespace lt::gltf {
@@ -19,6 +20,8 @@ struct PrimitiveMesh {
 // other than TRIANGLES (4), a missing POSITION, NaN, Inf or |x| > kMaxCoordinate positions,
 // indices that are not unsigned integers or reach past the vertices, attributes of different
 // lengths, and any accessor error (gltf_accessor.h).
-PrimitiveMesh read_primitive(const Document& doc, int mesh, int primitive);
+// The UVs are TEXCOORD_<uv.set> (through uv.transform), those its material's albedo map reads.
+PrimitiveMesh read_primitive(const Document& doc, int mesh, int primitive,
+                             const TextureCoordinates& uv = {});
 
 }  // namespace lt::gltf

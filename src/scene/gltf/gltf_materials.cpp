@@ -68,7 +68,7 @@ Material default_material() {
   return m;
 }
 
-Material map_material(const Document& doc, int index, Notes& notes) {
+Material map_material(const Document& doc, int index, Notes& notes, TextureCoordinates* uv) {
   const std::string file = doc.path.string();
   const std::string ptr = "/materials/" + std::to_string(index);
   const json& j = at_pointer(doc.json, ptr);
@@ -76,13 +76,15 @@ Material map_material(const Document& doc, int index, Notes& notes) {
   mat.name = j.value("name", std::string());
   if (mat.name.empty()) mat.name = ptr;
 
-  // Base colour (§3.9.2): linear, so it is the albedo as it stands. Alpha is coverage, which the
-  // term does not model.
+  // Base colour (§3.9.2): the factor is linear, so it is the albedo as it stands; the texture
+  // (sRGB, decoded) multiplies it: the albedo map. Alpha is coverage, which the term does not
+  // model.
   const json& pbr = j.contains("pbrMetallicRoughness") ? j["pbrMetallicRoughness"] : json::object();
   const std::string pbr_ptr = ptr + "/pbrMetallicRoughness";
   if (pbr.contains("baseColorTexture")) {
-    doc.fail(pbr_ptr + "/baseColorTexture",
-             "base colour textures are not sampled yet: give the material a baseColorFactor only");
+    BaseColourTexture t = read_base_colour_texture(doc, pbr_ptr + "/baseColorTexture", notes);
+    mat.albedo_map = std::move(t.map);
+    if (uv) *uv = t.coordinates;
   }
   const auto base =
       bounded_numbers(pbr, "baseColorFactor", 4, {1, 1, 1, 1}, 0, kMaxColour, file, pbr_ptr);
@@ -91,8 +93,8 @@ Material map_material(const Document& doc, int index, Notes& notes) {
   if (base[3] != 1)
     notes.push_back("ignored " + pbr_ptr + "/baseColorFactor alpha " + json(base[3]).dump() +
                     ": coverage is not modelled");
-  note_unmapped_keys(pbr, pbr_ptr, {"baseColorFactor"}, "metal/roughness are not part of the term",
-                     notes);
+  note_unmapped_keys(pbr, pbr_ptr, {"baseColorFactor", "baseColorTexture"},
+                     "metal/roughness are not part of the term", notes);
 
   const json& ext = j.contains("extensions") ? j["extensions"] : json::object();
   const json& ltrender =

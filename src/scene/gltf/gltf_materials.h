@@ -4,6 +4,7 @@
 
 #include "scene/gltf/gltf_document.h"
 #include "scene/gltf/gltf_notes.h"
+#include "scene/gltf/gltf_textures.h"
 #include "scene/scene.h"
 
 namespace lt::gltf {
@@ -12,10 +13,12 @@ namespace lt::gltf {
 inline constexpr double kDefaultPower = 8;
 inline constexpr double kDefaultDistortion = 0.2;
 
-// Maps /materials/{index}. Throws InputError naming the pointer for a baseColorTexture (refused
-// until textures are sampled), a value out of the scene's bounds, and an unknown key in
+// Maps /materials/{index}: a baseColorTexture becomes the albedo map (gltf_textures.h), and `uv`
+// (when given) the coordinates it reads. Throws InputError naming the pointer for a texture that
+// cannot be read (gltf_textures.h), a value out of the scene's bounds, and an unknown key in
 // extras.ltrender (a typo must not silently render something else).
-Material map_material(const Document& doc, int index, Notes& notes);
+Material map_material(const Document& doc, int index, Notes& notes,
+                      TextureCoordinates* uv = nullptr);
 
 // glTF 2.0 §3.9.6: a primitive without a material gets the default material, white and opaque:
 // plain diffuse with albedo 1 here.

@@ -67,6 +67,7 @@ struct Importer {
   std::size_t vertices = 0;
   bool import_lights = true;  // false for a JSON scene's object: the scene has its own
   int material_override = -1;
+  std::map<int, TextureCoordinates> uv_of = {};  // Scene::materials index -> its albedo map's UVs
 
   int material(int index) {
     if (material_override >= 0) return material_override;
@@ -79,9 +80,12 @@ struct Importer {
     if (index >= static_cast<int>(doc.model.materials.size())) {
       doc.fail("/materials/" + std::to_string(index), "no such material");
     }
+    TextureCoordinates uv;
     scene.materials.push_back(index < 0 ? default_material()
-                                        : map_material(doc, index, scene.import_notes));
-    return material_of[index] = static_cast<int>(scene.materials.size() - 1);
+                                        : map_material(doc, index, scene.import_notes, &uv));
+    const int m = static_cast<int>(scene.materials.size() - 1);
+    uv_of[m] = uv;
+    return material_of[index] = m;
   }
 
   void add_mesh(int mesh_index, const glm::dmat4& world, const std::string& node_ptr) {
@@ -93,14 +97,18 @@ struct Importer {
         doc.fail(ptr,
                  over_limit_message(scene.objects.size() + 1, "objects (primitives)", kMaxObjects));
       }
-      PrimitiveMesh prim = read_primitive(doc, mesh_index, static_cast<int>(p));
+      SceneObject obj;
+      obj.mesh_path = doc.path;
+      obj.material = material(mesh.primitives[p].material);
+      // The UVs the material's albedo map reads (its texCoord set and texture transform); a
+      // scene's material override reads TEXCOORD_0 as it is.
+      const auto uv = uv_of.find(obj.material);
+      PrimitiveMesh prim = read_primitive(doc, mesh_index, static_cast<int>(p),
+                                          uv == uv_of.end() ? TextureCoordinates{} : uv->second);
       vertices += prim.mesh.positions.size();
       if (vertices > kMaxSceneVertices)
         doc.fail(ptr, over_limit_message(vertices, "vertices", kMaxSceneVertices));
       scene.import_notes.insert(scene.import_notes.end(), prim.notes.begin(), prim.notes.end());
-      SceneObject obj;
-      obj.mesh_path = doc.path;
-      obj.material = material(mesh.primitives[p].material);
       const Material& mat = scene.materials[static_cast<std::size_t>(obj.material)];
       if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
         if (!prim.mesh.has_colors())
@@ -406,11 +414,23 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
     scene.import_notes.push_back(
         "no KHR_lights_punctual light in the scene: it renders black (ambient_light is 0)");
 
-  note_unmapped_keys(
-      doc.json, "",
-      {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
-       "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
-      "not used by the term", scene.import_notes);
+  // Textures, images and samplers are read through a base colour texture (its own notes say
+  // which); without one they are listed as ignored.
+  const bool sampled = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                   [](const Material& m) { return m.albedo_map != nullptr; });
+  if (sampled) {
+    note_unmapped_keys(doc.json, "",
+                       {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews",
+                        "buffers", "textures", "images", "samplers", "materials", "cameras",
+                        "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+                       "not used by the term", scene.import_notes);
+  } else {
+    note_unmapped_keys(
+        doc.json, "",
+        {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
+         "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+        "not used by the term", scene.import_notes);
+  }
   return scene;
 }
 
