@@ -1,10 +1,10 @@
 // Translucency for assets that do not carry it: a JSON scene's glTF object gives the file's
-// materials (by name, "#N" or "*") a scene material's keys, without editing the file.
+// materials (by name, "#N" or "*") a scene material's keys, without editing the file. (A mapped
+// thickness given so: thickness_map_test.cpp, where the map images are written.)
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "gltf_test_util.h"
-#include "map_test_util.h"
 #include "render/session.h"
 #include "scene/scene.h"
 
@@ -102,29 +102,6 @@ TEST_F(GltfMaterialOverride, RendersAsTheSameSceneMaterialGivenWhole) {
   const Image b = render_scene(given, "reference", "", 64, 48);
   ASSERT_GT(a.at(32, 24)[0], 0.0f) << "backlit: the lobe alone lights it";
   EXPECT_EQ(a.rgba, b.rgba);
-}
-
-// A mapped thickness given by the override: the same image, on reference and gx, as the map's
-// own test scene, whose one scene material reads the map for the whole object.
-TEST_F(GltfMaterialOverride, AThicknessMapGivenByTheOverrideIsSampledAsAScenesOwn) {
-  test::write_uv_quad(dir_.path());
-  std::vector<float> grey;
-  for (int i = 0; i < 16; ++i) grey.push_back(static_cast<float>(i) / 15);
-  test::write_test_image(dir_ / "map.png", 4, 4, 1, grey);
-  const std::string thickness = R"({"texture": "map.png"})";
-  const json own = json::parse(test::map_scene(thickness));
-  json over = own;
-  over["materials"] = json::object();
-  over["objects"][0].erase("material");
-  over["objects"][0]["materials"] = {{"*", own["materials"]["skin"]}};
-  const Scene a = parse_scene(own.dump(), dir_ / "own.json", dir_.path());
-  const Scene b = parse_scene(over.dump(), dir_ / "over.json", dir_.path());
-  ASSERT_EQ(b.materials.at(0).translucency->thickness_source, ThicknessSource::Texture);
-  for (const char* path : {"reference", "gx"}) {
-    const Image want = render_scene(a, path, "", 64, 64);
-    EXPECT_NE(want.at(8, 8)[0], want.at(56, 56)[0]) << path << ": the map varies";
-    EXPECT_EQ(render_scene(b, path, "", 64, 64).rgba, want.rgba) << path;
-  }
 }
 
 TEST_F(GltfMaterialOverride, AnUnknownNameOrIndexIsOneLineNamingTheKey) {
