@@ -222,9 +222,10 @@ ToleranceOverride read_tolerance_override(ObjectReader& r) {
 }
 
 // A thickness map or ramp named by a material, read once the JSON is read (a typo is reported
-// before any file I/O); `target` is the translucency it belongs to.
+// before any file I/O); `material` is the material it belongs to (a scene's, or a glTF
+// object's override, which live in different lists).
 struct TextureLoad {
-  std::function<Translucency&()> target;
+  std::function<Material&()> material;
   bool ramp;
   fs::path file;
   std::string channels, key;
@@ -233,9 +234,10 @@ struct TextureLoad {
 // The keys of a scene material (scene-format.md): "albedo" and "translucency", read into `mat`.
 // A key that is absent keeps what `mat` holds (a glTF material's override keeps the file's
 // albedo); "translucency", when given, is read whole, with the scene's defaults.
+// `target` finds `mat` again once its list is complete, for the maps loaded after the JSON.
 void read_material_keys(ObjectReader& m, Material& mat, const fs::path& base_dir,
                         std::vector<TextureLoad>& texture_loads,
-                        const std::function<Translucency&()>& target) {
+                        const std::function<Material&()>& target) {
   mat.albedo = m.vec3("albedo", mat.albedo, 0, kMaxColour);
   if (m.has("translucency")) {
     ObjectReader t = m.object("translucency");
@@ -303,8 +305,8 @@ void read_material_overrides(ObjectReader& o, const fs::path& base_dir,
     gltf::MaterialOverride override{it.key(), key + "." + it.key(), m.has("albedo"), {}};
     const std::size_t index = objects[object].overrides.size();
     read_material_keys(m, override.material, base_dir, texture_loads,
-                       [&objects, object, index]() -> Translucency& {
-                         return *objects[object].overrides[index].material.translucency;
+                       [&objects, object, index]() -> Material& {
+                         return objects[object].overrides[index].material;
                        });
     m.finish();
     objects[object].overrides.push_back(std::move(override));
@@ -402,9 +404,8 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       Material mat;
       mat.name = it.key();
       const std::size_t index = scene.materials.size();
-      read_material_keys(m, mat, base_dir, texture_loads, [&scene, index]() -> Translucency& {
-        return *scene.materials[index].translucency;
-      });
+      read_material_keys(m, mat, base_dir, texture_loads,
+                         [&scene, index]() -> Material& { return scene.materials[index]; });
       m.finish();
       material_names.push_back(mat.name);
       scene.materials.push_back(std::move(mat));
@@ -539,7 +540,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 
   // Textures and meshes last, so a typo in the JSON is reported before any file I/O.
   for (const TextureLoad& l : texture_loads) {
-    Translucency& tr = l.target();
+    Translucency& tr = *l.material().translucency;
     (l.ramp ? tr.ramp : tr.thickness_map) =
         l.ramp ? load_lobe_ramp(l.file, file, l.key)
                : load_thickness_map(l.file, l.channels, file, l.key);
