@@ -10,10 +10,13 @@
 
 #include "core/error.h"
 #include "map_test_util.h"
+#include "render/session.h"
 #include "scene/scene.h"
 
 namespace lt {
 namespace {
+
+using json = nlohmann::json;
 
 class ThicknessMapFile : public ::testing::Test {
  protected:
@@ -166,6 +169,31 @@ TEST_F(ThicknessMapFile, RenderOfABadMapExitsTwoAndWritesNothing) {
     EXPECT_NE(r.err.find("missing.exr"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(out)) << path;
+  }
+}
+
+// A glTF object's override (gltf_material_override_test.cpp) giving a mapped thickness: the same
+// image, on reference and gx, as the map's own test scene, whose one scene material reads the map
+// for the whole object.
+TEST(GltfMaterialOverrideMap, AThicknessMapGivenByTheOverrideIsSampledAsAScenesOwn) {
+  test::TempDir dir;
+  test::write_uv_quad(dir.path());
+  std::vector<float> grey;
+  for (int i = 0; i < 16; ++i) grey.push_back(static_cast<float>(i) / 15);
+  test::write_test_image(dir / "map.png", 4, 4, 1, grey);
+  const std::string thickness = R"({"texture": "map.png"})";
+  const json own = json::parse(test::map_scene(thickness));
+  json over = own;
+  over["materials"] = json::object();
+  over["objects"][0].erase("material");
+  over["objects"][0]["materials"] = {{"*", own["materials"]["skin"]}};
+  const Scene a = parse_scene(own.dump(), dir / "own.json", dir.path());
+  const Scene b = parse_scene(over.dump(), dir / "over.json", dir.path());
+  ASSERT_EQ(b.materials.at(0).translucency->thickness_source, ThicknessSource::Texture);
+  for (const char* path : {"reference", "gx"}) {
+    const Image want = render_scene(a, path, "", 64, 64);
+    EXPECT_NE(want.at(8, 8)[0], want.at(56, 56)[0]) << path << ": the map varies";
+    EXPECT_EQ(render_scene(b, path, "", 64, 64).rgba, want.rgba) << path;
   }
 }
 

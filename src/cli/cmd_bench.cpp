@@ -11,6 +11,7 @@
 
 #include "cli/bench_timing_options.h"
 #include "cli/commands.h"
+#include "cli/lights_option.h"
 #include "core/cpu_affinity.h"
 #include "core/error.h"
 #include "core/fs.h"
@@ -80,6 +81,7 @@ Action add_bench(CLI::App& app) {
   auto* sub = app.add_subcommand("bench", "Speed against error: scenes x paths x variants");
   sub->add_option("SCENE", *scenes, "Scene files (default: scenes/*.json of the source tree)");
   sub->add_option("--paths", *paths, "Comma-separated paths (default: all; flat always runs)");
+  add_lights_option(sub, o->scene_options);
   sub->add_option("--frames", o->frames, "Timed frames per measurement (>= 10)")
       ->check(CLI::Range(10, 100000));
   sub->add_option("--warmup", o->warmup, "Warm-up frames (at least; at 1280x720 until settled)")

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "paths/path.h"
@@ -30,7 +31,8 @@ const PathInfo* path_of_program_file(const std::string& file) {
 }
 
 // One file's budget; true when it fits.
-bool budget_one(const std::string& file, const std::string& path, BudgetRequest r) {
+bool budget_one(const std::string& file, const std::string& path, const SceneOptions& scene_options,
+                BudgetRequest r) {
   if (const PathInfo* owner = path_of_program_file(file)) return owner->budget_file(file, r);
   const PathInfo& info = find_path(path);
   if (!info.budget) {
@@ -41,7 +43,7 @@ bool budget_one(const std::string& file, const std::string& path, BudgetRequest 
     throw InputError("--path", path,
                      "path " + info.name + " has no budget (paths with one: " + with + ")");
   }
-  return info.budget(load_scene(file), r);
+  return info.budget(load_scene(file, scene_options), r);
 }
 
 }  // namespace
@@ -56,6 +58,7 @@ Action add_budget(CLI::App& app) {
   auto files = std::make_shared<std::vector<std::string>>();
   auto path = std::make_shared<std::string>("arbfp");
   auto request = std::make_shared<BudgetRequest>();
+  auto scene_options = std::make_shared<SceneOptions>();
   sub->add_option("FILE", *files,
                   "Scene files, or program files: .fp/.vp/.arb or !!ARBfp1.0/!!ARBvp1.0 text (ARB "
                   "programs), .c/.gx (GX programs)")
@@ -70,6 +73,7 @@ Action add_budget(CLI::App& app) {
                   "gl13-3units, gl-8units; gx: wii-tev (default)");
   sub->add_flag("--json", request->json,
                 "Print the counts as JSON, one object per file (docs/budget.md)");
+  add_lights_option(sub, *scene_options);
   return [=]() -> int {
     std::string over;
     std::vector<InputError> invalid;
@@ -79,7 +83,7 @@ Action add_budget(CLI::App& app) {
       r.out = &std::cout;
       r.first_overrun = &first_overrun;
       try {
-        if (!budget_one(file, *path, r) && over.empty()) over = first_overrun;
+        if (!budget_one(file, *path, *scene_options, r) && over.empty()) over = first_overrun;
       } catch (const InputError& e) {
         invalid.push_back(e);
       }

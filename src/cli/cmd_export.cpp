@@ -1,6 +1,7 @@
 #include <fstream>
 
 #include "cli/commands.h"
+#include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "paths/gx/c_exporter.h"
@@ -23,6 +24,7 @@ Action add_export(CLI::App& app) {
   auto width = std::make_shared<int>(0);
   auto height = std::make_shared<int>(0);
   auto program = std::make_shared<std::string>();
+  auto scene_options = std::make_shared<SceneOptions>();
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
   sub->add_option("TARGET", *target, "gx (libogc C for the Wii / GameCube)")->required();
@@ -35,6 +37,7 @@ Action add_export(CLI::App& app) {
   sub->add_option("--program", *program,
                   "dff: a gx program file drawn instead of the generated programs");
   sub->add_option("-o,--output", *output, "FILE.c or FILE.dff")->required();
+  add_lights_option(sub, *scene_options);
   return [=]() -> int {
     if (*target != "gx") throw InputError("export", *target, "unknown export target (valid: gx)");
     if (*format != "c" && *format != "dff")
@@ -47,7 +50,7 @@ Action add_export(CLI::App& app) {
                        "--width, --height and --program are for --format dff");
     const PathInfo& info = find_path("gx");
     const std::string v = resolve_variant(info, *variant);
-    const Scene scene = load_scene(*scene_path);
+    const Scene scene = load_scene(*scene_path, *scene_options);
     std::vector<fs::path> inputs = {*scene_path};
     if (!program->empty()) inputs.push_back(*program);
     for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);

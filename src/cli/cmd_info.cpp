@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/lights_option.h"
 #include "render/session.h"
 
 namespace lt::cli {
@@ -43,11 +44,13 @@ Action add_info(CLI::App& app) {
   auto* sub = app.add_subcommand("info", "What a scene needs and what each path builds for it");
   sub->add_option("SCENE", *scene_path, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_flag("--source", *show_source, "Also print every generated program");
+  auto scene_options = std::make_shared<SceneOptions>();
+  add_lights_option(sub, *scene_options);
   auto profile = std::make_shared<std::string>();
   sub->add_option("--profile", *profile,
                   "arbfp: the pass plan for a profile (ps_2_0 ...): which lights each pass draws");
-  return [scene_path, show_source, profile]() -> int {
-    const Scene scene = load_scene(*scene_path);
+  return [scene_path, show_source, profile, scene_options]() -> int {
+    const Scene scene = load_scene(*scene_path, *scene_options);
     const SceneNeeds n = scene_needs(scene);
     std::ostream& o = std::cout;
     size_t tris = 0, verts = 0;
@@ -65,6 +68,12 @@ Action add_info(CLI::App& app) {
       << yes_no(n.any_translucency) << ", vertex thickness " << yes_no(n.any_vertex_thickness)
       << ", normalised H " << yes_no(n.any_normalized_h) << ", ambient light "
       << yes_no(n.ambient_light) << ", albedo map " << yes_no(n.any_albedo_map) << "\n";
+    o << "lights: "
+      << (scene.default_lights.empty()
+              ? std::to_string(scene.lights.size()) + " from the scene"
+              : std::to_string(scene.lights.size()) + " from " + scene.default_lights +
+                    " (the scene has none; --lights none: unlit)")
+      << "\n";
     // A glTF import: what each property of the file became, and what was left out.
     if (!scene.import_notes.empty())
       o << "glTF import (" << scene.import_notes.size() << " notes):\n";

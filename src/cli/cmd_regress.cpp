@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/lights_option.h"
 #include "regress/regress.h"
 
 namespace lt::cli {
@@ -41,6 +42,7 @@ Action add_regress(CLI::App& app) {
   sub->add_option("--height", o->height, "Render at this height instead of the scene's")
       ->check(CLI::Range(1, 16384));
   sub->add_flag("--quiet", o->quiet, "No line per passing case");
+  add_lights_option(sub, o->scene_options);
   return [o, inputs, shard, goldens, junit, json, report]() -> int {
     o->inputs.assign(inputs->begin(), inputs->end());
     o->goldens = *goldens;

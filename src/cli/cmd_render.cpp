@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "image/image.h"
@@ -12,7 +13,8 @@ namespace lt::cli {
 
 namespace {
 struct RenderArgs {
-  std::string scene, path, variant, output, program, camera, profile;
+  std::string scene, path, variant, output, program, profile;
+  SceneOptions scene_options;  // --camera, --lights
   int width = 0, height = 0;
   std::string via, keep_fifo_log;  // --via dolphin
   double dolphin_deadline = judge::DolphinOptions{}.deadline_seconds;
@@ -92,7 +94,8 @@ Action add_render(CLI::App& app) {
   sub->add_option("--width", a->width, "Override the scene's width")->check(CLI::Range(1, 16384));
   sub->add_option("--height", a->height, "Override the scene's height")
       ->check(CLI::Range(1, 16384));
-  sub->add_option("--camera", a->camera,
+  add_lights_option(sub, a->scene_options);
+  sub->add_option("--camera", a->scene_options.camera,
                   "glTF scenes: the camera to look through, by its name or its node's, or by "
                   "its index '#N' (or N) for /cameras/N; a name wins over an index")
       ->type_name("NAME|#N");
@@ -135,7 +138,7 @@ Action add_render(CLI::App& app) {
     if (a->width > 0 && a->height > 0) check_image_size(a->width, a->height, size_options, "");
     if (via_dolphin && a->width > 0 && a->height > 0)
       check_dolphin_size(a->width, a->height, size_options, "");
-    const Scene scene = load_scene(a->scene, SceneOptions{a->camera});
+    const Scene scene = load_scene(a->scene, a->scene_options);
     if (a->width > 0 || a->height > 0) {
       check_image_size(a->width > 0 ? a->width : scene.width,
                        a->height > 0 ? a->height : scene.height, size_options, "");

@@ -67,6 +67,10 @@ void print_input_error(const std::string& what) {
   std::fprintf(stderr, "ltrender: error: %s\n", one_line(what).c_str());
 }
 
+void print_warning(const std::string& what) {
+  std::fprintf(stderr, "ltrender: warning: %s\n", one_line(what).c_str());
+}
+
 void check_failed(const char* expr, const char* file, int line, const std::string& msg) {
   std::fprintf(stderr, "ltrender: internal error: %s:%d: CHECK(%s) failed: %s\n", file, line, expr,
                msg.c_str());

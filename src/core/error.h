@@ -36,6 +36,9 @@ std::string one_line(std::string s);
 // Prints `ltrender: error: <what>` as one line on stderr (what main does for an InputError); for
 // commands that go on after a bad input (budget of several files).
 void print_input_error(const std::string& what);
+// Prints `ltrender: warning: <what>` as one line on stderr: the input is used, but not as it
+// stands (a primitive skipped, lights added).
+void print_warning(const std::string& what);
 
 [[noreturn]] void check_failed(const char* expr, const char* file, int line,
                                const std::string& msg);

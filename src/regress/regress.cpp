@@ -89,7 +89,7 @@ void check_every_path_builds(const Plan& plan) {
 Plan make_plan(const RegressOptions& o) {
   Plan plan;
   plan.scene_files = collect_scene_files(o.inputs);
-  for (const fs::path& f : plan.scene_files) plan.scenes.push_back(load_scene(f));
+  for (const fs::path& f : plan.scene_files) plan.scenes.push_back(load_scene(f, o.scene_options));
   const std::vector<PathRequest> requests = parse_path_list(o.paths);
   plan.cases = expand_cases(plan.scene_files, plan.scenes, requests);
   // Every render's size before the first one: a scene too large to render is bad input, found
@@ -244,6 +244,7 @@ std::string update_command(const RegressOptions& o, const RegressCase& c,
                     " --paths '" + c.path->name + ":" + c.variant + "'";
   if (o.width > 0) cmd += " --width " + std::to_string(o.width);
   if (o.height > 0) cmd += " --height " + std::to_string(o.height);
+  if (!o.scene_options.default_lights) cmd += " --lights none";
   return cmd + " --update";
 }
 

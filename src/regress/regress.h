@@ -20,6 +20,7 @@ namespace lt {
 
 struct RegressOptions {
   std::vector<std::filesystem::path> inputs;  // scene files and folders of scenes
+  SceneOptions scene_options;                 // --lights
   std::filesystem::path goldens;
   std::string paths;  // the --paths list (regress_case.h); empty: every path but flat
   bool update = false;

@@ -275,7 +275,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
 
   // Every scene is read before anything is written: a bad one is reported with nothing created.
   std::vector<Scene> scenes;
-  for (const fs::path& scene_path : o.scenes) scenes.push_back(load_scene(scene_path));
+  for (const fs::path& scene_path : o.scenes)
+    scenes.push_back(load_scene(scene_path, o.scene_options));
   std::error_code ec;
   fs::create_directories(o.out_dir / "images", ec);
   if (ec)

@@ -31,6 +31,7 @@ bool selected(const PathInfo& path, const VariantInfo& variant, VariantSelection
 
 struct BenchOptions {
   std::vector<std::filesystem::path> scenes;
+  SceneOptions scene_options;      // --lights
   std::vector<std::string> paths;  // empty: every path
   VariantSelection variants = VariantSelection::All;
   std::filesystem::path out_dir;

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <cmath>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <new>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "core/fs.h"
 #include "mesh/mesh_io.h"
 #include "scene/albedo_map.h"
+#include "scene/default_lights.h"
 #include "scene/gltf/gltf_document.h"
 #include "scene/gltf/gltf_scene.h"
 #include "scene/scene_limits.h"
@@ -36,6 +38,7 @@ class ObjectReader {
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     throw InputError(file_, key.empty() ? "(top level)" : key, what);
   }
+  const std::string& file() const { return file_; }
   std::string key_path(const std::string& key) const {
     return path_.empty() ? key : path_ + "." + key;
   }
@@ -225,6 +228,109 @@ ToleranceOverride read_tolerance_override(ObjectReader& r) {
   return t;
 }
 
+// An albedo map, thickness map or ramp named by a material, read once the JSON is read (a typo
+// is reported before any file I/O); `material` is the material it belongs to (a scene's, or a
+// glTF object's override, which live in different lists).
+struct TextureLoad {
+  enum class Kind { ThicknessMap, Ramp, AlbedoMap };
+  std::function<Material&()> material;
+  Kind kind;
+  fs::path file;
+  std::string channels, key;
+};
+
+// The keys of a scene material (scene-format.md): "albedo", "albedo_map" and "translucency",
+// read into `mat`.
+// A key that is absent keeps what `mat` holds (a glTF material's override keeps the file's
+// albedo); "translucency", when given, is read whole, with the scene's defaults.
+// `target` finds `mat` again once its list is complete, for the maps loaded after the JSON.
+void read_material_keys(ObjectReader& m, Material& mat, const fs::path& base_dir,
+                        std::vector<TextureLoad>& texture_loads,
+                        const std::function<Material&()>& target) {
+  mat.albedo = m.vec3("albedo", mat.albedo, 0, kMaxColour);
+  if (m.has("albedo_map")) {
+    // A picture in sRGB (scene/albedo_map.h), multiplying "albedo".
+    const std::string texture = m.string("albedo_map");
+    refuse_nul(m, "albedo_map", texture);
+    texture_loads.push_back({target, TextureLoad::Kind::AlbedoMap, base_dir / texture, "rgb",
+                             m.key_path("albedo_map")});
+  }
+  if (m.has("translucency")) {
+    ObjectReader t = m.object("translucency");
+    Translucency tr;
+    tr.power = t.number("power", 1.0, 0, kMaxPower);
+    tr.distortion = t.number("distortion", 0.0, -kMaxDistortion, kMaxDistortion);
+    tr.ambient = t.number("ambient", 0.0, 0, kMaxColour);
+    tr.tint = t.vec3("tint", glm::dvec3(1), 0, kMaxColour);
+    tr.normalize_distorted_light = t.boolean("normalize_distorted_light", false);
+    if (t.has("thickness")) {
+      const json& th = t.get("thickness");
+      const std::string kp = t.key_path("thickness");
+      if (th.is_object()) {
+        // {"texture": "map.png", "channels": "rgb"}: loaded once the JSON is read.
+        ObjectReader map = t.object("thickness");
+        const std::string texture = map.string("texture");
+        refuse_nul(map, "texture", texture);
+        const std::string channels = map.string("channels", std::string("rgb"));
+        if (!is_thickness_channels(channels)) {
+          map.fail(map.key_path("channels"),
+                   "must be \"rgb\", \"r\", \"g\", \"b\" or \"a\", not \"" + channels + "\"");
+        }
+        map.finish();
+        tr.thickness_source = ThicknessSource::Texture;
+        texture_loads.push_back(
+            {target, TextureLoad::Kind::ThicknessMap, base_dir / texture, channels,
+             map.key_path("texture")});
+      } else if (th.is_string()) {
+        if (th.get<std::string>() != "vertex") {
+          t.fail(kp, "must be \"vertex\", a number, an rgb triple or {\"texture\": ...}");
+        }
+        tr.thickness_source = ThicknessSource::Vertex;
+      } else if (th.is_number()) {
+        // Bounded like the rgb form: 1e300 would make the reference's pixels Inf.
+        tr.thickness = glm::dvec3(t.number("thickness", {}, 0, kMaxColour));
+      } else {
+        tr.thickness = t.vec3_value(th, kp, 0, kMaxColour);
+      }
+    }
+    if (t.has("ramp")) {
+      const std::string ramp = t.string("ramp");
+      refuse_nul(t, "ramp", ramp);
+      texture_loads.push_back(
+          {target, TextureLoad::Kind::Ramp, base_dir / ramp, "rgb", t.key_path("ramp")});
+    }
+    t.finish();
+    mat.translucency = tr;
+  }
+}
+
+// A glTF object's "materials": {SELECTOR: {scene material keys}}, into the last of `objects`.
+void read_material_overrides(ObjectReader& o, const fs::path& base_dir,
+                             std::vector<TextureLoad>& texture_loads,
+                             std::vector<gltf::ObjectImport>& objects) {
+  const std::string key = o.key_path("materials");
+  if (o.has("material"))
+    o.fail(key,
+           "an object has \"material\" (one for every glTF material) or \"materials\" (per "
+           "glTF material), not both");
+  const json& overrides = o.get("materials");
+  if (!overrides.is_object() || overrides.empty())
+    o.fail(key, "expected a non-empty object: glTF material name, \"#N\" or \"*\" -> material");
+  const std::size_t object = objects.size() - 1;
+  objects[object].overrides_json = overrides.dump();
+  for (auto it = overrides.begin(); it != overrides.end(); ++it) {
+    ObjectReader m(it.value(), key + "." + it.key(), o.file());
+    gltf::MaterialOverride override{it.key(), key + "." + it.key(), m.has("albedo"), {}};
+    const std::size_t index = objects[object].overrides.size();
+    read_material_keys(m, override.material, base_dir, texture_loads,
+                       [&objects, object, index]() -> Material& {
+                         return objects[object].overrides[index].material;
+                       });
+    m.finish();
+    objects[object].overrides.push_back(std::move(override));
+  }
+}
+
 }  // namespace
 
 glm::dmat4 Transform::matrix() const {
@@ -302,20 +408,12 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 
   // Materials: an object of named materials.
   std::vector<std::string> material_names;
-  // Thickness maps and ramps, read after the JSON like the meshes.
-  struct TextureLoad {
-    enum class Kind { ThicknessMap, Ramp, AlbedoMap };
-    std::size_t material;
-    Kind kind;
-    fs::path file;
-    std::string channels, key;
-  };
   std::vector<TextureLoad> texture_loads;
   {
     const json& mats = top.get("materials");
-    if (!mats.is_object() || mats.empty()) {
-      top.fail("materials", "expected a non-empty object of named materials");
-    }
+    // Empty only makes sense when every object is a glTF file bringing its own materials: a
+    // mesh object's "material" names one of these, and says so when it is not there.
+    if (!mats.is_object()) top.fail("materials", "expected an object of named materials");
     if (mats.size() > kMaxMaterials) {
       top.fail("materials", over_limit_message(mats.size(), "materials", kMaxMaterials));
     }
@@ -323,60 +421,9 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       ObjectReader m(it.value(), "materials." + it.key(), file);
       Material mat;
       mat.name = it.key();
-      mat.albedo = m.vec3("albedo", glm::dvec3(1), 0, kMaxColour);
-      if (m.has("albedo_map")) {
-        // A picture in sRGB (scene/albedo_map.h), multiplying "albedo".
-        const std::string texture = m.string("albedo_map");
-        refuse_nul(m, "albedo_map", texture);
-        texture_loads.push_back({scene.materials.size(), TextureLoad::Kind::AlbedoMap,
-                                 base_dir / texture, "rgb", m.key_path("albedo_map")});
-      }
-      if (m.has("translucency")) {
-        ObjectReader t = m.object("translucency");
-        Translucency tr;
-        tr.power = t.number("power", 1.0, 0, kMaxPower);
-        tr.distortion = t.number("distortion", 0.0, -kMaxDistortion, kMaxDistortion);
-        tr.ambient = t.number("ambient", 0.0, 0, kMaxColour);
-        tr.tint = t.vec3("tint", glm::dvec3(1), 0, kMaxColour);
-        tr.normalize_distorted_light = t.boolean("normalize_distorted_light", false);
-        if (t.has("thickness")) {
-          const json& th = t.get("thickness");
-          const std::string kp = t.key_path("thickness");
-          if (th.is_object()) {
-            // {"texture": "map.png", "channels": "rgb"}: loaded once the JSON is read.
-            ObjectReader map = t.object("thickness");
-            const std::string texture = map.string("texture");
-            refuse_nul(map, "texture", texture);
-            const std::string channels = map.string("channels", std::string("rgb"));
-            if (!is_thickness_channels(channels)) {
-              map.fail(map.key_path("channels"),
-                       "must be \"rgb\", \"r\", \"g\", \"b\" or \"a\", not \"" + channels + "\"");
-            }
-            map.finish();
-            tr.thickness_source = ThicknessSource::Texture;
-            texture_loads.push_back({scene.materials.size(), TextureLoad::Kind::ThicknessMap,
-                                     base_dir / texture, channels, map.key_path("texture")});
-          } else if (th.is_string()) {
-            if (th.get<std::string>() != "vertex") {
-              t.fail(kp, "must be \"vertex\", a number, an rgb triple or {\"texture\": ...}");
-            }
-            tr.thickness_source = ThicknessSource::Vertex;
-          } else if (th.is_number()) {
-            // Bounded like the rgb form: 1e300 would make the reference's pixels Inf.
-            tr.thickness = glm::dvec3(t.number("thickness", {}, 0, kMaxColour));
-          } else {
-            tr.thickness = t.vec3_value(th, kp, 0, kMaxColour);
-          }
-        }
-        if (t.has("ramp")) {
-          const std::string ramp = t.string("ramp");
-          refuse_nul(t, "ramp", ramp);
-          texture_loads.push_back({scene.materials.size(), TextureLoad::Kind::Ramp, base_dir / ramp,
-                                   "rgb", t.key_path("ramp")});
-        }
-        t.finish();
-        mat.translucency = tr;
-      }
+      const std::size_t index = scene.materials.size();
+      read_material_keys(m, mat, base_dir, texture_loads,
+                         [&scene, index]() -> Material& { return scene.materials[index]; });
       m.finish();
       material_names.push_back(mat.name);
       scene.materials.push_back(std::move(mat));
@@ -485,6 +532,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
       if (gltf_object) {
         gltf_objects.push_back(
             {kp, obj.mesh_path, o.string("node", std::string()), material, obj.transform.matrix()});
+        if (o.has("materials")) read_material_overrides(o, base_dir, texture_loads, gltf_objects);
         o.finish();
         continue;
       }
@@ -510,7 +558,7 @@ Scene parse_scene(const std::string& text, const fs::path& file_for_errors,
 
   // Textures and meshes last, so a typo in the JSON is reported before any file I/O.
   for (const TextureLoad& l : texture_loads) {
-    Material& m = scene.materials[l.material];
+    Material& m = l.material();
     switch (l.kind) {
       case TextureLoad::Kind::AlbedoMap:
         m.albedo_map = load_albedo_map(l.file, file, l.key);
@@ -564,8 +612,17 @@ Scene load_scene(const fs::path& path, const SceneOptions& options) {
                      "only a glTF scene (.gltf, .glb) has named cameras");
   }
   try {
-    if (gltf_file) return gltf::load_gltf_scene(path, options.camera);
-    return parse_scene(read_input_file(path, InputKind::Scene), path, path.parent_path());
+    Scene scene =
+        gltf_file ? gltf::load_gltf_scene(path, options.camera)
+                  : parse_scene(read_input_file(path, InputKind::Scene), path, path.parent_path());
+    if (options.default_lights && renders_unlit(scene)) {
+      scene.default_lights = add_default_lights(scene);
+      scene.warnings.push_back(path.string() + ": no light and no ambient_light, lit by " +
+                               scene.default_lights + " (--lights none: unlit)");
+    }
+    // Here, where every command loads its scenes, and nowhere else: once per scene.
+    for (const std::string& w : scene.warnings) print_warning(w);
+    return scene;
   } catch (const std::bad_alloc&) {
     // Within the size cap, but too large for this machine: the scene's failure, named as such
     // (its meshes name themselves).

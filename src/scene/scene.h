@@ -106,10 +106,18 @@ struct Scene {
   RegressBlock regress;
   // A glTF scene's import: one line per property mapped, defaulted or ignored (`ltrender info`).
   std::vector<std::string> import_notes;
+  // What the user should know although the scene loads (a skipped primitive, the default
+  // lights), one line each: load_scene prints them as `ltrender: warning: ...`, `info` lists them.
+  std::vector<std::string> warnings;
+  // What load_scene added when the scene had no light (scene/default_lights.h); empty: none.
+  std::string default_lights;
 };
 
 struct SceneOptions {
   std::string camera;  // glTF scenes: the camera (or its node) to look through, by name
+  // A scene with no light and no ambient light gets the default rig (scene/default_lights.h);
+  // `--lights none` turns this off and the scene renders unlit, as it says.
+  bool default_lights = true;
 };
 
 // Parses, validates and loads every mesh. Throws InputError naming the file and the key

@@ -4,29 +4,12 @@
 
 #include "scene/gltf/gltf_accessor.h"
 #include "scene/gltf/gltf_notes.h"
+#include "scene/gltf/gltf_topology.h"
 #include "scene/scene_limits.h"
 
 namespace lt::gltf {
 
 namespace {
-
-const char* mode_name(int mode) {
-  switch (mode) {
-    case TINYGLTF_MODE_POINTS:
-      return "POINTS";
-    case TINYGLTF_MODE_LINE:
-      return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP:
-      return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP:
-      return "LINE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_STRIP:
-      return "TRIANGLE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_FAN:
-      return "TRIANGLE_FAN";
-  }
-  return "unknown";
-}
 
 // The attributes the importer reads; any other (TANGENT, another TEXCOORD_n, JOINTS_0, ...) is
 // listed as ignored.
@@ -42,10 +25,13 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
       "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(primitive_index);
   const tinygltf::Primitive& prim = doc.model.meshes[static_cast<std::size_t>(mesh_index)]
                                         .primitives[static_cast<std::size_t>(primitive_index)];
-  // §3.7.2.1: mode defaults to 4 (TRIANGLES); the paths draw triangle lists only.
-  if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+  // §3.7.2.1: mode defaults to 4 (TRIANGLES); strips and fans become triangle lists, the one
+  // topology the paths draw. Points and lines are the importer's to skip (carries_surface).
+  if (!carries_surface(prim.mode)) {
     doc.fail(ptr + "/mode", std::string("primitive mode ") + std::to_string(prim.mode) + " (" +
-                                mode_name(prim.mode) + ") is not read: only TRIANGLES (4) is");
+                                mode_name(prim.mode) +
+                                ") carries no surface: TRIANGLES, TRIANGLE_STRIP or "
+                                "TRIANGLE_FAN (4, 5, 6) are drawn");
   }
   PrimitiveMesh out;
   TriangleMesh& mesh = out.mesh;
@@ -104,15 +90,15 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
     // §3.7.2.1: without indices, vertices are drawn in order.
     for (std::size_t v = 0; v < n; ++v) indices.push_back(static_cast<std::uint32_t>(v));
   }
-  if (indices.size() % 3 != 0) {
-    doc.fail(ptr, std::to_string(indices.size()) + " indices, not a multiple of 3 for TRIANGLES");
-  }
-  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    mesh.triangles.emplace_back(indices[t], indices[t + 1], indices[t + 2]);
-  }
-  out.notes.push_back("mapped " + ptr + ": " + std::to_string(mesh.triangles.size()) +
-                      " triangles, " + std::to_string(n) + " vertices" +
-                      (prim.indices >= 0 ? ", indexed" : ", not indexed"));
+  auto triangles = assemble_triangles(prim.mode, indices);
+  if (!triangles) doc.fail(ptr, count_mismatch(prim.mode, indices.size(), prim.indices >= 0));
+  mesh.triangles = std::move(*triangles);
+  out.notes.push_back(
+      "mapped " + ptr + ": " + std::to_string(mesh.triangles.size()) + " triangles" +
+      (prim.mode == TINYGLTF_MODE_TRIANGLES
+           ? std::string()
+           : std::string(" (from a ") + mode_name(prim.mode) + ")") +
+      ", " + std::to_string(n) + " vertices" + (prim.indices >= 0 ? ", indexed" : ", not indexed"));
 
   // NORMAL: unit vectors by §3.7.2.1; anything not finite or of zero length is recomputed, as
   // the mesh reader does.

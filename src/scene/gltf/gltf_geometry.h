@@ -1,5 +1,6 @@
 // Mesh primitives (glTF 2.0 §3.7.2) as TriangleMesh: POSITION, NORMAL (computed where missing),
-// COLOR_0, TEXCOORD_n and the indices; triangles only.
+// COLOR_0, TEXCOORD_n and the indices; triangle lists, strips and fans as triangles
+// (gltf_topology.h).
 #pragma once
 
 #include <string>
@@ -17,7 +18,8 @@ struct PrimitiveMesh {
 };
 
 // Reads /meshes/{mesh}/primitives/{primitive}. Throws InputError naming the pointer for: a mode
-// other than TRIANGLES (4), a missing POSITION, NaN, Inf or |x| > kMaxCoordinate positions,
+// that carries no surface (the importer skips points and lines before; this names any other), an
+// index or vertex count that does not fit the mode, a missing POSITION, NaN, Inf or |x| > kMaxCoordinate positions,
 // indices that are not unsigned integers or reach past the vertices, attributes of different
 // lengths, and any accessor error (gltf_accessor.h).
 // The UVs are TEXCOORD_<uv.set> (through uv.transform), those its material's albedo map reads.

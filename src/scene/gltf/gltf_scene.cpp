@@ -14,6 +14,7 @@
 #include "scene/gltf/gltf_lights.h"
 #include "scene/gltf/gltf_materials.h"
 #include "scene/gltf/gltf_notes.h"
+#include "scene/gltf/gltf_topology.h"
 #include "scene/scene_limits.h"
 
 namespace lt::gltf {
@@ -68,6 +69,11 @@ struct Importer {
   bool import_lights = true;  // false for a JSON scene's object: the scene has its own
   int material_override = -1;
   std::map<int, TextureCoordinates> uv_of = {};  // Scene::materials index -> its albedo map's UVs
+  const std::vector<MaterialOverride>* overrides = nullptr;  // a JSON scene's object's
+  // Point and line primitives met, skipped: "/meshes/0/primitives/1 (mesh \"Wire\", LINES)".
+  std::vector<std::string> skipped{};
+  std::string first_skipped_mode{};  // the pointer of the first one's mode
+  std::string first_skipped_name{};  // and its mode's name
 
   int material(int index) {
     if (material_override >= 0) return material_override;
@@ -81,11 +87,47 @@ struct Importer {
       doc.fail("/materials/" + std::to_string(index), "no such material");
     }
     TextureCoordinates uv;
-    scene.materials.push_back(index < 0 ? default_material()
-                                        : map_material(doc, index, scene.import_notes, &uv));
+    Material mat = index < 0 ? default_material()
+                             : map_material(doc, index, scene.import_notes, &uv);
+    if (overrides) {
+      // A scene's albedo map replaces the file's texture and reads TEXCOORD_0 as it is.
+      if (const MaterialOverride* o = override_for(index); o && o->material.albedo_map) uv = {};
+      apply_override(index, mat);
+    }
+    scene.materials.push_back(std::move(mat));
     const int m = static_cast<int>(scene.materials.size() - 1);
     uv_of[m] = uv;
     return material_of[index] = m;
+  }
+
+  // The override that selects material `index` (-1: the default material): by its name, else
+  // by "#index", else "*".
+  const MaterialOverride* override_for(int index) const {
+    const std::string name =
+        index < 0 ? std::string() : doc.model.materials[static_cast<std::size_t>(index)].name;
+    for (const std::string& selector :
+         {name, index < 0 ? std::string() : "#" + std::to_string(index), std::string("*")}) {
+      if (selector.empty()) continue;
+      for (const MaterialOverride& o : *overrides)
+        if (o.selector == selector) return &o;
+    }
+    return nullptr;
+  }
+
+  void apply_override(int index, Material& mat) {
+    const MaterialOverride* o = override_for(index);
+    if (!o) return;
+    if (o->albedo_given) mat.albedo = o->material.albedo;
+    // An albedo map given here replaces the file's base colour texture; it reads TEXCOORD_0.
+    if (o->material.albedo_map) mat.albedo_map = o->material.albedo_map;
+    if (o->material.translucency) mat.translucency = o->material.translucency;
+    scene.import_notes.push_back(
+        "mapped " + o->key + " -> " +
+        (index < 0 ? std::string("the default material") : "/materials/" + std::to_string(index)) +
+        (o->albedo_given ? ": albedo" : ":") +
+        (o->material.translucency ? std::string(o->albedo_given ? " and " : " ") + "translucency"
+                                  : std::string()) +
+        " from the scene");
   }
 
   void add_mesh(int mesh_index, const glm::dmat4& world, const std::string& node_ptr) {
@@ -96,6 +138,19 @@ struct Importer {
       if (scene.objects.size() >= kMaxObjects) {
         doc.fail(ptr,
                  over_limit_message(scene.objects.size() + 1, "objects (primitives)", kMaxObjects));
+      }
+      const int mode = mesh.primitives[p].mode;
+      if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
+        // No surface to shade (gltf_topology.h): skipped, said once per file (skip_warning).
+        if (skipped.empty())
+          first_skipped_mode = ptr + "/mode", first_skipped_name = mode_name(mode);
+        skipped.push_back(
+            ptr + " (mesh " +
+            json(mesh.name.empty() ? "#" + std::to_string(mesh_index) : mesh.name).dump() + ", " +
+            mode_name(mode) + ")");
+        scene.import_notes.push_back("ignored " + ptr + ": " + mode_name(mode) +
+                                     " carry no surface to shade");
+        continue;
       }
       SceneObject obj;
       obj.mesh_path = doc.path;
@@ -244,9 +299,9 @@ bool camera_named(const Document& doc, const CameraInstance& c, const std::strin
          doc.model.nodes[static_cast<std::size_t>(c.node)].name == name;
 }
 
-// `--camera #N` (or N): the camera at /cameras/N, the one way to pick a camera without a name.
-// -1 when `text` is not an index.
-int camera_index(const std::string& text) {
+// "#N" (or N): the index N, the one way to pick a camera (`--camera #N`: /cameras/N) or a
+// material (an override's "#N": /materials/N) without a name. -1 when `text` is not an index.
+int hash_index(const std::string& text) {
   const std::string digits = text.rfind('#', 0) == 0 ? text.substr(1) : text;
   if (digits.empty() || digits.size() > 6 ||
       !std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
@@ -270,7 +325,7 @@ const CameraInstance& chosen_camera(const Document& doc, const std::vector<Camer
                                     const std::string& wanted) {
   auto it = std::find_if(cameras.begin(), cameras.end(),
                          [&](const CameraInstance& c) { return camera_named(doc, c, wanted); });
-  const int index = camera_index(wanted);
+  const int index = hash_index(wanted);
   if (it == cameras.end() && index >= 0)
     it = std::find_if(cameras.begin(), cameras.end(),
                       [&](const CameraInstance& c) { return c.camera == index; });
@@ -310,6 +365,25 @@ const std::vector<int>& scene_roots(const Document& doc, int& scene_index) {
   return doc.model.scenes[static_cast<std::size_t>(scene_index)].nodes;
 }
 
+// The one warning line of a file whose point or line primitives were skipped (empty: none), and
+// the refusal when nothing else was left to draw.
+std::string skip_warning(const Document& doc, const std::vector<std::string>& skipped) {
+  if (skipped.empty()) return "";
+  std::string list;
+  for (std::size_t i = 0; i < skipped.size() && i < 3; ++i) list += (i ? ", " : "") + skipped[i];
+  if (skipped.size() > 3) list += " and " + std::to_string(skipped.size() - 3) + " more";
+  return doc.path.string() + ": skipped " + std::to_string(skipped.size()) +
+         (skipped.size() == 1 ? " primitive" : " primitives") +
+         " without a surface (points and lines are not shaded): " + list;
+}
+[[noreturn]] void refuse_nothing_left(const Document& doc, const Importer& im) {
+  doc.fail(im.first_skipped_mode,
+           im.first_skipped_name +
+               " carry no surface (points and lines are not shaded), and no triangles are left "
+               "to draw (" +
+               std::to_string(im.skipped.size()) + " skipped)");
+}
+
 }  // namespace
 
 namespace {
@@ -319,15 +393,41 @@ namespace {
 // of one name, listed twice by `info` and refused by gx's C names), and a note it gives once.
 struct ImportedFile {
   Document doc;
-  std::map<int, int> material_of;  // as Importer::material_of, kept between its objects
+  // As Importer::material_of, kept between its objects, per set of overrides (overrides_json).
+  std::map<std::string, std::map<int, int>> material_of;
   std::set<std::string> notes;
 };
+
+// Every override names a material the file has ("*" always does).
+void check_override_selectors(const ObjectImport& object, const Document& doc,
+                              const std::string& scene_file) {
+  const auto& materials = doc.model.materials;
+  for (const MaterialOverride& o : object.overrides) {
+    if (o.selector == "*") continue;
+    const bool named =
+        std::any_of(materials.begin(), materials.end(),
+                    [&](const tinygltf::Material& m) { return m.name == o.selector; });
+    const int index = o.selector.rfind('#', 0) == 0 ? hash_index(o.selector) : -1;
+    if (named || (index >= 0 && index < static_cast<int>(materials.size()))) continue;
+    std::string names;
+    for (std::size_t m = 0; m < materials.size() && m < 8; ++m)
+      names += (m ? ", " : "") + (materials[m].name.empty() ? "#" + std::to_string(m)
+                                                            : json(materials[m].name).dump());
+    if (materials.size() > 8) names += ", ...";
+    throw InputError(scene_file, o.key,
+                     "no material named \"" + o.selector + "\" (nor #N, N < " +
+                         std::to_string(materials.size()) + ") in " + object.path.string() +
+                         " (its materials: " + (names.empty() ? "none" : names) + ")");
+  }
+}
 
 void import_object(const ObjectImport& object, ImportedFile& file, const std::string& scene_file,
                    Scene& scene) {
   const Document& doc = file.doc;
   const std::size_t first_note = scene.import_notes.size();
-  Importer im{doc, scene, file.material_of, {}, 0};
+  check_override_selectors(object, doc, scene_file);
+  Importer im{doc, scene, file.material_of[object.overrides_json], {}, 0};
+  im.overrides = &object.overrides;
   for (const SceneObject& o : scene.objects) im.vertices += o.mesh.positions.size();
   im.import_lights = false;
   im.material_override = object.material;
@@ -345,6 +445,9 @@ void import_object(const ObjectImport& object, ImportedFile& file, const std::st
                        "no node named \"" + object.node + "\" in " + object.path.string());
     im.visit(found, object.placement * ancestors_matrix(doc, found), 0);
   }
+  if (scene.objects.size() == first && !im.skipped.empty()) refuse_nothing_left(doc, im);
+  const std::string warning = skip_warning(doc, im.skipped);
+  if (!warning.empty() && file.notes.insert(warning).second) scene.warnings.push_back(warning);
   if (scene.objects.size() == first)
     throw InputError(
         scene_file, object.key,
@@ -353,7 +456,7 @@ void import_object(const ObjectImport& object, ImportedFile& file, const std::st
             " of " + object.path.string());
   for (std::size_t i = first; i < scene.objects.size(); ++i)
     scene.objects[i].transform = Transform{};
-  file.material_of = im.material_of;
+  file.material_of[object.overrides_json] = im.material_of;
   // The file's notes once: a second object of the file repeats what the first one noted.
   auto kept = scene.import_notes.begin() + static_cast<std::ptrdiff_t>(first_note);
   for (auto it = kept; it != scene.import_notes.end(); ++it) {
@@ -400,8 +503,10 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
       scene.import_notes.push_back("ignored /scenes/" + std::to_string(s) +
                                    ": not the scene to render");
   }
+  if (scene.objects.empty() && !im.skipped.empty()) refuse_nothing_left(doc, im);
   if (scene.objects.empty())
     doc.fail("/scenes/" + std::to_string(scene_index), "the scene has no mesh to render");
+  if (!im.skipped.empty()) scene.warnings.push_back(skip_warning(doc, im.skipped));
 
   if (!camera.empty()) {
     im.camera_from(chosen_camera(doc, im.cameras, camera));
@@ -412,7 +517,7 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
   }
   if (scene.lights.empty())
     scene.import_notes.push_back(
-        "no KHR_lights_punctual light in the scene: it renders black (ambient_light is 0)");
+        "no KHR_lights_punctual light in the scene (`info`'s lights line says what lights it)");
 
   // Textures, images and samplers are read through a base colour texture (its own notes say
   // which); without one they are listed as ignored.

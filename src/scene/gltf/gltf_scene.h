@@ -23,19 +23,34 @@ inline constexpr int kDefaultWidth = 640;
 // the file does not have. Scene::import_notes lists what was mapped and what was ignored.
 Scene load_gltf_scene(const std::filesystem::path& path, const std::string& camera = "");
 
-// A JSON scene's object {"gltf": FILE, "node": NAME, "material": M, "transform": T}.
+// One entry of a glTF object's "materials" (scene-format.md): the scene material's keys given
+// to the file's materials that `selector` names, without editing the file.
+struct MaterialOverride {
+  std::string selector;  // a glTF material's name, "#N" for /materials/N, or "*" for every one
+  std::string key;       // "objects[0].materials.Body", for errors and notes
+  bool albedo_given = false;
+  Material material;  // albedo (if given) and translucency (if set) replace the file's mapping
+};
+
+// A JSON scene's object {"gltf": FILE, "node": NAME, "material": M, "transform": T} or, instead
+// of "material", "materials": {SELECTOR: {...}}.
 struct ObjectImport {
   std::string key;  // "objects[3]", for errors of the scene file
   std::filesystem::path path;
   std::string node;           // empty: the file's scene
   int material = -1;          // an index into Scene::materials; -1: the file's own materials
   glm::dmat4 placement{1.0};  // the object's transform, applied after the file's
+  std::vector<MaterialOverride> overrides{};
+  std::string overrides_json{};  // the "materials" value as written: objects that share it share
+                                 // the file's mapped materials
 };
 
 // Appends, for each object, the meshes of the node (its subtree, in the node's world transform
 // in the file) or of the whole scene to `scene`, with the file's materials (mapped as above,
 // appended once per file however many objects import it) unless one is given; each note once
 // per file. The file's lights and cameras are not imported (noted): the JSON scene has its own.
+// `overrides` apply to the materials they select: by name first, then "#N", then "*"; a name or
+// index the file does not have is an InputError naming `scene_file` and the override's key.
 // The scene limits count these objects, vertices and materials with the scene's. Throws
 // InputError naming `scene_file` and the key for a node the file does not have.
 void import_objects(const std::vector<ObjectImport>& objects, const std::string& scene_file,
