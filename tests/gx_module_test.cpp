@@ -9,6 +9,7 @@
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <set>
@@ -255,6 +256,21 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   }
   EXPECT_EQ(programs_seen.size(), static_cast<size_t>(kFrames)) << "every frame sets its own state";
   EXPECT_GT(stale_differs, 0) << "a frame drawn with the frame before's state looks the same";
+}
+
+// lobe=xf-spec fits its lobe per frame in double, which a module does not carry: one line naming
+// the variant, exit 2, no file.
+TEST(GxModuleExport, RefusesXfSpecNamingTheVariant) {
+  test::TempDir dir;
+  const fs::path out = dir / "m.c";
+  const test::RunResult r = test::run_ltrender(
+      "export gx " + (test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json").string() +
+      " --variant lobe=xf-spec --format module -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--variant"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("lobe=xf-spec"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 std::vector<Case> cases() {
