@@ -67,8 +67,8 @@ std::string runtime_scale_comment(const std::string& what, const std::string& sc
   return head + " x s->" + scale + " (chosen per frame)";
 }
 
-// The stage whose scale is the translucency's (COLOR0 in a light's pass) or the diffuse's (the
-// last); -1 for neither.
+// Which per-frame scale a stage takes: the translucency's (COLOR0 in a light's pass), the
+// diffuse's (the last stage), or none (empty).
 std::string stage_scale(const PassPlan& p, size_t stage) {
   if (stage + 1 == p.stages.size()) return "diffuse_scale";
   if (!p.figures.diffuse_only && p.stages[stage].channel.name() == std::string("GX_COLOR0A0"))
@@ -149,8 +149,7 @@ std::string light_kinds(const Scene& scene) {
   }
   o << "};\n"
     << "const ltr_scene ltrender_scene = {ltrender_light_kinds, LTRENDER_LIGHTS, "
-    << c_vec3(scene.ambient_light, c_double) << ", "
-    << (scene.camera.projection == Camera::Projection::Orthographic) << "};\n\n";
+    << c_vec3(scene.ambient_light, c_double) << "};\n\n";
   const Camera& cam = scene.camera;
   o << "// The scene's camera and lights as exported: where a game starts from (world space).\n"
     << "#define LTRENDER_ORTHOGRAPHIC " << (cam.projection == Camera::Projection::Orthographic)

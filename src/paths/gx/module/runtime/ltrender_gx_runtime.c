@@ -97,11 +97,13 @@ static void ltr_rotate(const ltr_view* view, const double v[3], double out[3]) {
 
 /* V at world point P: normalize(eye - P), or -forward (model::view_vector). */
 static void ltr_view_vector(const ltr_view* view, const double P[3], double V[3]) {
-  double rel[3], len;
+  double rel[3], len = 0;
   int i;
-  for (i = 0; i < 3; ++i) rel[i] = P[i] - view->eye[i];
-  len = sqrt(ltr_dot(rel, rel));
-  if (view->orthographic || !(len > 0)) {
+  if (!view->orthographic) {
+    for (i = 0; i < 3; ++i) rel[i] = P[i] - view->eye[i];
+    len = sqrt(ltr_dot(rel, rel));
+  }
+  if (!(len > 0)) { /* orthographic, or a point at the eye (never rasterised: near > 0) */
     for (i = 0; i < 3; ++i) V[i] = -view->forward[i];
     return;
   }

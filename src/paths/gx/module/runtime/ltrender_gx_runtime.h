@@ -50,7 +50,8 @@ typedef struct {
 
 /* An object's vertices as the game sends them: world-space positions and normals (xyz per
    vertex), the baked thickness colour (rgba per vertex, or 0 when the material has none), the
-   UVs (uv per vertex, or 0), and the triangles as a list of vertex indices. */
+   UVs (uv per vertex, or 0), and the triangles as a list of vertex indices. The colours and UVs
+   must be there where a pass sends them (its vertex format declares GX_VA_CLR0 / a GX_TEX_ST). */
 typedef struct {
   const float* positions;
   const float* normals;
@@ -104,11 +105,11 @@ typedef struct {
   int lut;           /* stage 0 reads the lobe LUT */
 } ltr_pass_shape;
 
+/* What the export fixed about the scene. */
 typedef struct {
   const ltr_light_kind* kinds;
   int light_count;
   double ambient_light[3];
-  int orthographic;
 } ltr_scene;
 
 /* The view of a camera (glm::lookAt from the origin towards the camera's forward). */
@@ -116,7 +117,9 @@ void ltr_view_of(const ltr_camera* camera, int orthographic, ltr_view* view);
 
 /* Widens `range` by the vertices of `mesh` that can be seen (N.V >= -0.2: the back faces hide
    behind the front, the slack keeps the silhouette). Start from {0, 0}.
-   Cost: about 30 flops and 2 square roots per vertex (a point light), 12 flops (directional). */
+   Cost per vertex (flops counting each add, multiply, divide, negate; divisions in brackets):
+   perspective camera and point light about 45 (7) and 2 square roots; a directional light about
+   30 (3) and 1 square root; an orthographic camera saves 14 flops and a square root. */
 void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                         const ltr_mesh* mesh, ltr_light_range* range);
 
@@ -124,8 +127,10 @@ void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const 
    it per pixel), into t[0 .. vertex_count): V = the unit vector from the vertex to the eye
    (perspective) or -forward (orthographic), L = the unit vector from the vertex to a point
    light or -direction, N the vertex's world-space normal as sent, all in world space.
-   Cost: about 35 flops and 2 square roots per vertex (perspective, point light); 18 flops and
-   1 square root with a directional light; +1 square root where the material normalises H. */
+   Cost per vertex, counted as for ltr_light_range_of: perspective camera and point light about
+   45 flops (7 divisions) and 2 square roots; a directional light about 30 (3) and 1 square root;
+   an orthographic camera saves 14 flops and a square root; a material that normalises H adds 11
+   flops (3 divisions) and a square root. */
 void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                 const ltr_material* material, const ltr_mesh* mesh, float* t);
 
