@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -64,7 +65,8 @@ glm::dvec3 rotated(const glm::dvec3& v, const glm::dvec3& axis, double degrees) 
 }
 
 // Frame k of the path: the eye orbits the target about the up axis (up to 70 degrees), point
-// lights orbit it the other way, directional lights turn with them; all in float.
+// lights orbit it the other way, directional lights turn with them, and every light's colour
+// and translucency scale grow (up to x1.6 and x1.5); all in float.
 Scene frame_scene(const Scene& base, int k) {
   Scene s = base;
   const double t = k / double(kFrames - 1);
@@ -72,6 +74,8 @@ Scene frame_scene(const Scene& base, int k) {
   s.camera.eye =
       as_float(base.camera.target + rotated(base.camera.eye - base.camera.target, up, 70 * t));
   for (Light& l : s.lights) {
+    l.color = as_float(l.color * (1 + 0.6 * t));
+    l.translucency_scale = as_float(l.translucency_scale * (1 + 0.5 * t));
     if (l.type == Light::Type::Point) {
       l.position =
           as_float(base.camera.target + rotated(l.position - base.camera.target, up, -50 * t));
@@ -172,7 +176,7 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   auto* program = host.get<ProgramFn>("ltr_host_program");
   ASSERT_TRUE(view_of && begin && end && reset && program);
   const ScenePlan plan = plan_scene(base, variant);
-  std::set<std::string> programs_seen;
+  std::set<std::string> programs_seen, scales_seen;
   std::string previous_program;
   int stale_differs = 0;
   for (int k = 0; k < kFrames; ++k) {
@@ -212,6 +216,9 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
       auto* setup = host.get<SetupFn>(id + "_setup");
       ASSERT_TRUE(setup) << id;
       setup(&view, lights.data(), meshes.data(), static_cast<int>(meshes.size()), state.data());
+      for (const ltr_pass_state& st : state)
+        scales_seen.insert(std::to_string(st.translucency_scale) + "/" +
+                           std::to_string(st.diffuse_scale));
       for (size_t p = 0; p < m.passes.size(); ++p) {
         const std::string name = pass_function_name(m.c_name, static_cast<int>(p));
         auto* pass = host.get<PassFn>(name);
@@ -254,6 +261,10 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
     }
     previous_program = text;
   }
+  // What the path exercised: the (translucency / diffuse) TEV scales the setup chose.
+  std::cout << GetParam().scene << ": TEV scales (translucency stage/last stage) along the path:";
+  for (const std::string& sc : scales_seen) std::cout << " " << sc;
+  std::cout << "\n";
   EXPECT_EQ(programs_seen.size(), static_cast<size_t>(kFrames)) << "every frame sets its own state";
   EXPECT_GT(stale_differs, 0) << "a frame drawn with the frame before's state looks the same";
 }
