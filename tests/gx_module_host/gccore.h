@@ -14,9 +14,15 @@ typedef uint32_t u32;
 typedef int32_t s32;
 typedef float f32;
 typedef f32 Mtx[3][4];
-typedef struct { u8 r, g, b, a; } GXColor;
-typedef struct { int unused; } GXLightObj;
-typedef struct { int unused; } GXTexObj;
+typedef struct {
+  u8 r, g, b, a;
+} GXColor;
+typedef struct {
+  int unused;
+} GXLightObj;
+typedef struct {
+  int unused;
+} GXTexObj;
 #define ATTRIBUTE_ALIGN(v) __attribute__((aligned(v)))
 
 #include "gx_constants.h"
@@ -47,8 +53,7 @@ void GX_SetChanMatColor(s32 channel, GXColor c);
 void GX_LoadTexMtxImm(Mtx m, u32 id, u8 type);
 void GX_SetNumTexGens(u32 n);
 void GX_SetTexCoordGen(u16 coord, u32 type, u32 src, u32 mtx);
-void GX_InitTexObj(GXTexObj* o, void* image, u16 w, u16 h, u8 fmt, u8 wrap_s, u8 wrap_t,
-                   u8 mipmap);
+void GX_InitTexObj(GXTexObj* o, void* image, u16 w, u16 h, u8 fmt, u8 wrap_s, u8 wrap_t, u8 mipmap);
 void GX_LoadTexObj(GXTexObj* o, u8 map);
 void GX_SetNumTevStages(u8 n);
 void GX_SetTevColor(u8 reg, GXColor c);

@@ -91,8 +91,8 @@ void ltr_view_of(const ltr_camera* camera, int orthographic, ltr_view* view) {
 static void ltr_rotate(const ltr_view* view, const double v[3], double out[3]) {
   int r;
   for (r = 0; r < 3; ++r)
-    out[r] = view->rotation[r][0] * v[0] + view->rotation[r][1] * v[1] +
-             view->rotation[r][2] * v[2];
+    out[r] =
+        view->rotation[r][0] * v[0] + view->rotation[r][1] * v[1] + view->rotation[r][2] * v[2];
 }
 
 /* V at world point P: normalize(eye - P), or -forward (model::view_vector). */
@@ -165,8 +165,8 @@ void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_ligh
 
 /* The eye-space position the XF lights from: a point light's own, a directional light's far
    away against its direction. */
-static void ltr_light_eye(const ltr_view* view, const ltr_light_kind* kind,
-                          const ltr_light* light, float out[3]) {
+static void ltr_light_eye(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
+                          float out[3]) {
   double w[3], e[3];
   int i;
   for (i = 0; i < 3; ++i)
@@ -241,13 +241,14 @@ static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
   ltr_widen(light->color, color);
   for (i = 0; i < 3; ++i) trans_color[i] = color[i] * material->albedo[i] * material->tint[i];
   s0 = ltr_max3(trans_color) * (a + s) * material->t_max;
-  diffuse_mag = (l == 0 ? ltr_max3(scene->ambient_light) : 0.0) +
-                ranges[l].max_diffuse * ltr_max3(color);
+  diffuse_mag =
+      (l == 0 ? ltr_max3(scene->ambient_light) : 0.0) + ranges[l].max_diffuse * ltr_max3(color);
   sd = ltr_scale_for(diffuse_mag);
   trans_mag = ranges[l].max_attenuation * s0;
   st_needed = ltr_scale_for(trans_mag);
   st = sd > st_needed ? sd : st_needed;
-  if (shape->translucent) ltr_distance_light(view, kind, light, trans_color, s0 / st, &out->light[0]);
+  if (shape->translucent)
+    ltr_distance_light(view, kind, light, trans_color, s0 / st, &out->light[0]);
   ltr_distance_light(view, kind, light, color, ltr_max3(color) / sd, &out->light[1]);
   ltr_ambient(scene, 0, 1, out->ambient[0]);
   ltr_ambient(scene, l == 0, sd, out->ambient[1]);

@@ -42,7 +42,8 @@ typedef struct {
   float translucency_scale;
 } ltr_light;
 
-/* What the export fixed about a light: its type and distance attenuation 1 / (kc + kl d + kq d^2). */
+/* What the export fixed about a light: its type and distance attenuation 1 / (kc + kl d + kq d^2).
+ */
 typedef struct {
   int point;
   double kc, kl, kq;
@@ -92,17 +93,17 @@ typedef struct {
   double albedo[3], tint[3];
   double ambient, distortion; /* a, d */
   int normalize_h;
-  double t_max; /* the thickness the material register's 255 stands for */
-  int lut_size; /* W texels */
+  double t_max;      /* the thickness the material register's 255 stands for */
+  int lut_size;      /* W texels */
   int t_from_normal; /* t=texgen: t through a texture matrix from the raw normal */
 } ltr_material;
 
 /* What the export fixed about one pass (which stages and lights it has). */
 typedef struct {
-  int diffuse_only;  /* one diffuse stage for lights [light, light + light_count) */
+  int diffuse_only; /* one diffuse stage for lights [light, light + light_count) */
   int light, light_count;
-  int translucent;   /* COLOR0 carries the translucency */
-  int lut;           /* stage 0 reads the lobe LUT */
+  int translucent; /* COLOR0 carries the translucency */
+  int lut;         /* stage 0 reads the lobe LUT */
 } ltr_pass_shape;
 
 /* What the export fixed about the scene. */
