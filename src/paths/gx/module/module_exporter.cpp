@@ -60,7 +60,8 @@ bool has_lut(const PassPlan& p) {
   return false;
 }
 
-// "Stage 1: trans = w x COLOR0 x 2" -> "... x the translucency scale (s->translucency_scale)".
+// "Stage 1: trans = w x COLOR0 x 2" -> "Stage 1: trans = w x COLOR0 x s->translucency_scale
+// (chosen per frame)".
 std::string runtime_scale_comment(const std::string& what, const std::string& scale) {
   const auto at = what.rfind(" x ");
   const std::string head = at == std::string::npos ? what : what.substr(0, at);
@@ -71,7 +72,8 @@ std::string runtime_scale_comment(const std::string& what, const std::string& sc
 // diffuse's (the last stage), or none (empty).
 std::string stage_scale(const PassPlan& p, size_t stage) {
   if (stage + 1 == p.stages.size()) return "diffuse_scale";
-  if (!p.figures.diffuse_only && p.stages[stage].channel.name() == std::string("GX_COLOR0A0"))
+  if (!p.figures.diffuse_only &&
+      p.stages[stage].channel == GxConst<NameGroup::Channel>{"GX_COLOR0A0"})
     return "translucency_scale";
   return "";
 }
@@ -113,7 +115,7 @@ Function bind_frame_state(Function f, const PassPlan& p, bool t_from_normal) {
       for (size_t i = 0; i < 3; ++i) c.args[i + 1] = field(l + ".k[" + std::to_string(i) + "]");
       st.comment = "k = (kc, kl, kq) / gain: the XF computes gain x att, the light's magnitude";
     } else if (fn == "GX_SetChanAmbColor") {
-      const int ch = c.args[0].value == 5 ? 1 : 0;  // GX_COLOR1A1 = 5 [OGC gx.h L3003-3011]
+      const int ch = c.args[0].value == GxConst<NameGroup::Channel>{"GX_COLOR1A1"}.value() ? 1 : 0;
       c.args[1] = field("LTR_GXCOLOR(s->ambient[" + std::to_string(ch) + "])");
     } else if (fn == "GX_SetTevColor") {
       c.args[1] = field("LTR_GXCOLOR(s->reg0)");
