@@ -4,6 +4,7 @@
 // of it: LTRENDER_LIBOGC=/path/to/libogc[:/another/libogc] (each holding gc/gccore.h), e.g. the
 // current headers and those before the 2025 rework, which moved ATTRIBUTE_ALIGN from gctypes.h to
 // gcutil.h. Without it the test skips and says how to turn it on (docs: porting to the Wii).
+// The same holds for every module (`--format module`) and for the Wii sample examples/wii/main.c.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -44,43 +45,85 @@ std::vector<std::string> export_scenes() {
 
 class GxExportCompiles : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(GxExportCompiles, WithThePowerPcCompilerAgainstLibogc) {
+// Exports `scene` in each variant `wanted` accepts (and the scene renders) with `format_args`,
+// compiles each file against every checkout, and returns how many compiled.
+int expect_exports_compile(const std::string& scene_param, const std::string& format_args,
+                           bool (*wanted)(const std::string& variant)) {
   const std::vector<fs::path> checkouts = libogc_checkouts();
-  if (checkouts.empty())
-    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout (or several, ':'-separated) to "
-                    "compile every export for the console";
-  ASSERT_EQ(std::system("command -v powerpc-linux-gnu-gcc >/dev/null"), 0)
+  EXPECT_EQ(std::system("command -v powerpc-linux-gnu-gcc >/dev/null"), 0)
       << "powerpc-linux-gnu-gcc is missing (scripts/setup.sh installs gcc-powerpc-linux-gnu)";
   for (const fs::path& ogc : checkouts)
-    ASSERT_TRUE(fs::exists(ogc / "gc" / "gccore.h")) << ogc << " holds no gc/gccore.h";
-
-  const fs::path scene_file = test::source_dir() / GetParam();
+    EXPECT_TRUE(fs::exists(ogc / "gc" / "gccore.h")) << ogc << " holds no gc/gccore.h";
+  const fs::path scene_file = test::source_dir() / scene_param;
   const Scene scene = load_scene(scene_file);
   const PathInfo& gx = find_path("gx");
   test::TempDir dir;
   int compiled = 0;
   for (const VariantInfo& v : gx.variants) {
-    if (!gx.refusal(scene, v.name).empty()) continue;
+    if (!gx.refusal(scene, v.name).empty() || !wanted(v.name)) continue;
     const fs::path c = dir / (test::test_param_name(v.name) + ".c");
     auto export_c = [&](const std::string& variant) {
       return test::run_ltrender("export gx " + scene_file.string() + " --variant " + variant +
-                                " -o " + c.string());
+                                format_args + " -o " + c.string());
     };
     test::RunResult r = export_c(v.name);
     // A 1024x1024 RGBA8 thickness map makes a C file over the program input cap (the teapot of
     // scenes/maps): export refuses it and names :map=rgb565, which halves the array.
     if (r.exit_code == 2 && r.err.find("program file may be") != std::string::npos)
       r = export_c(v.name + ":map=rgb565");
-    ASSERT_EQ(r.exit_code, 0) << v.name << ": " << r.err;
+    EXPECT_EQ(r.exit_code, 0) << v.name << ": " << r.err;
+    if (r.exit_code != 0) continue;
     for (const fs::path& ogc : checkouts) {
       const fs::path log = dir / "cc.log";
       const int status = std::system(compile_command(c, ogc, log).c_str());
-      EXPECT_EQ(status, 0) << GetParam() << " --variant " << v.name << " against " << ogc << ":\n"
+      EXPECT_EQ(status, 0) << scene_param << " --variant " << v.name << format_args << " against "
+                           << ogc << ":\n"
                            << test::read_file(log);
       ++compiled;
     }
   }
-  EXPECT_GT(compiled, 0) << "no gx variant renders " << GetParam();
+  return compiled;
+}
+
+TEST_P(GxExportCompiles, WithThePowerPcCompilerAgainstLibogc) {
+  if (libogc_checkouts().empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout (or several, ':'-separated) to "
+                    "compile every export for the console";
+  EXPECT_GT(expect_exports_compile(GetParam(), "", [](const std::string&) { return true; }), 0)
+      << "no gx variant renders " << GetParam();
+}
+
+// The module (`--format module`) of t=vertex and t=texgen, where the scene takes them (lobe=xf-spec
+// has none; the other variants change a LUT's size or the emulator's rounding, not the module's
+// code), and the Wii sample examples/wii/main.c with the module of the scene its comment names.
+TEST_P(GxExportCompiles, AsAModuleWithThePowerPcCompilerAgainstLibogc) {
+  if (libogc_checkouts().empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout (or several, ':'-separated) to "
+                    "compile every module for the console";
+  EXPECT_GT(expect_exports_compile(
+                GetParam(), " --format module",
+                [](const std::string& v) { return v == "t=vertex" || v == "t=texgen"; }),
+            0)
+      << "no gx variant of " << GetParam() << " has a module";
+}
+
+TEST(GxWiiExample, CompilesWithTheModuleItNames) {
+  const std::vector<fs::path> checkouts = libogc_checkouts();
+  if (checkouts.empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile examples/wii/main.c";
+  test::TempDir dir;
+  const test::RunResult r = test::run_ltrender(
+      "export gx " + (test::source_dir() / "scenes/backlit_sphere.json").string() +
+      " --format module -o " + (dir / "ltrender_module.c").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path main_c = dir / "main.c";
+  fs::copy_file(test::source_dir() / "examples/wii/main.c", main_c);
+  for (const fs::path& ogc : checkouts) {
+    const fs::path log = dir / "cc.log";
+    EXPECT_EQ(std::system(compile_command(main_c, ogc, log).c_str()), 0)
+        << "examples/wii/main.c against " << ogc << ":\n"
+        << test::read_file(log);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxExportCompiles, ::testing::ValuesIn(export_scenes()),

@@ -7,14 +7,28 @@
 #include "paths/gx/c_exporter.h"
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_budget.h"
+#include "paths/gx/module/module_exporter.h"
 #include "render/session.h"
 
 namespace lt::cli {
 
-// `ltrender export gx SCENE [--variant V] [--format c|dff] -o FILE` (gx.md §2): the generated GX
-// programs as C, with the error of exactly that program measured against the reference at the
-// scene's size; or (`--format dff`) the frame as the console receives it, a Dolphin FIFO log
-// (paths/gx/fifo/) at the scene's size or --width x --height.
+namespace {
+
+void write_text(const std::string& file, const std::string& text) {
+  write_atomically(file, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw InputError(file, "", "cannot write");
+  });
+}
+
+}  // namespace
+
+// `ltrender export gx SCENE [--variant V] [--format c|module|dff] -o FILE` (gx.md §2): the
+// generated GX programs as C, with the error of exactly that program measured against the
+// reference at the scene's size; (`--format module`) as C a game runs every frame, its camera
+// and lights as inputs (paths/gx/module/); or (`--format dff`) the frame as the console receives
+// it, a Dolphin FIFO log (paths/gx/fifo/) at the scene's size or --width x --height.
 Action add_export(CLI::App& app) {
   auto target = std::make_shared<std::string>();
   auto scene_path = std::make_shared<std::string>();
@@ -31,7 +45,8 @@ Action add_export(CLI::App& app) {
   sub->add_option("SCENE", *scene_path, "Scene file (JSON, .gltf or .glb)")->required();
   sub->add_option("--variant", *variant, "The gx variant (default t=vertex)");
   sub->add_option("--format", *format,
-                  "c: libogc C (default); dff: the frame as a Dolphin FIFO log");
+                  "c: libogc C for the scene's frame (default); module: libogc C a game runs every "
+                  "frame, camera and lights as inputs; dff: the frame as a Dolphin FIFO log");
   sub->add_option("--width", *width, "dff: frame width (default: the scene's)");
   sub->add_option("--height", *height, "dff: frame height (default: the scene's)");
   sub->add_option("--program", *program,
@@ -40,12 +55,12 @@ Action add_export(CLI::App& app) {
   add_lights_option(sub, *scene_options);
   return [=]() -> int {
     if (*target != "gx") throw InputError("export", *target, "unknown export target (valid: gx)");
-    if (*format != "c" && *format != "dff")
-      throw InputError("export", "--format", *format + ": unknown format (valid: c, dff)");
-    const std::string extension = "." + *format;
+    if (*format != "c" && *format != "module" && *format != "dff")
+      throw InputError("export", "--format", *format + ": unknown format (valid: c, module, dff)");
+    const std::string extension = *format == "dff" ? ".dff" : ".c";
     if (fs::path(*output).extension() != extension)
       throw InputError(*output, "", "the exported file must end in " + extension);
-    if (*format == "c" && (*width != 0 || *height != 0 || !program->empty()))
+    if (*format != "dff" && (*width != 0 || *height != 0 || !program->empty()))
       throw InputError("export", !program->empty() ? "--program" : "--width",
                        "--width, --height and --program are for --format dff");
     const PathInfo& info = find_path("gx");
@@ -71,6 +86,10 @@ Action add_export(CLI::App& app) {
       return 0;
     }
     const gx::GxVariant gv = gx::parse_gx_variant(v);
+    if (*format == "module") {
+      write_text(*output, gx::export_module(scene, gv, *scene_path));
+      return 0;
+    }
     const gx::ScenePrograms programs = gx::scene_programs_for(scene, gv, "");
     gx::ExportFigures f;
     f.scene = *scene_path;
@@ -86,12 +105,7 @@ Action add_export(CLI::App& app) {
       f.error = compare_images(gxp->result(), ref->result(), TestEncoding::kUnorm8).covered;
     }
     f.budget = gx::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
-    const std::string text = gx::export_c(programs, f);
-    write_atomically(*output, [&](const fs::path& tmp) {
-      std::ofstream out(tmp, std::ios::binary);
-      out << text;
-      if (!out) throw InputError(*output, "", "cannot write");
-    });
+    write_text(*output, gx::export_c(programs, f));
     return 0;
   };
 }

@@ -154,6 +154,9 @@ struct PassFigures {
   int translucency_scale = 1, diffuse_scale = 1;
   bool translucency_saturates = false, diffuse_saturates = false;
   std::optional<double> fit_error;  // lobe=xf-spec: the fit's max error, in units of (a+s)
+  // The thickness the material register's 255 stands for (the constant's largest component, a
+  // map's largest texel, 1 for vertex colours): the module's setup scales by it each frame.
+  double thickness_scale = 1;
 };
 
 struct PassPlan {

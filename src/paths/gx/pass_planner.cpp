@@ -278,6 +278,7 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
   p.figures.light = l;
   p.figures.translucency_scale = st_scale;
   p.figures.diffuse_scale = c.sd;
+  p.figures.thickness_scale = c.t_max;
   p.figures.translucency_saturates = trans_mag > kMaxScale;
   p.figures.diffuse_saturates = c.diffuse_mag > kMaxScale;
   return p;

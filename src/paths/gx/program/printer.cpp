@@ -102,7 +102,7 @@ std::string print_program(const ProgramFile& program) {
   for (const Function& f : program.functions) {
     out << "\n";
     print_comment(out, f.comment, "");
-    out << "void " << f.name << "(void) {\n";
+    out << "void " << f.name << "(" << (f.parameters.empty() ? "void" : f.parameters) << ") {\n";
     print_statements(out, f.body, "  ");
     out << "}\n";
   }

@@ -77,6 +77,9 @@ struct Statement {
 struct Function {
   std::string comment;
   std::string name;
+  // Printed between the parentheses; empty is `void`. Only the module export (paths/gx/module/)
+  // gives its pass functions a parameter; a program file's functions take none.
+  std::string parameters;
   std::vector<Statement> body;
   SourcePos pos;
 };

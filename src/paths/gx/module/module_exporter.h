@@ -1,0 +1,25 @@
+// `ltrender export gx --format module`: the generated programs as code a game runs every frame
+// (issue 26). `--format c` prints one frame's numbers: the eye-space lights, the attenuation
+// gains, the TEV scales and the ambient colour of that camera. A module prints the same plan with
+// those fields read from a per-frame state (ltr_pass_state), and carries the C that computes
+// the state from the game's camera, lights and meshes (runtime/ltrender_gx_runtime.c, the
+// planner's choices in the planner's own order of operations), the per-vertex t and the draw.
+#pragma once
+
+#include <string>
+
+#include "paths/gx/gx_variant.h"
+#include "scene/scene.h"
+
+namespace lt::gx {
+
+// The module's text. Throws InputError("--variant", ...) for lobe=xf-spec (its lobe is fitted per
+// frame by Sanathanan-Koerner iterations in double, which the module does not carry) and for
+// whatever plan_scene refuses.
+std::string export_module(const Scene& scene, const GxVariant& variant,
+                          const std::string& scene_argument);
+
+// The runtime the module embeds: the maths header and source (plain C99) and the libogc draw.
+std::string module_runtime_source(const std::string& file);
+
+}  // namespace lt::gx

@@ -1,0 +1,290 @@
+/* The per-frame maths of a GX module (ltrender_gx_runtime.h): the gx planner's choices
+   (src/paths/gx/pass_planner.cpp) and the model's t (src/model/translucency.cpp), operation for
+   operation in double. */
+#include "ltrender_gx_runtime.h"
+
+#include <math.h>
+
+/* A directional light is a point light this far away against its direction, in eye space:
+   libogc's own "large number" for lights at infinity [OGC gx.c L23-25, GX_InitSpecularDir],
+   small enough that |v|^2 (1e36) stays finite in the XF's float. Being in eye space, it moves
+   with the camera: this is why the setup runs every frame. */
+static const double ltr_far_away = 1.0e18;
+/* How far past the silhouette (N.V < 0) a vertex still counts as possibly seen. */
+static const double ltr_back_facing = 0.2;
+/* Point-light attenuation denominators are floored here (model/translucency.h). */
+static const double ltr_min_denominator = 1e-6;
+
+static double ltr_dot(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double ltr_max3(const double v[3]) {
+  double m = v[0];
+  if (m < v[1]) m = v[1];
+  if (m < v[2]) m = v[2];
+  return m;
+}
+
+/* v * (1 / sqrt(v.v)), as glm::normalize. */
+static void ltr_normalize(const double v[3], double out[3]) {
+  const double inv = 1.0 / sqrt(ltr_dot(v, v));
+  int i;
+  for (i = 0; i < 3; ++i) out[i] = v[i] * inv;
+}
+
+static void ltr_cross(const double x[3], const double y[3], double out[3]) {
+  out[0] = x[1] * y[2] - y[1] * x[2];
+  out[1] = x[2] * y[0] - y[2] * x[0];
+  out[2] = x[0] * y[1] - y[0] * x[1];
+}
+
+static void ltr_widen(const float f[3], double out[3]) {
+  int i;
+  for (i = 0; i < 3; ++i) out[i] = f[i];
+}
+
+/* 0..1 to 0..255, rounded; NaN and below 0 give 0 (image/image.h to_unorm8). */
+static unsigned char ltr_unorm8(double v) {
+  if (!(v > 0.0)) return 0;
+  if (v >= 1.0) return 255;
+  return (unsigned char)(v * 255.0 + 0.5);
+}
+
+static void ltr_rgb8(const double c[3], unsigned char out[4]) {
+  int i;
+  for (i = 0; i < 3; ++i) out[i] = ltr_unorm8(c[i]);
+  out[3] = 255;
+}
+
+/* The smallest of x1, x2, x4 that holds `magnitude`; 4 where even that is too small. */
+static int ltr_scale_for(double magnitude) {
+  int s;
+  for (s = 1; s <= 4; s *= 2) {
+    if (magnitude <= s * (1 + 1e-9)) return s;
+  }
+  return 4;
+}
+
+void ltr_view_of(const ltr_camera* camera, int orthographic, ltr_view* view) {
+  double eye[3], target[3], up[3], d[3], f[3], s[3], u[3], cs[3];
+  int i;
+  ltr_widen(camera->eye, eye);
+  ltr_widen(camera->target, target);
+  ltr_widen(camera->up, up);
+  for (i = 0; i < 3; ++i) d[i] = target[i] - eye[i];
+  ltr_normalize(d, view->forward);
+  /* glm::lookAt(0, forward, up): f is forward normalised once more. */
+  ltr_normalize(view->forward, f);
+  ltr_cross(f, up, cs);
+  ltr_normalize(cs, s);
+  ltr_cross(s, f, u);
+  for (i = 0; i < 3; ++i) {
+    view->eye[i] = eye[i];
+    view->rotation[0][i] = s[i];
+    view->rotation[1][i] = u[i];
+    view->rotation[2][i] = -f[i];
+  }
+  view->orthographic = orthographic;
+}
+
+static void ltr_rotate(const ltr_view* view, const double v[3], double out[3]) {
+  int r;
+  for (r = 0; r < 3; ++r)
+    out[r] =
+        view->rotation[r][0] * v[0] + view->rotation[r][1] * v[1] + view->rotation[r][2] * v[2];
+}
+
+/* V at world point P: normalize(eye - P), or -forward (model::view_vector). */
+static void ltr_view_vector(const ltr_view* view, const double P[3], double V[3]) {
+  double rel[3], len = 0;
+  int i;
+  if (!view->orthographic) {
+    for (i = 0; i < 3; ++i) rel[i] = P[i] - view->eye[i];
+    len = sqrt(ltr_dot(rel, rel));
+  }
+  if (!(len > 0)) { /* orthographic, or a point at the eye (never rasterised: near > 0) */
+    for (i = 0; i < 3; ++i) V[i] = -view->forward[i];
+    return;
+  }
+  for (i = 0; i < 3; ++i) V[i] = -rel[i] / len;
+}
+
+/* L and the attenuation at world point P (model::sample_light). */
+static double ltr_sample_light(const ltr_light_kind* kind, const ltr_light* light,
+                               const double P[3], const double N[3], double L[3]) {
+  double to_light[3], dist, den;
+  int i;
+  if (!kind->point) {
+    for (i = 0; i < 3; ++i) L[i] = -(double)light->direction[i];
+    return 1.0;
+  }
+  for (i = 0; i < 3; ++i) to_light[i] = (double)light->position[i] - P[i];
+  dist = sqrt(ltr_dot(to_light, to_light));
+  for (i = 0; i < 3; ++i) L[i] = dist > 0 ? to_light[i] / dist : N[i];
+  den = kind->kc + kind->kl * dist + kind->kq * dist * dist;
+  return 1.0 / (den < ltr_min_denominator ? ltr_min_denominator : den);
+}
+
+void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
+                        const ltr_mesh* mesh, ltr_light_range* range) {
+  int v;
+  for (v = 0; v < mesh->vertex_count; ++v) {
+    double P[3], N[3], V[3], L[3], att, nl, diffuse;
+    ltr_widen(mesh->positions + 3 * v, P);
+    ltr_widen(mesh->normals + 3 * v, N);
+    ltr_view_vector(view, P, V);
+    if (ltr_dot(N, V) < -ltr_back_facing) continue;
+    att = ltr_sample_light(kind, light, P, N, L);
+    if (range->max_attenuation < att) range->max_attenuation = att;
+    nl = ltr_dot(N, L);
+    diffuse = att * (nl < 0.0 ? 0.0 : nl);
+    if (range->max_diffuse < diffuse) range->max_diffuse = diffuse;
+  }
+}
+
+void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
+                const ltr_material* material, const ltr_mesh* mesh, float* t) {
+  const double d = material->distortion;
+  int v, i;
+  for (v = 0; v < mesh->vertex_count; ++v) {
+    double P[3], N[3], V[3], L[3], H[3], minus_h[3];
+    ltr_widen(mesh->positions + 3 * v, P);
+    ltr_widen(mesh->normals + 3 * v, N);
+    ltr_view_vector(view, P, V);
+    ltr_sample_light(kind, light, P, N, L);
+    for (i = 0; i < 3; ++i) H[i] = L[i] + N[i] * d;
+    if (material->normalize_h) {
+      const double len = sqrt(ltr_dot(H, H));
+      for (i = 0; i < 3; ++i) H[i] = len > 0 ? H[i] / len : 0.0;
+    }
+    for (i = 0; i < 3; ++i) minus_h[i] = -H[i];
+    t[v] = (float)ltr_dot(V, minus_h);
+  }
+}
+
+/* The eye-space position the XF lights from: a point light's own, a directional light's far
+   away against its direction. */
+static void ltr_light_eye(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
+                          float out[3]) {
+  double w[3], e[3];
+  int i;
+  for (i = 0; i < 3; ++i)
+    w[i] = kind->point ? (double)light->position[i] - view->eye[i]
+                       : -(double)light->direction[i] * ltr_far_away;
+  ltr_rotate(view, w, e);
+  for (i = 0; i < 3; ++i) out[i] = (float)e[i];
+}
+
+/* A distance-attenuated light object: the colour normalised to 255 at its largest component,
+   k divided by `gain`, so the XF computes gain x att x colour. */
+static void ltr_distance_light(const ltr_view* view, const ltr_light_kind* kind,
+                               const ltr_light* light, const double color[3], double gain,
+                               ltr_light_object* out) {
+  const double m = ltr_max3(color);
+  const double kc = kind->point ? kind->kc : 1.0, kl = kind->point ? kind->kl : 0.0,
+               kq = kind->point ? kind->kq : 0.0;
+  double unit[3];
+  int i;
+  ltr_light_eye(view, kind, light, out->position);
+  for (i = 0; i < 3; ++i) unit[i] = m > 0 ? color[i] / m : 0.0;
+  ltr_rgb8(unit, out->color);
+  if (!(m > 0 && gain > 0)) gain = 1.0;
+  out->k[0] = (float)(kc / gain);
+  out->k[1] = (float)(kl / gain);
+  out->k[2] = (float)(kq / gain);
+}
+
+static void ltr_ambient(const ltr_scene* scene, int first, int scale, unsigned char out[4]) {
+  double c[3];
+  int i;
+  for (i = 0; i < 3; ++i) c[i] = first ? scene->ambient_light[i] / (double)scale : 0.0;
+  ltr_rgb8(c, out);
+}
+
+/* Lights [light, light + count) summed in one channel, one stage (pass_planner diffuse_pass). */
+static void ltr_diffuse_pass(const ltr_scene* scene, const ltr_pass_shape* shape,
+                             const ltr_view* view, const ltr_light* lights,
+                             const ltr_light_range* ranges, ltr_pass_state* out) {
+  const int first = shape->light == 0;
+  double magnitude = first ? ltr_max3(scene->ambient_light) : 0.0;
+  int l, sd;
+  for (l = shape->light; l < shape->light + shape->light_count; ++l) {
+    double color[3];
+    ltr_widen(lights[l].color, color);
+    magnitude += ranges[l].max_diffuse * ltr_max3(color);
+  }
+  sd = ltr_scale_for(magnitude);
+  for (l = shape->light; l < shape->light + shape->light_count; ++l) {
+    double color[3];
+    ltr_widen(lights[l].color, color);
+    ltr_distance_light(view, &scene->kinds[l], &lights[l], color, ltr_max3(color) / sd,
+                       &out->light[l - shape->light]);
+  }
+  ltr_ambient(scene, first, sd, out->ambient[0]);
+  out->diffuse_scale = sd;
+  out->diffuse_saturates = magnitude > 4;
+}
+
+/* One light's pass (pass_planner choose and light_pass): slot 0 the translucency light, slot 1
+   the diffuse light, the scales from the light's range. */
+static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
+                           const ltr_pass_shape* shape, const ltr_view* view,
+                           const ltr_light* lights, const ltr_light_range* ranges,
+                           ltr_pass_state* out) {
+  const int l = shape->light;
+  const ltr_light* light = &lights[l];
+  const ltr_light_kind* kind = &scene->kinds[l];
+  const double s = light->translucency_scale, a = material->ambient;
+  double color[3], trans_color[3], s0, diffuse_mag, trans_mag;
+  int i, sd, st, st_needed;
+  ltr_widen(light->color, color);
+  for (i = 0; i < 3; ++i) trans_color[i] = color[i] * material->albedo[i] * material->tint[i];
+  s0 = ltr_max3(trans_color) * (a + s) * material->t_max;
+  diffuse_mag =
+      (l == 0 ? ltr_max3(scene->ambient_light) : 0.0) + ranges[l].max_diffuse * ltr_max3(color);
+  sd = ltr_scale_for(diffuse_mag);
+  trans_mag = ranges[l].max_attenuation * s0;
+  st_needed = ltr_scale_for(trans_mag);
+  st = sd > st_needed ? sd : st_needed;
+  if (shape->translucent)
+    ltr_distance_light(view, kind, light, trans_color, s0 / st, &out->light[0]);
+  ltr_distance_light(view, kind, light, color, ltr_max3(color) / sd, &out->light[1]);
+  ltr_ambient(scene, 0, 1, out->ambient[0]);
+  ltr_ambient(scene, l == 0, sd, out->ambient[1]);
+  if (shape->lut) {
+    const unsigned char a8 = ltr_unorm8(a / (a + s));
+    out->reg0[0] = out->reg0[1] = out->reg0[2] = a8;
+    out->reg0[3] = 255;
+  }
+  if (shape->lut && material->t_from_normal) {
+    /* t = c0 + k.N with V = -forward and L = -direction constant over the mesh (an orthographic
+       camera, a directional light): c0 = -V.L, k = -d V, folded with the LUT's texel-centre
+       remap s = t (W-1)/W + 0.5/W into row 0 of the texture matrix (pass_planner_textures.cpp). */
+    const double n = material->lut_size, scale = (n - 1) / n, offset = 0.5 / n;
+    double V[3], L[3];
+    int r, c;
+    for (i = 0; i < 3; ++i) {
+      V[i] = -view->forward[i];
+      L[i] = -(double)light->direction[i];
+    }
+    for (r = 0; r < 3; ++r)
+      for (c = 0; c < 4; ++c) out->lut_matrix[r][c] = 0.0f;
+    for (c = 0; c < 3; ++c) out->lut_matrix[0][c] = (float)(-material->distortion * V[c] * scale);
+    out->lut_matrix[0][3] = (float)(-ltr_dot(V, L) * scale + offset);
+  }
+  out->translucency_scale = st / sd;
+  out->diffuse_scale = sd;
+  out->translucency_saturates = trans_mag > 4;
+  out->diffuse_saturates = diffuse_mag > 4;
+}
+
+void ltr_pass_setup(const ltr_scene* scene, const ltr_material* material,
+                    const ltr_pass_shape* shape, const ltr_view* view, const ltr_light* lights,
+                    const ltr_light_range* ranges, ltr_pass_state* out) {
+  if (shape->diffuse_only) {
+    ltr_diffuse_pass(scene, shape, view, lights, ranges, out);
+  } else {
+    ltr_light_pass(scene, material, shape, view, lights, ranges, out);
+  }
+}

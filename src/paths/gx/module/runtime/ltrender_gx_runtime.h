@@ -1,0 +1,147 @@
+/* The per-frame maths of a GX module (`ltrender export gx --format module`): what ltrender's gx
+   planner (src/paths/gx/pass_planner.cpp) computes at export time, computed by the game each
+   frame from its camera and lights. Plain C99 over plain types (no libogc, no allocation), so
+   the same text compiles for the console and, in ltrender's tests, on the host, where its
+   results drive ltrender's GX emulator (tests/gx_module_test.cpp).
+
+   Every operation is in double and in the order the planner uses (glm's dot is
+   (x x' + y y') + z z', normalize is v * (1 / sqrt(v.v)), lookAt's rows are s, u, -f), so the
+   floats and bytes it hands to GX are the very ones `export gx --format c` prints for that frame.
+   Compile it with -ffp-contract=off (GCC fuses a*b+c into one PowerPC fmadd by default, which
+   rounds once where ltrender rounds twice: the results would then differ in the last bit). */
+#ifndef LTRENDER_GX_RUNTIME_H
+#define LTRENDER_GX_RUNTIME_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Hardware lights per pass: the XF sums up to 8 in one channel [OGC gx.h L178-187]. */
+#define LTR_MAX_LIGHTS 8
+
+/* The camera as guLookAt takes it, in world space. */
+typedef struct {
+  float eye[3], target[3], up[3];
+} ltr_camera;
+
+/* The view the XF lights in: eye space is the world rotated by `rotation` about the eye. */
+typedef struct {
+  double eye[3];
+  double rotation[3][3]; /* world -> eye, rows s, u, -f as glm::lookAt builds them */
+  double forward[3];     /* normalize(target - eye) */
+  int orthographic;      /* V = -forward everywhere; else V = normalize(eye - P) */
+} ltr_view;
+
+/* One light as the game keeps it, world space. A point light uses `position`, a directional
+   light `direction` (where its light travels). `color` is linear and may exceed 1 (intensity
+   included); `translucency_scale` is the seed's per-light s. */
+typedef struct {
+  float position[3];
+  float direction[3];
+  float color[3];
+  float translucency_scale;
+} ltr_light;
+
+/* What the export fixed about a light: its type and distance attenuation 1 / (kc + kl d + kq d^2).
+ */
+typedef struct {
+  int point;
+  double kc, kl, kq;
+} ltr_light_kind;
+
+/* An object's vertices as the game sends them: world-space positions and normals (xyz per
+   vertex), the baked thickness colour (rgba per vertex, or 0 when the material has none), the
+   UVs (uv per vertex, or 0), and the triangles as a list of vertex indices. The colours and UVs
+   must be there where a pass sends them (its vertex format declares GX_VA_CLR0 / a GX_TEX_ST). */
+typedef struct {
+  const float* positions;
+  const float* normals;
+  const unsigned char* colors;
+  const float* uvs;
+  int vertex_count;
+  const unsigned short* indices;
+  int index_count;
+} ltr_mesh;
+
+/* What one light does at the vertices that can be seen: the largest attenuation and the largest
+   att x max(N.L, 0). The TEV scales are chosen from it. */
+typedef struct {
+  double max_attenuation, max_diffuse;
+} ltr_light_range;
+
+/* One hardware light object: eye-space position, colour normalised to 255 at its largest
+   component, and the distance coefficients with the rest of its magnitude divided in. */
+typedef struct {
+  float position[3];
+  unsigned char color[4];
+  float k[3];
+} ltr_light_object;
+
+/* Everything a pass function sets that changes from frame to frame. */
+typedef struct {
+  ltr_light_object light[LTR_MAX_LIGHTS]; /* by hardware slot GX_LIGHTn */
+  unsigned char ambient[2][4];            /* GX_COLOR0A0's and GX_COLOR1A1's ambient register */
+  unsigned char reg0[4];                  /* GX_TEVREG0 = 255 a / (a + s) */
+  float lut_matrix[3][4];                 /* t from the normal: the texgen matrix (rows 0, 1) */
+  int translucency_scale, diffuse_scale;  /* the TEV scales, 1, 2 or 4 */
+  int translucency_saturates, diffuse_saturates; /* the light needs more than x4 */
+} ltr_pass_state;
+
+/* What the export fixed about a material. `tint` is the thickness tint where the thickness comes
+   per vertex or from a map (it then rides in the light colour), 1 otherwise. */
+typedef struct {
+  double albedo[3], tint[3];
+  double ambient, distortion; /* a, d */
+  int normalize_h;
+  double t_max;      /* the thickness the material register's 255 stands for */
+  int lut_size;      /* W texels */
+  int t_from_normal; /* t=texgen: t through a texture matrix from the raw normal */
+} ltr_material;
+
+/* What the export fixed about one pass (which stages and lights it has). */
+typedef struct {
+  int diffuse_only; /* one diffuse stage for lights [light, light + light_count) */
+  int light, light_count;
+  int translucent; /* COLOR0 carries the translucency */
+  int lut;         /* stage 0 reads the lobe LUT */
+} ltr_pass_shape;
+
+/* What the export fixed about the scene. */
+typedef struct {
+  const ltr_light_kind* kinds;
+  int light_count;
+  double ambient_light[3];
+} ltr_scene;
+
+/* The view of a camera (glm::lookAt from the origin towards the camera's forward). */
+void ltr_view_of(const ltr_camera* camera, int orthographic, ltr_view* view);
+
+/* Widens `range` by the vertices of `mesh` that can be seen (N.V >= -0.2: the back faces hide
+   behind the front, the slack keeps the silhouette). Start from {0, 0}.
+   Cost per vertex (flops counting each add, multiply, divide, negate; divisions in brackets):
+   perspective camera and point light about 45 (7) and 2 square roots; a directional light about
+   30 (3) and 1 square root; an orthographic camera saves 14 flops and a square root. */
+void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
+                        const ltr_mesh* mesh, ltr_light_range* range);
+
+/* The per-vertex t of one light, t = dot(V, -(L + N d)) unsaturated (the LUT's clamp saturates
+   it per pixel), into t[0 .. vertex_count): V = the unit vector from the vertex to the eye
+   (perspective) or -forward (orthographic), L = the unit vector from the vertex to a point
+   light or -direction, N the vertex's world-space normal as sent, all in world space.
+   Cost per vertex, counted as for ltr_light_range_of: perspective camera and point light about
+   45 flops (7 divisions) and 2 square roots; a directional light about 30 (3) and 1 square root;
+   an orthographic camera saves 14 flops and a square root; a material that normalises H adds 11
+   flops (3 divisions) and a square root. */
+void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
+                const ltr_material* material, const ltr_mesh* mesh, float* t);
+
+/* One pass's per-frame state from the view, the lights and their ranges (one per light). */
+void ltr_pass_setup(const ltr_scene* scene, const ltr_material* material,
+                    const ltr_pass_shape* shape, const ltr_view* view, const ltr_light* lights,
+                    const ltr_light_range* ranges, ltr_pass_state* out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

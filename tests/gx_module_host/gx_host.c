@@ -1,0 +1,235 @@
+/* The recorder behind the host gccore.h (see there): every call appends its libogc text. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gccore.h"
+
+static char* program;
+static size_t length, capacity;
+static char top[16 << 20];
+
+static void append(const char* format, ...) {
+  char line[4096];
+  va_list args;
+  int n;
+  va_start(args, format);
+  n = vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  if (length + (size_t)n + 1 > capacity) {
+    capacity = (length + (size_t)n + 1) * 2;
+    program = realloc(program, capacity);
+  }
+  memcpy(program + length, line, (size_t)n + 1);
+  length += (size_t)n;
+}
+
+/* Objects and arrays by address: named o<N> and a<N> as first seen. */
+static const void* objects[64];
+static int object_count;
+static const void* arrays[16];
+static int array_count;
+
+static int object_name(const void* p, const char* type) {
+  int i;
+  for (i = 0; i < object_count; ++i)
+    if (objects[i] == p) return i;
+  objects[object_count] = p;
+  append("  %s o%d;\n", type, object_count);
+  return object_count++;
+}
+
+/* %.9g reads back as the same float; the interpreter needs a '.' or an exponent before 'f'. */
+static const char* flt(char* buf, f32 v) {
+  snprintf(buf, 40, "%.9g", (double)v);
+  if (!strpbrk(buf, ".en")) strcat(buf, ".0");
+  strcat(buf, "f");
+  return buf;
+}
+
+void ltr_host_reset(void) {
+  length = 0;
+  if (program) program[0] = 0;
+  array_count = 0;
+  top[0] = 0;
+}
+void ltr_host_begin(const char* function) {
+  object_count = 0;
+  append("void %s(void) {\n", function);
+}
+void ltr_host_end(void) {
+  append("}\n");
+}
+const char* ltr_host_program(void) {
+  static char* whole;
+  free(whole);
+  whole = malloc(strlen(top) + length + 1);
+  strcpy(whole, top);
+  memcpy(whole + strlen(top), program ? program : "", length + 1);
+  return whole;
+}
+
+static void light3(const char* f, GXLightObj* o, f32 x, f32 y, f32 z) {
+  char a[40], b[40], c[40];
+  const int n = object_name(o, "GXLightObj");
+  append("  %s(&o%d, %s, %s, %s);\n", f, n, flt(a, x), flt(b, y), flt(c, z));
+}
+
+void GX_ClearVtxDesc(void) {
+  append("  GX_ClearVtxDesc();\n");
+}
+void GX_SetVtxDesc(u8 attr, u8 type) {
+  append("  GX_SetVtxDesc(%d, %d);\n", attr, type);
+}
+void GX_SetVtxAttrFmt(u8 f, u32 attr, u32 type, u32 size, u32 frac) {
+  append("  GX_SetVtxAttrFmt(%d, %u, %u, %u, %u);\n", f, attr, type, size, frac);
+}
+void GX_InitLightPos(GXLightObj* o, f32 x, f32 y, f32 z) {
+  light3("GX_InitLightPos", o, x, y, z);
+}
+void GX_InitLightDir(GXLightObj* o, f32 x, f32 y, f32 z) {
+  light3("GX_InitLightDir", o, x, y, z);
+}
+void GX_InitLightAttnK(GXLightObj* o, f32 x, f32 y, f32 z) {
+  light3("GX_InitLightAttnK", o, x, y, z);
+}
+void GX_InitLightColor(GXLightObj* o, GXColor c) {
+  const int n = object_name(o, "GXLightObj");
+  append("  GX_InitLightColor(&o%d, (GXColor){%d, %d, %d, %d});\n", n, c.r, c.g, c.b, c.a);
+}
+void GX_InitLightSpot(GXLightObj* o, f32 cut_off, u8 fn) {
+  char a[40];
+  const int n = object_name(o, "GXLightObj");
+  append("  GX_InitLightSpot(&o%d, %s, %d);\n", n, flt(a, cut_off), fn);
+}
+void GX_LoadLightObj(const GXLightObj* o, u8 id) {
+  append("  GX_LoadLightObj(&o%d, %d);\n", object_name(o, "GXLightObj"), id);
+}
+void GX_SetNumChans(u8 n) {
+  append("  GX_SetNumChans(%d);\n", n);
+}
+void GX_SetChanCtrl(s32 ch, u8 en, u8 amb, u8 mat, u8 lit, u8 diff, u8 attn) {
+  append("  GX_SetChanCtrl(%d, %d, %d, %d, %d, %d, %d);\n", ch, en, amb, mat, lit, diff, attn);
+}
+void GX_SetChanAmbColor(s32 ch, GXColor c) {
+  append("  GX_SetChanAmbColor(%d, (GXColor){%d, %d, %d, %d});\n", ch, c.r, c.g, c.b, c.a);
+}
+void GX_SetChanMatColor(s32 ch, GXColor c) {
+  append("  GX_SetChanMatColor(%d, (GXColor){%d, %d, %d, %d});\n", ch, c.r, c.g, c.b, c.a);
+}
+void GX_LoadTexMtxImm(Mtx m, u32 id, u8 type) {
+  char v[12][40];
+  static int count;
+  int i;
+  for (i = 0; i < 12; ++i) flt(v[i], m[i / 4][i % 4]);
+  append("  Mtx m%d = {{%s, %s, %s, %s}, {%s, %s, %s, %s}, {%s, %s, %s, %s}};\n", count, v[0], v[1],
+         v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]);
+  append("  GX_LoadTexMtxImm(m%d, %u, %d);\n", count++, id, type);
+}
+void GX_SetNumTexGens(u32 n) {
+  append("  GX_SetNumTexGens(%u);\n", n);
+}
+void GX_SetTexCoordGen(u16 coord, u32 type, u32 src, u32 mtx) {
+  append("  GX_SetTexCoordGen(%d, %u, %u, %u);\n", coord, type, src, mtx);
+}
+
+/* Bytes of a texture in GX tile order: I8 8x4 tiles of 32 bytes, RGB565 4x4 of 32, RGBA8 4x4
+   of 64 [OGC gx.c GX_GetTexBufferSize]. */
+static size_t texture_bytes(int w, int h, int fmt) {
+  const int tw = fmt == GX_TF_I8 ? 8 : 4, th = 4;
+  const size_t tile = fmt == GX_TF_RGBA8 ? 64 : 32;
+  return (size_t)((w + tw - 1) / tw) * (size_t)((h + th - 1) / th) * tile;
+}
+
+void GX_InitTexObj(GXTexObj* o, void* image, u16 w, u16 h, u8 fmt, u8 ws, u8 wt, u8 mip) {
+  int a;
+  const int n = object_name(o, "GXTexObj");
+  for (a = 0; a < array_count; ++a)
+    if (arrays[a] == image) break;
+  if (a == array_count) {
+    const size_t bytes = texture_bytes(w, h, fmt);
+    const u8* p = image;
+    size_t i, at = strlen(top);
+    arrays[array_count++] = image;
+    at += (size_t)snprintf(top + at, sizeof top - at, "u8 a%d[%zu] ATTRIBUTE_ALIGN(32) = {", a,
+                           bytes);
+    for (i = 0; i < bytes && at + 8 < sizeof top; ++i)
+      at += (size_t)snprintf(top + at, sizeof top - at, "%s%d", i ? "," : "", p[i]);
+    snprintf(top + at, sizeof top - at, "};\n");
+  }
+  append("  GX_InitTexObj(&o%d, a%d, %d, %d, %d, %d, %d, %d);\n", n, a, w, h, fmt, ws, wt, mip);
+}
+void GX_LoadTexObj(GXTexObj* o, u8 map) {
+  append("  GX_LoadTexObj(&o%d, %d);\n", object_name(o, "GXTexObj"), map);
+}
+void GX_SetNumTevStages(u8 n) {
+  append("  GX_SetNumTevStages(%d);\n", n);
+}
+void GX_SetTevColor(u8 reg, GXColor c) {
+  append("  GX_SetTevColor(%d, (GXColor){%d, %d, %d, %d});\n", reg, c.r, c.g, c.b, c.a);
+}
+void GX_SetTevOrder(u8 s, u8 coord, u32 map, u8 color) {
+  append("  GX_SetTevOrder(%d, %d, %u, %d);\n", s, coord, map, color);
+}
+void GX_SetTevColorIn(u8 s, u8 a, u8 b, u8 c, u8 d) {
+  append("  GX_SetTevColorIn(%d, %d, %d, %d, %d);\n", s, a, b, c, d);
+}
+void GX_SetTevAlphaIn(u8 s, u8 a, u8 b, u8 c, u8 d) {
+  append("  GX_SetTevAlphaIn(%d, %d, %d, %d, %d);\n", s, a, b, c, d);
+}
+void GX_SetTevColorOp(u8 s, u8 op, u8 bias, u8 scale, u8 clamp, u8 reg) {
+  append("  GX_SetTevColorOp(%d, %d, %d, %d, %d, %d);\n", s, op, bias, scale, clamp, reg);
+}
+void GX_SetTevAlphaOp(u8 s, u8 op, u8 bias, u8 scale, u8 clamp, u8 reg) {
+  append("  GX_SetTevAlphaOp(%d, %d, %d, %d, %d, %d);\n", s, op, bias, scale, clamp, reg);
+}
+void GX_SetTevKAlphaSel(u8 s, u8 sel) {
+  append("  GX_SetTevKAlphaSel(%d, %d);\n", s, sel);
+}
+void GX_SetBlendMode(u8 type, u8 src, u8 dst, u8 op) {
+  append("  GX_SetBlendMode(%d, %d, %d, %d);\n", type, src, dst, op);
+}
+void GX_SetZMode(u8 e, u8 f, u8 u) {
+  append("  GX_SetZMode(%d, %d, %d);\n", e, f, u);
+}
+void GX_SetAlphaCompare(u8 c0, u8 r0, u8 op, u8 c1, u8 r1) {
+  append("  GX_SetAlphaCompare(%d, %d, %d, %d, %d);\n", c0, r0, op, c1, r1);
+}
+void GX_SetCullMode(u8 mode) {
+  append("  GX_SetCullMode(%d);\n", mode);
+}
+
+/* The draw is not recorded: the emulator takes geometry and matrices from the scene. */
+void GX_LoadPosMtxImm(Mtx m, u32 id) {
+  (void)m, (void)id;
+}
+void GX_LoadNrmMtxImm(Mtx m, u32 id) {
+  (void)m, (void)id;
+}
+void GX_SetCurrentMtx(u32 id) {
+  (void)id;
+}
+void GX_Begin(u8 p, u8 f, u16 n) {
+  (void)p, (void)f, (void)n;
+}
+void GX_Position3f32(f32 x, f32 y, f32 z) {
+  (void)x, (void)y, (void)z;
+}
+void GX_Normal3f32(f32 x, f32 y, f32 z) {
+  (void)x, (void)y, (void)z;
+}
+void GX_Color4u8(u8 r, u8 g, u8 b, u8 a) {
+  (void)r, (void)g, (void)b, (void)a;
+}
+void GX_TexCoord1f32(f32 s) {
+  (void)s;
+}
+void GX_TexCoord2f32(f32 s, f32 t) {
+  (void)s, (void)t;
+}
+void GX_End(void) {}
+void DCFlushRange(void* p, u32 n) {
+  (void)p, (void)n;
+}
+void GX_InvalidateTexAll(void) {}
