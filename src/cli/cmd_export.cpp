@@ -6,6 +6,7 @@
 #include "paths/gx/c_exporter.h"
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_budget.h"
+#include "render/evaluate.h"
 #include "render/session.h"
 
 namespace lt::cli {
@@ -76,11 +77,10 @@ Action add_export(CLI::App& app) {
     f.height = scene.height;
     {
       RenderSession session(scene, scene.width, scene.height);
-      auto ref = session.build(path_with_role(PathRole::GroundTruth), "");
-      ref->frame();
+      const Image reference = render_reference(session);
       auto gxp = session.build(info, v);
       gxp->frame();
-      f.error = compare_images(gxp->result(), ref->result(), TestEncoding::kUnorm8).covered;
+      f.error = compare_with_reference(*gxp, reference).covered;
     }
     f.budget = gx::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
     const std::string text = gx::export_c(programs, f);
