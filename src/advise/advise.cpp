@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
@@ -20,18 +21,24 @@ namespace lt::advise {
 
 const char* to_string(Stat s) {
   switch (s) {
-    case Stat::Max: return "max";
-    case Stat::P99: return "p99";
-    case Stat::Mean: return "mean";
+    case Stat::Max:
+      return "max";
+    case Stat::P99:
+      return "p99";
+    case Stat::Mean:
+      return "mean";
   }
   return "max";
 }
 
 double stat_of(const ErrorStats& e, Stat s) {
   switch (s) {
-    case Stat::Max: return e.max_lsb;
-    case Stat::P99: return e.p99_lsb;
-    case Stat::Mean: return e.mean_lsb;
+    case Stat::Max:
+      return e.max_lsb;
+    case Stat::P99:
+      return e.p99_lsb;
+    case Stat::Mean:
+      return e.mean_lsb;
   }
   return e.max_lsb;
 }
@@ -169,7 +176,8 @@ bool cheaper(const std::vector<CandidateResult>& cs, size_t a, size_t b, size_t 
 Advice run_advise(const AdviseOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   if (!std::isfinite(o.max_lsb) || o.max_lsb < 0)
-    throw InputError("--max-lsb", std::to_string(o.max_lsb), "the budget must be a finite LSB >= 0");
+    throw InputError("--max-lsb", std::to_string(o.max_lsb),
+                     "the budget must be a finite LSB >= 0");
   const Target target = find_target(o.profile);
   const PathInfo& path = *target.path;
   const Scene scene = load_scene(o.scene_file);
@@ -180,7 +188,7 @@ Advice run_advise(const AdviseOptions& o) {
   a.width = o.width;
   a.height = o.height > 0 ? o.height
                           : std::max(1, static_cast<int>(std::lround(static_cast<double>(o.width) *
-                                                                    scene.height / scene.width)));
+                                                                     scene.height / scene.width)));
   check_image_size(a.width, a.height, o.scene_file.string(), "--width/--height");
   const VariantSpace space = variant_space(path, scene);
   a.left_out = space.left_out;
@@ -220,6 +228,8 @@ Advice run_advise(const AdviseOptions& o) {
   // Every candidate built once for its cost and checked against the profile: both known before
   // anything is rendered, which is what lets the search skip what cannot be the cheapest.
   auto& cs = a.candidates;
+  // The paths built for their cost, kept for their render while the scene's session lives.
+  std::vector<std::unique_ptr<Path>> built(space.candidates.size());
   for (const Candidate& cand : space.candidates) {
     CandidateResult r;
     r.candidate = cand;
@@ -228,12 +238,15 @@ Advice run_advise(const AdviseOptions& o) {
     r.non_finite.assign(nm, 0);
     r.hard.assign(nm, std::nullopt);
     if (path.refusal) r.refused = path.refusal(scene, cand.variant);
-    if (r.refused.empty()) {
+    // A twin that is never cheaper is pruned without a look (unless exhaustive).
+    if (!o.exhaustive && !cand.never_cheaper.empty()) r.pruned = cand.never_cheaper;
+    if (r.refused.empty() && r.pruned.empty()) {
       std::ostringstream sink;
       std::string overrun;
       BudgetRequest rq{cand.variant, target.profile, false, &sink, &overrun};
       if (!path.budget(scene, rq)) r.over_profile = overrun.empty() ? "over " + o.profile : overrun;
-      const WorkModel work = session->build(path, cand.variant, target.options)->work();
+      built[cs.size()] = session->build(path, cand.variant, target.options);
+      const WorkModel work = built[cs.size()]->work();
       for (size_t m : shown) {
         r.cost[m] = {material_ops(work, coverage, m),
                      scene.materials[m].translucency ? cand.texture_bytes : 0.0};
@@ -261,12 +274,8 @@ Advice run_advise(const AdviseOptions& o) {
   HardCaseRunner runner(path, target.options);
   for (size_t i : order) {
     CandidateResult& c = cs[i];
-    if (!c.refused.empty() || !c.over_profile.empty()) continue;
+    if (!c.refused.empty() || !c.over_profile.empty() || !c.pruned.empty()) continue;
     if (!o.exhaustive && i != 0) {
-      if (!c.candidate.never_cheaper.empty()) {
-        c.pruned = c.candidate.never_cheaper;
-        continue;
-      }
       const bool dearer_everywhere = std::all_of(shown.begin(), shown.end(), [&](size_t m) {
         return pick[m] && cs[*pick[m]].cost[m] < c.cost[m];
       });
@@ -280,28 +289,32 @@ Advice run_advise(const AdviseOptions& o) {
       }
     }
     {
-      auto built = session->build(path, c.candidate.variant, target.options);
-      built->frame();
-      const Image image = built->result();
+      if (!built[i]) built[i] = session->build(path, c.candidate.variant, target.options);
+      built[i]->frame();
+      const Image image = built[i]->result();
       for (size_t m : shown) {
-        const Comparison cmp = compare_material(image, reference, test_encoding(*built),
+        const Comparison cmp = compare_material(image, reference, test_encoding(*built[i]),
                                                 material_of_pixel, static_cast<int>(m));
         c.error[m] = cmp.covered;
         c.non_finite[m] = non_finite_pixels(cmp);
       }
       c.rendered = true;
+      built[i].reset();  // rendered once: its GL objects are not needed again
     }
     for (size_t m : shown) {
       if (!c.admissible(m) || stat_of(c.error[m], o.stat) > o.max_lsb) continue;
       if (pick[m] && !cheaper(cs, i, *pick[m], m)) continue;
       // A new pick for m, if it survives the hard cases m reaches; those need sessions of
       // their own, so the scene's is closed meanwhile (its reference and map are kept).
+      // The paths built in it go with it (their GL objects are the session's).
+      for (auto& b : built) b.reset();
       session.reset();
       check_hard_cases(c, m, a.materials[static_cast<size_t>(advice_of[m])], runner);
       session.emplace(scene, a.width, a.height);
       if (c.admissible(m)) pick[m] = i;
     }
   }
+  for (auto& b : built) b.reset();
   session.reset();
 
   // The front and, without a pick, the closest candidate: every member checked on the hard
@@ -325,8 +338,7 @@ Advice run_advise(const AdviseOptions& o) {
       if (!ma.front.empty()) ma.closest = ma.front.back();
     }
   }
-  a.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return a;
 }
 

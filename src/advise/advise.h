@@ -54,9 +54,9 @@ struct CandidateResult {
   std::string over_profile;  // the budget's first overrun; not rendered
   std::string pruned;        // why it was not rendered (empty when it was)
   bool rendered = false;
-  std::vector<Cost> cost;  // per material (scene.materials order)
-  std::vector<ErrorStats> error;       // per material, when rendered
-  std::vector<size_t> non_finite;      // per material, when rendered
+  std::vector<Cost> cost;                                    // per material (scene.materials order)
+  std::vector<ErrorStats> error;                             // per material, when rendered
+  std::vector<size_t> non_finite;                            // per material, when rendered
   std::vector<std::optional<std::vector<HardResult>>> hard;  // per material, once checked
   // For `material`: a choice (built, within the profile, rendered, finite on the scene and on
   // every hard case checked so far).

@@ -36,14 +36,14 @@ std::string against_default(const Advice& a, size_t m, size_t pick) {
   const CandidateResult& d = a.candidates.front();
   const CandidateResult& p = a.candidates[pick];
   if (pick == 0) return "the pick is the default";
-  if (!d.rendered) return "the default " + a.default_variant + " was not rendered (" +
-                          (d.over_profile.empty() ? d.refused : d.over_profile) + ")";
+  if (!d.rendered)
+    return "the default " + a.default_variant + " was not rendered (" +
+           (d.over_profile.empty() ? d.refused : d.over_profile) + ")";
   const double saved = d.cost[m].ops - p.cost[m].ops;
   const double pct = d.cost[m].ops > 0 ? 100.0 * saved / d.cost[m].ops : 0.0;
   return "default " + a.default_variant + ": " + cost_text(d.cost[m]) + ", " +
-         error_text(d.error[m]) + "; the pick saves " + fixed(saved, 0) + " ops (" +
-         fixed(pct, 1) + "%) and " + fixed(d.cost[m].texture_bytes - p.cost[m].texture_bytes, 0) +
-         " texture bytes";
+         error_text(d.error[m]) + "; the pick saves " + fixed(saved, 0) + " ops (" + fixed(pct, 1) +
+         "%) and " + fixed(d.cost[m].texture_bytes - p.cost[m].texture_bytes, 0) + " texture bytes";
 }
 
 nlohmann::ordered_json error_json(const ErrorStats& e) {
@@ -97,7 +97,8 @@ std::string to_text(const Advice& a) {
           << cost_text(c.cost[m]) << ", " << error_text(c.error[m]) << "\n";
     }
     std::string hard;
-    for (const HardCase& h : ma.hard_cases) hard += (hard.empty() ? "" : ", ") + h.file.stem().string();
+    for (const HardCase& h : ma.hard_cases)
+      hard += (hard.empty() ? "" : ", ") + h.file.stem().string();
     out << "  hard cases reached: " << (hard.empty() ? "none" : hard) << "\n";
     for (const CandidateResult& c : a.candidates) {
       const std::string why = c.hard_failure(m);
@@ -109,7 +110,7 @@ std::string to_text(const Advice& a) {
   }
   bool header = false;
   for (const CandidateResult& c : a.candidates) {
-    const std::string why = !c.refused.empty() ? "refused: " + c.refused
+    const std::string why = !c.refused.empty()        ? "refused: " + c.refused
                             : !c.over_profile.empty() ? "over the profile: " + c.over_profile
                                                       : "";
     if (why.empty()) continue;
@@ -121,10 +122,11 @@ std::string to_text(const Advice& a) {
   std::vector<std::pair<std::string, std::vector<std::string>>> groups;
   for (const CandidateResult& c : a.candidates) {
     if (c.pruned.empty()) continue;
-    const std::string reason =
-        c.candidate.never_cheaper.empty() ? c.pruned : "the same image as the variant without "
-                                                       ":guards=all, from more instructions "
-                                                       "(arb_guards.h)";
+    const std::string reason = c.candidate.never_cheaper.empty()
+                                   ? c.pruned
+                                   : "the same image as the variant without "
+                                     ":guards=all, from more instructions "
+                                     "(arb_guards.h)";
     auto g = std::find_if(groups.begin(), groups.end(),
                           [&](const auto& x) { return x.first == reason; });
     if (g == groups.end()) g = groups.insert(groups.end(), {reason, {}});

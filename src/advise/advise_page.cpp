@@ -76,12 +76,18 @@ std::string chart(const Advice& a, const MaterialAdvice& ma) {
     const bool on_front = std::find(ma.front.begin(), ma.front.end(), i) != ma.front.end();
     const bool pick = ma.pick && *ma.pick == i;
     const double e = stat_of(c.error[m], stat);
-    s << "<circle class=\"" << (pick ? "pick" : on_front ? "on-front" : "candidate") << "\" cx=\""
-      << num(x(c.cost[m].ops)) << "\" cy=\"" << num(y(e)) << "\" r=\"" << (pick ? 7 : 4)
-      << "\" fill=\"" << (pick ? "#d22" : on_front ? "#26a" : "#aaa") << "\"><title>"
-      << markup_escape(c.candidate.variant) << ": " << num(c.cost[m].ops) << " ops, "
-      << num(c.cost[m].texture_bytes) << " texture bytes, " << to_string(stat) << " " << num(e)
-      << " LSB</title></circle>\n";
+    s << "<circle class=\""
+      << (pick       ? "pick"
+          : on_front ? "on-front"
+                     : "candidate")
+      << "\" cx=\"" << num(x(c.cost[m].ops)) << "\" cy=\"" << num(y(e)) << "\" r=\""
+      << (pick ? 7 : 4) << "\" fill=\""
+      << (pick       ? "#d22"
+          : on_front ? "#26a"
+                     : "#aaa")
+      << "\"><title>" << markup_escape(c.candidate.variant) << ": " << num(c.cost[m].ops)
+      << " ops, " << num(c.cost[m].texture_bytes) << " texture bytes, " << to_string(stat) << " "
+      << num(e) << " LSB</title></circle>\n";
     if (pick) {
       s << "<text class=\"pick-label\" x=\"" << num(x(c.cost[m].ops) + 10) << "\" y=\""
         << num(y(e) - 10) << "\">" << markup_escape(c.candidate.variant) << "</text>\n";
@@ -109,9 +115,9 @@ std::string advise_page(const Advice& a) {
        "pick; dashed: the budget.</p>\n";
   for (const MaterialAdvice& ma : a.materials) {
     s << "<section class=\"material\">\n<h2>material " << markup_escape(ma.name) << "</h2>\n";
-    s << "<p>" << (ma.pick ? "pick: <b>" + markup_escape(a.candidates[*ma.pick].candidate.variant) +
-                                 "</b>"
-                           : std::string("no candidate within the budget"))
+    s << "<p>"
+      << (ma.pick ? "pick: <b>" + markup_escape(a.candidates[*ma.pick].candidate.variant) + "</b>"
+                  : std::string("no candidate within the budget"))
       << "</p>\n";
     s << chart(a, ma) << "</section>\n";
   }

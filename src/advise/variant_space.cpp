@@ -12,9 +12,12 @@ namespace {
 
 double bytes_per_texel(model::LutFormat f) {
   switch (f) {
-    case model::LutFormat::U8: return 1;   // GL_LUMINANCE8
-    case model::LutFormat::F16: return 2;  // GL_LUMINANCE16F_ARB
-    case model::LutFormat::F32: return 4;  // GL_LUMINANCE32F_ARB
+    case model::LutFormat::U8:
+      return 1;  // GL_LUMINANCE8
+    case model::LutFormat::F16:
+      return 2;  // GL_LUMINANCE16F_ARB
+    case model::LutFormat::F32:
+      return 4;  // GL_LUMINANCE32F_ARB
   }
   return 4;
 }
@@ -37,8 +40,7 @@ VariantSpace arbfp_space() {
   keys.push_back(v);
   v = {};
   v.method = PowMethod::Lut;
-  for (model::LutFormat f :
-       {model::LutFormat::U8, model::LutFormat::F16, model::LutFormat::F32}) {
+  for (model::LutFormat f : {model::LutFormat::U8, model::LutFormat::F16, model::LutFormat::F32}) {
     for (int n : kLutWidths) {
       v.lut_size = n;
       v.lut_format = f;
@@ -48,7 +50,8 @@ VariantSpace arbfp_space() {
   for (const arbfp::PowVariant& key : keys) {
     Candidate c;
     c.variant = key.name();
-    if (key.method == PowMethod::Lut) c.texture_bytes = key.lut_size * bytes_per_texel(key.lut_format);
+    if (key.method == PowMethod::Lut)
+      c.texture_bytes = key.lut_size * bytes_per_texel(key.lut_format);
     s.candidates.push_back(c);
   }
   const size_t plain = s.candidates.size();
@@ -57,8 +60,10 @@ VariantSpace arbfp_space() {
     guarded.all_guards = true;
     Candidate c = s.candidates[i];
     c.variant = guarded.name();
-    c.never_cheaper = "every hard-case guard, also those the scene cannot trigger: the same image "
-                      "as " + s.candidates[i].variant + " from more instructions (arb_guards.h)";
+    c.never_cheaper =
+        "every hard-case guard, also those the scene cannot trigger: the same image "
+        "as " +
+        s.candidates[i].variant + " from more instructions (arb_guards.h)";
     c.same_image_as = s.candidates[i].variant;
     s.candidates.push_back(c);
   }
@@ -77,7 +82,8 @@ VariantSpace gx_space(const Scene& scene) {
     }
   }
   std::vector<gx::GxVariant> keys;
-  for (gx::GxVariant::TexCoord t : {gx::GxVariant::TexCoord::Vertex, gx::GxVariant::TexCoord::Texgen}) {
+  for (gx::GxVariant::TexCoord t :
+       {gx::GxVariant::TexCoord::Vertex, gx::GxVariant::TexCoord::Texgen}) {
     for (int n : kLutWidths) {
       gx::GxVariant v;
       v.t = t;
@@ -89,7 +95,8 @@ VariantSpace gx_space(const Scene& scene) {
   xf.lobe = gx::GxVariant::Lobe::XfSpec;
   keys.push_back(xf);
   // The default (t=vertex, 256 texels) first.
-  std::stable_partition(keys.begin(), keys.end(), [](const gx::GxVariant& v) { return v == gx::GxVariant{}; });
+  std::stable_partition(keys.begin(), keys.end(),
+                        [](const gx::GxVariant& v) { return v == gx::GxVariant{}; });
   for (const bool rgb565 : {false, true}) {
     if (rgb565 && colour_map_texels == 0) break;
     for (gx::GxVariant v : keys) {
@@ -107,7 +114,8 @@ VariantSpace gx_space(const Scene& scene) {
   s.left_out.push_back(
       ":colors=round, :lights=round-each: which of Dolphin's two emulations models the console "
       "(gx-hardware.md §2.4, §2.5), not a choice a port makes");
-  s.left_out.push_back(":out=xfb: which image the path returns (the EFB or the TV's), not a program");
+  s.left_out.push_back(
+      ":out=xfb: which image the path returns (the EFB or the TV's), not a program");
   return s;
 }
 
@@ -130,14 +138,19 @@ VariantSpace combiners_space(const Scene& scene) {
 
 VariantSpace variant_space(const PathInfo& path, const Scene& scene) {
   VariantSpace s;
-  if (path.name == "arbfp") s = arbfp_space();
-  else if (path.name == "gx") s = gx_space(scene);
-  else if (path.name == "combiners") s = combiners_space(scene);
-  else LT_CHECK(false, "advise has no variant space for path " + path.name);
+  if (path.name == "arbfp")
+    s = arbfp_space();
+  else if (path.name == "gx")
+    s = gx_space(scene);
+  else if (path.name == "combiners")
+    s = combiners_space(scene);
+  else
+    LT_CHECK(false, "advise has no variant space for path " + path.name);
   LT_CHECK(!s.candidates.empty() && s.candidates.front().variant == path.variants.front().name,
            "the default variant of " + path.name + " must come first");
-  s.left_out.push_back("thickness map or vertex thickness: the scene decides (its \"thickness\" "
-                       "key), no variant of the path switches it");
+  s.left_out.push_back(
+      "thickness map or vertex thickness: the scene decides (its \"thickness\" "
+      "key), no variant of the path switches it");
   return s;
 }
 

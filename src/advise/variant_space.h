@@ -24,8 +24,8 @@ struct Candidate {
 };
 
 struct VariantSpace {
-  std::vector<Candidate> candidates;   // the path's default first
-  std::vector<std::string> left_out;   // axes not searched, each with why
+  std::vector<Candidate> candidates;  // the path's default first
+  std::vector<std::string> left_out;  // axes not searched, each with why
 };
 
 // The LUT widths searched on every LUT axis (arbfp pow=lut, gx lut=N): powers of two from 8 to

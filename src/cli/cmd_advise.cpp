@@ -43,7 +43,8 @@ Action add_advise(CLI::App& app) {
     static const std::map<std::string, advise::Stat> stats = {
         {"max", advise::Stat::Max}, {"p99", advise::Stat::P99}, {"mean", advise::Stat::Mean}};
     const auto s = stats.find(*stat);
-    if (s == stats.end()) throw InputError("--stat", *stat, "unknown figure (valid: max, p99, mean)");
+    if (s == stats.end())
+      throw InputError("--stat", *stat, "unknown figure (valid: max, p99, mean)");
     o->stat = s->second;
     std::size_t used = 0;
     try {
@@ -65,7 +66,8 @@ Action add_advise(CLI::App& app) {
         files = advise::write_programs(a, loaded, staging);
         write_text_file(staging / "index.html", advise::advise_page(a));
       });
-      for (const std::string& f : files) std::cout << "wrote " << (fs::path(*out_dir) / f).string() << "\n";
+      for (const std::string& f : files)
+        std::cout << "wrote " << (fs::path(*out_dir) / f).string() << "\n";
       std::cout << "wrote " << (fs::path(*out_dir) / "index.html").string() << "\n";
     }
     if (!a.every_material_has_pick()) {
@@ -79,7 +81,8 @@ Action add_advise(CLI::App& app) {
                                     " LSB"
                               : std::string("no candidate renders without a non-finite pixel"));
       }
-      throw CheckFailed("advise: no candidate within " + *max_lsb + " LSB " + *stat + " (" + closest + ")");
+      throw CheckFailed("advise: no candidate within " + *max_lsb + " LSB " + *stat + " (" +
+                        closest + ")");
     }
     return 0;
   };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "model/translucency.h"
 
@@ -11,7 +13,9 @@ double sg_exponent(double p) {
   return p / std::log(2.0) + 1 / std::log(2.0);
 }
 
-double fit_sg_exponent(double p) {
+namespace {
+
+double fit_sg_exponent_uncached(double p) {
   // Max error over a dense t grid; the fitted curve is smooth, 4097 samples resolve its peak.
   auto max_error = [p](double n) {
     double e = 0;
@@ -41,6 +45,22 @@ double fit_sg_exponent(double p) {
       a = c;
   }
   return (a + b) / 2;
+}
+
+}  // namespace
+
+// Memoised: the fit is a pure function of p and costs ~250k exp2/pow calls, and every build of a
+// pow=sg-fitted program (a budget, a render, each candidate `advise` costs) asks for it again.
+double fit_sg_exponent(double p) {
+  static std::mutex mutex;
+  static std::map<double, double> fitted;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = fitted.find(p); it != fitted.end()) return it->second;
+  }
+  const double n = fit_sg_exponent_uncached(p);
+  const std::lock_guard<std::mutex> lock(mutex);
+  return fitted.emplace(p, n).first->second;
 }
 
 double sg_curve(double t, double n) {
