@@ -8,8 +8,12 @@
 #include <cmath>
 #include <string>
 
+#include "advise/advise_page.h"
 #include "advise/material_error.h"
 #include "metrics/compare.h"
+#include "paths/common/gbuffer.h"
+#include "render/evaluate.h"
+#include "render/session.h"
 #include "scene/scene.h"
 #include "test_util.h"
 
@@ -38,6 +42,71 @@ TEST(AdviseMaterialError, OnlyTheMaterialsPixelsCount) {
 
 fs::path demo(const std::string& name) {
   return fs::path(LT_SOURCE_DIR) / "scenes" / (name + ".json");
+}
+
+// The material map lines up with the reference image (rows top first, as images are): on a
+// scene whose two cubes stand apart, every pixel a material's map entry names is covered in the
+// reference, and the materials' pixels add up to the reference's coverage.
+TEST(AdviseMaterialError, TheMaterialMapLinesUpWithTheReference) {
+  const Scene scene = load_scene(demo("coloured_cubes"));
+  ASSERT_EQ(scene.materials.size(), 2u);
+  RenderSession session(scene, 64, 48);
+  const Image reference = render_reference(session);
+  const std::vector<int> material = material_per_pixel(session.context());
+  size_t covered = 0;
+  for (size_t i = 0; i < material.size(); ++i) covered += is_covered(reference.rgba[i * 4 + 3]);
+  size_t sum = 0;
+  for (int m = 0; m < 2; ++m) {
+    const size_t shown = static_cast<size_t>(std::count(material.begin(), material.end(), m));
+    EXPECT_GT(shown, 0u);
+    const Comparison c = compare_material(reference, reference, TestEncoding::kFloat, material, m);
+    EXPECT_EQ(c.covered.pixels, shown) << "material " << m;
+    sum += c.covered.pixels;
+  }
+  EXPECT_EQ(sum, covered);
+}
+
+// The page draws one chart a material: every rendered finite candidate a circle, the front's
+// members blue, the pick red and labelled, the budget a dashed line.
+TEST(AdvisePage, OneChartAMaterialWithThePickMarked) {
+  Advice a;
+  a.options.max_lsb = 2;
+  a.options.profile = "ps_2_0";
+  a.path = "arbfp";
+  auto candidate = [](const std::string& name, double ops, double max_lsb, bool rendered) {
+    CandidateResult c;
+    c.candidate.variant = name;
+    c.rendered = rendered;
+    c.cost = {{ops, 0}};
+    c.error.resize(1);
+    c.error[0].max_lsb = max_lsb;
+    c.non_finite = {0};
+    c.hard.resize(1);
+    return c;
+  };
+  a.candidates = {candidate("pow=mul", 300, 0.5, true), candidate("pow=lut:16:u8", 100, 3.5, true),
+                  candidate("pow=lut:64:u8", 100, 1.5, true),
+                  candidate("pow=exact", 400, 0, false)};
+  MaterialAdvice m;
+  m.name = "skin";
+  m.front = {2, 0};
+  m.pick = 2;
+  a.materials = {m, m};
+  a.materials[1].name = "wax";
+  a.materials[1].pick.reset();
+  const std::string page = advise_page(a);
+  auto count = [&](const std::string& what) {
+    size_t n = 0;
+    for (size_t at = page.find(what); at != std::string::npos; at = page.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("<svg"), 2u);
+  EXPECT_EQ(count("<circle"), 6u);  // three rendered candidates a chart; pow=exact was not
+  EXPECT_EQ(count("class=\"pick\""), 1u);
+  EXPECT_EQ(count("class=\"on-front\""), 3u);  // pow=mul on both, pow=lut:64:u8 on wax's
+  EXPECT_EQ(count("class=\"budget\""), 2u);
+  EXPECT_NE(page.find("pick: <b>pow=lut:64:u8</b>"), std::string::npos);
+  EXPECT_NE(page.find("no candidate within the budget"), std::string::npos);
 }
 
 TEST(AdviseCli, BadInputExits2) {
