@@ -56,6 +56,8 @@ Action add_advise(CLI::App& app) {
       throw InputError("--max-lsb", *max_lsb, "not a number");
     o->scene_file = *scene;
     if (!fs::exists(o->scene_file)) throw InputError(*scene, "", "no such scene file");
+    if (!json->empty()) ensure_not_an_input(*json, {o->scene_file});
+    if (!out_dir->empty()) ensure_not_an_input(*out_dir, {o->scene_file});
     const advise::Advice a = advise::run_advise(*o);
     std::cout << advise::to_text(a);
     if (!json->empty()) write_text_file(*json, advise::to_json(a).dump(2) + "\n");
