@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "advise/advise_page.h"
 #include "advise/material_error.h"
+#include "advise/mesh_refinement.h"
 #include "metrics/compare.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
@@ -141,6 +143,44 @@ TEST(AdviseCli, NoCandidateExits1NamingTheClosest) {
   // The page is written whether or not a pick exists; no program without a pick.
   EXPECT_TRUE(fs::exists(dir / "out" / "index.html"));
   EXPECT_FALSE(fs::exists(dir / "out" / "skin_0.comb"));
+}
+
+}  // namespace
+}  // namespace lt::advise
+
+namespace lt::advise {
+namespace {
+
+// Uniform refinement of a closed mesh adds one vertex an edge and makes four triangles of one
+// (V' = V + E, F' = 4F: Euler's V - E + F = 2 gives E = 3F/2); the new vertices carry the
+// averages of their edge's normals and colours, and no edge is left with a T-junction (every
+// edge of the result is shared by exactly two triangles).
+TEST(AdviseRefinement, UniformSplitIsConformingOnAClosedMesh) {
+  Scene scene = load_scene(demo("baked_blob"));
+  ASSERT_FALSE(scene.objects.empty());
+  SceneObject& o = scene.objects.front();
+  const size_t v = o.mesh.positions.size(), f = o.mesh.triangles.size();
+  const size_t added = refine_object(scene, o, -1.0);
+  EXPECT_EQ(added, 3 * f / 2);
+  EXPECT_EQ(o.mesh.positions.size(), v + 3 * f / 2);
+  EXPECT_EQ(o.mesh.triangles.size(), 4 * f);
+  EXPECT_EQ(o.mesh.colors.size(), o.mesh.positions.size());
+  std::map<std::pair<unsigned, unsigned>, int> uses;
+  for (const glm::uvec3& t : o.mesh.triangles) {
+    for (int e = 0; e < 3; ++e) {
+      const unsigned a = t[e], b = t[(e + 1) % 3];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  for (const auto& [edge, n] : uses) ASSERT_EQ(n, 2) << edge.first << "-" << edge.second;
+}
+
+// Adaptive refinement splits only edges over the budget: with an unreachable budget none.
+TEST(AdviseRefinement, AnEdgeWithinTheBudgetIsNotSplit) {
+  Scene scene = load_scene(demo("baked_blob"));
+  SceneObject& o = scene.objects.front();
+  EXPECT_EQ(refine_object(scene, o, 1e9), 0u);
+  EXPECT_GT(refine_object(scene, o, 8.0), 0u);  // the silhouette's edges are ~76 LSB off
 }
 
 }  // namespace

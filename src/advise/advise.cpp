@@ -10,6 +10,7 @@
 
 #include "advise/hard_cases.h"
 #include "advise/material_error.h"
+#include "advise/mesh_refinement.h"
 #include "advise/target.h"
 #include "core/error.h"
 #include "paths/common/gbuffer.h"
@@ -59,7 +60,7 @@ std::string CandidateResult::hard_failure(size_t m) const {
 
 bool Advice::every_material_has_pick() const {
   return std::all_of(materials.begin(), materials.end(),
-                     [](const MaterialAdvice& m) { return m.pick.has_value(); });
+                     [](const MaterialAdvice& m) { return m.within_budget(); });
 }
 
 size_t Advice::rendered() const {
@@ -139,6 +140,49 @@ void check_hard_cases(CandidateResult& c, size_t m, const MaterialAdvice& ma,
     if (results.back().non_finite_pixels > 0) break;  // excluded: the rest cannot readmit it
   }
   c.hard[m] = std::move(results);
+}
+
+// The material's error with `variant` on `scene` (whose meshes a refinement changed): its own
+// session, reference and material map, as the search measures a candidate.
+RefinementStep measure_refined(const Scene& scene, const PathInfo& path, const std::string& variant,
+                               const PathOptions& options, int width, int height, size_t m) {
+  RefinementStep step;
+  for (const SceneObject& o : scene.objects) {
+    if (static_cast<size_t>(o.material) == m) step.vertices += o.mesh.positions.size();
+  }
+  RenderSession session(scene, width, height);
+  const Image reference = render_reference(session);
+  const std::vector<int> material_of_pixel = material_per_pixel(session.context());
+  auto built = session.build(path, variant, options);
+  built->frame();
+  const Comparison c = compare_material(built->result(), reference, test_encoding(*built),
+                                        material_of_pixel, static_cast<int>(m));
+  step.error = c.covered;
+  step.non_finite = non_finite_pixels(c);
+  return step;
+}
+
+// Refines material m's objects step by step, adaptively (edges whose midpoint error is over the
+// budget) or uniformly (every edge), measuring each step, until the budget holds, max_vertices
+// is passed or (adaptive) no edge is over the budget any more.
+std::vector<RefinementStep> refine_steps(const Scene& scene, const PathInfo& path,
+                                         const std::string& variant, const PathOptions& options,
+                                         const Advice& a, size_t m, bool uniform) {
+  Scene refined = scene;
+  std::vector<RefinementStep> steps;
+  steps.push_back(measure_refined(refined, path, variant, options, a.width, a.height, m));
+  const AdviseOptions& o = a.options;
+  while (stat_of(steps.back().error, o.stat) > o.max_lsb &&
+         steps.back().vertices < o.max_vertices) {
+    std::size_t added = 0;
+    for (SceneObject& obj : refined.objects) {
+      if (static_cast<size_t>(obj.material) == m)
+        added += refine_object(refined, obj, uniform ? -1.0 : o.max_lsb);
+    }
+    if (added == 0) break;
+    steps.push_back(measure_refined(refined, path, variant, options, a.width, a.height, m));
+  }
+  return steps;
 }
 
 // Pareto front of the rendered admissible candidates for material m: by cost, each strictly
@@ -336,6 +380,20 @@ Advice run_advise(const AdviseOptions& o) {
       // The most accurate survivor is the front's last member (the front is by cost, each
       // more accurate than the one before).
       if (!ma.front.empty()) ma.closest = ma.front.back();
+    }
+    if (!ma.pick && ma.closest && o.max_vertices > 0) {
+      Refinement r;
+      r.candidate = *ma.closest;
+      const std::string& variant = cs[r.candidate].candidate.variant;
+      r.adaptive = refine_steps(scene, path, variant, target.options, a, m, false);
+      r.uniform = refine_steps(scene, path, variant, target.options, a, m, true);
+      for (size_t k = 0; k < r.adaptive.size(); ++k) {
+        if (r.adaptive[k].non_finite == 0 && stat_of(r.adaptive[k].error, o.stat) <= o.max_lsb) {
+          r.holds_at = k;
+          break;
+        }
+      }
+      ma.refinement = std::move(r);
     }
   }
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

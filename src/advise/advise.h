@@ -31,6 +31,9 @@ struct AdviseOptions {
   int width = 128, height = 0;  // 0: the scene's aspect at `width`
   // Evaluate every candidate of the grid: no pruning (the test's check of the pruned search).
   bool exhaustive = false;
+  // > 0: for a material without a pick, refine its meshes where per-vertex evaluation errs most
+  // (mesh_refinement.h) until the budget holds or the material has this many vertices.
+  std::size_t max_vertices = 0;
 };
 
 // What a material costs with one candidate: the work axis (operations a frame executes for the
@@ -65,15 +68,35 @@ struct CandidateResult {
   std::string hard_failure(size_t material) const;
 };
 
+// One mesh density of a material's objects, rendered with the refinement's variant.
+struct RefinementStep {
+  std::size_t vertices = 0;  // of the material's objects
+  ErrorStats error;          // the material's pixels
+  std::size_t non_finite = 0;
+};
+
+// Mesh density as a candidate (issue 29): the variant that came closest, on meshes refined
+// where the per-vertex error is largest (adaptive), and for comparison split everywhere
+// (uniform, 1 triangle to 4 a step), each until the budget holds or max_vertices.
+struct Refinement {
+  std::size_t candidate = 0;  // the variant, an index into Advice::candidates
+  std::vector<RefinementStep> adaptive, uniform;
+  // The first adaptive step within the budget: the pick, its cost the vertices added.
+  std::optional<std::size_t> holds_at;
+};
+
 struct MaterialAdvice {
   size_t index = 0;  // in scene.materials: the index of cost, error, ... of a candidate
   std::string name;
   double pixels = 0, vertices = 0;
   bool translucent = false;
-  std::vector<HardCase> hard_cases;  // reachable
-  std::vector<size_t> front;         // Pareto front (cost, error): candidate indices, by cost
-  std::optional<size_t> pick;        // the cheapest admissible candidate within the budget
-  std::optional<size_t> closest;     // without a pick: the admissible one of least error
+  std::vector<HardCase> hard_cases;      // reachable
+  std::vector<size_t> front;             // Pareto front (cost, error): candidate indices, by cost
+  std::optional<size_t> pick;            // the cheapest admissible candidate within the budget
+  std::optional<size_t> closest;         // without a pick: the admissible one of least error
+  std::optional<Refinement> refinement;  // with --max-vertices, for a material without a pick
+  // A pick, or a refined mesh within the budget.
+  bool within_budget() const { return pick || (refinement && refinement->holds_at); }
 };
 
 struct Advice {

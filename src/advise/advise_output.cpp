@@ -90,6 +90,24 @@ std::string to_text(const Advice& a) {
     } else {
       out << "  no candidate within the budget, and none renders without a non-finite pixel\n";
     }
+    if (ma.refinement) {
+      const Refinement& r = *ma.refinement;
+      out << "  mesh refinement with " << a.candidates[r.candidate].candidate.variant
+          << " (vertices: " << to_string(o.stat) << " LSB):\n";
+      for (const auto& [name, steps] :
+           {std::pair{"adaptive", &r.adaptive}, std::pair{"uniform", &r.uniform}}) {
+        out << "    " << name << ":";
+        for (const RefinementStep& s : *steps)
+          out << " " << s.vertices << ": " << fixed(stat_of(s.error, o.stat));
+        out << "\n";
+      }
+      if (r.holds_at) {
+        const RefinementStep& s = r.adaptive[*r.holds_at];
+        out << "  pick: " << a.candidates[r.candidate].candidate.variant << " on a refined mesh, +"
+            << s.vertices - r.adaptive.front().vertices << " vertices: " << error_text(s.error)
+            << "\n";
+      }
+    }
     out << "  front (cost against " << to_string(o.stat) << " error):\n";
     for (size_t i : ma.front) {
       const CandidateResult& c = a.candidates[i];
@@ -169,6 +187,22 @@ nlohmann::ordered_json to_json(const Advice& a) {
     };
     jm["pick"] = name_of(ma.pick);
     jm["closest"] = name_of(ma.closest);
+    if (ma.refinement) {
+      const Refinement& r = *ma.refinement;
+      auto steps = [&](const std::vector<RefinementStep>& v) {
+        nlohmann::ordered_json out = nlohmann::ordered_json::array();
+        for (const RefinementStep& s : v)
+          out.push_back({{"vertices", s.vertices},
+                         {"error", error_json(s.error)},
+                         {"non_finite_pixels", s.non_finite}});
+        return out;
+      };
+      jm["refinement"] = {{"variant", a.candidates[r.candidate].candidate.variant},
+                          {"adaptive", steps(r.adaptive)},
+                          {"uniform", steps(r.uniform)},
+                          {"holds_at", r.holds_at ? nlohmann::ordered_json(*r.holds_at)
+                                                  : nlohmann::ordered_json(nullptr)}};
+    }
     jm["front"] = nlohmann::ordered_json::array();
     for (size_t i : ma.front) jm["front"].push_back(a.candidates[i].candidate.variant);
     jm["hard_cases"] = nlohmann::ordered_json::array();

@@ -38,6 +38,10 @@ Action add_advise(CLI::App& app) {
   sub->add_option("--width", o->width, "Render width (default 128)")->check(CLI::Range(1, 4096));
   sub->add_option("--height", o->height, "Render height (default: the scene's aspect)")
       ->check(CLI::Range(1, 4096));
+  sub->add_option("--max-vertices", o->max_vertices,
+                  "For a material without a pick: refine its meshes where per-vertex evaluation "
+                  "errs most until the budget holds or it has this many vertices")
+      ->check(CLI::Range(1, 10000000));
   sub->add_flag("--exhaustive", o->exhaustive, "Render every candidate of the grid (no pruning)");
   return [=]() -> int {
     static const std::map<std::string, advise::Stat> stats = {
@@ -75,7 +79,7 @@ Action add_advise(CLI::App& app) {
     if (!a.every_material_has_pick()) {
       std::string closest;
       for (const advise::MaterialAdvice& m : a.materials) {
-        if (m.pick) continue;
+        if (m.within_budget()) continue;
         closest += (closest.empty() ? "" : "; ") + m.name + ": " +
                    (m.closest ? "closest " + a.candidates[*m.closest].candidate.variant + " at " +
                                     std::to_string(advise::stat_of(
