@@ -8,6 +8,7 @@
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/module/module_exporter.h"
+#include "render/evaluate.h"
 #include "render/session.h"
 
 namespace lt::cli {
@@ -98,11 +99,10 @@ Action add_export(CLI::App& app) {
     f.height = scene.height;
     {
       RenderSession session(scene, scene.width, scene.height);
-      auto ref = session.build(path_with_role(PathRole::GroundTruth), "");
-      ref->frame();
+      const Image reference = render_reference(session);
       auto gxp = session.build(info, v);
       gxp->frame();
-      f.error = compare_images(gxp->result(), ref->result(), TestEncoding::kUnorm8).covered;
+      f.error = compare_with_reference(*gxp, reference).covered;
     }
     f.budget = gx::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
     write_text(*output, gx::export_c(programs, f));

@@ -35,5 +35,6 @@ Action add_info(CLI::App& app);
 Action add_meshgen(CLI::App& app);
 Action add_export(CLI::App& app);
 Action add_regress(CLI::App& app);
+Action add_advise(CLI::App& app);
 
 }  // namespace lt::cli

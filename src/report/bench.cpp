@@ -16,6 +16,7 @@
 #include "core/fs.h"
 #include "metrics/heatmap.h"
 #include "paths/common/gbuffer.h"
+#include "render/evaluate.h"
 #include "render/session.h"
 #include "report/bench_progress.h"
 
@@ -271,7 +272,6 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
   for (const std::string& name : o.paths) find_path(name);  // unknown names are input errors
   // The baseline is always measured, whatever --paths says: every ratio needs it.
   const PathInfo& flat = path_with_role(PathRole::Baseline);
-  const PathInfo& reference = path_with_role(PathRole::GroundTruth);
 
   // Every scene is read before anything is written: a bad one is reported with nothing created.
   std::vector<Scene> scenes;
@@ -301,9 +301,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
     Image ref_image;
     {
       RenderSession session(scene, scene.width, scene.height);
-      auto ref = session.build(reference, reference.variants.front().name);
-      ref->frame();
-      ref_image = ref->result();
+      ref_image = render_reference(session);
       write_image(o.out_dir / "images" / (sname + "__reference.exr"), ref_image);
       // The same at 8 bits, for the report page (a browser shows no EXR): what each card flips to.
       write_image(o.out_dir / "images" / (sname + "__reference.png"), ref_image);
@@ -323,9 +321,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         row.height = img.height;
         write_image(o.out_dir / row.image, img);
         if (p->name != flat.name) {
-          const TestEncoding enc =
-              path->float_output() ? TestEncoding::kFloat : TestEncoding::kUnorm8;
-          const Comparison cmp = compare_images(img, ref_image, enc);
+          const Comparison cmp = compare_images(img, ref_image, test_encoding(*path));
           row.error = cmp.covered;
           row.heatmap = "images/" + base + "__heatmap.png";
           write_image(o.out_dir / row.heatmap, error_heatmap(cmp));

@@ -56,16 +56,27 @@ std::vector<BuiltStage> GBuffer::stages() const {
           {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
 }
 
-std::vector<double> covered_pixels_by_material(const PathContext& ctx) {
-  GBuffer g(ctx, "the bench's coverage count");
+std::vector<int> material_per_pixel(const PathContext& ctx) {
+  GBuffer g(ctx, "the material of each pixel");
   g.rasterise();
-  std::vector<double> pixels(ctx.scene.materials.size(), 0.0);
+  std::vector<int> material(static_cast<size_t>(g.width()) * g.height(), -1);
+  const int count = static_cast<int>(ctx.scene.materials.size());
   for (int gy = 0; gy < g.height(); ++gy) {
     for (int x = 0; x < g.width(); ++x) {
       const size_t i = g.index(x, gy);
       const int m = g.material(i);
-      if (g.covered(i) && m >= 0 && static_cast<size_t>(m) < pixels.size()) pixels[m] += 1;
+      // G-buffer rows count bottom-up, images top-down.
+      if (g.covered(i) && m >= 0 && m < count)
+        material[static_cast<size_t>(g.height() - 1 - gy) * g.width() + x] = m;
     }
+  }
+  return material;
+}
+
+std::vector<double> covered_pixels_by_material(const PathContext& ctx) {
+  std::vector<double> pixels(ctx.scene.materials.size(), 0.0);
+  for (int m : material_per_pixel(ctx)) {
+    if (m >= 0) pixels[static_cast<size_t>(m)] += 1;
   }
   return pixels;
 }

@@ -18,8 +18,12 @@ namespace lt {
 // copying every mesh per path would cost a full scene's memory for nothing).
 Scene camera_relative_lights(const PathContext& ctx);
 
-// The pixels each material covers in the final image (scene.materials order), from one G-buffer
-// rasterisation: what the bench's work axis multiplies a path's per-pixel operations by.
+// The material each pixel of the final image shows (top row first, -1 where nothing is covered),
+// from one G-buffer rasterisation: advise measures a material's error on its own pixels.
+std::vector<int> material_per_pixel(const PathContext& ctx);
+
+// The pixels each material covers (scene.materials order), counted from material_per_pixel: what
+// the bench's work axis multiplies a path's per-pixel operations by.
 std::vector<double> covered_pixels_by_material(const PathContext& ctx);
 
 class GBuffer {

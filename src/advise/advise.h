@@ -1,0 +1,117 @@
+// `ltrender advise`: for each material of a scene, the cheapest variant of the path that serves a
+// target profile whose error against the reference stays within a budget the user names
+// (docs/advise.md). Every candidate is rendered and compared by the evaluate step bench and
+// export use (render/evaluate.h), costed on the work axis (Path::work, report/frame_work.h) and
+// the texture bytes of its lobe, checked against the profile's budget (PathInfo::budget) and,
+// before it is picked, on the hard cases the material can reach (hard_cases.h). Never timed.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "advise/hard_cases.h"
+#include "advise/variant_space.h"
+#include "metrics/compare.h"
+
+namespace lt::advise {
+
+// Which figure of a material's error the budget holds (metrics.md; covered pixels of the
+// material, in 8-bit LSB).
+enum class Stat { Max, P99, Mean };
+const char* to_string(Stat s);
+double stat_of(const ErrorStats& e, Stat s);
+
+struct AdviseOptions {
+  std::filesystem::path scene_file;
+  std::string profile;
+  double max_lsb = 1;
+  Stat stat = Stat::Max;
+  int width = 128, height = 0;  // 0: the scene's aspect at `width`
+  // Evaluate every candidate of the grid: no pruning (the test's check of the pruned search).
+  bool exhaustive = false;
+  // > 0: for a material without a pick, refine its meshes where per-vertex evaluation errs most
+  // (mesh_refinement.h) until the budget holds or the material has this many vertices.
+  std::size_t max_vertices = 0;
+};
+
+// What a material costs with one candidate: the work axis (operations a frame executes for the
+// material's covered pixels and drawn vertices), then the lobe's texture bytes. Compared in that
+// order: a texture byte is cheaper than any operation a frame runs.
+struct Cost {
+  double ops = 0, texture_bytes = 0;
+  auto operator<=>(const Cost&) const = default;
+};
+
+// One hard case rendered with a candidate.
+struct HardResult {
+  std::string scene;  // file stem
+  size_t non_finite_pixels = 0;
+  double max_lsb = 0;
+};
+
+struct CandidateResult {
+  Candidate candidate;
+  std::string refused;       // the path's refusal for the scene; not built
+  std::string over_profile;  // the budget's first overrun; not rendered
+  std::string pruned;        // why it was not rendered (empty when it was)
+  bool rendered = false;
+  std::vector<Cost> cost;                                    // per material (scene.materials order)
+  std::vector<ErrorStats> error;                             // per material, when rendered
+  std::vector<size_t> non_finite;                            // per material, when rendered
+  std::vector<std::optional<std::vector<HardResult>>> hard;  // per material, once checked
+  // For `material`: a choice (built, within the profile, rendered, finite on the scene and on
+  // every hard case checked so far).
+  bool admissible(size_t material) const;
+  // The hard case that excludes it for `material` ("power_128: 12 non-finite pixels"), or "".
+  std::string hard_failure(size_t material) const;
+};
+
+// One mesh density of a material's objects, rendered with the refinement's variant.
+struct RefinementStep {
+  std::size_t vertices = 0;  // of the material's objects
+  ErrorStats error;          // the material's pixels
+  std::size_t non_finite = 0;
+};
+
+// Mesh density as a candidate (issue 29): the variant that came closest, on meshes refined
+// where the per-vertex error is largest (adaptive), and for comparison split everywhere
+// (uniform, 1 triangle to 4 a step), each until the budget holds or max_vertices.
+struct Refinement {
+  std::size_t candidate = 0;  // the variant, an index into Advice::candidates
+  std::vector<RefinementStep> adaptive, uniform;
+  // The first adaptive step within the budget: the pick, its cost the vertices added.
+  std::optional<std::size_t> holds_at;
+};
+
+struct MaterialAdvice {
+  size_t index = 0;  // in scene.materials: the index of cost, error, ... of a candidate
+  std::string name;
+  double pixels = 0, vertices = 0;
+  bool translucent = false;
+  std::vector<HardCase> hard_cases;      // reachable
+  std::vector<size_t> front;             // Pareto front (cost, error): candidate indices, by cost
+  std::optional<size_t> pick;            // the cheapest admissible candidate within the budget
+  std::optional<size_t> closest;         // without a pick: the admissible one of least error
+  std::optional<Refinement> refinement;  // with --max-vertices, for a material without a pick
+  // A pick, or a refined mesh within the budget.
+  bool within_budget() const { return pick || (refinement && refinement->holds_at); }
+};
+
+struct Advice {
+  AdviseOptions options;
+  std::string path, default_variant;
+  int width = 0, height = 0;
+  std::vector<CandidateResult> candidates;  // the grid, the path's default first
+  std::vector<std::string> left_out;        // axes not searched, with why
+  std::vector<MaterialAdvice> materials;    // every material some object draws
+  double seconds = 0;                       // what the search took (reported, never a cost)
+  bool every_material_has_pick() const;
+  size_t rendered() const;
+};
+
+// Throws InputError for a bad scene, profile or budget (exit 2).
+Advice run_advise(const AdviseOptions& options);
+
+}  // namespace lt::advise
