@@ -278,9 +278,8 @@ void read_material_keys(ObjectReader& m, Material& mat, const fs::path& base_dir
         }
         map.finish();
         tr.thickness_source = ThicknessSource::Texture;
-        texture_loads.push_back(
-            {target, TextureLoad::Kind::ThicknessMap, base_dir / texture, channels,
-             map.key_path("texture")});
+        texture_loads.push_back({target, TextureLoad::Kind::ThicknessMap, base_dir / texture,
+                                 channels, map.key_path("texture")});
       } else if (th.is_string()) {
         if (th.get<std::string>() != "vertex") {
           t.fail(kp, "must be \"vertex\", a number, an rgb triple or {\"texture\": ...}");

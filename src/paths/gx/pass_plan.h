@@ -122,6 +122,11 @@ struct TevStagePlan {
   CombinerPlan<NameGroup::AlphaArg> alpha{
       {"GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_KONST"}};
   GxConst<NameGroup::KAlphaSel> konst_alpha{"GX_TEV_KASEL_1"};
+  // Which of the pass's data-dependent scales the stage's output scale is: the translucency's
+  // or the diffuse's (PassFigures), which a module's setup chooses again each frame
+  // (module/module_exporter.cpp), or none (a fixed x1).
+  enum class FrameScale { None, Translucency, Diffuse };
+  FrameScale frame_scale = FrameScale::None;
   std::string what;  // "Stage 0: out = COLOR0 x 2"
 };
 

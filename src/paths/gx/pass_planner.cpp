@@ -213,6 +213,7 @@ PassPlan PassPlanner::diffuse_pass(int m, int pass, size_t first_light) {
   p.stages.push_back(tev_stage(0, {"GX_TEXCOORDNULL"}, {"GX_TEXMAP_NULL"}, {"GX_COLOR0A0"},
                                {"GX_CC_RASC", "GX_CC_ZERO", "GX_CC_ZERO", "GX_CC_ZERO"}, sd,
                                "Stage 0: out = COLOR0 x " + std::to_string(sd)));
+  p.stages.back().frame_scale = TevStagePlan::FrameScale::Diffuse;
   p.pixel = pixel_engine(pass);
   p.figures.diffuse_only = true;
   p.figures.light = first_light;
@@ -359,6 +360,7 @@ void PassPlanner::light_stages(PassPlan& p, const PassChoice& c, const Transluce
                                    {"GX_CC_RASC", "GX_CC_ZERO", "GX_CC_ZERO", "GX_CC_ZERO"},
                                    st_scale / sd, title + "COLOR0" + times));
     }
+    p.stages.back().frame_scale = TevStagePlan::FrameScale::Translucency;
   }
   p.stages.push_back(tev_stage(
       stage, {"GX_TEXCOORDNULL"}, {"GX_TEXMAP_NULL"}, {"GX_COLOR1A1"},
@@ -366,6 +368,7 @@ void PassPlanner::light_stages(PassPlan& p, const PassChoice& c, const Transluce
        c.translucent ? GxConst<NameGroup::ColorArg>{"GX_CC_CPREV"}
                      : GxConst<NameGroup::ColorArg>{"GX_CC_ZERO"}},
       sd, "Stage " + std::to_string(stage) + ": out = (trans + COLOR1) x " + std::to_string(sd)));
+  p.stages.back().frame_scale = TevStagePlan::FrameScale::Diffuse;
 }
 
 }  // namespace lt::gx

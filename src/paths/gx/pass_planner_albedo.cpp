@@ -108,6 +108,7 @@ void PassPlanner::add_albedo_stage(PassPlan& p, const MapTexture& albedo) {
     TevStagePlan& trans = p.stages.back();
     const int scale = 1 << trans.color.scale.value();  // GX_CS_SCALE_1, _2, _4 are 0, 1, 2
     trans.color.scale = {"GX_CS_SCALE_1"};
+    trans.frame_scale = TevStagePlan::FrameScale::None;
     trans.what = trans.what.substr(0, trans.what.rfind(" x ")) + " (x 1: the next stage scales)";
     const int k = static_cast<int>(p.stages.size());
     p.stages.push_back(tev_stage(k, texcoord, albedo.texture.map, {"GX_COLORNULL"},
@@ -115,6 +116,7 @@ void PassPlanner::add_albedo_stage(PassPlan& p, const MapTexture& albedo) {
                                  "Stage " + std::to_string(k) +
                                      ": trans = trans x albedo (the map in GX_TEXMAP2) x " +
                                      std::to_string(scale)));
+    p.stages.back().frame_scale = TevStagePlan::FrameScale::Translucency;
   }
   const int k = static_cast<int>(p.stages.size());
   const int sd = 1 << last.color.scale.value();

@@ -19,10 +19,10 @@ struct PrimitiveMesh {
 
 // Reads /meshes/{mesh}/primitives/{primitive}. Throws InputError naming the pointer for: a mode
 // that carries no surface (the importer skips points and lines before; this names any other), an
-// index or vertex count that does not fit the mode, a missing POSITION, NaN, Inf or |x| > kMaxCoordinate positions,
-// indices that are not unsigned integers or reach past the vertices, attributes of different
-// lengths, and any accessor error (gltf_accessor.h).
-// The UVs are TEXCOORD_<uv.set> (through uv.transform), those its material's albedo map reads.
+// index or vertex count that does not fit the mode, a missing POSITION, NaN, Inf or |x| >
+// kMaxCoordinate positions, indices that are not unsigned integers or reach past the vertices,
+// attributes of different lengths, and any accessor error (gltf_accessor.h). The UVs are
+// TEXCOORD_<uv.set> (through uv.transform), those its material's albedo map reads.
 PrimitiveMesh read_primitive(const Document& doc, int mesh, int primitive,
                              const TextureCoordinates& uv = {});
 

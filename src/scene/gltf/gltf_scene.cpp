@@ -87,8 +87,8 @@ struct Importer {
       doc.fail("/materials/" + std::to_string(index), "no such material");
     }
     TextureCoordinates uv;
-    Material mat = index < 0 ? default_material()
-                             : map_material(doc, index, scene.import_notes, &uv);
+    Material mat =
+        index < 0 ? default_material() : map_material(doc, index, scene.import_notes, &uv);
     if (overrides) {
       // A scene's albedo map replaces the file's texture and reads TEXCOORD_0 as it is.
       if (const MaterialOverride* o = override_for(index); o && o->material.albedo_map) uv = {};

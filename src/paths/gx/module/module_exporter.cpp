@@ -68,13 +68,17 @@ std::string runtime_scale_comment(const std::string& what, const std::string& sc
   return head + " x s->" + scale + " (chosen per frame)";
 }
 
-// Which per-frame scale a stage takes: the translucency's (COLOR0 in a light's pass), the
-// diffuse's (the last stage), or none (empty).
+// Which per-frame scale a stage takes, as the plan says (TevStagePlan::frame_scale): the
+// translucency's, the diffuse's, or none (empty).
 std::string stage_scale(const PassPlan& p, size_t stage) {
-  if (stage + 1 == p.stages.size()) return "diffuse_scale";
-  if (!p.figures.diffuse_only &&
-      p.stages[stage].channel == GxConst<NameGroup::Channel>{"GX_COLOR0A0"})
-    return "translucency_scale";
+  switch (p.stages[stage].frame_scale) {
+    case TevStagePlan::FrameScale::Translucency:
+      return "translucency_scale";
+    case TevStagePlan::FrameScale::Diffuse:
+      return "diffuse_scale";
+    case TevStagePlan::FrameScale::None:
+      break;
+  }
   return "";
 }
 
