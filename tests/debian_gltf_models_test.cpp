@@ -101,9 +101,10 @@ const std::vector<Model>& models() {
       {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_15.gltf", Outcome::Lit, "", ""},
       {"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", Outcome::Lit, "", ""},
       // assimp's crash case: the base colour texture reads TEXCOORD_0 (texCoord's default) and
-      // the primitive has only TEXCOORD_1. Not shown invalid: an open exception (the note).
+      // the primitive has only TEXCOORD_1.
       {"issue_3269/texcoord_crash.gltf", Outcome::Refused, "/meshes/0/primitives/0: material",
-       "its base colour texture reads a texture coordinate set the primitive lacks"},
+       "invalid: a primitive MUST have the TEXCOORD_n its material's texCoord names "
+       "(textureInfo.texCoord, glTF 2.0 schema)"},
       {"simple_skin/simple_skin.gltf", Outcome::Lit, "", ""},
       {"textureTransform/TextureTransformTest.gltf", Outcome::Lit, "", ""},
       {"wrongTypes/badArray.gltf", Outcome::Refused, "/scenes/0: the scene has no mesh to render",
