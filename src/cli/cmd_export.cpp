@@ -13,18 +13,6 @@
 
 namespace lt::cli {
 
-namespace {
-
-void write_text(const std::string& file, const std::string& text) {
-  write_atomically(file, [&](const fs::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(file, "", "cannot write");
-  });
-}
-
-}  // namespace
-
 // `ltrender export gx SCENE [--variant V] [--format c|module|dff] -o FILE` (gx.md §2): the
 // generated GX programs as C, with the error of exactly that program measured against the
 // reference at the scene's size; (`--format module`) as C a game runs every frame, its camera
@@ -88,7 +76,7 @@ Action add_export(CLI::App& app) {
     }
     const gx::GxVariant gv = gx::parse_gx_variant(v);
     if (*format == "module") {
-      write_text(*output, gx::export_module(scene, gv, *scene_path));
+      write_text_file(*output, gx::export_module(scene, gv, *scene_path));
       return 0;
     }
     const gx::ScenePrograms programs = gx::scene_programs_for(scene, gv, "");
@@ -105,7 +93,7 @@ Action add_export(CLI::App& app) {
       f.error = compare_with_reference(*gxp, reference).covered;
     }
     f.budget = gx::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
-    write_text(*output, gx::export_c(programs, f));
+    write_text_file(*output, gx::export_c(programs, f));
     return 0;
   };
 }
