@@ -20,6 +20,10 @@ for a in "$@"; do
   if [ "$a" = "--full" ]; then full=true; else args+=("$a"); fi
 done
 steps=4
+# The quick run's benches: one job a core this process may use (nproc counts those), up to 8
+# (there are 8 demo scenes; a job is one scene at a time).
+jobs=$(nproc)
+[ "$jobs" -gt 8 ] && jobs=8
 $full && steps=10
 step_no=0
 started=$SECONDS
@@ -40,8 +44,11 @@ if $full; then
   step "bench: every demo scene, path and variant, precise timing"
   "$bin" bench scenes/*.json scenes/ortho/*.json --precise -o out "${args[@]}"
 else
+  # One job a core (bench --jobs, docs/bench.md "Jobs"): each scene's bench pinned to a core of
+  # its own, the scenes shared out between them; one report.
   step "bench: every demo scene through every path, the story's variants, quick timing"
-  "$bin" bench scenes/*.json scenes/ortho/*.json --variants story --quick -o out "${args[@]}"
+  "$bin" bench scenes/*.json scenes/ortho/*.json --variants story --quick --jobs "$jobs" \
+    -o out "${args[@]}"
 fi
 # The talk's parameter figures rebuilt on the teapot (issue 13, scenes/figures/): one row per
 # figure in out/figures/contact.png, its left and right scene side by side (fig14 ambient,
@@ -50,7 +57,7 @@ fi
 # fewest frames bench allows (and no run.sh arguments, whose --frames would clash).
 step "the talk's figures on the teapot (reference renders)"
 "$bin" bench scenes/figures/*.json --paths reference --frames 10 --warmup 0 --quick \
-  --min-time 0 --max-time 0 -o out/figures --quiet
+  --min-time 0 --max-time 0 --jobs "$jobs" -o out/figures --quiet
 if $full; then
   # Per-vertex error against tessellation (issues 5 and 9): the backlit sphere at 42 to 10242
   # vertices, through the GL 1.3 combiners and the Wii's GX.

@@ -9,6 +9,7 @@
 #include <string>
 #include <thread>
 
+#include "cli/bench_jobs.h"
 #include "cli/bench_timing_options.h"
 #include "cli/commands.h"
 #include "cli/lights_option.h"
@@ -18,6 +19,7 @@
 #include "core/parallel_rows.h"
 #include "report/bench.h"
 #include "report/bench_compare.h"
+#include "report/bench_json.h"
 
 namespace lt::cli {
 
@@ -114,6 +116,16 @@ Action add_bench(CLI::App& app) {
                   "Threads of the CPU paths' per-pixel stages (reference, half, gx; default: "
                   "one per core the bench may use: 1 when pinned)")
       ->check(CLI::Range(1, 64));
+  auto jobs = std::make_shared<int>(1);
+  sub->add_option("--jobs", *jobs,
+                  "Share the scenes out over N processes, a scene at a time each, each pinned to "
+                  "a core of its own (with --pin-core none: not pinned); one report")
+      ->check(CLI::Range(1, 64));
+  // A job of another bench (cli/bench_jobs.h): hidden, set only by the parent.
+  auto role = std::make_shared<BenchJobRole>();
+  sub->add_option("--job-scene", role->scene)->group("");
+  sub->add_option("--job-core", role->core)->group("");
+  sub->add_option("--job-dir", role->dir)->group("");
   sub->add_option("-o,--output", *out, "Output directory")->required();
   sub->add_flag("--quiet", o->quiet,
                 "No progress line and no notes (the progress line is drawn only on a terminal)");
@@ -121,19 +133,27 @@ Action add_bench(CLI::App& app) {
                   "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
                   "drawn in additive passes (the cost column says how many)");
   return [o, scenes, paths, out, lp_threads, cpu_threads, pin_core, compare_with, apply_timing,
-          variants, selections]() -> int {
+          variants, selections, jobs, role]() -> int {
     apply_timing();
     o->variants = selections.at(*variants);
     // A line redrawn in place means nothing in a log: only a person at a terminal gets it.
-    o->live_progress = ::isatty(STDERR_FILENO) == 1;
-    // Before any thread or context exists: what is started later inherits the core.
+    o->live_progress = ::isatty(STDERR_FILENO) == 1 && !role->is_job();
+    // Before any thread or context exists: what is started later inherits the core. A parent
+    // of jobs is not pinned (its jobs are, each to its own core) and renders nothing.
     bool pinned = false;
-    o->pinning = pin_to_core(*pin_core, pinned);
+    std::vector<int> cores;
+    if (role->is_job()) {
+      o->pinning = role->core < 0 ? "not pinned" : pin_to_core(std::to_string(role->core), pinned);
+    } else if (*jobs > 1) {
+      cores = job_cores(*jobs, *pin_core);
+    } else {
+      o->pinning = pin_to_core(*pin_core, pinned);
+    }
     worker_threads_setting() = *cpu_threads;
     o->out_dir = *out;
     // The earlier report is read first: a bad one fails before the bench runs.
     std::optional<EarlierBench> before;
-    if (!compare_with->empty()) before = read_earlier_bench(*compare_with);
+    if (!compare_with->empty() && !role->is_job()) before = read_earlier_bench(*compare_with);
     o->llvmpipe_threads = llvmpipe_threads(*lp_threads, pinned);
     o->cpu_threads = worker_threads();
     o->paths.clear();
@@ -149,13 +169,25 @@ Action add_bench(CLI::App& app) {
       }
       std::sort(o->scenes.begin(), o->scenes.end());
     }
+    if (role->is_job()) {
+      // One scene of the parent's list, its images into the parent's staging directory, its rows
+      // in report.json's form for the parent to read.
+      BenchOptions job = *o;
+      job.scenes = {o->scenes.at(static_cast<std::size_t>(role->scene))};
+      job.out_dir = role->dir;
+      write_text_file(job_rows_file(role->dir, role->scene),
+                      bench_report_json(job, run_bench(job)).dump(2) + "\n");
+      return 0;
+    }
+    // Every input is checked before the first job starts (a single bench does it in run_bench).
+    if (!cores.empty()) load_bench_inputs(*o);
     // Images and reports appear together or not at all (core/fs.h): a killed bench leaves the
     // previous run's directory as it was.
     std::vector<BenchRow> rows;
     write_directory_atomically(o->out_dir, [&](const fs::path& staging) {
       BenchOptions staged = *o;
       staged.out_dir = staging;
-      rows = run_bench(staged);
+      rows = cores.empty() ? run_bench(staged) : run_bench_jobs(staged, cores, staging, staged);
       write_bench_reports(staged, rows);
       if (before) {
         write_text_file(staging / "compare.md",

@@ -262,6 +262,14 @@ FrameTiming summarize_frames(std::vector<double> frame_ms) {
   return t;
 }
 
+std::vector<Scene> load_bench_inputs(const BenchOptions& o) {
+  for (const std::string& name : o.paths) find_path(name);  // unknown names are input errors
+  std::vector<Scene> scenes;
+  for (const fs::path& scene_path : o.scenes)
+    scenes.push_back(load_scene(scene_path, o.scene_options));
+  return scenes;
+}
+
 std::vector<BenchRow> run_bench(const BenchOptions& o) {
   std::vector<const PathInfo*> paths;
   for (const PathInfo& p : all_paths()) {
@@ -269,14 +277,11 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       paths.push_back(&p);
     }
   }
-  for (const std::string& name : o.paths) find_path(name);  // unknown names are input errors
   // The baseline is always measured, whatever --paths says: every ratio needs it.
   const PathInfo& flat = path_with_role(PathRole::Baseline);
 
   // Every scene is read before anything is written: a bad one is reported with nothing created.
-  std::vector<Scene> scenes;
-  for (const fs::path& scene_path : o.scenes)
-    scenes.push_back(load_scene(scene_path, o.scene_options));
+  const std::vector<Scene> scenes = load_bench_inputs(o);
   std::error_code ec;
   fs::create_directories(o.out_dir / "images", ec);
   if (ec)

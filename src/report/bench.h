@@ -82,6 +82,10 @@ struct BenchRow {
 // Sets rounds, min_time_s, target_interval, max_time_s and timing_mode to the mode's values.
 void set_timing_mode(BenchOptions& options, TimingMode mode);
 
+// The scenes, loaded, after checking every --paths name: what run_bench reads before it writes
+// anything (and `bench --jobs` before it starts a job). Throws InputError.
+std::vector<Scene> load_bench_inputs(const BenchOptions& options);
+
 std::vector<BenchRow> run_bench(const BenchOptions& options);
 
 // report.md, report.csv, report.json, chart.svg, contact.png and index.html under out_dir.

@@ -14,6 +14,7 @@
 #include "render/session.h"
 #include "report/bench.h"
 #include "report/bench_contact_sheet.h"
+#include "report/bench_json.h"
 #include "report/label_placement.h"
 #include "report/report_page.h"
 
@@ -164,75 +165,6 @@ std::string csv(const std::vector<BenchRow>& rows) {
     s << "," << r.settling_frames << "\n";
   }
   return s.str();
-}
-
-// The figures a path reported, by name, plus the bench's own shading rate.
-nlohmann::json stats_json(const BenchRow& r) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& [name, value] : r.stats.set_fields()) j[name] = value;
-  if (r.shading_mpixels_per_s) j["shading_mpixels_per_s"] = *r.shading_mpixels_per_s;
-  return j;
-}
-
-nlohmann::json json_rows(const BenchOptions& o, const std::vector<BenchRow>& rows) {
-  nlohmann::json j;
-  j["frames"] = o.frames;
-  j["warmup"] = o.warmup;
-  j["wide"] = {o.wide_width, o.wide_height};
-  j["min_time_s"] = o.min_time_s;
-  j["target_interval"] = o.target_interval;
-  j["max_time_s"] = o.max_time_s;
-  j["timing_mode"] = to_string(o.timing_mode);
-  j["rounds"] = o.rounds;
-  j["timing_overrides"] = o.timing_overrides;
-  j["llvmpipe_threads"] = o.llvmpipe_threads;
-  j["pinning"] = o.pinning;
-  j["cpu_threads"] = o.cpu_threads;
-  j["rows"] = nlohmann::json::array();
-  auto finite = [](double v) -> nlohmann::json {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-  };
-  for (const BenchRow& r : rows) {
-    nlohmann::json x = {{"scene", r.scene},
-                        {"path", r.path},
-                        {"variant", r.variant},
-                        {"ms_median", r.at_scene_size.median_ms},
-                        {"ms_min", r.at_scene_size.min_ms},
-                        {"ms_median_wide", r.at_wide.median_ms},
-                        {"ms_min_wide", r.at_wide.min_ms},
-                        {"ratio_to_flat", r.ratio_to_flat},
-                        {"ratio_interval",
-                         {{"low", r.ratio.low},
-                          {"high", r.ratio.high},
-                          {"pairs", r.ratio.pairs},
-                          {"wide", r.ratio.wide()},
-                          {"settling_frames", r.settling_frames},
-                          {"rounds", r.rounds}}},
-                        {"image", r.image},
-                        {"heatmap", r.heatmap},
-                        {"stats", stats_json(r)},
-                        {"cost", r.cost}};
-    if (r.work) {
-      x["work"] = {{"ops", r.work->total()},
-                   {"pixel_ops", r.work->pixel_ops},
-                   {"vertex_ops", r.work->vertex_ops},
-                   {"pixel_operation", r.work->pixel_operation},
-                   {"vertex_operation", r.work->vertex_operation}};
-    } else {
-      x["work"] = {{"not_counted", r.work_not_counted}};
-    }
-    if (r.error) {
-      x["error"] = {{"max_lsb", r.error->max_lsb},
-                    {"mean_lsb", r.error->mean_lsb},
-                    {"rmse_lsb", r.error->rmse_lsb},
-                    {"psnr_db", finite(r.error->psnr_db)},
-                    {"p99_lsb", r.error->p99_lsb},
-                    {"percent_over_1_lsb", r.error->percent_over_1_lsb},
-                    {"percent_over_4_lsb", r.error->percent_over_4_lsb}};
-    }
-    j["rows"].push_back(x);
-  }
-  return j;
 }
 
 // What a chart's x axis shows: its words, and the figure of a row (none: the row is left out).
@@ -449,7 +381,7 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
 void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   write_text_file(o.out_dir / "report.md", markdown(o, rows));
   write_text_file(o.out_dir / "report.csv", csv(rows));
-  write_text_file(o.out_dir / "report.json", json_rows(o, rows).dump(2) + "\n");
+  write_text_file(o.out_dir / "report.json", bench_report_json(o, rows).dump(2) + "\n");
   write_text_file(o.out_dir / "chart.svg", svg_chart(rows, time_axis(o)));
   write_text_file(o.out_dir / "chart_work.svg", svg_chart(rows, work_axis(o)));
   write_report_page(o.out_dir, bench_page(o, rows));
