@@ -110,33 +110,35 @@ TEST(AlbedoPaths, ConstantMapScalesTheImageWithinEachFormatsQuantisation) {
 TEST(AlbedoPaths, EveryBudgetCountsTheMap) {
   const auto s = write_scenes();
   auto arb = [](const Scene& scene, const char* kind) {
-    const budget::BudgetReport r = budget::run_budget(scene, "arbfp", "", "ps_2_0");
-    for (const budget::CountedProgram& p : r.programs) {
-      if (p.name.find(kind) != std::string::npos) return p.counts;
+    const budget::Report r = budget::run_budget(scene, "", "ps_2_0");
+    for (const budget::Item& p : r.items) {
+      if (p.scope == budget::Scope::Program && p.name.find(kind) != std::string::npos) return p;
     }
     ADD_FAILURE() << "no " << kind;
-    return budget::ProgramCounts{};
+    return budget::Item{};
   };
-  const budget::ProgramCounts f1 = arb(s->with, "fragment"), f0 = arb(s->without, "fragment");
-  EXPECT_EQ(f1.tex, f0.tex + 1);
-  EXPECT_EQ(f1.alu, f0.alu + 1);
-  EXPECT_EQ(f1.indirections, f0.indirections);
-  EXPECT_EQ(arb(s->with, "vertex").alu, arb(s->without, "vertex").alu + 1);
+  const budget::Item f1 = arb(s->with, "fragment"), f0 = arb(s->without, "fragment");
+  EXPECT_EQ(f1.used("tex"), f0.used("tex") + 1);
+  EXPECT_EQ(f1.used("alu"), f0.used("alu") + 1);
+  EXPECT_EQ(f1.used("indirections"), f0.used("indirections"));
+  EXPECT_EQ(arb(s->with, "vertex").used("alu"), arb(s->without, "vertex").used("alu") + 1);
 
-  const CombinerBudgetReport c1 = combiner_budget(s->with, "gl13-2units");
-  const CombinerBudgetReport c0 = combiner_budget(s->without, "gl13-2units");
-  EXPECT_EQ(c1.passes, c0.passes + 1);
-  EXPECT_EQ(c1.texture_units, c0.texture_units);  // the modulate pass has one stage
-  EXPECT_NE(c1.materials.at(0).program.find("albedo_modulate.comb"), std::string::npos);
+  const budget::Report c1 = combiner_budget(s->with, "gl13-2units");
+  const budget::Report c0 = combiner_budget(s->without, "gl13-2units");
+  EXPECT_EQ(c1.most("passes"), c0.most("passes") + 1);
+  EXPECT_EQ(c1.most("texture_units"), c0.most("texture_units"));  // the modulate pass: one stage
+  EXPECT_NE(c1.items.at(0).program.find("albedo_modulate.comb"), std::string::npos);
   EXPECT_TRUE(c1.fits());
 
-  const gx::GxBudgetReport g1 = gx::gx_budget_scene(s->with, "", "wii-tev");
-  const gx::GxBudgetReport g0 = gx::gx_budget_scene(s->without, "", "wii-tev");
-  ASSERT_EQ(g1.programs.size(), g0.programs.size());
-  for (size_t i = 0; i < g1.programs.size(); ++i) {
-    EXPECT_EQ(g1.programs[i].counts.tev_stages, g0.programs[i].counts.tev_stages + 1) << i;
-    EXPECT_EQ(g1.programs[i].counts.texgens, g0.programs[i].counts.texgens + 1) << i;
-    EXPECT_EQ(g1.programs[i].counts.texture_maps, g0.programs[i].counts.texture_maps + 1) << i;
+  const budget::Report g1 = gx::gx_budget_scene(s->with, "", "wii-tev");
+  const budget::Report g0 = gx::gx_budget_scene(s->without, "", "wii-tev");
+  ASSERT_EQ(g1.items.size(), g0.items.size());
+  for (size_t i = 0; i < g1.items.size(); ++i) {
+    if (g1.items[i].scope != budget::Scope::Pass) continue;
+    const budget::Item &a = g1.items[i], &b = g0.items[i];
+    EXPECT_EQ(a.used("tev_stages"), b.used("tev_stages") + 1) << i;
+    EXPECT_EQ(a.used("texgens"), b.used("texgens") + 1) << i;
+    EXPECT_EQ(a.used("texture_maps"), b.used("texture_maps") + 1) << i;
   }
 }
 

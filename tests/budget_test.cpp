@@ -4,6 +4,7 @@
 // term's cost, and the CLI's exit codes.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "arb_test_util.h"
@@ -189,9 +190,10 @@ TEST(Budget, EveryDemoProgramFitsPs20InEveryVariant) {
   for (const std::string& file : test::json_files("scenes")) {
     const Scene scene = test::load_test_scene(file);
     for (const VariantInfo& v : arbfp_path_info().variants) {
-      const budget::BudgetReport r = budget::run_budget(scene, "arbfp", v.name, "ps_2_0");
+      const budget::Report r = budget::run_budget(scene, v.name, "ps_2_0");
       EXPECT_TRUE(r.fits()) << file << " " << v.name << ": " << r.first_overrun();
-      EXPECT_EQ(r.vertex_profile->name, "vs_2_0");
+      ASSERT_EQ(r.profiles.size(), 2u);
+      EXPECT_EQ(r.profiles[1].name, "vs_2_0");
     }
   }
 }
@@ -201,9 +203,9 @@ TEST(Budget, TranslucencyTermCostPerLight) {
   for (const std::string& file : test::json_files("scenes")) {
     const Scene scene = test::load_test_scene(file);
     for (const char* variant : {"pow=lut:256:u8", "pow=sg"}) {
-      const budget::BudgetReport r = budget::run_budget(scene, "arbfp", variant, "ps_2_0");
-      ASSERT_FALSE(r.term_costs.empty()) << file;
-      for (const budget::TermCost& t : r.term_costs) {
+      const std::vector<budget::TermCost> costs = budget::term_costs(scene, variant);
+      ASSERT_FALSE(costs.empty()) << file;
+      for (const budget::TermCost& t : costs) {
         const std::string what = file + " " + variant + " " + t.material;
         ASSERT_FALSE(t.per_light.empty());
         const bool lut = std::string(variant).find("lut") != std::string::npos;
@@ -249,10 +251,14 @@ TEST(BudgetCli, DemoSceneFitsAndPrintsTheTable) {
       test::run_ltrender("budget " + path.string() + " --profile arbfp1-min --json");
   ASSERT_EQ(j.exit_code, 0) << j.err;
   const nlohmann::json parsed = nlohmann::json::parse(j.out);
-  EXPECT_EQ(parsed["fragment_profile"], "arbfp1-min");
-  EXPECT_EQ(parsed["vertex_profile"], "arbvp1-min");
+  EXPECT_EQ(parsed["schema"], "ltrender-budget-2");
+  EXPECT_EQ(parsed["input"], "scene");
+  EXPECT_EQ(parsed["profiles"][0]["name"], "arbfp1-min");
+  EXPECT_EQ(parsed["profiles"][1]["name"], "arbvp1-min");
   EXPECT_TRUE(parsed["fits"].get<bool>());
-  EXPECT_GE(parsed["programs"].size(), 2u);
+  size_t programs = 0;
+  for (const auto& item : parsed["items"]) programs += item["scope"] == "program";
+  EXPECT_GE(programs, 2u);
 }
 
 TEST(BudgetCli, OverBudgetExitsOneNamingTheLimit) {
@@ -292,7 +298,10 @@ TEST(BudgetCli, BadInputExitsTwo) {
   const test::RunResult c =
       test::run_ltrender("budget " + path + " --path combiners --profile ps_2_0");
   EXPECT_EQ(c.exit_code, 2) << "an arbfp profile is not a combiner profile";
-  EXPECT_NE(c.err.find("unknown combiner profile"), std::string::npos) << c.err;
+  EXPECT_EQ(c.err,
+            "ltrender: error: --profile:ps_2_0: a profile of arbfp, which counts none of "
+            "the inputs (" +
+                path + ": combiners)\n");
 }
 
 // The combiners path counts stages, units and passes: the seed's Wii setup fits the TEV, and a
@@ -325,9 +334,12 @@ TEST(BudgetCli, HandWrittenCombinerProgramsAgainstProfiles) {
   const auto fits = test::run_ltrender("budget " + file + " --json");
   ASSERT_EQ(fits.exit_code, 0) << fits.err;
   const auto j = nlohmann::json::parse(fits.out);
-  EXPECT_EQ(j["used"]["stages"], 2);  // stage 0 and stage 1 of the file
-  EXPECT_EQ(j["used"]["texture_units"], 2);
-  EXPECT_EQ(j["used"]["passes"], 1);
+  ASSERT_EQ(j["items"].size(), 1u) << j.dump();
+  std::map<std::string, int> used;
+  for (const auto& r : j["items"][0]["resources"]) used[r["key"]] = r["used"];
+  EXPECT_EQ(used["stages"], 2);  // stage 0 and stage 1 of the file
+  EXPECT_EQ(used["texture_units"], 2);
+  EXPECT_EQ(used["passes"], 1);
 
   test::TempDir dir;
   std::string three = test::read_file(file);
@@ -335,7 +347,10 @@ TEST(BudgetCli, HandWrittenCombinerProgramsAgainstProfiles) {
   test::write_file(dir / "three.comb", three);
   const auto over = test::run_ltrender("budget " + (dir / "three.comb").string());
   EXPECT_EQ(over.exit_code, 1) << over.out << over.err;
-  EXPECT_NE(over.err.find("stages: 3 > 2"), std::string::npos) << over.err;
+  // The failure line names the file (it named none), and no line shows "combiners//tmp".
+  EXPECT_EQ(over.err, "ltrender: check failed: budget: " + (dir / "three.comb").string() +
+                          ": program lobe_vertex: stages: 3 > 2 (gl13-2units)\n");
+  EXPECT_EQ(over.out.find("combiners//"), std::string::npos) << over.out;
   EXPECT_EQ(test::run_ltrender("budget " + (dir / "three.comb").string() + " --profile gl13-3units")
                 .exit_code,
             0);

@@ -84,26 +84,22 @@ TEST(FrameWork, ArbfpCountsWhatTheBudgetCounts) {
   const PathInfo& arbfp = find_path("arbfp");
   const std::string variant = resolve_variant(arbfp, "");
   auto path = session.build(arbfp, variant);
-  std::ostringstream out;
-  std::string overrun;
-  arbfp.budget(s, BudgetRequest{variant, "", true, &out, &overrun});
-  const auto j = nlohmann::json::parse(out.str());
+  const budget::Report r = arbfp.budget(s, variant, "");
   const WorkModel model = path->work();
   size_t checked = 0;
   for (size_t m = 0; m < s.materials.size(); ++m) {
     const std::string prefix = "material " + s.materials[m].name + ": ";
-    for (const auto& p : j["programs"]) {
-      const std::string name = p["name"];
-      if (name == prefix + "fragment program") {
-        EXPECT_EQ(model.by_material[m].per_pixel, p["alu"].get<int>() + p["tex"].get<int>());
+    for (const budget::Item& p : r.items) {
+      if (p.name == prefix + "fragment program") {
+        EXPECT_EQ(model.by_material[m].per_pixel, p.used("alu") + p.used("tex"));
         ++checked;
-      } else if (name == prefix + "vertex program") {
-        EXPECT_EQ(model.by_material[m].per_vertex, p["instruction_slots"].get<int>());
+      } else if (p.name == prefix + "vertex program") {
+        EXPECT_EQ(model.by_material[m].per_vertex, p.used("instruction_slots"));
         ++checked;
       }
     }
   }
-  EXPECT_GE(checked, 2u) << out.str();
+  EXPECT_GE(checked, 2u) << budget::to_text(r);
 }
 
 TEST(FrameWork, GlslSaysWhyItCountsNothing) {

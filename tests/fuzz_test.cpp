@@ -332,12 +332,7 @@ void check_accepted(Kind kind, const fs::path& file, const std::string& what) {
       for (const PathInfo& p : all_paths()) {
         const auto& exts = p.program_extensions;
         if (std::find(exts.begin(), exts.end(), file.extension().string()) == exts.end()) continue;
-        std::ostringstream out;
-        std::string first_overrun;
-        BudgetRequest request;
-        request.out = &out;
-        request.first_overrun = &first_overrun;
-        (void)p.budget_file(file.string(), request);
+        (void)budget::to_json(p.budget_file(file.string(), ""));
       }
       break;
     }

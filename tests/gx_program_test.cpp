@@ -3,6 +3,8 @@
 // file, each refused with file:line:column.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.h"
 #include "gx_test_programs.h"
 #include "paths/gx/generator.h"
@@ -212,27 +214,32 @@ TEST(GxProgram, PrintedProgramsParseBackToTheSameState) {
 TEST(GxProgram, OneLightTakesAtMostThreeStagesInOnePass) {
   for (const std::string& s : test::json_files("scenes")) {
     const Scene scene = load_scene(test::source_dir() / s);
-    const GxBudgetReport r = gx_budget_scene(scene, "", "wii-tev");
+    const budget::Report r = gx_budget_scene(scene, "", "wii-tev");
     EXPECT_TRUE(r.fits()) << s;
-    EXPECT_EQ(r.passes, static_cast<int>(std::max<size_t>(1, scene.lights.size()))) << s;
-    for (const GxBudgetProgram& p : r.programs) {
+    EXPECT_EQ(r.most("passes"), static_cast<int>(std::max<size_t>(1, scene.lights.size()))) << s;
+    for (const budget::Item& p : r.items) {
+      if (p.scope != budget::Scope::Pass) continue;
       int albedo = 0;
       for (const Material& m : scene.materials) albedo += m.name == p.material && m.albedo_map;
-      EXPECT_LE(p.counts.tev_stages, 3 + albedo) << s << " " << p.name;
-      EXPECT_LE(p.counts.texture_maps, 1 + albedo) << s << " " << p.name;
-      EXPECT_LE(p.counts.lights_per_channel, 1) << s << " " << p.name;
+      EXPECT_LE(p.used("tev_stages"), 3 + albedo) << s << " " << p.name;
+      EXPECT_LE(p.used("texture_maps"), 1 + albedo) << s << " " << p.name;
+      EXPECT_LE(p.used("lights_per_channel"), 1) << s << " " << p.name;
     }
   }
 }
 
 TEST(GxProgram, BudgetCountsAFileAndFindsOverruns) {
   test::TempDir dir;
-  test::write_file(dir / "over.c", "GX_SetNumTevStages(17);\nGX_SetNumChans(2);\n");
-  const GxBudgetReport r = gx_budget_file((dir / "over.c").string(), "wii-tev");
+  const std::string file = (dir / "over.c").string();
+  test::write_file(file, "GX_SetNumTevStages(17);\nGX_SetNumChans(2);\n");
+  const budget::Report r = gx_budget_file(file, "wii-tev");
   EXPECT_FALSE(r.fits());
-  EXPECT_NE(r.first_overrun().find("TEV stages: 17 > 16"), std::string::npos) << r.first_overrun();
-  const auto j = to_json(r);
-  EXPECT_EQ(j["programs"][0]["counts"]["tev_stages"], 17);
+  EXPECT_EQ(r.first_overrun().rfind(file + ": ", 0), 0u) << r.first_overrun();
+  EXPECT_NE(r.first_overrun().find("TEV stages: 17 > 16 (wii-tev)"), std::string::npos)
+      << r.first_overrun();
+  const auto j = nlohmann::json::parse(budget::to_json(r));
+  EXPECT_EQ(j["items"][0]["resources"][0]["key"], "tev_stages");
+  EXPECT_EQ(j["items"][0]["resources"][0]["used"], 17);
   EXPECT_EQ(j["fits"], false);
 }
 

@@ -285,10 +285,8 @@ Advice run_advise(const AdviseOptions& o) {
     // A twin that is never cheaper is pruned without a look (unless exhaustive).
     if (!o.exhaustive && !cand.never_cheaper.empty()) r.pruned = cand.never_cheaper;
     if (r.refused.empty() && r.pruned.empty()) {
-      std::ostringstream sink;
-      std::string overrun;
-      BudgetRequest rq{cand.variant, target.profile, false, &sink, &overrun};
-      if (!path.budget(scene, rq)) r.over_profile = overrun.empty() ? "over " + o.profile : overrun;
+      const budget::Report b = path.budget(scene, cand.variant, target.profile);
+      if (!b.fits()) r.over_profile = b.first_overrun();
       built[cs.size()] = session->build(path, cand.variant, target.options);
       const WorkModel work = built[cs.size()]->work();
       for (size_t m : shown) {

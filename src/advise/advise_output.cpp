@@ -255,7 +255,8 @@ std::vector<std::string> write_programs(const Advice& a, const Scene& scene,
       f.width = a.width;
       f.height = a.height;
       f.error = p.error[ma.index];
-      f.budget = gx::to_text(gx::gx_budget_scene(scene, p.candidate.variant, a.options.profile));
+      f.budget =
+          budget::to_text(gx::gx_budget_scene(scene, p.candidate.variant, a.options.profile));
       written.push_back(base + ".c");
       write_text_file(dir / written.back(), gx::export_c(gx::scene_programs_for(scene, v, ""), f));
       continue;

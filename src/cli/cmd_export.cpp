@@ -92,7 +92,7 @@ Action add_export(CLI::App& app) {
       gxp->frame();
       f.error = compare_with_reference(*gxp, reference).covered;
     }
-    f.budget = gx::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
+    f.budget = budget::to_text(gx::gx_budget_scene(scene, v, "wii-tev"));
     write_text_file(*output, gx::export_c(programs, f));
     return 0;
   };

@@ -15,6 +15,7 @@
 #include "gl/context.h"
 #include "gl/scene_geometry.h"
 #include "image/image.h"
+#include "paths/budget/report.h"
 #include "paths/frame_stats.h"
 #include "scene/scene.h"
 
@@ -80,15 +81,6 @@ class Path {
   virtual WorkModel work() const { return {{}, {}, {}, "this path counts no operations"}; }
 };
 
-// What `ltrender budget` asks of a path's budget: print to `out`, as JSON when `json`; the
-// first line over a limit goes to `first_overrun` (exit 1 names it).
-struct BudgetRequest {
-  std::string variant, profile;
-  bool json = false;
-  std::ostream* out = nullptr;
-  std::string* first_overrun = nullptr;
-};
-
 // Which runs a variant is in: a full bench runs every variant; the quick one (./run.sh, bench
 // --variants story) runs each path's default and its Story variants, those whose comparison
 // with the default the docs tell (the LUT's width, texgen, the XF lobe, ...).
@@ -120,15 +112,22 @@ struct PathInfo {
   bool takes_program_file = false;
   bool takes_profile = false;
   PathRole role = PathRole::Port;
-  // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene against a
-  // profile (empty: the path's default), prints a table or JSON, and returns true when it fits.
-  // The path owns its counter and profiles; the command names no path.
-  std::function<bool(const Scene& scene, const BudgetRequest& request)> budget = {};
+  // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene (under a
+  // variant, "" = the default) against one of its profiles (empty: the path's default) into the
+  // one budget report (paths/budget/report.h), which the command prints. The path owns its
+  // counter and profiles; the command names no path.
+  std::function<budget::Report(const Scene& scene, const std::string& variant,
+                               const std::string& profile)>
+      budget = {};
+  // The profiles the path's budget takes, its default first: `budget --profile` gives each
+  // named profile to the path that has it.
+  std::vector<std::string> budget_profiles = {};
   // `ltrender budget FILE`: a program file of this path's kind, recognised by its extension or,
   // failing that, by the first characters of its text (after white space).
   std::vector<std::string> program_extensions = {};
   std::vector<std::string> program_headers = {};
-  std::function<bool(const std::string& file, const BudgetRequest& request)> budget_file = {};
+  std::function<budget::Report(const std::string& file, const std::string& profile)> budget_file =
+      {};
   // `export --format dff` and `render --via dolphin`: one frame as a Dolphin FIFO log (the bytes
   // of a .dff file) encoded from exactly the state the path's emulator runs, for an
   // implementation that is not ltrender's to play. Empty for paths that model no console.

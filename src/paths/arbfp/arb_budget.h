@@ -1,11 +1,11 @@
 // The arbfp path's budget (`ltrender budget SCENE --path arbfp`): every program it generates for
 // a scene, counted on its instruction list (arb_ir_counter.h) and checked against a profile pair
 // (arb_profiles.h), plus the translucency term's own cost per light: the program with the term
-// minus the same program without it. It lives with the path (no other folder includes the ARB
-// generator).
+// minus the same program without it, and the pass plan `render --profile` draws. It lives with
+// the path (no other folder includes the ARB generator) and fills the one budget report
+// (paths/budget/report.h).
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -13,13 +13,6 @@
 #include "scene/scene.h"
 
 namespace lt::budget {
-
-struct CountedProgram {
-  std::string name;  // e.g. "material marble: fragment program"
-  ProgramCounts counts;
-  std::string profile;  // the profile it was checked against
-  std::vector<Overrun> over;
-};
 
 // The term's cost in one material's fragment program. With D(k) = (the program for the scene's
 // first k lights with the term) - (the same program, same layout, without it), entry k - 1 is
@@ -60,40 +53,13 @@ struct TermCost {
   double further_light_alu() const;
 };
 
-// One pass of a material's pass plan for the profile (arb_passes.h).
-struct PlannedPass {
-  std::string material, lights;  // lights: "lights 0-4 + ambient"
-  ProgramCounts vertex, fragment;
-};
+// The term's cost for every material with translucency that some object uses, in scene order.
+std::vector<TermCost> term_costs(const Scene& scene, const std::string& variant);
 
-struct BudgetReport {
-  std::string scene, path, variant;
-  const Profile* fragment_profile = nullptr;
-  const Profile* vertex_profile = nullptr;
-  std::vector<CountedProgram> programs;
-  std::vector<TermCost> term_costs;
-  // The passes `render --profile` draws (one per material when its programs fit); empty with
-  // pass_plan_error set when some light does not fit even alone.
-  std::vector<PlannedPass> pass_plan;
-  std::string pass_plan_error;
-  // Per material with more than one pass: no plan has fewer than this (arb_passes.h).
-  struct PassBound {
-    std::string material;
-    size_t lower_bound = 1, most_lights = 0;
-  };
-  std::vector<PassBound> pass_lower_bounds;
-
-  bool fits() const;
-  // "material marble: fragment program: 70 ALU instructions > 64 (ps_2_0)"; empty when it fits.
-  std::string first_overrun() const;
-};
-
-// Throws InputError for an unknown path/profile/variant, or a path with no budget yet.
-// `profile` may name either kind; its partner checks the other kind of program.
-BudgetReport run_budget(const Scene& scene, const std::string& path, const std::string& variant,
-                        const std::string& profile);
-
-std::string format_table(const BudgetReport& report);
-nlohmann::json to_json(const BudgetReport& report);
+// Throws InputError for an unknown profile or variant. `profile` (empty: ps_2_0) may name
+// either kind; its partner checks the other kind of program. Rows: each program (scope
+// program), each pass of the plan (scope pass, no limits: the plan fits by construction), the
+// term's cost and the pass bound per material (scope material, no limits).
+Report run_budget(const Scene& scene, const std::string& variant, const std::string& profile);
 
 }  // namespace lt::budget

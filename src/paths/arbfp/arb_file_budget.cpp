@@ -1,11 +1,11 @@
 #include "paths/arbfp/arb_file_budget.h"
 
-#include <iomanip>
-#include <sstream>
+#include <optional>
 
 #include "core/error.h"
 #include "core/fs.h"
 #include "gl/context.h"
+#include "paths/arbfp/arb_mesa_counts.h"
 #include "paths/arbfp/arb_text_parser.h"
 
 namespace lt::arbfp {
@@ -42,61 +42,62 @@ const budget::Profile& profile_for(ProgramKind kind, const std::string& name) {
   return chosen.kind == kind ? chosen : budget::find_profile(chosen.partner);
 }
 
-// The rows, ours beside Mesa's native figure, each with the rule that relates them (measured on
-// Mesa 22 llvmpipe, see tests/arb_text_test.cpp).
-std::vector<BudgetFigure> figures(const FileBudget& b) {
-  const budget::ProgramCounts& c = b.counts;
-  const budget::Profile& p = *b.profile;
-  const MesaFigures& m = b.mesa.native;
-  const bool fragment = b.kind == ProgramKind::Fragment;
-  const int invariant = c.position_invariant ? 4 : 0;
-  std::vector<BudgetFigure> f;
-  const bool alu_agrees = fragment ? m.alu == c.alu : m.instructions == c.instructions() + 1;
-  f.push_back({"alu", "ALU instructions", c.alu, p.alu, fragment ? m.alu : -1, alu_agrees,
-               fragment ? "non-texture instructions; = NATIVE_ALU_INSTRUCTIONS"
-                        : "every instruction (GL has no ALU query for vertex programs)"});
-  if (fragment) {
-    f.push_back({"tex", "TEX instructions", c.tex, p.tex, m.tex, m.tex == c.tex,
-                 "TEX, TXP, TXB, KIL (KIL is a texture instruction in ARB_fragment_program); "
-                 "= NATIVE_TEX_INSTRUCTIONS"});
-  }
-  f.push_back({"instruction_slots", "instruction slots", c.instructions() + invariant,
-               p.instructions, m.instructions, m.instructions == c.instructions() + 1,
-               std::string("ALU + TEX") +
-                   (invariant ? " + the 4 DP4 of ARB_position_invariant" : "") +
-                   "; Mesa counts END too" + (invariant ? ", not the 4 DP4" : "")});
-  f.push_back({"temporaries", "temporaries", c.temporaries, p.temporaries, m.temporaries,
-               m.temporaries == c.temporaries, "TEMP declarations; = NATIVE_TEMPORARIES"});
-  f.push_back({"parameters", "parameters", c.parameters, p.parameters, m.parameters,
-               m.parameters == c.referenced_parameters,
-               "declared PARAM slots + distinct inline constants/bindings (checked); Mesa keeps "
-               "referenced slots only, equal constants merged, scalars packed (replayed: " +
-                   std::to_string(c.referenced_parameters) + ")"});
-  f.push_back({"attributes", "attributes", c.attributes, p.attributes, m.attributes,
-               m.attributes == c.attributes,
-               "distinct inputs read (an unread ATTRIB binds none); = NATIVE_ATTRIBS"});
-  if (fragment) {
-    f.push_back({"indirections", "texture indirections", c.indirections, p.indirections,
-                 m.indirections, m.indirections == 0,
-                 "ARB_fragment_program issue 24 (ps_2_0's 4 dependent levels = 5); Mesa reports "
-                 "0 (it no longer computes them)"});
-  }
-  f.push_back({"address_registers", "address registers", c.address_registers, -1,
-               m.address_registers, m.address_registers == c.address_registers,
-               "ADDRESS declarations; = NATIVE_ADDRESS_REGISTERS"});
+// The rows of program_resources, each with Mesa's native figure beside ours and the rule that
+// relates them (measured on Mesa 22 llvmpipe, see tests/arb_text_test.cpp).
+std::vector<budget::Resource> figures(const budget::ProgramCounts& c, const budget::Profile& p,
+                                      const MesaFigures& m) {
+  const bool fragment = c.kind == ProgramKind::Fragment;
+  const bool invariant = c.position_invariant;
+  std::vector<budget::Resource> f = budget::program_resources(c, p);
+  auto set = [&f](const std::string& key, std::optional<budget::CrossCheck> check,
+                  std::string rule) {
+    for (budget::Resource& r : f) {
+      if (r.key != key) continue;
+      r.check = check;
+      r.rule = std::move(rule);
+    }
+  };
+  using Check = budget::CrossCheck;
+  // GL has no ALU query for vertex programs: the slots row checks their instructions.
+  set("alu", fragment ? std::optional<Check>(Check{m.alu, m.alu == c.alu}) : std::nullopt,
+      fragment ? "non-texture instructions; = NATIVE_ALU_INSTRUCTIONS"
+               : "every instruction (GL has no ALU query for vertex programs)");
+  set("tex", Check{m.tex, m.tex == c.tex},
+      "TEX, TXP, TXB, KIL (KIL is a texture instruction in ARB_fragment_program); "
+      "= NATIVE_TEX_INSTRUCTIONS");
+  set("instruction_slots", Check{m.instructions, m.instructions == c.instructions() + 1},
+      std::string("ALU + TEX") + (invariant ? " + the 4 DP4 of ARB_position_invariant" : "") +
+          "; Mesa counts END too" + (invariant ? ", not the 4 DP4" : ""));
+  set("temporaries", Check{m.temporaries, m.temporaries == c.temporaries},
+      "TEMP declarations; = NATIVE_TEMPORARIES");
+  set("parameters", Check{m.parameters, m.parameters == c.referenced_parameters},
+      "declared PARAM slots + distinct inline constants/bindings (checked); Mesa keeps "
+      "referenced slots only, equal constants merged, scalars packed (replayed: " +
+          std::to_string(c.referenced_parameters) + ")");
+  set("attributes", Check{m.attributes, m.attributes == c.attributes},
+      "distinct inputs read (an unread ATTRIB binds none); = NATIVE_ATTRIBS");
+  set("indirections", Check{m.indirections, m.indirections == 0},
+      "ARB_fragment_program issue 24 (ps_2_0's 4 dependent levels = 5); Mesa reports "
+      "0 (it no longer computes them)");
+  set("address_registers", Check{m.address_registers, m.address_registers == c.address_registers},
+      "ADDRESS declarations; = NATIVE_ADDRESS_REGISTERS");
   return f;
 }
 
-// What Mesa adds at the API level, and how the profile sees it.
-std::vector<std::string> notes(const FileBudget& b) {
+// What Mesa adds at the API level, and how the profile sees it; and any figure that differs
+// from Mesa's by no rule.
+std::vector<std::string> notes(const budget::ProgramCounts& c,
+                               const std::vector<std::string>& options,
+                               const budget::Profile& profile, const MesaCounts& mesa,
+                               const std::vector<budget::Resource>& figures) {
   std::vector<std::string> out;
-  const MesaFigures &n = b.mesa.native, &a = b.mesa.api;
+  const MesaFigures &n = mesa.native, &a = mesa.api;
   if (a.instructions != n.instructions || a.temporaries != n.temporaries) {
     std::string why;
-    if (b.counts.position_invariant) why = "the 4 DP4 of ARB_position_invariant";
-    for (const std::string& o : b.options) {
+    if (c.position_invariant) why = "the 4 DP4 of ARB_position_invariant";
+    for (const std::string& o : options) {
       if (o.rfind("ARB_fog_", 0) == 0) {
-        why = "the fog code of " + o + " (not counted against " + b.profile->name +
+        why = "the fog code of " + o + " (not counted against " + profile.name +
               ": D3D9 fogs after the pixel shader, outside its slots)";
       }
     }
@@ -104,10 +105,10 @@ std::vector<std::string> notes(const FileBudget& b) {
                   " instructions and " + std::to_string(a.temporaries) +
                   " temporaries: it appends " + (why.empty() ? "code of its own" : why));
   }
-  for (const BudgetFigure& f : b.figures) {
-    if (!f.agrees) {
-      out.push_back("DIFFERS from Mesa: " + f.label + " " + std::to_string(f.count) + ", Mesa " +
-                    std::to_string(f.mesa) + ", which no rule above explains");
+  for (const budget::Resource& f : figures) {
+    if (f.check && !f.check->agrees) {
+      out.push_back("DIFFERS from Mesa: " + f.label + " " + std::to_string(f.used) + ", Mesa " +
+                    std::to_string(f.check->value) + ", which no rule above explains");
     }
   }
   return out;
@@ -115,14 +116,7 @@ std::vector<std::string> notes(const FileBudget& b) {
 
 }  // namespace
 
-std::string FileBudget::first_overrun() const {
-  if (over.empty()) return "";
-  const budget::Overrun& o = over.front();
-  return file + ": " + std::to_string(o.count) + " " + o.limit + " > " + std::to_string(o.max) +
-         " (" + profile->name + ")";
-}
-
-FileBudget budget_arb_file(const std::string& file, const std::string& profile) {
+budget::Report budget_arb_file(const std::string& file, const std::string& profile) {
   const std::string source = read_text_file(file);
   text::Program parsed;
   try {
@@ -131,81 +125,41 @@ FileBudget budget_arb_file(const std::string& file, const std::string& profile) 
     throw InputError(file, std::to_string(e.at().line) + ":" + std::to_string(e.at().column),
                      e.message());
   }
-  FileBudget b;
-  b.file = file;
-  b.header = parsed.header;
-  b.kind = parsed.kind;
-  b.options = parsed.options;
-  b.profile = &profile_for(parsed.kind, profile);
-  b.counts = budget::count_parsed(parsed);
-  b.over = budget::check(b.counts, *b.profile);
+  const budget::Profile& checked = profile_for(parsed.kind, profile);
+  const budget::ProgramCounts counts = budget::count_parsed(parsed);
+  MesaCounts mesa;
   {
     const gl::Context ctx(8, 8);
-    b.mesa = mesa_counts(parsed.kind, source);
+    mesa = mesa_counts(parsed.kind, source);
   }
-  if (!b.mesa.accepted) {
-    throw InputError(file, line_column(source, b.mesa.error_offset),
-                     "Mesa refuses the program: " + mesa_message(b.mesa.error));
+  if (!mesa.accepted) {
+    throw InputError(file, line_column(source, mesa.error_offset),
+                     "Mesa refuses the program: " + mesa_message(mesa.error));
   }
-  b.figures = figures(b);
-  b.notes = notes(b);
-  return b;
-}
-
-std::string to_text(const FileBudget& b) {
-  std::ostringstream s;
-  s << "budget: " << b.file << " (" << b.header << ", " << budget::to_string(b.kind)
-    << " program), profile " << b.profile->name << "\n  " << b.profile->source
-    << "\n  Mesa: " << b.mesa.renderer << " (NATIVE_* figures)\n\n";
-  s << std::left << std::setw(22) << "figure" << std::setw(7) << "count" << std::setw(7) << "limit"
-    << std::setw(7) << "Mesa"
-    << "rule\n";
-  for (const BudgetFigure& f : b.figures) {
-    std::string count = std::to_string(f.count) + (f.limit >= 0 && f.count > f.limit ? "!" : "");
-    s << std::setw(22) << f.label << std::setw(7) << count << std::setw(7)
-      << (f.limit >= 0 ? std::to_string(f.limit) : "-") << std::setw(7)
-      << (f.mesa >= 0 ? std::to_string(f.mesa) : "-") << f.rule << "\n";
-  }
-  for (const std::string& n : b.notes) s << "note: " << n << "\n";
-  s << (b.fits() ? "fits " + b.profile->name : "OVER BUDGET: " + b.first_overrun()) << "\n";
-  return s.str();
-}
-
-nlohmann::json to_json(const FileBudget& b) {
-  nlohmann::json counts = nlohmann::json::object(), limits = nlohmann::json::object(),
-                 mesa = nlohmann::json::object(), rules = nlohmann::json::object(),
-                 agrees = nlohmann::json::object();
-  auto or_null = [](int v) { return v >= 0 ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  for (const BudgetFigure& f : b.figures) {
-    counts[f.key] = f.count;
-    limits[f.key] = or_null(f.limit);
-    mesa[f.key] = or_null(f.mesa);
-    agrees[f.key] = f.agrees;
-    rules[f.key] = f.rule;
-  }
-  nlohmann::json over = nlohmann::json::array();
-  for (const budget::Overrun& o : b.over) {
-    over.push_back({{"limit", o.limit}, {"count", o.count}, {"max", o.max}});
-  }
-  return {{"schema", "ltrender-budget-arb-1"},
-          {"file", b.file},
-          {"path", "arbfp"},
-          {"kind", budget::to_string(b.kind)},
-          {"header", b.header},
-          {"options", b.options},
-          {"profile", b.profile->name},
-          {"fits", b.fits()},
-          {"counts", counts},
-          {"limits", limits},
-          {"over", over},
-          {"mesa",
-           {{"renderer", b.mesa.renderer},
-            {"native", mesa},
-            {"agrees", agrees},
-            {"api_instructions", b.mesa.api.instructions},
-            {"api_temporaries", b.mesa.api.temporaries}}},
-          {"rules", rules},
-          {"notes", b.notes}};
+  budget::Report r;
+  r.file = file;
+  r.input = "program";
+  r.path = "arbfp";
+  r.profiles = {
+      {checked.name, std::string(budget::to_string(parsed.kind)) + " programs", checked.source}};
+  r.check_name = "Mesa";
+  r.check_source = mesa.renderer + " (GL_PROGRAM_NATIVE_* figures)";
+  std::string options;
+  for (const std::string& o : parsed.options) options += (options.empty() ? "" : " ") + o;
+  r.details = {{"header", parsed.header, {}},
+               {"kind", budget::to_string(parsed.kind), {}},
+               {"options", options, {}},
+               {"mesa_api_instructions", "", mesa.api.instructions},
+               {"mesa_api_temporaries", "", mesa.api.temporaries}};
+  budget::Item item;
+  item.scope = budget::Scope::Program;
+  item.name = std::string(budget::to_string(parsed.kind)) + " program";
+  item.program = file;
+  item.profile = checked.name;
+  item.resources = figures(counts, checked, mesa.native);
+  r.notes = notes(counts, parsed.options, checked, mesa, item.resources);
+  r.items.push_back(std::move(item));
+  return r;
 }
 
 }  // namespace lt::arbfp

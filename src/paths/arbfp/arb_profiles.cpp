@@ -52,4 +52,28 @@ std::vector<Overrun> check(const ProgramCounts& c, const Profile& p) {
   return out;
 }
 
+std::vector<Resource> program_resources(const ProgramCounts& c, const Profile& p) {
+  const bool fragment = c.kind == ProgramKind::Fragment;
+  auto limit = [](int max) { return max >= 0 ? std::optional<int>(max) : std::nullopt; };
+  std::vector<Resource> out;
+  out.push_back({"alu", "ALU instructions", c.alu, limit(p.alu), "", {}});
+  if (fragment) out.push_back({"tex", "TEX instructions", c.tex, limit(p.tex), "", {}});
+  // As check(): the 4 DP4 the driver appends for ARB_position_invariant take slots too.
+  out.push_back({"instruction_slots",
+                 "instruction slots",
+                 c.instructions() + (c.position_invariant ? 4 : 0),
+                 limit(p.instructions),
+                 c.position_invariant ? "ALU + TEX + the 4 DP4 of ARB_position_invariant" : "",
+                 {}});
+  out.push_back({"temporaries", "temporaries", c.temporaries, limit(p.temporaries), "", {}});
+  out.push_back({"parameters", "parameters", c.parameters, limit(p.parameters), "", {}});
+  out.push_back({"attributes", "attributes", c.attributes, limit(p.attributes), "", {}});
+  if (fragment) {
+    out.push_back(
+        {"indirections", "texture indirections", c.indirections, limit(p.indirections), "", {}});
+  }
+  out.push_back({"address_registers", "address registers", c.address_registers, {}, "", {}});
+  return out;
+}
+
 }  // namespace lt::budget

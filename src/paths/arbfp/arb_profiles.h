@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "paths/arbfp/arb_counter.h"
+#include "paths/budget/report.h"
 
 namespace lt::budget {
 
@@ -30,5 +31,10 @@ struct Overrun {
   int count, max;
 };
 std::vector<Overrun> check(const ProgramCounts& counts, const Profile& profile);
+
+// The rows of one program in the budget report, checked against `profile` by the same limits as
+// check(): alu, tex and indirections (fragment programs), instruction_slots, temporaries,
+// parameters, attributes, address_registers (no profile limits them).
+std::vector<Resource> program_resources(const ProgramCounts& counts, const Profile& profile);
 
 }  // namespace lt::budget

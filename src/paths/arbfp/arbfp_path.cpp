@@ -308,24 +308,14 @@ PathInfo arbfp_path_info() {
     return "";
   };
   // Instructions, temporaries, parameters and indirections against ps_2_0 and friends.
-  info.budget = [](const Scene& scene, const BudgetRequest& rq) {
-    const budget::BudgetReport r =
-        budget::run_budget(scene, "arbfp", rq.variant, rq.profile.empty() ? "ps_2_0" : rq.profile);
-    *rq.out << (rq.json ? budget::to_json(r).dump(2) + "\n" : budget::format_table(r));
-    *rq.first_overrun = r.first_overrun();
-    return r.fits();
-  };
+  info.budget = budget::run_budget;
+  for (const budget::Profile& p : budget::all_profiles()) info.budget_profiles.push_back(p.name);
   // Hand-written ARB_vertex_program / ARB_fragment_program text, checked by our counter and by
   // Mesa (arb_file_budget.h).
   info.takes_profile = true;
   info.program_extensions = {".fp", ".vp", ".arb"};
   info.program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
-  info.budget_file = [](const std::string& file, const BudgetRequest& rq) {
-    const arbfp::FileBudget b = arbfp::budget_arb_file(file, rq.profile);
-    *rq.out << (rq.json ? arbfp::to_json(b).dump(2) + "\n" : arbfp::to_text(b));
-    *rq.first_overrun = b.first_overrun();
-    return b.fits();
-  };
+  info.budget_file = arbfp::budget_arb_file;
   return info;
 }
 

@@ -1,8 +1,6 @@
 #include "paths/combiners/combiner_budget.h"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -41,125 +39,75 @@ const CombinerBudgetProfile& find_profile(const std::string& profile) {
 }
 
 // GL 1.3 runs stage N on unit N and skips a unit with texturing off, so every stage costs a
-// unit; the colour sum after the combiners is free.
-void add_program(CombinerBudgetMaterial& m, const combiners::CombinerProgram& program) {
+// unit; the colour sum after the combiners is free. A material's row holds the largest of its
+// programs.
+void add_program(budget::Item& item, const combiners::CombinerProgram& program) {
   const int program_stages = static_cast<int>(program.stages.size());
-  m.stages = std::max(m.stages, program_stages);
-  m.texture_units = std::max(m.texture_units, program_stages);
-  m.constant_colors = std::max(m.constant_colors, program.constant_colors());
+  for (budget::Resource& r : item.resources) {
+    if (r.key == "stages" || r.key == "texture_units") r.used = std::max(r.used, program_stages);
+    if (r.key == "constant_colors") r.used = std::max(r.used, program.constant_colors());
+  }
 }
 
-void add_material(CombinerBudgetReport& r, const CombinerBudgetMaterial& m) {
-  r.stages = std::max(r.stages, m.stages);
-  r.texture_units = std::max(r.texture_units, m.texture_units);
-  r.constant_colors = std::max(r.constant_colors, m.constant_colors);
-  r.passes = std::max(r.passes, m.passes);
-  r.materials.push_back(m);
+budget::Item row(budget::Scope scope, const std::string& name, const CombinerBudgetProfile& p) {
+  budget::Item item;
+  item.scope = scope;
+  item.name = name;
+  item.profile = p.name;
+  item.resources = {{"stages", "stages", 0, p.stages, "", {}},
+                    {"texture_units", "texture units", 0, p.texture_units, "", {}},
+                    {"constant_colors", "constant colours", 0, p.constant_colors, "", {}}};
+  return item;
 }
 
-void check_limits(CombinerBudgetReport& r) {
-  auto check = [&](const char* what, int used, int limit) {
-    if (used > limit) {
-      r.over.push_back(std::string(what) + ": " + std::to_string(used) + " > " +
-                       std::to_string(limit));
-    }
-  };
-  check("stages", r.stages, r.profile.stages);
-  check("texture units", r.texture_units, r.profile.texture_units);
-  check("constant colours", r.constant_colors, r.profile.constant_colors);
-  // Per-vertex lighting runs on the CPU here, but a port would hand it to the hardware lights.
-  check("lights", r.lights, r.profile.lights);
+budget::Report report(const std::string& file, const std::string& input,
+                      const CombinerBudgetProfile& p) {
+  budget::Report r;
+  r.file = file;
+  r.input = input;
+  r.path = "combiners";
+  r.profiles = {{p.name, "", p.summary}};
+  return r;
 }
 
 }  // namespace
 
-CombinerBudgetReport combiner_budget(const Scene& scene, const std::string& profile,
-                                     const std::string& variant) {
-  CombinerBudgetReport r;
-  r.profile = find_profile(profile);
+budget::Report combiner_budget(const Scene& scene, const std::string& profile,
+                               const std::string& variant) {
+  const CombinerBudgetProfile& p = find_profile(profile.empty() ? "gl13-2units" : profile);
+  budget::Report r = report(scene.file.string(), "scene", p);
   r.variant = variant.empty() ? "t=vertex" : variant;
-  r.lights = static_cast<int>(scene.lights.size());
   for (const CombinerMaterialPlan& plan : plan_combiners(scene, r.variant)) {
     if (!plan.used) continue;
-    CombinerBudgetMaterial m;
-    m.material = scene.materials[plan.material].name;
-    // A pass is one program: the limits apply to the largest program the material uses.
+    const std::string& material = scene.materials[plan.material].name;
+    budget::Item item = row(budget::Scope::Material, "material " + material, p);
+    item.material = material;
     for (const auto& [kind, program] : plan.programs) {
-      if (!m.program.empty()) m.program += '+';
-      m.program += program_file(kind);
-      add_program(m, program);
+      item.program +=
+          std::string(item.program.empty() ? "" : "+") + "combiners/" + program_file(kind);
+      add_program(item, program);
     }
-    m.passes = plan.passes();
-    add_material(r, m);
+    // Per-vertex lighting runs on the CPU here, but a port would hand it to the hardware lights.
+    item.resources.push_back(
+        {"lights", "lights", static_cast<int>(scene.lights.size()), p.lights, "", {}});
+    item.resources.push_back({"passes", "passes", plan.passes(), {}, "", {}});
+    item.note = "passes: multipass, no limit";
+    r.items.push_back(std::move(item));
   }
-  check_limits(r);
   return r;
 }
 
-CombinerBudgetReport combiner_budget_file(const std::string& file, const std::string& profile) {
-  CombinerBudgetReport r;
-  r.profile = find_profile(profile);
-  r.variant = "(program file)";
+budget::Report combiner_budget_file(const std::string& file, const std::string& profile) {
+  const CombinerBudgetProfile& p = find_profile(profile.empty() ? "gl13-2units" : profile);
+  budget::Report r = report(file, "program", p);
   const combiners::CombinerProgram program =
       combiners::parse_combiner_program(read_input_file(file, InputKind::Program), file);
-  CombinerBudgetMaterial m;
-  m.material = program.name;
-  m.program = file;
-  add_program(m, program);
-  m.passes = 1;  // one file is one pass's state
-  add_material(r, m);
-  check_limits(r);
+  budget::Item item = row(budget::Scope::Program, "program " + program.name, p);
+  item.program = file;
+  add_program(item, program);
+  item.resources.push_back({"passes", "passes", 1, {}, "one file is one pass's state", {}});
+  r.items.push_back(std::move(item));
   return r;
-}
-
-std::string to_text(const CombinerBudgetReport& r) {
-  std::ostringstream o;
-  o << "profile " << r.profile.name << " (" << r.profile.summary << "), path combiners, variant "
-    << r.variant << "\n";
-  for (const CombinerBudgetMaterial& m : r.materials) {
-    o << "  material " << m.material << ": combiners/" << m.program << ": " << m.stages
-      << " stages, " << m.texture_units << " texture units, " << m.constant_colors
-      << " constant colours, " << m.passes << " passes\n";
-  }
-  o << "  stages " << r.stages << "/" << r.profile.stages << ", texture units " << r.texture_units
-    << "/" << r.profile.texture_units << ", constant colours " << r.constant_colors << "/"
-    << r.profile.constant_colors << ", lights " << r.lights << "/" << r.profile.lights
-    << ", passes " << r.passes << " (multipass: no limit)\n";
-  if (r.fits()) {
-    o << "  fits\n";
-  } else {
-    for (const std::string& s : r.over) o << "  OVER " << s << "\n";
-  }
-  return o.str();
-}
-
-std::string to_json(const CombinerBudgetReport& r) {
-  nlohmann::json j;
-  j["profile"] = r.profile.name;
-  j["path"] = "combiners";
-  j["variant"] = r.variant;
-  j["fits"] = r.fits();
-  j["over"] = r.over;
-  j["used"] = {{"stages", r.stages},
-               {"texture_units", r.texture_units},
-               {"constant_colors", r.constant_colors},
-               {"passes", r.passes},
-               {"lights", r.lights}};
-  j["limits"] = {{"stages", r.profile.stages},
-                 {"texture_units", r.profile.texture_units},
-                 {"constant_colors", r.profile.constant_colors},
-                 {"lights", r.profile.lights}};
-  nlohmann::json mats = nlohmann::json::array();
-  for (const CombinerBudgetMaterial& m : r.materials) {
-    mats.push_back({{"material", m.material},
-                    {"program", m.program},
-                    {"stages", m.stages},
-                    {"texture_units", m.texture_units},
-                    {"constant_colors", m.constant_colors},
-                    {"passes", m.passes}});
-  }
-  j["materials"] = mats;
-  return j.dump();
 }
 
 }  // namespace lt

@@ -454,20 +454,14 @@ PathInfo combiners_path_info() {
                   return std::make_unique<CombinersPath>(ctx, variant);
                 }};
   // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
-  auto print = [](const CombinerBudgetReport& r, const BudgetRequest& rq) {
-    *rq.out << (rq.json ? to_json(r) + "\n" : to_text(r));
-    if (!r.fits()) *rq.first_overrun = r.over.front();
-    return r.fits();
+  info.budget = [](const Scene& scene, const std::string& variant, const std::string& profile) {
+    return combiner_budget(scene, profile, variant);
   };
-  info.budget = [print](const Scene& scene, const BudgetRequest& rq) {
-    return print(
-        combiner_budget(scene, rq.profile.empty() ? "gl13-2units" : rq.profile, rq.variant), rq);
-  };
+  for (const CombinerBudgetProfile& p : combiner_budget_profiles())
+    info.budget_profiles.push_back(p.name);
   // A hand-written .comb file (combiners/README.md) as one pass.
   info.program_extensions = {".comb"};
-  info.budget_file = [print](const std::string& file, const BudgetRequest& rq) {
-    return print(combiner_budget_file(file, rq.profile.empty() ? "gl13-2units" : rq.profile), rq);
-  };
+  info.budget_file = combiner_budget_file;
   return info;
 }
 

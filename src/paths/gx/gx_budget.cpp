@@ -36,54 +36,61 @@ void count_konst(const TevStage& s, std::set<int>& konst) {
   if (alpha_reads && s.konst_alpha_sel >= 12) konst.insert(s.konst_alpha_sel & 3);
 }
 
-std::string over_line(const char* what, int used, int limit) {
-  return std::string(what) + ": " + std::to_string(used) + " > " + std::to_string(limit);
+std::vector<budget::Resource> resources(const GxCounts& c, const GxCounts& lim) {
+  auto limit = [](int l) { return l >= 0 ? std::optional<int>(l) : std::nullopt; };
+  return {{"tev_stages", "TEV stages", c.tev_stages, limit(lim.tev_stages), "", {}},
+          {"texgens", "texgens", c.texgens, limit(lim.texgens), "", {}},
+          {"texture_maps", "texture maps", c.texture_maps, limit(lim.texture_maps), "", {}},
+          {"channels", "colour channels", c.channels, limit(lim.channels), "", {}},
+          {"lights_per_channel",
+           "lights per channel",
+           c.lights_per_channel,
+           limit(lim.lights_per_channel),
+           "",
+           {}},
+          {"konst_colors", "konst colours", c.konst_colors, limit(lim.konst_colors), "", {}},
+          {"tev_registers", "TEV registers", c.tev_registers, limit(lim.tev_registers), "", {}},
+          {"vertex_attributes",
+           "vertex attributes",
+           c.vertex_attributes,
+           limit(lim.vertex_attributes),
+           "",
+           {}}};
 }
 
-void check(GxBudgetProgram& p, const GxCounts& lim) {
-  const GxCounts& c = p.counts;
-  auto test = [&](const char* what, int used, int limit) {
-    if (limit >= 0 && used > limit) p.over.push_back(over_line(what, used, limit));
-  };
-  test("TEV stages", c.tev_stages, lim.tev_stages);
-  test("texgens", c.texgens, lim.texgens);
-  test("texture maps", c.texture_maps, lim.texture_maps);
-  test("colour channels", c.channels, lim.channels);
-  test("lights per channel", c.lights_per_channel, lim.lights_per_channel);
-  test("konst colours", c.konst_colors, lim.konst_colors);
-  test("TEV registers", c.tev_registers, lim.tev_registers);
-  test("vertex attributes", c.vertex_attributes, lim.vertex_attributes);
-}
-
-GxBudgetReport report_of(const std::vector<std::vector<PassProgram>>& by_material,
+budget::Report report_of(const std::vector<std::vector<PassProgram>>& by_material,
                          const std::vector<std::string>& material_names,
                          const std::string& profile) {
-  GxBudgetReport r;
-  r.profile = find_gx_profile(profile);
+  const GxProfile& prof = find_gx_profile(profile.empty() ? "wii-tev" : profile);
+  budget::Report r;
+  r.path = "gx";
+  r.profiles = {{prof.name, "", prof.summary + " (" + prof.source + ")"}};
+  std::vector<budget::Item> materials;
   for (size_t m = 0; m < by_material.size(); ++m) {
-    r.passes = std::max(r.passes, static_cast<int>(by_material[m].size()));
+    std::string material;
     for (const PassProgram& p : by_material[m]) {
-      GxBudgetProgram b;
-      b.name = p.name;
+      budget::Item b;
+      b.scope = budget::Scope::Pass;
       b.material = m < material_names.size() ? material_names[m] : p.material;
-      b.pass = p.pass;
-      b.counts = count_program(p.state);
-      check(b, r.profile.limits);
-      r.programs.push_back(std::move(b));
+      material = b.material;
+      b.name = b.material.empty() ? p.name
+                                  : "material " + b.material + " pass " + std::to_string(p.pass) +
+                                        " (" + p.name + ")";
+      b.profile = prof.name;
+      b.resources = resources(count_program(p.state), prof.limits);
+      r.items.push_back(std::move(b));
     }
+    if (by_material[m].empty()) continue;
+    budget::Item passes;
+    passes.scope = budget::Scope::Material;
+    passes.name = (material.empty() ? "(whole file)" : "material " + material) + ": passes";
+    passes.material = material;
+    passes.resources = {{"passes", "passes", static_cast<int>(by_material[m].size()), {}, "", {}}};
+    passes.note = "passes: additive EFB blending, no hardware limit";
+    materials.push_back(std::move(passes));
   }
+  r.items.insert(r.items.end(), materials.begin(), materials.end());
   return r;
-}
-
-nlohmann::json counts_json(const GxCounts& c) {
-  return {{"tev_stages", c.tev_stages},
-          {"texgens", c.texgens},
-          {"texture_maps", c.texture_maps},
-          {"channels", c.channels},
-          {"lights_per_channel", c.lights_per_channel},
-          {"konst_colors", c.konst_colors},
-          {"tev_registers", c.tev_registers},
-          {"vertex_attributes", c.vertex_attributes}};
 }
 
 }  // namespace
@@ -139,37 +146,20 @@ const GxProfile& find_gx_profile(const std::string& name) {
   return find_named(gx_profiles(), name, "--profile", "gx profile");
 }
 
-bool GxBudgetReport::fits() const {
-  for (const GxBudgetProgram& p : programs) {
-    if (!p.over.empty()) return false;
-  }
-  return true;
-}
-
-std::string GxBudgetReport::first_overrun() const {
-  for (const GxBudgetProgram& p : programs) {
-    if (!p.over.empty())
-      return (p.material.empty()
-                  ? ""
-                  : "material " + p.material + " pass " + std::to_string(p.pass) + " ") +
-             "(" + p.name + "): " + p.over.front() + " (" + profile.name + ")";
-  }
-  return "";
-}
-
-GxBudgetReport gx_budget_scene(const Scene& scene, const std::string& variant,
+budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
                                const std::string& profile) {
   const GxVariant v = parse_gx_variant(variant.empty() ? "t=vertex" : variant);
   const ScenePrograms programs = scene_programs_for(scene, v, "");
   std::vector<std::string> names;
   for (const Material& m : scene.materials) names.push_back(m.name);
-  GxBudgetReport r = report_of(programs.by_material, names, profile);
-  r.source = scene.file.string();
+  budget::Report r = report_of(programs.by_material, names, profile);
+  r.file = scene.file.string();
+  r.input = "scene";
   r.variant = to_string(v);
   return r;
 }
 
-GxBudgetReport gx_budget_file(const std::string& program_file, const std::string& profile) {
+budget::Report gx_budget_file(const std::string& program_file, const std::string& profile) {
   const ProgramFile file = load_program(program_file);
   std::vector<std::vector<PassProgram>> groups;
   std::map<std::string, size_t> index;
@@ -180,61 +170,10 @@ GxBudgetReport gx_budget_file(const std::string& program_file, const std::string
     }
     groups[index[p.material]].push_back(std::move(p));
   }
-  GxBudgetReport r = report_of(groups, {}, profile);
-  r.source = program_file;
+  budget::Report r = report_of(groups, {}, profile);
+  r.file = program_file;
+  r.input = "program";
   return r;
-}
-
-std::string to_text(const GxBudgetReport& r) {
-  std::ostringstream o;
-  o << "profile " << r.profile.name << " (" << r.profile.summary << ")\n"
-    << "path gx, " << r.source << (r.variant.empty() ? "" : ", variant " + r.variant) << "\n";
-  o << "| program | material | pass | TEV stages | texgens | texture maps | channels | lights/"
-       "channel | konst | TEV registers | vertex attributes |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const GxBudgetProgram& p : r.programs) {
-    const GxCounts& c = p.counts;
-    o << "| " << p.name << " | " << (p.material.empty() ? "-" : p.material) << " | " << p.pass
-      << " | " << c.tev_stages << " | " << c.texgens << " | " << c.texture_maps << " | "
-      << c.channels << " | " << c.lights_per_channel << " | " << c.konst_colors << " | "
-      << c.tev_registers << " | " << c.vertex_attributes << " |\n";
-  }
-  const GxCounts& l = r.profile.limits;
-  o << "| limit (" << r.profile.name << ") | | | " << l.tev_stages << " | " << l.texgens << " | "
-    << l.texture_maps << " | " << l.channels << " | " << l.lights_per_channel << " | "
-    << l.konst_colors << " | " << l.tev_registers << " | " << l.vertex_attributes << " |\n";
-  o << "passes per frame: " << r.passes << " (additive EFB blending: no hardware limit)\n";
-  if (r.fits()) {
-    o << "fits\n";
-  } else {
-    for (const GxBudgetProgram& p : r.programs) {
-      for (const std::string& s : p.over) o << "OVER " << p.name << ": " << s << "\n";
-    }
-  }
-  return o.str();
-}
-
-nlohmann::json to_json(const GxBudgetReport& r) {
-  nlohmann::json j;
-  j["path"] = "gx";
-  j["source"] = r.source;
-  j["variant"] = r.variant;
-  j["profile"] = r.profile.name;
-  j["fits"] = r.fits();
-  nlohmann::json over = nlohmann::json::array(), programs = nlohmann::json::array();
-  for (const GxBudgetProgram& p : r.programs) {
-    for (const std::string& s : p.over) over.push_back(p.name + ": " + s);
-    programs.push_back({{"name", p.name},
-                        {"material", p.material},
-                        {"pass", p.pass},
-                        {"counts", counts_json(p.counts)},
-                        {"over", p.over}});
-  }
-  j["over"] = over;
-  j["passes"] = r.passes;
-  j["limits"] = counts_json(r.profile.limits);
-  j["programs"] = programs;
-  return j;
 }
 
 }  // namespace lt::gx

@@ -4,10 +4,10 @@
 // `ltrender budget FILE.c` a program file.
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "paths/budget/report.h"
 #include "paths/gx/gx_state.h"
 #include "paths/gx/gx_variant.h"
 #include "scene/scene.h"
@@ -30,32 +30,11 @@ const std::vector<GxProfile>& gx_profiles();
 // Throws InputError("--profile", ...) naming the valid profiles.
 const GxProfile& find_gx_profile(const std::string& name);
 
-struct GxBudgetProgram {
-  std::string name;  // the pass function, or "(whole file)"
-  std::string material;
-  int pass = 0;
-  GxCounts counts;
-  std::vector<std::string> over;  // "TEV stages: 17 > 16"
-};
-
-struct GxBudgetReport {
-  std::string source;   // the scene or the program file
-  std::string variant;  // empty for a file
-  GxProfile profile;
-  std::vector<GxBudgetProgram> programs;
-  int passes = 0;  // per frame: the most any material needs
-  bool fits() const;
-  std::string first_overrun() const;  // "material marble pass 0 (ltrender_marble_pass0): ..."
-};
-
-GxBudgetReport gx_budget_scene(const Scene& scene, const std::string& variant,
+// One row (scope pass) per pass program, named "material M pass N (function)" where the
+// material is known, else by its function; one row (scope material) per material with its passes
+// (additive EFB blending: no hardware limit). `variant` "" is t=vertex, `profile` "" wii-tev.
+budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
                                const std::string& profile);
-GxBudgetReport gx_budget_file(const std::string& program_file, const std::string& profile);
-
-std::string to_text(const GxBudgetReport& report);
-// The schema: {source, variant, profile, fits, over: [..], passes, limits: {counts},
-// programs: [{name, material, pass, counts: {...}, over: [..]}]}; counts keys are the GxCounts
-// field names.
-nlohmann::json to_json(const GxBudgetReport& report);
+budget::Report gx_budget_file(const std::string& program_file, const std::string& profile);
 
 }  // namespace lt::gx

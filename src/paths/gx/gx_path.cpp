@@ -327,19 +327,10 @@ PathInfo gx_path_info() {
   };
   // TEV stages, texgens, texture maps, channels, lights, konst colours, registers and passes
   // against the Wii's GX, for generated programs and for program files alike.
-  auto print = [](const gx::GxBudgetReport& r, const BudgetRequest& rq) {
-    *rq.out << (rq.json ? gx::to_json(r).dump(2) + "\n" : gx::to_text(r));
-    *rq.first_overrun = r.first_overrun();
-    return r.fits();
-  };
-  info.budget = [print](const Scene& scene, const BudgetRequest& rq) {
-    return print(
-        gx::gx_budget_scene(scene, rq.variant, rq.profile.empty() ? "wii-tev" : rq.profile), rq);
-  };
+  info.budget = gx::gx_budget_scene;
+  for (const gx::GxProfile& p : gx::gx_profiles()) info.budget_profiles.push_back(p.name);
   info.program_extensions = {".c", ".gx"};
-  info.budget_file = [print](const std::string& file, const BudgetRequest& rq) {
-    return print(gx::gx_budget_file(file, rq.profile.empty() ? "wii-tev" : rq.profile), rq);
-  };
+  info.budget_file = gx::gx_budget_file;
   return info;
 }
 
