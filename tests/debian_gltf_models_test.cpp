@@ -1,7 +1,7 @@
 // Debian's glTF 2.0 test models (assimp-testmodels, /usr/share/assimp/models/glTF2/), every file:
 // rendered lit through reference and gx, or refused for a stated reason. Each refusal is a file
-// glTF 2.0 calls invalid, a required extension not decoded, a file with no surface to draw, or
-// (until the albedo maps land) a base colour texture. The table is docs/scenes-and-gltf.md's.
+// glTF 2.0 calls invalid, a required extension not decoded, or a file with no surface to draw.
+// The table is docs/scenes-and-gltf.md's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
