@@ -22,6 +22,7 @@ glm::dvec3 rounded_to_float(const glm::dvec3& v) {
 }
 
 Scene scene_on_camera_path(const Scene& base, int k, int frames) {
+  if (k == 0) return base;  // as it is, to the bit: a one-frame sweep is the bench's frame
   Scene s = base;
   const double t = frames > 1 ? k / double(frames - 1) : 0.0;
   const glm::dvec3 up = glm::normalize(base.camera.up);
