@@ -15,10 +15,10 @@ TEST(CliUsage, AnUnknownSubcommandIsNamedWithTheSubcommands) {
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err,
             "ltrender: error: usage: unknown subcommand 'frobnicate' (subcommands: render, "
-            "compare, info, bench, bake, budget, meshgen, export, regress, advise)\n");
+            "compare, info, bench, bake, budget, meshgen, export, regress, advise, sweep)\n");
   // Every subcommand it lists is one: its --help exits 0.
   for (const char* sub : {"render", "compare", "info", "bench", "bake", "budget", "meshgen",
-                          "export", "regress", "advise"})
+                          "export", "regress", "advise", "sweep"})
     EXPECT_EQ(test::run_ltrender(std::string(sub) + " --help").exit_code, 0) << sub;
   // No word at all still asks for one.
   const auto none = test::run_ltrender("");

@@ -5,13 +5,14 @@
 // functions' calls drive ltrender's emulator. Each frame must be the very image ltrender renders
 // when the scene itself is moved there (every pixel, every channel), and the module's t must be
 // the t the emulator sends, bit for bit. The scene is first made what a game holds: float
-// positions, normals, camera and lights (the module's inputs are f32).
+// positions, normals, camera and lights (the module's inputs are f32). t=texgen:view=object's
+// texture matrix, recomputed by the setup each frame from the meshes' centre, is held the same
+// way: the frames it drives must be the emulator's.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -23,6 +24,7 @@
 #include "paths/gx/program/gx_name_table.h"
 #include "paths/gx/program/pass_programs.h"
 #include "paths/gx/vertex_stage.h"
+#include "render/camera_path.h"
 #include "render/session.h"
 #include "scene/scene.h"
 #include "test_util.h"
@@ -30,60 +32,24 @@
 namespace lt::gx {
 namespace {
 
-constexpr int kFrames = 8;
+constexpr int kFrames = kCameraPathFrames;  // render/camera_path.h: the path every frame is on
 constexpr int kSize = 96;
-
-// Through a volatile: GCC 12's SLP vectoriser drops the float round trip of a dvec3's three
-// components at -O2 and -O3 (dvec3(vec3(v)) in a loop comes back unrounded).
-double as_float(double v) {
-  volatile float f = static_cast<float>(v);
-  return f;
-}
-glm::dvec3 as_float(const glm::dvec3& v) {
-  return {as_float(v.x), as_float(v.y), as_float(v.z)};
-}
 
 // The scene as a game holds it: every input of the module in f32.
 void make_float(Scene& s) {
   for (SceneObject& o : s.objects) {
-    for (auto& p : o.mesh.positions) p = as_float(p);
-    for (auto& n : o.mesh.normals) n = as_float(n);
+    for (auto& p : o.mesh.positions) p = rounded_to_float(p);
+    for (auto& n : o.mesh.normals) n = rounded_to_float(n);
   }
-  s.camera.eye = as_float(s.camera.eye);
-  s.camera.target = as_float(s.camera.target);
-  s.camera.up = as_float(s.camera.up);
+  s.camera.eye = rounded_to_float(s.camera.eye);
+  s.camera.target = rounded_to_float(s.camera.target);
+  s.camera.up = rounded_to_float(s.camera.up);
   for (Light& l : s.lights) {
-    l.position = as_float(l.position);
-    l.direction = as_float(l.direction);
-    l.color = as_float(l.color);
+    l.position = rounded_to_float(l.position);
+    l.direction = rounded_to_float(l.direction);
+    l.color = rounded_to_float(l.color);
     l.translucency_scale = static_cast<float>(l.translucency_scale);
   }
-}
-
-glm::dvec3 rotated(const glm::dvec3& v, const glm::dvec3& axis, double degrees) {
-  return glm::dvec3(glm::rotate(glm::dmat4(1), glm::radians(degrees), axis) * glm::dvec4(v, 0));
-}
-
-// Frame k of the path: the eye orbits the target about the up axis (up to 70 degrees), point
-// lights orbit it the other way, directional lights turn with them, and every light's colour
-// and translucency scale grow (up to x1.6 and x1.5); all in float.
-Scene frame_scene(const Scene& base, int k) {
-  Scene s = base;
-  const double t = k / double(kFrames - 1);
-  const glm::dvec3 up = glm::normalize(base.camera.up);
-  s.camera.eye =
-      as_float(base.camera.target + rotated(base.camera.eye - base.camera.target, up, 70 * t));
-  for (Light& l : s.lights) {
-    l.color = as_float(l.color * (1 + 0.6 * t));
-    l.translucency_scale = as_float(l.translucency_scale * (1 + 0.5 * t));
-    if (l.type == Light::Type::Point) {
-      l.position =
-          as_float(base.camera.target + rotated(l.position - base.camera.target, up, -50 * t));
-    } else {
-      l.direction = as_float(rotated(l.direction, up, -50 * t));
-    }
-  }
-  return s;
 }
 
 // The host side: the module and the recorder compiled into one shared object.
@@ -180,7 +146,7 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   std::string previous_program;
   int stale_differs = 0;
   for (int k = 0; k < kFrames; ++k) {
-    const Scene s = frame_scene(base, k);
+    const Scene s = scene_on_camera_path(base, k);
     const std::string at = GetParam().scene + " frame " + std::to_string(k);
     ltr_camera camera;
     copy3(s.camera.eye, camera.eye);
@@ -289,6 +255,11 @@ std::vector<Case> cases() {
   for (const std::string& s : test::json_files("scenes")) out.push_back({s, "t=vertex"});
   out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "t=vertex"});
   out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "t=texgen"});
+  // The per-frame texture matrix of a constant V and L (object_view.h), under every camera and
+  // light of the demo scenes.
+  for (const std::string& s : test::json_files("scenes"))
+    out.push_back({s, "t=texgen:view=object"});
+  out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "t=texgen:view=object"});
   return out;
 }
 

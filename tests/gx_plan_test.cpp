@@ -200,8 +200,13 @@ int expect_plan_matches_program(const Scene& scene, const GxVariant& v, const st
 }
 
 TEST(GxPlan, EveryDemoSceneAndVariantProgramSetsWhatThePlanSays) {
-  const char* const variants[] = {"t=vertex", "t=vertex:lut=16", "t=vertex:map=rgb565", "t=texgen",
-                                  "lobe=xf-spec"};
+  const char* const variants[] = {"t=vertex",
+                                  "t=vertex:lut=16",
+                                  "t=vertex:map=rgb565",
+                                  "t=texgen",
+                                  "t=texgen:view=object",
+                                  "lobe=xf-spec",
+                                  "lobe=xf-spec:view=object"};
   int compared = 0, xf_spec = 0, maps = 0;
   for (const char* folder : {"scenes", "scenes/ortho", "scenes/maps", "scenes/figures"}) {
     for (const std::string& s : test::json_files(folder)) {

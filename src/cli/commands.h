@@ -36,5 +36,6 @@ Action add_meshgen(CLI::App& app);
 Action add_export(CLI::App& app);
 Action add_regress(CLI::App& app);
 Action add_advise(CLI::App& app);
+Action add_sweep(CLI::App& app);
 
 }  // namespace lt::cli

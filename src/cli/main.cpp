@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   const std::vector<Registration> registrations = {
       lt::cli::add_render,  lt::cli::add_compare, lt::cli::add_info,    lt::cli::add_bench,
       lt::cli::add_bake,    lt::cli::add_budget,  lt::cli::add_meshgen, lt::cli::add_export,
-      lt::cli::add_regress, lt::cli::add_advise,
+      lt::cli::add_regress, lt::cli::add_advise,  lt::cli::add_sweep,
   };
   std::vector<lt::cli::Action> actions;
   for (auto reg : registrations) actions.push_back(reg(app));

@@ -281,7 +281,8 @@ PathInfo gx_path_info() {
       "the Wii's GX pipeline emulated in its own integer arithmetic: XF lighting per vertex, "
       "8-bit channels, the power LUT as an I8 texture with 7-bit filtering, TEV stages, EFB "
       "blending; programs are libogc calls (`ltrender export gx`). Variants are a grammar: "
-      "t=vertex | t=texgen with :lut=N (2..1024), or lobe=xf-spec; any with :colors=round, "
+      "t=vertex | t=texgen with :lut=N (2..1024), or lobe=xf-spec; t=texgen and lobe=xf-spec with "
+      ":view=object (V and L per object: any camera and lights); any with :colors=round, "
       ":lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of the EFB)";
   info.variants = {
       {"t=vertex",
@@ -307,6 +308,13 @@ PathInfo gx_path_info() {
        "no texture: the lobe as the XF specular attenuation, a rational fitted per material, "
        "per vertex, 2 TEV stages (directional lights and an orthographic camera only)",
        VariantRun::Story},
+      {"t=texgen:view=object",
+       "t=texgen under any camera and lights: V and L taken once per object at its centre "
+       "(object_view.h), so the texture matrix from the raw normal is recomputed per frame and "
+       "the CPU does no per-vertex work; the error is what a constant V and L cost"},
+      {"lobe=xf-spec:view=object",
+       "lobe=xf-spec under any camera and lights: V and L (and a point light's attenuation) taken "
+       "once per object at its centre, the lobe fitted for them"},
   };
   info.create = [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
     return std::make_unique<gx::GxPath>(ctx, variant);

@@ -14,14 +14,15 @@ namespace {
 
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
-    "any of them with :colors=round, :lights=round-each, :map=rgb565 and :out=xfb (or :out=efb)";
+    "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
+    ":lights=round-each, :map=rgb565 and :out=xfb (or :out=efb)";
 
 }  // namespace
 
 GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
   bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
-       seen_lights = false, seen_map = false, seen_out = false;
+       seen_lights = false, seen_map = false, seen_out = false, seen_view = false;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -74,6 +75,10 @@ GxVariant parse_gx_variant(const std::string& text) {
       seen_out = true;
       if (value != "efb" && value != "xfb") bad("out=" + value + " is not efb or xfb");
       v.out = value == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
+    } else if (key == "view" && !seen_view) {
+      seen_view = true;
+      if (value != "object" && value != "exact") bad("view=" + value + " is not object or exact");
+      v.view_object = value == "object";
     } else {
       bad("'" + key + "' is not a gx variant axis, or is given twice");
     }
@@ -81,6 +86,9 @@ GxVariant parse_gx_variant(const std::string& text) {
   if (text.empty()) bad("empty variant");
   if (v.lobe == GxVariant::Lobe::XfSpec && (seen_t || seen_lut))
     bad("lobe=xf-spec uses no texture, so it takes no t= or lut=");
+  // t=vertex computes V and L exactly per vertex on the CPU: a per-object view would only lose.
+  if (v.view_object && v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex)
+    bad("view=object is for t=texgen and lobe=xf-spec (t=vertex has the exact V per vertex)");
   return v;
 }
 
@@ -92,6 +100,7 @@ std::string to_string(const GxVariant& v) {
     s = v.t == GxVariant::TexCoord::Vertex ? "t=vertex" : "t=texgen";
     if (v.lut_size != kDefaultLutSize) s += ":lut=" + std::to_string(v.lut_size);
   }
+  if (v.view_object) s += ":view=object";
   if (v.round_colors) s += ":colors=round";
   if (v.round_each_light) s += ":lights=round-each";
   if (v.map_rgb565) s += ":map=rgb565";
@@ -114,6 +123,14 @@ std::string refusal(const Scene& scene, const GxVariant& v) {
   }
   if (v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex) return "";
   for (const Material& m : scene.materials) {
+    // view=object makes V and L constant per object whatever the camera and lights; a
+    // normalised H is still not affine in the normal.
+    if (v.view_object) {
+      if (m.translucency && m.translucency->normalize_distorted_light)
+        return to_string(v) + " needs t affine in the normal: material " + m.name +
+               " normalises H; use t=vertex";
+      continue;
+    }
     const std::string why = model::why_t_is_not_affine_in_the_normal(scene, m);
     if (!why.empty())
       return to_string(v) + " needs t affine in the normal: " + why + "; use t=vertex";

@@ -3,6 +3,9 @@
 //   t=texgen      t from the raw normal through a 2x4 texture matrix (directional lights and an
 //                 orthographic camera only: where t is affine in the normal)
 //   lobe=xf-spec  no texture: the lobe from the XF specular attenuation, fitted per material
+// and for t=texgen and lobe=xf-spec `:view=object`: V and L taken once per object (object_view.h)
+// instead of exactly, so t is affine in the normal under a perspective camera and point lights,
+// e.g. `t=texgen:view=object` (an approximation: its error is the bench's to say).
 // and for the LUT variants `:lut=N` (2..1024 texels, default 256), e.g. `t=vertex:lut=64`.
 // Two axes pick the other side where the sources disagree on the hardware (gx-hardware.md §2.4,
 // §2.5), so docs/porting-to-the-wii.md can say how far each choice moves the image:
@@ -37,6 +40,9 @@ struct GxVariant {
   bool round_each_light = false;
   bool map_rgb565 = false;  // colour thickness maps as GX_TF_RGB565 instead of GX_TF_RGBA8
   Output out = Output::Efb;
+  // V and L constant per object, from its centre (object_view.h); default: exact (t=texgen and
+  // lobe=xf-spec then need an orthographic camera and directional lights).
+  bool view_object = false;
 
   bool operator==(const GxVariant&) const = default;
 };
@@ -50,7 +56,8 @@ std::string to_string(const GxVariant& v);
 
 // Why the variant cannot be exact for this scene (empty when it can): t=texgen and lobe=xf-spec
 // need t affine in the normal, so every light directional, an orthographic camera and H not
-// normalised (gx-hardware.md §3.1); out=xfb needs an even width and height (xfb_copy.h).
+// normalised (gx-hardware.md §3.1), or with view=object only H not normalised; out=xfb needs an
+// even width and height (xfb_copy.h).
 std::string refusal(const Scene& scene, const GxVariant& v);
 
 }  // namespace lt::gx

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "paths/gx/generator.h"
+#include "paths/gx/object_view.h"
 #include "paths/gx/pass_plan.h"
 #include "paths/gx/thickness_texture.h"
 
@@ -80,9 +81,10 @@ class PassPlanner {
   // pass_planner_albedo.cpp
   std::optional<MapTexture> albedo_texture(MaterialPlan& mp) const;
   static void add_albedo_stage(PassPlan& p, const MapTexture& albedo);
-  TexGenPlan lut_texgen(const Translucency& tr, const Light& light, const TexturePlan& lut) const;
+  TexGenPlan lut_texgen(const Translucency& tr, const ConstantView& cv,
+                        const TexturePlan& lut) const;
   static TexGenPlan map_texgen(const MapTexture& map, int texcoord, int uv_attribute);
-  LightObjectPlan specular_light(const Translucency& tr, const Light& light,
+  LightObjectPlan specular_light(const Translucency& tr, const Light& light, const ConstantView& cv,
                                  const glm::dvec3& color, double inv_gain,
                                  PassFigures& figures) const;
 

@@ -256,15 +256,18 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
   const Material& mat = scene_.materials[static_cast<size_t>(m)];
   const Light& light = scene_.lights[l];
   const PassChoice c = choose(m, l, map);
-  const double trans_mag = (c.xf ? 1.0 : c.max_attenuation) * c.s0;
+  // t=texgen's and lobe=xf-spec's V and L (object_view.h); a specular light's magnitude is the
+  // attenuation at the object's centre (1 but for view=object and a point light).
+  const ConstantView cv = constant_view(scene_, variant_, material_centre(scene_, m), light);
+  const double trans_mag = (c.xf ? cv.attenuation : c.max_attenuation) * c.s0;
   const int st_scale = std::max(c.sd, scale_for(trans_mag));
   PassPlan p;
   p.vertex = {c.translucent && c.vertex_t, c.lut && variant_.t == GxVariant::TexCoord::Vertex,
               c.uses_map};
   const glm::dvec3 pos = light_position_eye(view_, light);
   if (c.translucent && c.xf) {
-    p.lights.push_back(
-        specular_light(*mat.translucency, light, c.trans_color, st_scale / c.s0, p.figures));
+    p.lights.push_back(specular_light(*mat.translucency, light, cv, c.trans_color,
+                                      st_scale / (c.s0 * cv.attenuation), p.figures));
   } else if (c.translucent) {
     p.lights.push_back(
         distance_light("trans_light", 0, pos, c.trans_color, light, c.s0 / st_scale));
@@ -272,7 +275,7 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
   p.lights.push_back(
       distance_light("diffuse_light", 1, pos, light.color, light, max3(light.color) / c.sd));
   light_channels(p, c, c.T / c.t_max, map != nullptr, mat.albedo, l == 0);
-  if (c.lut) p.texgens.push_back(lut_texgen(*mat.translucency, light, *lut));
+  if (c.lut) p.texgens.push_back(lut_texgen(*mat.translucency, cv, *lut));
   if (c.uses_map) p.texgens.push_back(map_texgen(*map, c.lut ? 1 : 0, p.vertex.uv_attribute()));
   light_stages(p, c, *mat.translucency, light, st_scale);
   p.pixel = pixel_engine(static_cast<int>(l));

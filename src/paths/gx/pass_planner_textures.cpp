@@ -7,6 +7,7 @@
 #include "model/rational_fit.h"
 #include "model/translucency.h"
 #include "paths/gx/lobe_lut.h"
+#include "paths/gx/object_view.h"
 #include "paths/gx/pass_plan_parts.h"
 #include "paths/gx/texture_unit.h"
 
@@ -23,10 +24,11 @@ double max3(const glm::dvec3& v) {
 
 // lobe=xf-spec: x = max(0, N . u) with u = -+k in eye space (the sign that makes x >= 0 on
 // front faces, where N . V >= 0), so t = c0 + sign x with x in [0, |d|]; the curve
-// (a + s lobe(sat(t))) / (a + s) is fitted as a rational of x in double.
-model::RationalFit lobe_fit(const Scene& scene, const SceneView& view, const Translucency& tr,
-                            const Light& light, glm::dvec3& dir_eye) {
-  const glm::dvec3 V = -scene.camera.forward(), L = -light.direction;
+// (a + s lobe(sat(t))) / (a + s) is fitted as a rational of x in double. V and L are the
+// constant ones (object_view.h).
+model::RationalFit lobe_fit(const SceneView& view, const Translucency& tr, const Light& light,
+                            const ConstantView& cv, glm::dvec3& dir_eye) {
+  const glm::dvec3 V = cv.V, L = cv.L;
   const double c0 = -glm::dot(V, L), d = tr.distortion;
   const double sign = d >= 0 ? -1.0 : 1.0;
   const glm::dvec3 k_eye = view.view * (-d * V);
@@ -140,11 +142,11 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
   return m;
 }
 
-// t = c0 + k . N, affine in the normal when V and L are constant (the refusal rule): c0 =
-// -V.L, k = -d V. t=vertex sends t itself as GX_VA_TEX0; t=texgen computes it from the raw
-// normal. Either way the texture matrix folds in the LUT's texel-centre remap
-// s = t (W-1)/W + 0.5/W (model/power_lut.h, gx-hardware.md §3.4).
-TexGenPlan PassPlanner::lut_texgen(const Translucency& tr, const Light& light,
+// t = c0 + k . N, affine in the normal when V and L are constant (the refusal rule, or
+// view=object: object_view.h): c0 = -V.L, k = -d V. t=vertex sends t itself as GX_VA_TEX0; t=texgen
+// computes it from the raw normal. Either way the texture matrix folds in the LUT's texel-centre
+// remap s = t (W-1)/W + 0.5/W (model/power_lut.h, gx-hardware.md §3.4).
+TexGenPlan PassPlanner::lut_texgen(const Translucency& tr, const ConstantView& cv,
                                    const TexturePlan& lut) const {
   const bool vertex = variant_.t == GxVariant::TexCoord::Vertex;
   const double n = variant_.lut_size, scale = (n - 1) / n, offset = 0.5 / n;
@@ -155,7 +157,7 @@ TexGenPlan PassPlanner::lut_texgen(const Translucency& tr, const Light& light,
   } else {
     // The raw normal is the mesh's world-space normal as sent (objects are pre-transformed),
     // so k stays in world space.
-    const glm::dvec3 V = -scene_.camera.forward(), L = -light.direction;
+    const glm::dvec3 V = cv.V, L = cv.L;
     const glm::dvec3 k = -tr.distortion * V;
     const double c0 = -glm::dot(V, L);
     for (int c = 0; c < 3; ++c) m[static_cast<size_t>(c)] = k[c] * scale;
@@ -168,7 +170,10 @@ TexGenPlan PassPlanner::lut_texgen(const Translucency& tr, const Light& light,
   TexMatrixPlan mtx{"lut_matrix", {"GX_TEXMTX0"}, {}, ""};
   for (size_t i = 0; i < m.size(); ++i) mtx.values[i] = static_cast<float>(m[i]);
   mtx.what = vertex ? "Texgen: s = t (W-1)/W + 0.5/W from the CPU's t in GX_VA_TEX0"
-                    : "Texgen: s = (c0 + k . N) (W-1)/W + 0.5/W from the raw normal";
+             : variant_.view_object
+                 ? "Texgen: s = (c0 + k . N) (W-1)/W + 0.5/W from the raw normal, V and L taken "
+                   "at the object's centre"
+                 : "Texgen: s = (c0 + k . N) (W-1)/W + 0.5/W from the raw normal";
   g.matrix_values = mtx;
   g.texture = lut;
   return g;
@@ -191,17 +196,18 @@ TexGenPlan PassPlanner::map_texgen(const MapTexture& map, int texcoord, int uv_a
 
 // The specular light: its position far along V (so N . l >= 0 on front faces and the XF's
 // condition passes), the direction slot u, and the fit's coefficients with the numerator
-// scaled by the channel's magnitude.
+// scaled by the channel's magnitude (with view=object, times a point light's attenuation at the
+// object's centre: a specular light has no distance attenuation).
 LightObjectPlan PassPlanner::specular_light(const Translucency& tr, const Light& light,
-                                            const glm::dvec3& color, double inv_gain,
-                                            PassFigures& figures) const {
+                                            const ConstantView& cv, const glm::dvec3& color,
+                                            double inv_gain, PassFigures& figures) const {
   glm::dvec3 dir_eye(0);
-  const model::RationalFit fit = lobe_fit(scene_, view_, tr, light, dir_eye);
+  const model::RationalFit fit = lobe_fit(view_, tr, light, cv, dir_eye);
   figures.fit_error = fit.max_error;
   const model::Rational22& r = fit.r;
   const double m = max3(color);
   const double g = m > 0 ? 1.0 / inv_gain : 0.0;
-  const glm::dvec3 V_eye = view_.view * -scene_.camera.forward();
+  const glm::dvec3 V_eye = view_.view * cv.V;
   LightObjectPlan o;
   o.kind = LightObjectPlan::Kind::SpecularFit;
   o.name = "trans_light";

@@ -208,7 +208,8 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     << "#define " << passes << " " << m.passes.size() << "\n"
     << "const ltr_material " << id << "_material = {" << c_vec3(mat.albedo, c_double) << ", "
     << c_vec3(tint, c_double) << ", " << c_double(a) << ", " << c_double(d) << ", " << normalize_h
-    << ", " << c_double(t_max) << ", " << v.lut_size << ", " << t_from_normal << "};\n"
+    << ", " << c_double(t_max) << ", " << v.lut_size << ", " << t_from_normal << ", "
+    << v.view_object << "};\n"
     << "// Per pass: diffuse only, first light, lights, translucent, LUT.\n"
     << "const ltr_pass_shape " << id << "_shapes[" << passes << "] = {";
   for (size_t i = 0; i < m.passes.size(); ++i) {
@@ -223,11 +224,19 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     << "// the lights (world space) and the material's meshes as drawn this frame (world space).\n"
     << "// The TEV scales come from what the lights do at the vertices that can be seen, so every\n"
     << "// mesh of the material takes part (ltr_light_range_of: its cost per vertex and light).\n"
+    << (v.view_object
+            ? "// :view=object: V and L are taken at the centre of these meshes (ltr_centre_of), "
+              "so "
+              "the\n// texture matrix of t is this frame's; set up one mesh at a time for a V per "
+              "mesh.\n"
+            : "")
     << "void " << id
     << "_setup(const ltr_view* view, const ltr_light lights[], const ltr_mesh meshes[],\n"
     << "    int mesh_count, ltr_pass_state state[" << passes << "]) {\n"
     << "  ltr_light_range ranges[LTRENDER_LIGHTS + 1];\n"
+    << "  double centre[3];\n"
     << "  int l, m, p;\n"
+    << "  ltr_centre_of(meshes, mesh_count, centre);\n"
     << "  for (l = 0; l < LTRENDER_LIGHTS; ++l) {\n"
     << "    ranges[l].max_attenuation = ranges[l].max_diffuse = 0;\n"
     << "    for (m = 0; m < mesh_count; ++m)\n"
@@ -236,7 +245,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     << "  }\n"
     << "  for (p = 0; p < " << passes << "; ++p)\n"
     << "    ltr_pass_setup(&ltrender_scene, &" << id << "_material, &" << id
-    << "_shapes[p], view, lights, ranges, &state[p]);\n"
+    << "_shapes[p], view, lights, ranges, centre, &state[p]);\n"
     << "}\n";
   if (sends_t) {
     o << "\n// The t of light `light` at every vertex of `mesh` (ltr_fill_t: V, L and the cost).\n"

@@ -226,12 +226,27 @@ static void ltr_diffuse_pass(const ltr_scene* scene, const ltr_pass_shape* shape
   out->diffuse_saturates = magnitude > 4;
 }
 
+void ltr_centre_of(const ltr_mesh meshes[], int mesh_count, double centre[3]) {
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  int m, v, i;
+  for (m = 0; m < mesh_count; ++m) {
+    for (v = 0; v < meshes[m].vertex_count; ++v) {
+      for (i = 0; i < 3; ++i) {
+        const double p = meshes[m].positions[3 * v + i];
+        if (p < lo[i]) lo[i] = p;
+        if (hi[i] < p) hi[i] = p;
+      }
+    }
+  }
+  for (i = 0; i < 3; ++i) centre[i] = lo[0] > hi[0] ? 0.0 : (lo[i] + hi[i]) * 0.5;
+}
+
 /* One light's pass (pass_planner choose and light_pass): slot 0 the translucency light, slot 1
    the diffuse light, the scales from the light's range. */
 static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
                            const ltr_pass_shape* shape, const ltr_view* view,
                            const ltr_light* lights, const ltr_light_range* ranges,
-                           ltr_pass_state* out) {
+                           const double centre[3], ltr_pass_state* out) {
   const int l = shape->light;
   const ltr_light* light = &lights[l];
   const ltr_light_kind* kind = &scene->kinds[l];
@@ -258,15 +273,23 @@ static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
     out->reg0[3] = 255;
   }
   if (shape->lut && material->t_from_normal) {
-    /* t = c0 + k.N with V = -forward and L = -direction constant over the mesh (an orthographic
-       camera, a directional light): c0 = -V.L, k = -d V, folded with the LUT's texel-centre
-       remap s = t (W-1)/W + 0.5/W into row 0 of the texture matrix (pass_planner_textures.cpp). */
+    /* t = c0 + k.N with V and L constant over the mesh: c0 = -V.L, k = -d V, folded with the
+       LUT's texel-centre remap s = t (W-1)/W + 0.5/W into row 0 of the texture matrix
+       (pass_planner_textures.cpp). Exact (an orthographic camera, a directional light):
+       V = -forward, L = -direction. :view=object (object_view.h): V = the unit vector from the
+       meshes' centre to the eye, L = from the centre to a point light or -direction; this is the
+       per-frame texture matrix that spares the CPU its per-vertex t. */
     const double n = material->lut_size, scale = (n - 1) / n, offset = 0.5 / n;
     double V[3], L[3];
     int r, c;
-    for (i = 0; i < 3; ++i) {
-      V[i] = -view->forward[i];
-      L[i] = -(double)light->direction[i];
+    if (material->view_object) {
+      ltr_view_vector(view, centre, V);
+      ltr_sample_light(kind, light, centre, V, L);
+    } else {
+      for (i = 0; i < 3; ++i) {
+        V[i] = -view->forward[i];
+        L[i] = -(double)light->direction[i];
+      }
     }
     for (r = 0; r < 3; ++r)
       for (c = 0; c < 4; ++c) out->lut_matrix[r][c] = 0.0f;
@@ -281,10 +304,10 @@ static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
 
 void ltr_pass_setup(const ltr_scene* scene, const ltr_material* material,
                     const ltr_pass_shape* shape, const ltr_view* view, const ltr_light* lights,
-                    const ltr_light_range* ranges, ltr_pass_state* out) {
+                    const ltr_light_range* ranges, const double centre[3], ltr_pass_state* out) {
   if (shape->diffuse_only) {
     ltr_diffuse_pass(scene, shape, view, lights, ranges, out);
   } else {
-    ltr_light_pass(scene, material, shape, view, lights, ranges, out);
+    ltr_light_pass(scene, material, shape, view, lights, ranges, centre, out);
   }
 }

@@ -96,6 +96,7 @@ typedef struct {
   double t_max;      /* the thickness the material register's 255 stands for */
   int lut_size;      /* W texels */
   int t_from_normal; /* t=texgen: t through a texture matrix from the raw normal */
+  int view_object;   /* :view=object: V and L taken at the centre of the meshes set up together */
 } ltr_material;
 
 /* What the export fixed about one pass (which stages and lights it has). */
@@ -135,10 +136,15 @@ void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const 
 void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                 const ltr_material* material, const ltr_mesh* mesh, float* t);
 
-/* One pass's per-frame state from the view, the lights and their ranges (one per light). */
+/* The centre of the meshes' bounding box, world space: (lo + hi) x 0.5 over every vertex (what
+   :view=object takes V and L at). Cost per vertex: 6 comparisons. */
+void ltr_centre_of(const ltr_mesh meshes[], int mesh_count, double centre[3]);
+
+/* One pass's per-frame state from the view, the lights and their ranges (one per light), and
+   `centre` (ltr_centre_of of the meshes drawn with it; read only with :view=object). */
 void ltr_pass_setup(const ltr_scene* scene, const ltr_material* material,
                     const ltr_pass_shape* shape, const ltr_view* view, const ltr_light* lights,
-                    const ltr_light_range* ranges, ltr_pass_state* out);
+                    const ltr_light_range* ranges, const double centre[3], ltr_pass_state* out);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,47 @@
+// `ltrender sweep SCENE... [--path gx]`: every variant's error against the reference over the
+// frames of the camera path (report/sweep.h says what the figures are), as a Markdown table on
+// stdout: what docs/porting-to-the-wii.md's table of the moving camera is made with.
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "render/camera_path.h"
+#include "report/sweep.h"
+
+namespace lt::cli {
+
+Action add_sweep(CLI::App& app) {
+  auto o = std::make_shared<SweepOptions>();
+  auto scenes = std::make_shared<std::vector<std::string>>();
+  auto variants = std::make_shared<std::string>("all");
+  auto* sub = app.add_subcommand(
+      "sweep", "A path's variants against the reference along a moving camera and lights");
+  sub->add_option("SCENE", *scenes, "Scene files")->required();
+  sub->add_option("--path", o->path, "The path whose variants are measured (default gx)");
+  const std::map<std::string, VariantSelection> selections = {
+      {"all", VariantSelection::All},
+      {"default", VariantSelection::Defaults},
+      {"story", VariantSelection::Story}};
+  sub->add_option("--variants", *variants, "all (default), default or story, as bench takes it")
+      ->check(CLI::IsMember(selections));
+  o->frames = kCameraPathFrames;
+  sub->add_option("--frames", o->frames,
+                  "Frames along the path (default 8: the GxModule test's; 1 is the scene as it is)")
+      ->check(CLI::Range(1, 1000));
+  sub->add_option("--width", o->width, "Override the scene's width")->check(CLI::Range(1, 16384));
+  sub->add_option("--height", o->height, "Override the scene's height")
+      ->check(CLI::Range(1, 16384));
+  return [o, scenes, variants, selections]() -> int {
+    if ((o->width > 0) != (o->height > 0))
+      throw InputError("--width/--height", "", "give both, or neither");
+    o->variants = selections.at(*variants);
+    for (const std::string& s : *scenes) o->scenes.emplace_back(s);
+    o->progress = [](const std::string& scene) { std::cerr << "sweep: " << scene << "\n"; };
+    std::cout << sweep_markdown(run_sweep(*o));
+    return 0;
+  };
+}
+
+}  // namespace lt::cli
