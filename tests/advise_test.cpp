@@ -185,3 +185,27 @@ TEST(AdviseRefinement, AnEdgeWithinTheBudgetIsNotSplit) {
 
 }  // namespace
 }  // namespace lt::advise
+
+namespace lt::advise {
+namespace {
+
+// Adaptive refinement ends: longest-edge bisection makes every edge it keeps splitting shorter,
+// so the midpoint estimate falls under the budget. Without it a fan of edges from one corner
+// never got shorter and baked_blob gained 4 vertices a step for thousands of steps (issue 29,
+// through gx). A step splits every edge over the budget, so a handful of steps must do.
+TEST(AdviseRefinement, AdaptiveRefinementEnds) {
+  Scene scene = load_scene(demo("baked_blob"));
+  SceneObject& o = scene.objects.front();
+  RefinementCache cache;
+  int steps = 0;
+  while (refine_object(scene, o, 8.0, &cache) > 0) ASSERT_LT(++steps, 30);
+  EXPECT_GT(steps, 0);
+  // Nothing is left over the budget, by a fresh estimate (no cache).
+  for (const glm::uvec3& t : o.mesh.triangles) {
+    for (int e = 0; e < 3; ++e)
+      ASSERT_LE(edge_midpoint_error_lsb(scene, o, t[e], t[(e + 1) % 3]), 8.0);
+  }
+}
+
+}  // namespace
+}  // namespace lt::advise
