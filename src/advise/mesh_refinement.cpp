@@ -79,19 +79,19 @@ std::size_t refine_object(const Scene& scene, SceneObject& object, double max_ls
   TriangleMesh& m = object.mesh;
   const Material& material = scene.materials[static_cast<size_t>(object.material)];
   RefinementCache local;
-  RefinementCache& c = cache ? *cache : local;
-  c.vertex_colour.resize(m.positions.size());
+  RefinementCache& known = cache ? *cache : local;
+  known.vertex_colour.resize(m.positions.size());
   auto colour = [&](unsigned i) -> const glm::dvec3& {
-    if (!c.vertex_colour[i]) c.vertex_colour[i] = vertex_shade(scene, material, m, i);
-    return *c.vertex_colour[i];
+    if (!known.vertex_colour[i]) known.vertex_colour[i] = vertex_shade(scene, material, m, i);
+    return *known.vertex_colour[i];
   };
   // The error of edge a-b, estimated once for the whole refinement.
   auto error = [&](unsigned a, unsigned b) {
     const std::uint64_t key = edge_key(a, b);
-    const auto it = c.edge_error.find(key);
-    if (it != c.edge_error.end()) return it->second;
+    const auto it = known.edge_error.find(key);
+    if (it != known.edge_error.end()) return it->second;
     const double e = midpoint_error(scene, material, m, a, b, colour(a), colour(b));
-    c.edge_error.emplace(key, e);
+    known.edge_error.emplace(key, e);
     return e;
   };
   // The edges to split: those over the budget, then, until none is left, the longest edge of
