@@ -111,6 +111,44 @@ TEST(AdvisePage, OneChartAMaterialWithThePickMarked) {
   EXPECT_NE(page.find("no candidate within the budget"), std::string::npos);
 }
 
+// The cost axis fits the costs drawn: two candidates 10% apart in cost stand most of the plot
+// apart (from 0 they would stand 9% of it apart, at its right edge); costs over more than a
+// decade apart get a log axis.
+TEST(AdvisePage, TheCostAxisFitsTheCosts) {
+  auto page_for = [](double cheap, double dear) {
+    Advice a;
+    a.options.max_lsb = 2;
+    for (double ops : {cheap, dear}) {
+      CandidateResult c;
+      c.candidate.variant = "v" + std::to_string(static_cast<int>(ops));
+      c.rendered = true;
+      c.cost = {{ops, 0}};
+      c.error.resize(1);
+      c.error[0].max_lsb = 1;
+      c.non_finite = {0};
+      c.hard.resize(1);
+      a.candidates.push_back(c);
+    }
+    MaterialAdvice m;
+    m.name = "skin";
+    a.materials = {m};
+    return advise_page(a);
+  };
+  auto cx = [](const std::string& page, size_t nth) {
+    size_t at = 0;
+    for (size_t k = 0; k <= nth; ++k) at = page.find("<circle", at + 1);
+    const size_t v = page.find("cx=\"", at) + 4;
+    return std::stod(page.substr(v, page.find('"', v) - v));
+  };
+  const std::string near = page_for(1000, 1100);
+  const double plot = 640 - 70 - 20;  // advise_page.cpp's chart width less its margins
+  EXPECT_GT(cx(near, 1) - cx(near, 0), 0.8 * plot);
+  EXPECT_EQ(near.find("operations a frame (log)"), std::string::npos);
+  const std::string far = page_for(100, 100000);
+  EXPECT_NE(far.find("operations a frame (log)"), std::string::npos);
+  EXPECT_GT(cx(far, 1) - cx(far, 0), 0.8 * plot);
+}
+
 TEST(AdviseCli, BadInputExits2) {
   const std::string scene = demo("backlit_sphere").string();
   struct Case {
@@ -181,6 +219,30 @@ TEST(AdviseRefinement, AnEdgeWithinTheBudgetIsNotSplit) {
   SceneObject& o = scene.objects.front();
   EXPECT_EQ(refine_object(scene, o, 1e9), 0u);
   EXPECT_GT(refine_object(scene, o, 8.0), 0u);  // the silhouette's edges are ~76 LSB off
+}
+
+}  // namespace
+}  // namespace lt::advise
+
+namespace lt::advise {
+namespace {
+
+// Adaptive refinement ends: longest-edge bisection makes every edge it keeps splitting shorter,
+// so the midpoint estimate falls under the budget. Without it a fan of edges from one corner
+// never got shorter and baked_blob gained 4 vertices a step for thousands of steps (issue 29,
+// through gx). A step splits every edge over the budget, so a handful of steps must do.
+TEST(AdviseRefinement, AdaptiveRefinementEnds) {
+  Scene scene = load_scene(demo("baked_blob"));
+  SceneObject& o = scene.objects.front();
+  RefinementCache cache;
+  int steps = 0;
+  while (refine_object(scene, o, 8.0, &cache) > 0) ASSERT_LT(++steps, 30);
+  EXPECT_GT(steps, 0);
+  // Nothing is left over the budget, by a fresh estimate (no cache).
+  for (const glm::uvec3& t : o.mesh.triangles) {
+    for (int e = 0; e < 3; ++e)
+      ASSERT_LE(edge_midpoint_error_lsb(scene, o, t[e], t[(e + 1) % 3]), 8.0);
+  }
 }
 
 }  // namespace

@@ -164,23 +164,30 @@ RefinementStep measure_refined(const Scene& scene, const PathInfo& path, const s
 
 // Refines material m's objects step by step, adaptively (edges whose midpoint error is over the
 // budget) or uniformly (every edge), measuring each step, until the budget holds, max_vertices
-// is passed or (adaptive) no edge is over the budget any more.
-std::vector<RefinementStep> refine_steps(const Scene& scene, const PathInfo& path,
-                                         const std::string& variant, const PathOptions& options,
-                                         const Advice& a, size_t m, bool uniform) {
+// is passed or (adaptive) no edge is over the budget any more. With `meshes`, the material's
+// objects as the last step left them.
+std::vector<RefinementStep> refine_steps(
+    const Scene& scene, const PathInfo& path, const std::string& variant,
+    const PathOptions& options, const Advice& a, size_t m, bool uniform,
+    std::vector<std::pair<std::size_t, TriangleMesh>>* meshes = nullptr) {
   Scene refined = scene;
   std::vector<RefinementStep> steps;
   steps.push_back(measure_refined(refined, path, variant, options, a.width, a.height, m));
   const AdviseOptions& o = a.options;
+  std::vector<RefinementCache> caches(refined.objects.size());
   while (stat_of(steps.back().error, o.stat) > o.max_lsb &&
          steps.back().vertices < o.max_vertices) {
     std::size_t added = 0;
-    for (SceneObject& obj : refined.objects) {
-      if (static_cast<size_t>(obj.material) == m)
-        added += refine_object(refined, obj, uniform ? -1.0 : o.max_lsb);
+    for (size_t i = 0; i < refined.objects.size(); ++i) {
+      if (static_cast<size_t>(refined.objects[i].material) == m)
+        added += refine_object(refined, refined.objects[i], uniform ? -1.0 : o.max_lsb, &caches[i]);
     }
     if (added == 0) break;
     steps.push_back(measure_refined(refined, path, variant, options, a.width, a.height, m));
+  }
+  for (size_t i = 0; meshes && i < refined.objects.size(); ++i) {
+    if (static_cast<size_t>(refined.objects[i].material) == m)
+      meshes->emplace_back(i, std::move(refined.objects[i].mesh));
   }
   return steps;
 }
@@ -380,17 +387,34 @@ Advice run_advise(const AdviseOptions& o) {
       if (!ma.front.empty()) ma.closest = ma.front.back();
     }
     if (!ma.pick && ma.closest && o.max_vertices > 0) {
-      Refinement r;
-      r.candidate = *ma.closest;
-      const std::string& variant = cs[r.candidate].candidate.variant;
-      r.adaptive = refine_steps(scene, path, variant, target.options, a, m, false);
-      r.uniform = refine_steps(scene, path, variant, target.options, a, m, true);
-      for (size_t k = 0; k < r.adaptive.size(); ++k) {
-        if (r.adaptive[k].non_finite == 0 && stat_of(r.adaptive[k].error, o.stat) <= o.max_lsb) {
-          r.holds_at = k;
-          break;
-        }
+      // The closest candidate first; when its refined mesh stalls over the budget (its own
+      // error, a LUT's steps say, is over it once the silhouette is fixed), the other
+      // admissible candidates, cheapest first, until one holds.
+      std::vector<size_t> to_try = {*ma.closest};
+      for (size_t i = 0; i < cs.size(); ++i) {
+        if (i != *ma.closest && cs[i].rendered && cs[i].admissible(m)) to_try.push_back(i);
       }
+      std::stable_sort(to_try.begin() + 1, to_try.end(),
+                       [&](size_t x, size_t y) { return cheaper(cs, x, y, m); });
+      Refinement r;
+      for (size_t i : to_try) {
+        if (cs[i].hard[m] == std::nullopt) check_hard_cases(cs[i], m, ma, runner);
+        if (!cs[i].admissible(m)) continue;
+        if (r.adaptive.size() > 0) r.tried.push_back(r.candidate);
+        r.candidate = i;
+        r.meshes.clear();
+        r.adaptive = refine_steps(scene, path, cs[i].candidate.variant, target.options, a, m, false,
+                                  &r.meshes);
+        for (size_t k = 0; k < r.adaptive.size(); ++k) {
+          if (r.adaptive[k].non_finite == 0 && stat_of(r.adaptive[k].error, o.stat) <= o.max_lsb) {
+            r.holds_at = k;
+            break;
+          }
+        }
+        if (r.holds_at) break;
+      }
+      r.uniform =
+          refine_steps(scene, path, cs[r.candidate].candidate.variant, target.options, a, m, true);
       ma.refinement = std::move(r);
     }
   }

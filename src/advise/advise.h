@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "advise/hard_cases.h"
 #include "advise/variant_space.h"
 #include "metrics/compare.h"
+#include "scene/triangle_mesh.h"
 
 namespace lt::advise {
 
@@ -80,9 +82,14 @@ struct RefinementStep {
 // (uniform, 1 triangle to 4 a step), each until the budget holds or max_vertices.
 struct Refinement {
   std::size_t candidate = 0;  // the variant, an index into Advice::candidates
+  // Candidates whose adaptive refinement was tried first and stalled over the budget.
+  std::vector<std::size_t> tried;
   std::vector<RefinementStep> adaptive, uniform;
   // The first adaptive step within the budget: the pick, its cost the vertices added.
   std::optional<std::size_t> holds_at;
+  // The material's objects (index into scene.objects) and their meshes at the last adaptive
+  // step (the one at holds_at when the budget holds): what `-o DIR` writes (refined_scene.h).
+  std::vector<std::pair<std::size_t, TriangleMesh>> meshes;
 };
 
 struct MaterialAdvice {

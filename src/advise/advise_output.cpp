@@ -101,6 +101,9 @@ std::string to_text(const Advice& a) {
           out << " " << s.vertices << ": " << fixed(stat_of(s.error, o.stat));
         out << "\n";
       }
+      for (size_t i : r.tried)
+        out << "    tried first, stalled over the budget: " << a.candidates[i].candidate.variant
+            << "\n";
       if (r.holds_at) {
         const RefinementStep& s = r.adaptive[*r.holds_at];
         out << "  pick: " << a.candidates[r.candidate].candidate.variant << " on a refined mesh, +"
@@ -197,7 +200,10 @@ nlohmann::ordered_json to_json(const Advice& a) {
                          {"non_finite_pixels", s.non_finite}});
         return out;
       };
+      nlohmann::ordered_json tried = nlohmann::ordered_json::array();
+      for (size_t i : r.tried) tried.push_back(a.candidates[i].candidate.variant);
       jm["refinement"] = {{"variant", a.candidates[r.candidate].candidate.variant},
+                          {"tried", tried},
                           {"adaptive", steps(r.adaptive)},
                           {"uniform", steps(r.uniform)},
                           {"holds_at", r.holds_at ? nlohmann::ordered_json(*r.holds_at)
@@ -242,8 +248,12 @@ std::vector<std::string> write_programs(const Advice& a, const Scene& scene,
   std::vector<std::string> written;
   const PathInfo& path = find_path(a.path);
   for (const MaterialAdvice& ma : a.materials) {
-    if (!ma.pick) continue;
-    const CandidateResult& p = a.candidates[*ma.pick];
+    // The pick, or the variant of a refinement that holds (its error the refined mesh's).
+    const bool refined = !ma.pick && ma.refinement && ma.refinement->holds_at;
+    if (!ma.pick && !refined) continue;
+    const CandidateResult& p = a.candidates[refined ? ma.refinement->candidate : *ma.pick];
+    const ErrorStats& error =
+        refined ? ma.refinement->adaptive[*ma.refinement->holds_at].error : p.error[ma.index];
     const std::string base = file_name_safe(ma.name);
     if (a.path == "gx") {
       // export's C for the scene under the picked variant, its figures the material's: the
@@ -254,7 +264,7 @@ std::vector<std::string> write_programs(const Advice& a, const Scene& scene,
       f.variant = p.candidate.variant;
       f.width = a.width;
       f.height = a.height;
-      f.error = p.error[ma.index];
+      f.error = error;
       f.budget =
           budget::to_text(gx::gx_budget_scene(scene, p.candidate.variant, a.options.profile));
       written.push_back(base + ".c");

@@ -16,8 +16,9 @@ namespace lt::advise {
 std::string to_text(const Advice& a);
 nlohmann::ordered_json to_json(const Advice& a);
 
-// The program files of every material's pick (none for a material without one), written into
-// `dir` (which exists); returns their names relative to it.
+// The program files of every material's pick, or of its refinement's variant when the refined
+// mesh holds the budget (none for a material without either), written into `dir` (which
+// exists); returns their names relative to it.
 std::vector<std::string> write_programs(const Advice& a, const Scene& scene,
                                         const std::filesystem::path& dir);
 

@@ -6,6 +6,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -18,8 +22,21 @@ namespace lt::advise {
 double edge_midpoint_error_lsb(const Scene& scene, const SceneObject& object, unsigned a,
                                unsigned b);
 
+// What refine_object remembers of one object between the steps of a refinement: the reference's
+// colour at each vertex and the midpoint error of every edge estimated so far. Both stay true,
+// since a step only appends vertices (an index keeps its vertex) and an edge's error depends
+// on its two ends alone; without it every step would shade every edge's ends and midpoint
+// again (each step's edges are mostly the last step's).
+struct RefinementCache {
+  std::vector<std::optional<glm::dvec3>> vertex_colour;
+  std::unordered_map<std::uint64_t, double> edge_error;  // the lower index << 32 | the higher
+};
+
 // Splits every edge of `object` whose midpoint error is over `max_lsb` (all of them when
-// max_lsb < 0: uniform subdivision, 1 triangle to 4). Returns the vertices added.
-std::size_t refine_object(const Scene& scene, SceneObject& object, double max_lsb);
+// max_lsb < 0: uniform subdivision, 1 triangle to 4) and the longest edge of every triangle
+// with an edge to split (longest-edge bisection, so edges keep getting shorter). Returns the
+// vertices added. `cache`, when given, must be the one this object's earlier steps used (or new).
+std::size_t refine_object(const Scene& scene, SceneObject& object, double max_lsb,
+                          RefinementCache* cache = nullptr);
 
 }  // namespace lt::advise

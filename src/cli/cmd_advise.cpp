@@ -4,6 +4,7 @@
 #include "advise/advise.h"
 #include "advise/advise_output.h"
 #include "advise/advise_page.h"
+#include "advise/refined_scene.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
@@ -68,13 +69,18 @@ Action add_advise(CLI::App& app) {
     if (!out_dir->empty()) {
       const Scene loaded = load_scene(o->scene_file);
       std::vector<std::string> files;
+      std::string no_scene;
       write_directory_atomically(*out_dir, [&](const fs::path& staging) {
         files = advise::write_programs(a, loaded, staging);
+        advise::RefinedFiles refined = advise::write_refined_scene(a, staging, *out_dir);
+        files.insert(files.end(), refined.written.begin(), refined.written.end());
+        no_scene = refined.not_written;
         write_text_file(staging / "index.html", advise::advise_page(a));
       });
       for (const std::string& f : files)
         std::cout << "wrote " << (fs::path(*out_dir) / f).string() << "\n";
       std::cout << "wrote " << (fs::path(*out_dir) / "index.html").string() << "\n";
+      if (!no_scene.empty()) std::cout << "no refined scene written: " << no_scene << "\n";
     }
     if (!a.every_material_has_pick()) {
       std::string closest;

@@ -180,4 +180,38 @@ void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options,
   });
 }
 
+void write_triangle_mesh(const fs::path& path, const TriangleMesh& m) {
+  PolyMesh mesh;
+  mesh.reserve(m.positions.size(), 3 * m.triangles.size(), m.triangles.size());
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    const auto vh = mesh.add_vertex(to_om(m.positions[i]));
+    mesh.set_normal(vh, to_om(m.normals[i]));
+    if (m.has_colors()) {
+      const glm::dvec3& c = m.colors[i];
+      mesh.set_color(vh, PolyMesh::Color(static_cast<float>(c.r), static_cast<float>(c.g),
+                                         static_cast<float>(c.b)));
+    }
+    if (!m.uvs.empty()) mesh.set_texcoord2D(vh, to_om(m.uvs[i]));
+  }
+  {
+    OpenMeshLogCapture capture;  // add_face reports a complex edge on its log, then refuses
+    for (const glm::uvec3& t : m.triangles) {
+      const auto fh = mesh.add_face(OpenMesh::VertexHandle(static_cast<int>(t[0])),
+                                    OpenMesh::VertexHandle(static_cast<int>(t[1])),
+                                    OpenMesh::VertexHandle(static_cast<int>(t[2])));
+      if (!fh.is_valid())
+        throw InputError(path.string(), "",
+                         "triangle " + std::to_string(mesh.n_faces()) +
+                             " is not manifold: a PLY read through OpenMesh would lose it");
+    }
+  }
+  Options options(Options::Binary | Options::VertexNormal);
+  if (m.has_colors()) {
+    options += Options::VertexColor;
+    options += Options::ColorFloat;
+  }
+  if (!m.uvs.empty()) options += Options::VertexTexCoord;
+  write_mesh(path, mesh, options);
+}
+
 }  // namespace lt

@@ -44,4 +44,11 @@ TriangleMesh load_triangle_mesh(const std::filesystem::path& path);
 void write_mesh(const std::filesystem::path& path, const PolyMesh& mesh,
                 OpenMesh::IO::Options options, const std::vector<ExtraVertexProperty>& extras = {});
 
+// Writes a mesh the renderer holds (a refined one: advise -o) as binary PLY, atomically, for
+// load_triangle_mesh to read back: double positions, float normals, float colours (the baked
+// thickness; 8 bits would move it) when it has colours, UVs when it has them, its triangles as
+// faces in order. Throws InputError naming `path` when a triangle cannot be a face of OpenMesh's
+// halfedge mesh (a non-manifold edge): the file would lose it.
+void write_triangle_mesh(const std::filesystem::path& path, const TriangleMesh& mesh);
+
 }  // namespace lt
