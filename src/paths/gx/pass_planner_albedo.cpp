@@ -93,7 +93,7 @@ std::optional<MapTexture> PassPlanner::albedo_texture(MaterialPlan& mp) const {
 }
 
 void PassPlanner::add_albedo_stage(PassPlan& p, const MapTexture& albedo) {
-  using Arg = GxConst<NameGroup::ColorArg>;
+  using ColourIn = GxConst<NameGroup::ColorArg>;
   p.vertex.uv = true;
   const int coord = static_cast<int>(p.texgens.size());
   p.texgens.push_back(map_texgen(albedo, coord, p.vertex.uv_attribute()));
@@ -102,7 +102,7 @@ void PassPlanner::add_albedo_stage(PassPlan& p, const MapTexture& albedo) {
   // translucency stage: b x c with c = the map instead.
   TevStagePlan last = p.stages.back();
   p.stages.pop_back();
-  const bool adds_translucency = last.color.in[3] == Arg{"GX_CC_CPREV"};
+  const bool adds_translucency = last.color.in[3] == ColourIn{"GX_CC_CPREV"};
   if (adds_translucency) {
     // PREV x TEXC at the translucency stage's scale, which becomes x1.
     TevStagePlan& trans = p.stages.back();
@@ -123,7 +123,8 @@ void PassPlanner::add_albedo_stage(PassPlan& p, const MapTexture& albedo) {
   last.stage = GxConst<NameGroup::TevStage>::with_value(k);
   last.texcoord = texcoord;
   last.texmap = albedo.texture.map;
-  last.color.in = {Arg{"GX_CC_ZERO"}, Arg{"GX_CC_RASC"}, Arg{"GX_CC_TEXC"}, last.color.in[3]};
+  last.color.in = {ColourIn{"GX_CC_ZERO"}, ColourIn{"GX_CC_RASC"}, ColourIn{"GX_CC_TEXC"},
+                   last.color.in[3]};
   last.what = "Stage " + std::to_string(k) + ": out = (" + (adds_translucency ? "trans + " : "") +
               (last.channel.name() + 3) + " x albedo) x " + std::to_string(sd);
   p.stages.push_back(last);
