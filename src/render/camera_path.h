@@ -13,10 +13,10 @@ namespace lt {
 // How many frames the GxModule test and the table in docs/porting-to-the-wii.md use.
 inline constexpr int kCameraPathFrames = 8;
 
-// Frame k of `frames` (k = 0 is the scene as it is, unrounded): the eye orbits the target about the up axis
-// (up to 70 degrees at the last frame), point lights orbit it the other way (up to 50 degrees),
-// directional lights turn with them, and every light's colour and translucency scale grow (up
-// to x1.6 and x1.5). Every moved number is rounded to float, as a game holds it (the module's
+// Frame k of `frames` (k = 0 is the scene as it is, unrounded): the eye orbits the target about the
+// up axis (up to 70 degrees at the last frame), point lights orbit it the other way (up to 50
+// degrees), directional lights turn with them, and every light's colour and translucency scale grow
+// (up to x1.6 and x1.5). Every moved number is rounded to float, as a game holds it (the module's
 // inputs are f32).
 Scene scene_on_camera_path(const Scene& base, int k, int frames = kCameraPathFrames);
 
