@@ -90,6 +90,9 @@ struct Refinement {
   // The material's objects (index into scene.objects) and their meshes at the last adaptive
   // step (the one at holds_at when the budget holds): what `-o DIR` writes (refined_scene.h).
   std::vector<std::pair<std::size_t, TriangleMesh>> meshes;
+  // The pick's step and its cost, the vertices it adds (holds_at must be set).
+  const RefinementStep& pick_step() const { return adaptive[*holds_at]; }
+  std::size_t vertices_added() const { return pick_step().vertices - adaptive.front().vertices; }
 };
 
 struct MaterialAdvice {

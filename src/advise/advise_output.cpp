@@ -105,10 +105,8 @@ std::string to_text(const Advice& a) {
         out << "    tried first, stalled over the budget: " << a.candidates[i].candidate.variant
             << "\n";
       if (r.holds_at) {
-        const RefinementStep& s = r.adaptive[*r.holds_at];
         out << "  pick: " << a.candidates[r.candidate].candidate.variant << " on a refined mesh, +"
-            << s.vertices - r.adaptive.front().vertices << " vertices: " << error_text(s.error)
-            << "\n";
+            << r.vertices_added() << " vertices: " << error_text(r.pick_step().error) << "\n";
       }
     }
     out << "  front (cost against " << to_string(o.stat) << " error):\n";

@@ -180,6 +180,21 @@ std::string chart(const Advice& a, const MaterialAdvice& ma) {
   return s.str();
 }
 
+// The material's pick in words: a variant, or (with --max-vertices) a variant on a refined mesh,
+// which the chart does not show (its points are the variants on the scene's own mesh).
+std::string pick_words(const Advice& a, const MaterialAdvice& ma) {
+  if (ma.pick)
+    return "pick: <b>" + markup_escape(a.candidates[*ma.pick].candidate.variant) + "</b>";
+  if (ma.refinement && ma.refinement->holds_at) {
+    const Refinement& r = *ma.refinement;
+    return "pick: <b>" + markup_escape(a.candidates[r.candidate].candidate.variant) +
+           "</b> on a refined mesh, +" + std::to_string(r.vertices_added()) + " vertices, max " +
+           num(r.pick_step().error.max_lsb) +
+           " LSB (the chart shows the variants on the scene's own mesh)";
+  }
+  return "no candidate within the budget";
+}
+
 }  // namespace
 
 std::string advise_page(const Advice& a) {
@@ -198,10 +213,7 @@ std::string advise_page(const Advice& a) {
        "pick; dashed: the budget.</p>\n";
   for (const MaterialAdvice& ma : a.materials) {
     s << "<section class=\"material\">\n<h2>material " << markup_escape(ma.name) << "</h2>\n";
-    s << "<p>"
-      << (ma.pick ? "pick: <b>" + markup_escape(a.candidates[*ma.pick].candidate.variant) + "</b>"
-                  : std::string("no candidate within the budget"))
-      << "</p>\n";
+    s << "<p>" << pick_words(a, ma) << "</p>\n";
     s << chart(a, ma) << "</section>\n";
   }
   s << "</body>\n</html>\n";
