@@ -7,6 +7,7 @@
 #include <string>
 
 #include "advise/material_error.h"
+#include "core/build_paths.h"
 #include "metrics/compare.h"
 #include "paths/common/gbuffer.h"
 #include "paths/path.h"
@@ -23,7 +24,7 @@ namespace {
 // uniform comparison after one step (40962 vertices), which keeps the test cheap.
 TEST(AdviseRefinedScene, TheWrittenSceneRendersTheErrorAdviseReported) {
   test::TempDir dir;
-  const fs::path scene_file = fs::path(LT_SOURCE_DIR) / "scenes" / "baked_blob.json";
+  const fs::path scene_file = lt::build_paths::source_dir() / "scenes" / "baked_blob.json";
   const fs::path out = dir / "out", report = dir / "advise.json";
   const test::RunResult r =
       test::run_ltrender("advise " + scene_file.string() +

@@ -12,6 +12,7 @@
 #include "advise/advise_page.h"
 #include "advise/material_error.h"
 #include "advise/mesh_refinement.h"
+#include "core/build_paths.h"
 #include "metrics/compare.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
@@ -43,7 +44,7 @@ TEST(AdviseMaterialError, OnlyTheMaterialsPixelsCount) {
 }
 
 fs::path demo(const std::string& name) {
-  return fs::path(LT_SOURCE_DIR) / "scenes" / (name + ".json");
+  return lt::build_paths::source_dir() / "scenes" / (name + ".json");
 }
 
 // The material map lines up with the reference image (rows top first, as images are): on a

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/build_paths.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/stderr_capture.h"
@@ -528,8 +529,8 @@ class CompareCli : public CompareFiles {
  protected:
   CliResult run(const std::string& args) {
     const std::string out = path("stdout.txt"), err = path("stderr.txt");
-    const std::string cmd =
-        std::string("'") + LT_BINARY + "' compare " + args + " >'" + out + "' 2>'" + err + "'";
+    const std::string cmd = "'" + lt::build_paths::ltrender_binary().string() + "' compare " +
+                            args + " >'" + out + "' 2>'" + err + "'";
     const int status = std::system(cmd.c_str());
     CliResult r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

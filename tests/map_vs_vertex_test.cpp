@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/build_paths.h"
 #include "test_util.h"
 
 namespace lt {
@@ -21,7 +22,7 @@ namespace {
 TEST(MapVsVertex, ErrorFallsAsTheTessellationRises) {
   const std::string command = "python3 " +
                               (test::source_dir() / "scripts" / "map_vs_vertex.py").string() +
-                              " --bin " + LT_BINARY +
+                              " --bin " + lt::build_paths::ltrender_binary().string() +
                               " --rings 4,8,16 --rays 64 --map 128x64 --width 160 --height 120"
                               " --json";
   const test::CommandOutput run = test::command_output(command);

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/build_paths.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "mesh/mesh_io.h"
@@ -30,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 using OpenMesh::IO::Options;
 
-const fs::path kData = fs::path(LT_SOURCE_DIR) / "tests" / "data" / "meshes";
+const fs::path kData = lt::build_paths::source_dir() / "tests" / "data" / "meshes";
 
 using test::TempDir;  // a scratch directory per test, removed afterwards
 
@@ -752,7 +753,7 @@ TEST(Meshgen, HardCaseFilesLoad) {
 // meshes/ in the repository is exactly what `ltrender meshgen meshes` writes today.
 TEST(Meshgen, CommittedMeshesAreUpToDate) {
   TempDir dir;
-  const fs::path committed = fs::path(LT_SOURCE_DIR) / "meshes";
+  const fs::path committed = lt::build_paths::source_dir() / "meshes";
   for (auto& named : meshgen::standard_set()) {
     const fs::path fresh = dir / fs::path(named.path).filename().string();
     write_mesh(fresh, named.mesh, meshgen::write_options(named));
@@ -771,8 +772,8 @@ struct RunResult {
 };
 
 RunResult run_ltrender(const std::string& args, const fs::path& stderr_file) {
-  const std::string cmd =
-      std::string(LT_BINARY) + " " + args + " >/dev/null 2>" + stderr_file.string();
+  const std::string cmd = lt::build_paths::ltrender_binary().string() + " " + args +
+                          " >/dev/null 2>" + stderr_file.string();
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(stderr_file)};
 }
@@ -814,7 +815,7 @@ TEST(MeshgenCli, SphereOptionWritesOneIcosphere) {
       run_ltrender("meshgen " + (dir / "out").string() + " --sphere 3", dir / "err.txt");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(slurp(dir / "out" / "sphere_s3.ply") ==
-              slurp(fs::path(LT_SOURCE_DIR) / "meshes" / "sphere_s3.ply"));
+              slurp(lt::build_paths::source_dir() / "meshes" / "sphere_s3.ply"));
   EXPECT_FALSE(fs::exists(dir / "out" / "cube.ply"));
   EXPECT_EQ(
       run_ltrender("meshgen " + (dir / "x").string() + " --sphere 9", dir / "err.txt").exit_code,

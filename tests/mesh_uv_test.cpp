@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/build_paths.h"
 #include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "mesh/meshgen.h"
@@ -18,7 +19,7 @@ namespace {
 
 using OpenMesh::IO::Options;
 
-const fs::path kUv = fs::path(LT_SOURCE_DIR) / "tests" / "data" / "meshes" / "uv";
+const fs::path kUv = lt::build_paths::source_dir() / "tests" / "data" / "meshes" / "uv";
 
 // The UV of the mesh vertex at `position` (the fixtures have one vertex per position unless a
 // seam splits it: then all of them, in index order).
@@ -60,7 +61,7 @@ TEST(MeshUvs, PlyTextureUvWinsOverAnIntegerU) {
 }
 
 TEST(MeshUvs, MeshWithoutUvsHasNone) {
-  const TriangleMesh m = load_triangle_mesh(fs::path(LT_SOURCE_DIR) / "meshes" / "cube.ply");
+  const TriangleMesh m = load_triangle_mesh(lt::build_paths::source_dir() / "meshes" / "cube.ply");
   EXPECT_TRUE(m.uvs.empty());
 }
 

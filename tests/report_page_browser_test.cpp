@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/build_paths.h"
 #include "image/image.h"
 #include "regress_fixture.h"
 #include "test_util.h"
@@ -70,7 +71,7 @@ class ReportPageInBrowser : public ::testing::Test {
   }
 
   // One folder per test: ctest runs them side by side.
-  const fs::path out = fs::path(LT_TEST_OUTPUT_DIR) / "report_page" /
+  const fs::path out = (lt::build_paths::binary_dir() / "test-output") / "report_page" /
                        ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::string browser, page;
   nlohmann::json cases;

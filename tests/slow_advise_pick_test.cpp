@@ -14,6 +14,7 @@
 #include "advise/advise.h"
 #include "advise/hard_cases.h"
 #include "advise/target.h"
+#include "core/build_paths.h"
 #include "metrics/compare.h"
 #include "render/session.h"
 #include "scene/scene.h"
@@ -28,7 +29,7 @@ constexpr int kWidth = 48;  // small: the test is about the choice, not the imag
 constexpr size_t kMaterial = 0;
 
 fs::path demo(const std::string& name) {
-  return fs::path(LT_SOURCE_DIR) / "scenes" / (name + ".json");
+  return lt::build_paths::source_dir() / "scenes" / (name + ".json");
 }
 
 // True when `variant` renders every hard case the material reaches without a non-finite pixel,

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/build_paths.h"
 #include "image/image.h"
 #include "test_util.h"
 
@@ -29,7 +30,7 @@ std::string loaded_libraries(const std::string& binary) {
 }
 
 TEST(Startup, TheBinaryMapsNoImageLibrary) {
-  const std::string libs = loaded_libraries(LT_BINARY);
+  const std::string libs = loaded_libraries(lt::build_paths::ltrender_binary().string());
   // The trace itself worked: the GL library the binary does link is in it.
   ASSERT_NE(libs.find("libOSMesa"), std::string::npos) << libs;
   EXPECT_EQ(libs.find("libOpenImageIO"), std::string::npos) << libs;
@@ -61,7 +62,7 @@ TEST(Startup, ListingTheTestsLoadsNoImage) {
 TEST(Startup, TheImageModuleIsFoundFromACopyOfTheBinary) {
   test::TempDir dir;
   const fs::path copy = dir / "ltrender";
-  fs::copy_file(LT_BINARY, copy);
+  fs::copy_file(lt::build_paths::ltrender_binary(), copy);
   fs::permissions(copy, fs::perms::owner_all, fs::perm_options::add);
   const fs::path scene = test::source_dir() / "scenes" / "backlit_sphere.json";
   const fs::path out = dir / "out.png";

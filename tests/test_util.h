@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/build_paths.h"
 #include "image/image.h"
 
 namespace lt {
@@ -88,8 +89,8 @@ inline RunResult run_ltrender(const std::string& args, const RunLimits& limits =
     prefix += "ulimit -v " + std::to_string(limits.memory_mb * 1024) + "; ";
   }
   if (limits.seconds > 0) prefix += "timeout -k 5 " + std::to_string(limits.seconds) + " ";
-  const std::string cmd =
-      prefix + std::string(LT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const std::string cmd = prefix + lt::build_paths::ltrender_binary().string() + " " + args + " >" +
+                          out.string() + " 2>" + err.string();
   const int status = std::system(cmd.c_str());
   auto slurp = [](const fs::path& p) {
     std::ifstream in(p);
@@ -126,7 +127,7 @@ inline std::string quad_obj() {
 }
 
 inline const fs::path source_dir() {
-  return fs::path(LT_SOURCE_DIR);
+  return lt::build_paths::source_dir();
 }
 
 // The .json files of a folder of the source tree (e.g. "scenes/hard"), as "folder/name.json",

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 
+#include "core/build_paths.h"
+
 namespace lt::advise {
 
 namespace {
@@ -70,9 +72,9 @@ std::vector<HardCase> reachable_hard_cases(const Scene& scene, const Material& m
   std::vector<HardCase> out;
   for (const Rule& r : rules()) {
     if (r.reaches(scene, t)) {
-      out.push_back({std::filesystem::path(LT_SOURCE_DIR) / "scenes" / "hard" /
-                         (std::string(r.name) + ".json"),
-                     r.reached_by});
+      out.push_back(
+          {lt::build_paths::source_dir() / "scenes" / "hard" / (std::string(r.name) + ".json"),
+           r.reached_by});
     }
   }
   return out;

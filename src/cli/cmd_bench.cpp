@@ -13,6 +13,7 @@
 #include "cli/bench_timing_options.h"
 #include "cli/commands.h"
 #include "cli/lights_option.h"
+#include "core/build_paths.h"
 #include "core/cpu_affinity.h"
 #include "core/error.h"
 #include "core/fs.h"
@@ -164,7 +165,7 @@ Action add_bench(CLI::App& app) {
     o->scenes.clear();
     for (const auto& s : *scenes) o->scenes.push_back(s);
     if (o->scenes.empty()) {
-      for (const auto& e : fs::directory_iterator(fs::path(LT_SOURCE_DIR) / "scenes")) {
+      for (const auto& e : fs::directory_iterator(lt::build_paths::source_dir() / "scenes")) {
         if (e.path().extension() == ".json") o->scenes.push_back(e.path());
       }
       std::sort(o->scenes.begin(), o->scenes.end());

@@ -7,6 +7,8 @@
 #include <system_error>
 #include <vector>
 
+#include "core/build_paths.h"
+
 namespace lt {
 
 namespace {
@@ -20,9 +22,7 @@ std::vector<std::filesystem::path> module_candidates() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) out.push_back(exe.parent_path() / kModuleName);
-#ifdef LT_IMAGE_MODULE_DIR
-  out.push_back(std::filesystem::path(LT_IMAGE_MODULE_DIR) / kModuleName);
-#endif
+  out.push_back(build_paths::binary_dir() / kModuleName);
   return out;
 }
 
