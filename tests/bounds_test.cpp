@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "metrics/compare.h"
+#include "reference_cache.h"
 #include "render/session.h"
 #include "test_util.h"
 
@@ -122,9 +123,11 @@ TEST_P(Bounded, WithinItsRowOfTheReference) {
   const BoundRow* row = find_row(c.path, c.variant, stem(c.scene_file));
   ASSERT_NE(row, nullptr) << "no row (see Bounds.EveryVariantOnEveryDemoSceneHasARow)";
   RenderSession session(scene, scene.width, scene.height);
-  auto ref = session.build(path_with_role(PathRole::GroundTruth), "");
-  ref->frame();
-  const Image reference = ref->result();
+  const Image reference = test::cached_reference(test::test_param_name(c.scene_file), [&] {
+    auto ref = session.build(path_with_role(PathRole::GroundTruth), "");
+    ref->frame();
+    return ref->result();
+  });
   const PathInfo& info = find_path(c.path);
   auto path = session.build(info, c.variant);
   path->frame();

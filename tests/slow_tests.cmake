@@ -23,3 +23,12 @@ foreach(lt_test IN LISTS ltrender_tests_TESTS)
     endif()
   endforeach()
 endforeach()
+
+# The bounds tests read each scene's reference from one folder per ctest run
+# (tests/reference_cache.h), emptied first by the fixture BoundsReferenceCache.Clear.
+foreach(lt_test IN LISTS ltrender_tests_TESTS)
+  if(lt_test MATCHES "^Demo/Bounded\\.")
+    set_tests_properties("${lt_test}" PROPERTIES FIXTURES_REQUIRED bounds_reference_cache
+      ENVIRONMENT "LT_TEST_REFERENCE_CACHE=@CMAKE_BINARY_DIR@/test-cache/references")
+  endif()
+endforeach()
