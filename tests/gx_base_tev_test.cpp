@@ -47,8 +47,8 @@ TEST(GxBaseTev, KonstIsTheBaseRoundedOnceAndColour0IsUnlit) {
 TEST(GxBaseTev, LowersTheMeanErrorOnBakedBlob) {
   const Scene scene = load_scene(test::source_dir() / "scenes/baked_blob.json");
   const Image ref = render_scene(scene, "reference", "", 128, 96);
-  const Comparison xf = compare_images(render_scene(scene, "gx", "t=vertex", 128, 96), ref,
-                                       TestEncoding::kUnorm8);
+  const Comparison xf =
+      compare_images(render_scene(scene, "gx", "t=vertex", 128, 96), ref, TestEncoding::kUnorm8);
   const Comparison tev = compare_images(render_scene(scene, "gx", "t=vertex:base=tev", 128, 96),
                                         ref, TestEncoding::kUnorm8);
   std::printf("baked_blob mean: base=xf %.3f, base=tev %.3f LSB\n", xf.covered.mean_lsb,
@@ -60,10 +60,9 @@ TEST(GxBaseTev, LowersTheMeanErrorOnBakedBlob) {
 // Point lights attenuate per vertex, so their base stays an XF light: the same image.
 TEST(GxBaseTev, PointLightsKeepTheXfBase) {
   const Scene scene = load_scene(test::source_dir() / "scenes/three_point_blob.json");
-  const Comparison c = compare_images(render_scene(scene, "gx", "t=vertex:base=tev", 96, 72),
-                                      render_scene(scene, "gx", "t=vertex", 96, 72),
-                                      TestEncoding::kUnorm8);
-  EXPECT_EQ(c.covered.max_lsb, 0.0);
+  const Image tev = render_scene(scene, "gx", "t=vertex:base=tev", 96, 72);
+  const Image xf = render_scene(scene, "gx", "t=vertex", 96, 72);
+  EXPECT_TRUE(tev.rgba == xf.rgba);
 }
 
 TEST(GxBaseTev, VariantSpellingRoundTripsAndXfSpecIsRefused) {

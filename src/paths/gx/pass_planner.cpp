@@ -354,16 +354,15 @@ void PassPlanner::light_stages(PassPlan& p, const PassChoice& c, const Transluce
     const Color8 k0 = rgb8(*base * (tr.ambient / (tr.ambient + light.translucency_scale)));
     const bool any = k0.r > 0 || k0.g > 0 || k0.b > 0;
     if (any) p.tev_register = TevRegisterPlan{{"GX_TEVREG0"}, k0, "REG0 = K a / (a + s)"};
-    p.konst_color = KonstColorPlan{
-        {"GX_KCOLOR0"},
-        rgb8(*base),
-        "KCOLOR0 = K = light x albedo x tint x (a + s) / " + std::to_string(st_scale) +
-            ": the translucency base"};
-    p.stages.push_back(tev_stage(
-        stage++, {"GX_TEXCOORD0"}, {"GX_TEXMAP0"}, {"GX_COLORNULL"},
-        {any ? GxConst<NameGroup::ColorArg>{"GX_CC_C0"} : GxConst<NameGroup::ColorArg>{"GX_CC_ZERO"},
-         "GX_CC_KONST", "GX_CC_TEXC", "GX_CC_ZERO"},
-        1, "Stage 0: w = lerp(REG0, K, lobe) = K (a + s lobe) / (a + s)"));
+    p.konst_color = KonstColorPlan{{"GX_KCOLOR0"},
+                                   rgb8(*base),
+                                   "KCOLOR0 = K = light x albedo x tint x (a + s) / " +
+                                       std::to_string(st_scale) + ": the translucency base"};
+    p.stages.push_back(tev_stage(stage++, {"GX_TEXCOORD0"}, {"GX_TEXMAP0"}, {"GX_COLORNULL"},
+                                 {any ? GxConst<NameGroup::ColorArg>{"GX_CC_C0"}
+                                      : GxConst<NameGroup::ColorArg>{"GX_CC_ZERO"},
+                                  "GX_CC_KONST", "GX_CC_TEXC", "GX_CC_ZERO"},
+                                 1, "Stage 0: w = lerp(REG0, K, lobe) = K (a + s lobe) / (a + s)"));
     p.stages.back().konst_color = GxConst<NameGroup::KColorSel>{"GX_TEV_KCSEL_K0"};
   } else if (c.lut) {
     const int a8 = to_unorm8(tr.ambient / (tr.ambient + light.translucency_scale));
