@@ -80,6 +80,12 @@ std::vector<Case> cases() {
       if (gx.refusal(scene, v.name).empty()) out.push_back({s, v.name});
     }
   }
+  // :base=tev (not a listed variant: advise's search picks it) asks the hardware for something
+  // the listed ones do not: an unlit COLOR0 and a konst colour in the LUT stage. Judged where it
+  // changes the program: directional lights, vertex thickness (baked_blob) and constant
+  // thickness (backlit_sphere).
+  for (const char* s : {"scenes/baked_blob.json", "scenes/backlit_sphere.json"})
+    out.push_back({s, "t=vertex:base=tev"});
   return out;
 }
 

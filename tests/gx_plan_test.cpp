@@ -137,6 +137,12 @@ void expect_tev(const PassPlan& p, const GxState& st, const std::string& at) {
     expect_combiner(s.color, t.color, where + " colour");
     expect_combiner(s.alpha, t.alpha, where + " alpha");
     EXPECT_EQ(t.konst_alpha_sel, s.konst_alpha.value()) << where;
+    // Unset: GX_Init's 1/4 (gx.md §1), which no stage the plan leaves unset reads as KONST.
+    if (s.konst_color) EXPECT_EQ(t.konst_color_sel, s.konst_color->value()) << where;
+  }
+  if (p.konst_color) {
+    const Color8& v = p.konst_color->value;
+    EXPECT_EQ(st.tev.konst[static_cast<size_t>(p.konst_color->reg.value())], v) << at;
   }
   if (p.tev_register) {
     const Color8& v = p.tev_register->value;
@@ -206,7 +212,8 @@ TEST(GxPlan, EveryDemoSceneAndVariantProgramSetsWhatThePlanSays) {
                                   "t=texgen",
                                   "t=texgen:view=object",
                                   "lobe=xf-spec",
-                                  "lobe=xf-spec:view=object"};
+                                  "lobe=xf-spec:view=object",
+                                  "t=vertex:base=tev"};
   int compared = 0, xf_spec = 0, maps = 0;
   for (const char* folder : {"scenes", "scenes/ortho", "scenes/maps", "scenes/figures"}) {
     for (const std::string& s : test::json_files(folder)) {

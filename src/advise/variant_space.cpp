@@ -91,6 +91,19 @@ VariantSpace gx_space(const Scene& scene) {
       keys.push_back(v);
     }
   }
+  // base=tev changes only the passes of directional lights (pass_planner.cpp): without one it
+  // is the same program.
+  const bool directional =
+      std::any_of(scene.lights.begin(), scene.lights.end(),
+                  [](const Light& l) { return l.type == Light::Type::Directional; });
+  if (directional) {
+    const size_t lut_keys = keys.size();
+    for (size_t i = 0; i < lut_keys; ++i) {
+      gx::GxVariant v = keys[i];
+      v.base_in_tev = true;
+      keys.push_back(v);
+    }
+  }
   gx::GxVariant xf;
   xf.lobe = gx::GxVariant::Lobe::XfSpec;
   keys.push_back(xf);
@@ -114,6 +127,7 @@ VariantSpace gx_space(const Scene& scene) {
   s.left_out.push_back(
       ":colors=round, :lights=round-each: which of Dolphin's two emulations models the console "
       "(gx-hardware.md §2.4, §2.5), not a choice a port makes");
+  if (!directional) s.left_out.push_back(":base=tev: no directional light (the same program)");
   s.left_out.push_back(
       ":out=xfb: which image the path returns (the EFB or the TV's), not a program");
   return s;

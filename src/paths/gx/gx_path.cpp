@@ -282,8 +282,10 @@ PathInfo gx_path_info() {
       "8-bit channels, the power LUT as an I8 texture with 7-bit filtering, TEV stages, EFB "
       "blending; programs are libogc calls (`ltrender export gx`). Variants are a grammar: "
       "t=vertex | t=texgen with :lut=N (2..1024), or lobe=xf-spec; t=texgen and lobe=xf-spec with "
-      ":view=object (V and L per object: any camera and lights); any with :colors=round, "
-      ":lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of the EFB)";
+      ":view=object (V and L per object: any camera and lights); the LUT variants with :base=tev "
+      "(a directional light's translucency base as a TEV konst colour, COLOR0 unlit); any with "
+      ":colors=round, :lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of "
+      "the EFB)";
   info.variants = {
       {"t=vertex",
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "

@@ -15,14 +15,15 @@ namespace {
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
-    ":lights=round-each, :map=rgb565 and :out=xfb (or :out=efb)";
+    ":lights=round-each, :map=rgb565, :base=tev (or :base=xf) and :out=xfb (or :out=efb)";
 
 }  // namespace
 
 GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
   bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
-       seen_lights = false, seen_map = false, seen_out = false, seen_view = false;
+       seen_lights = false, seen_map = false, seen_out = false, seen_view = false,
+       seen_base = false;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -75,6 +76,10 @@ GxVariant parse_gx_variant(const std::string& text) {
       seen_out = true;
       if (value != "efb" && value != "xfb") bad("out=" + value + " is not efb or xfb");
       v.out = value == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
+    } else if (key == "base" && !seen_base) {
+      seen_base = true;
+      if (value != "tev" && value != "xf") bad("base=" + value + " is not tev or xf");
+      v.base_in_tev = value == "tev";
     } else if (key == "view" && !seen_view) {
       seen_view = true;
       if (value != "object" && value != "exact") bad("view=" + value + " is not object or exact");
@@ -87,6 +92,9 @@ GxVariant parse_gx_variant(const std::string& text) {
   if (v.lobe == GxVariant::Lobe::XfSpec && (seen_t || seen_lut))
     bad("lobe=xf-spec uses no texture, so it takes no t= or lut=");
   // t=vertex computes V and L exactly per vertex on the CPU: a per-object view would only lose.
+  // lobe=xf-spec has no LUT stage to fold the base into.
+  if (v.base_in_tev && v.lobe == GxVariant::Lobe::XfSpec)
+    bad("base=tev folds the base into the LUT stage; lobe=xf-spec has none");
   if (v.view_object && v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex)
     bad("view=object is for t=texgen and lobe=xf-spec (t=vertex has the exact V per vertex)");
   return v;
@@ -101,6 +109,7 @@ std::string to_string(const GxVariant& v) {
     if (v.lut_size != kDefaultLutSize) s += ":lut=" + std::to_string(v.lut_size);
   }
   if (v.view_object) s += ":view=object";
+  if (v.base_in_tev) s += ":base=tev";
   if (v.round_colors) s += ":colors=round";
   if (v.round_each_light) s += ":lights=round-each";
   if (v.map_rgb565) s += ":map=rgb565";

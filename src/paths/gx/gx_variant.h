@@ -17,6 +17,11 @@
 // One axis picks the texture format of a colour thickness map (a grey map is always GX_TF_I8):
 //   :map=rgb565         GX_TF_RGB565, 16 bits a texel (default :map=rgba8, GX_TF_RGBA8, 32 bits:
 //                       the map's 8 bits kept, as the vertex colours it replaces keep theirs)
+// One axis picks where a directional light's translucency base (light x albedo x tint x (a + s))
+// is multiplied in (docs/advise.md, "What the gx error is made of"):
+//   :base=tev           in the TEV, as a konst colour folded into the LUT stage, with COLOR0 the
+//                       unlit thickness: no XF light, no 8-bit truncation of a channel normalised
+//                       to its largest component (default :base=xf, the XF light's colour)
 // One axis picks which image the path returns (xfb_copy.h):
 //   :out=xfb            what the TV shows: the EFB copied to the XFB as YUYV 4:2:2 and decoded
 //                       again, as Dolphin's software renderer dumps it (default :out=efb, the
@@ -40,6 +45,8 @@ struct GxVariant {
   bool round_each_light = false;
   bool map_rgb565 = false;  // colour thickness maps as GX_TF_RGB565 instead of GX_TF_RGBA8
   Output out = Output::Efb;
+  // A directional light's translucency base as a TEV konst colour instead of an XF light.
+  bool base_in_tev = false;
   // V and L constant per object, from its centre (object_view.h); default: exact (t=texgen and
   // lobe=xf-spec then need an orthographic camera and directional lights).
   bool view_object = false;

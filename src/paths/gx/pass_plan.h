@@ -122,6 +122,8 @@ struct TevStagePlan {
   CombinerPlan<NameGroup::AlphaArg> alpha{
       {"GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_ZERO", "GX_CA_KONST"}};
   GxConst<NameGroup::KAlphaSel> konst_alpha{"GX_TEV_KASEL_1"};
+  // The konst colour the colour combiner's KONST reads (unset: not written, GX_Init's 1).
+  std::optional<GxConst<NameGroup::KColorSel>> konst_color;
   // Which of the pass's data-dependent scales the stage's output scale is: the translucency's
   // or the diffuse's (PassFigures), which a module's setup chooses again each frame
   // (module/module_exporter.cpp), or none (a fixed x1).
@@ -164,6 +166,13 @@ struct PassFigures {
   double thickness_scale = 1;
 };
 
+// A konst colour register (GX_SetTevKColor).
+struct KonstColorPlan {
+  GxConst<NameGroup::KColor> reg{"GX_KCOLOR0"};
+  Color8 value{};
+  std::string what;
+};
+
 struct PassPlan {
   VertexFormatPlan vertex;
   std::vector<LightObjectPlan> lights;
@@ -171,6 +180,7 @@ struct PassPlan {
   std::vector<ChannelPlan> channels;
   std::vector<TexGenPlan> texgens;
   std::optional<TevRegisterPlan> tev_register;
+  std::optional<KonstColorPlan> konst_color;
   std::vector<TevStagePlan> stages;
   PixelEnginePlan pixel;
   PassFigures figures;

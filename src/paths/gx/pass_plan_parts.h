@@ -72,9 +72,10 @@ class PassPlanner {
   PassPlan light_pass(int m, size_t l, const std::optional<TexturePlan>& lut,
                       const MapTexture* map);
   void light_channels(PassPlan& p, const PassChoice& c, const glm::dvec3& T_norm, bool map,
-                      const glm::dvec3& albedo, bool first_pass) const;
+                      const glm::dvec3& albedo, bool first_pass, bool base_in_tev) const;
+  // `base`: base=tev's konst colour K (the translucency base over the pass's scale), exact.
   void light_stages(PassPlan& p, const PassChoice& c, const Translucency& tr, const Light& light,
-                    int st_scale) const;
+                    int st_scale, const std::optional<glm::dvec3>& base) const;
   // pass_planner_textures.cpp
   TexturePlan lut_texture(MaterialPlan& mp) const;
   MapTexture map_texture(MaterialPlan& mp, const MapTexels& texels, const MapRole& role) const;

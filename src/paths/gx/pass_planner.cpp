@@ -261,6 +261,15 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
   const ConstantView cv = constant_view(scene_, variant_, material_centre(scene_, m), light);
   const double trans_mag = (c.xf ? cv.attenuation : c.max_attenuation) * c.s0;
   const int st_scale = std::max(c.sd, scale_for(trans_mag));
+  // base=tev: a directional light's attenuation is 1 at every vertex, so its translucency base
+  // is one colour per pass, K, which the TEV multiplies in at full 8-bit precision per
+  // component; through the XF it is the light's colour normalised to 255 at its largest
+  // component (blue 24 on baked_blob) and truncated twice (the sum, then the material multiply),
+  // then scaled up to x4 by the TEV (docs/advise.md, "What the gx error is made of").
+  std::optional<glm::dvec3> base;
+  if (variant_.base_in_tev && c.lut && !c.uses_map && light.type == Light::Type::Directional)
+    base = c.trans_color * (mat.translucency->ambient + light.translucency_scale) * c.t_max /
+           double(st_scale);
   PassPlan p;
   p.vertex = {c.translucent && c.vertex_t, c.lut && variant_.t == GxVariant::TexCoord::Vertex,
               c.uses_map};
@@ -268,16 +277,16 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
   if (c.translucent && c.xf) {
     p.lights.push_back(specular_light(*mat.translucency, light, cv, c.trans_color,
                                       st_scale / (c.s0 * cv.attenuation), p.figures));
-  } else if (c.translucent) {
+  } else if (c.translucent && !base) {
     p.lights.push_back(
         distance_light("trans_light", 0, pos, c.trans_color, light, c.s0 / st_scale));
   }
   p.lights.push_back(
       distance_light("diffuse_light", 1, pos, light.color, light, max3(light.color) / c.sd));
-  light_channels(p, c, c.T / c.t_max, map != nullptr, mat.albedo, l == 0);
+  light_channels(p, c, c.T / c.t_max, map != nullptr, mat.albedo, l == 0, base.has_value());
   if (c.lut) p.texgens.push_back(lut_texgen(*mat.translucency, cv, *lut));
   if (c.uses_map) p.texgens.push_back(map_texgen(*map, c.lut ? 1 : 0, p.vertex.uv_attribute()));
-  light_stages(p, c, *mat.translucency, light, st_scale);
+  light_stages(p, c, *mat.translucency, light, st_scale, base);
   p.pixel = pixel_engine(static_cast<int>(l));
   p.figures.light = l;
   p.figures.translucency_scale = st_scale;
@@ -290,9 +299,19 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
 
 // COLOR0A0 carries the translucency base (or nothing), COLOR1A1 the diffuse.
 void PassPlanner::light_channels(PassPlan& p, const PassChoice& c, const glm::dvec3& T_norm,
-                                 bool map, const glm::dvec3& albedo, bool first_pass) const {
+                                 bool map, const glm::dvec3& albedo, bool first_pass,
+                                 bool base_in_tev) const {
   ChannelPlan c0;
-  if (c.translucent) {
+  if (base_in_tev) {
+    // Lighting off: the channel is the material colour as it is, the vertex colour with no
+    // multiply and no truncation [DSW TransformColor], or the constant thickness.
+    c0.enable = {"GX_DISABLE"};
+    if (c.vertex_t) c0.material_source = {"GX_SRC_VTX"};
+    c0.diffuse_fn = {"GX_DF_NONE"};
+    c0.attenuation_fn = {"GX_AF_NONE"};
+    c0.what = "COLOR0A0 = T, unlit: the translucency base is KCOLOR0, in the TEV";
+    if (!c.vertex_t) c0.material = rgb8(T_norm);
+  } else if (c.translucent) {
     if (c.vertex_t) c0.material_source = {"GX_SRC_VTX"};
     c0.lights = {1, true};
     c0.diffuse_fn = {"GX_DF_NONE"};
@@ -322,13 +341,30 @@ void PassPlanner::light_channels(PassPlan& p, const PassChoice& c, const glm::dv
 // Stage 0 (LUT): w = lerp(a', 255, lobe); stage 1 (LUT and map): w x map; then the
 // translucency (w or the map times COLOR0, scaled st/sd) and the sum with COLOR1, scaled sd.
 void PassPlanner::light_stages(PassPlan& p, const PassChoice& c, const Translucency& tr,
-                               const Light& light, int st_scale) const {
+                               const Light& light, int st_scale,
+                               const std::optional<glm::dvec3>& base) const {
   const int sd = c.sd;
   int stage = 0;
   const int map_texcoord = c.lut ? 1 : 0;  // the map's texgen follows the LUT's
   const GxConst<NameGroup::TexCoord> map_coord =
       GxConst<NameGroup::TexCoord>::with_value(map_texcoord);
-  if (c.lut) {
+  if (c.lut && base) {
+    // w = K (a + s lobe) / (a + s): REG0 = K a / (a + s) from the exact K, each component
+    // rounded once.
+    const Color8 k0 = rgb8(*base * (tr.ambient / (tr.ambient + light.translucency_scale)));
+    const bool any = k0.r > 0 || k0.g > 0 || k0.b > 0;
+    if (any) p.tev_register = TevRegisterPlan{{"GX_TEVREG0"}, k0, "REG0 = K a / (a + s)"};
+    p.konst_color = KonstColorPlan{{"GX_KCOLOR0"},
+                                   rgb8(*base),
+                                   "KCOLOR0 = K = light x albedo x tint x (a + s) / " +
+                                       std::to_string(st_scale) + ": the translucency base"};
+    p.stages.push_back(tev_stage(stage++, {"GX_TEXCOORD0"}, {"GX_TEXMAP0"}, {"GX_COLORNULL"},
+                                 {any ? GxConst<NameGroup::ColorArg>{"GX_CC_C0"}
+                                      : GxConst<NameGroup::ColorArg>{"GX_CC_ZERO"},
+                                  "GX_CC_KONST", "GX_CC_TEXC", "GX_CC_ZERO"},
+                                 1, "Stage 0: w = lerp(REG0, K, lobe) = K (a + s lobe) / (a + s)"));
+    p.stages.back().konst_color = GxConst<NameGroup::KColorSel>{"GX_TEV_KCSEL_K0"};
+  } else if (c.lut) {
     const int a8 = to_unorm8(tr.ambient / (tr.ambient + light.translucency_scale));
     if (a8 > 0)
       p.tev_register = TevRegisterPlan{

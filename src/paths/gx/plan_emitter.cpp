@@ -148,9 +148,13 @@ void tev(Writer& w, const PassPlan& p) {
   if (p.tev_register)
     w.call("GX_SetTevColor", {gx(p.tev_register->reg), rgb(p.tev_register->value)},
            p.tev_register->what);
+  if (p.konst_color)
+    w.call("GX_SetTevKColor", {gx(p.konst_color->reg), rgb(p.konst_color->value)},
+           p.konst_color->what);
   for (const TevStagePlan& s : p.stages) {
     const Arg stage = gx(s.stage);
     w.call("GX_SetTevOrder", {stage, gx(s.texcoord), gx(s.texmap), gx(s.channel)}, s.what);
+    if (s.konst_color) w.call("GX_SetTevKColorSel", {stage, gx(*s.konst_color)});
     w.call("GX_SetTevColorIn", combiner_in(stage, s.color));
     w.call("GX_SetTevColorOp", combiner_op(stage, s.color));
     w.call("GX_SetTevAlphaIn", combiner_in(stage, s.alpha));

@@ -296,6 +296,10 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
         "--variant", to_string(variant),
         "gx: --format module does not carry lobe=xf-spec: its lobe is a rational "
         "fitted per frame in double (Sanathanan-Koerner iterations); use a LUT variant");
+  if (variant.base_in_tev)
+    throw InputError("--variant", to_string(variant),
+                     "gx: --format module does not carry base=tev: its setup recomputes the XF "
+                     "light and a grey REG0 each frame, not the konst colour; use base=xf");
   const ScenePlan plan = plan_scene(scene, variant);
   const GeneratedPrograms g = emit_programs(plan);
   const bool t_from_normal = variant.t == GxVariant::TexCoord::Texgen;
