@@ -1,8 +1,8 @@
 // Hand-written ARB programs through the text parser into the instruction list and its counter
-// (arb_text_parser.h, arb_ir_counter.h) and through Mesa: valid programs with counts worked out by hand from the specs'
-// rules (and Mesa's parameter layout), each also loaded by Mesa whose GL_PROGRAM_NATIVE_*
-// figures must be what the rules predict; invalid programs with the position and the message
-// the parser must give, each refused by Mesa too.
+// (arb_text_parser.h, arb_ir_counter.h) and through Mesa: valid programs with counts worked out by
+// hand from the specs' rules (and Mesa's parameter layout), each also loaded by Mesa whose
+// GL_PROGRAM_NATIVE_* figures must be what the rules predict; invalid programs with the position
+// and the message the parser must give, each refused by Mesa too.
 #include <gtest/gtest.h>
 
 #include "arb_text_cases.h"
