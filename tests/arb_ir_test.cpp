@@ -1,6 +1,6 @@
 // The ARB programs as instruction lists (paths/arbfp/arb_ir.h): printing, the checks against
-// what the specs reject, the IR counter against the text counter, and a dump of every generated
-// program for byte-identity checks.
+// what the specs reject, the counts of a program against those of its printed text parsed back
+// (arb_text_parser.h), and a dump of every generated program for byte-identity checks.
 #include "paths/arbfp/arb_ir.h"
 
 #include <gtest/gtest.h>
@@ -176,9 +176,10 @@ TEST(ArbIrDeathTest, RejectsWhatTheSpecsReject) {
                "not a comment");
 }
 
-// The budget counts the IR; the text counter stays for hand-written programs. On every generated
-// program of every case both give the same figures, and the text is the IR's print.
-TEST(ArbIr, CounterAgreesWithTheTextCounterOnEveryGeneratedProgram) {
+// The budget counts the generator's instruction list; a hand-written program is parsed into one.
+// On every generated program of every case the printed text parses back to the same figures, and
+// the text is the IR's print.
+TEST(ArbIr, EveryGeneratedProgramParsesBackToTheSameCounts) {
   size_t programs = 0;
   test::for_each_arb_case([&](const test::ArbCase& c) {
     arbfp::ArbPrograms p;

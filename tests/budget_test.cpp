@@ -1,7 +1,7 @@
 // The budget checker: the program counter on hand-written programs with known counts (including
 // the texture-indirection cases of ARB_fragment_program issue 24), agreement with Mesa's own
-// counts for every generated program (both the text counter and the IR counter), the profiles, the
-// term's cost, and the CLI's exit codes.
+// counts for every generated program (its printed text parsed back and its instruction list), the
+// profiles, the term's cost, and the CLI's exit codes.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -154,8 +154,8 @@ TEST(ProgramCounter, HandWrittenProgramsAgreeWithMesa) {
   }
 }
 
-// Both counters: the text counter on the printed program and the IR counter on its instruction
-// list (what the budget uses), each against Mesa's own count of the same text.
+// The one counter on the printed program parsed back and on the generator's instruction list
+// (what the budget uses), each against Mesa's own count of the same text.
 TEST(ProgramCounter, EveryGeneratedProgramAgreesWithMesa) {
   gl::Context ctx(8, 8);
   std::vector<std::string> scenes = test::json_files("scenes");

@@ -76,8 +76,8 @@ TEST(FrameWork, GxWorkIsWhatTheEmulatorCountsAsItDraws) {
   EXPECT_GT(w->pixel_ops, 0);
 }
 
-// arbfp's per-pixel and per-vertex operations are the instruction counts `budget` reports (its
-// text counter; the work model counts the generator's IR).
+// arbfp's per-pixel and per-vertex operations are the instruction counts `budget` reports (of the
+// printed text parsed back; the work model counts the generator's IR).
 TEST(FrameWork, ArbfpCountsWhatTheBudgetCounts) {
   const Scene s = demo_scene("three_point_blob.json");
   RenderSession session(s, 64, 48);

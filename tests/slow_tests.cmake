@@ -1,7 +1,7 @@
 # Read by ctest after the discovered tests of ltrender_tests (CMakeLists.txt): labels `slow` the
 # tests that must stay big (docs/testing.md). `ctest -LE slow` is the quick loop; ./test.sh runs all.
 set(lt_slow_tests
-  "^ArbIr\\.CounterAgreesWithTheTextCounterOnEveryGeneratedProgram$"
+  "^ArbIr\\.EveryGeneratedProgramParsesBackToTheSameCounts$"
   "^ProgramCounter\\.EveryGeneratedProgramAgreesWithMesa$"
   "^GxPlan\\.EveryDemoSceneAndVariantProgramSetsWhatThePlanSays$"
   "^Budget\\.EveryDemoProgramFitsPs20InEveryVariant$"

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "gl/context.h"
+#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_mesa_counts.h"
 #include "paths/arbfp/arb_text_parser.h"
 
@@ -118,19 +119,19 @@ std::vector<std::string> notes(const budget::ProgramCounts& c,
 
 budget::Report budget_arb_file(const std::string& file, const std::string& profile) {
   const std::string source = read_text_file(file);
-  text::Program parsed;
+  ir::Program parsed;
   try {
     parsed = text::parse(source);
   } catch (const text::SyntaxError& e) {
     throw InputError(file, std::to_string(e.at().line) + ":" + std::to_string(e.at().column),
                      e.message());
   }
-  const budget::Profile& checked = profile_for(parsed.kind, profile);
-  const budget::ProgramCounts counts = budget::count_parsed(parsed);
+  const budget::Profile& checked = profile_for(parsed.kind(), profile);
+  const budget::ProgramCounts counts = ir::count(parsed);
   MesaCounts mesa;
   {
     const gl::Context ctx(8, 8);
-    mesa = mesa_counts(parsed.kind, source);
+    mesa = mesa_counts(parsed.kind(), source);
   }
   if (!mesa.accepted) {
     throw InputError(file, line_column(source, mesa.error_offset),
@@ -141,23 +142,23 @@ budget::Report budget_arb_file(const std::string& file, const std::string& profi
   r.input = "program";
   r.path = "arbfp";
   r.profiles = {
-      {checked.name, std::string(budget::to_string(parsed.kind)) + " programs", checked.source}};
+      {checked.name, std::string(budget::to_string(parsed.kind())) + " programs", checked.source}};
   r.check_name = "Mesa";
   r.check_source = mesa.renderer + " (GL_PROGRAM_NATIVE_* figures)";
   std::string options;
-  for (const std::string& o : parsed.options) options += (options.empty() ? "" : " ") + o;
-  r.details = {{"header", parsed.header, {}},
-               {"kind", budget::to_string(parsed.kind), {}},
+  for (const std::string& o : parsed.options()) options += (options.empty() ? "" : " ") + o;
+  r.details = {{"header", ir::header(parsed.kind()), {}},
+               {"kind", budget::to_string(parsed.kind()), {}},
                {"options", options, {}},
                {"mesa_api_instructions", "", mesa.api.instructions},
                {"mesa_api_temporaries", "", mesa.api.temporaries}};
   budget::Item item;
   item.scope = budget::Scope::Program;
-  item.name = std::string(budget::to_string(parsed.kind)) + " program";
+  item.name = std::string(budget::to_string(parsed.kind())) + " program";
   item.program = file;
   item.profile = checked.name;
   item.resources = figures(counts, checked, mesa.native);
-  r.notes = notes(counts, parsed.options, checked, mesa, item.resources);
+  r.notes = notes(counts, parsed.options(), checked, mesa, item.resources);
   r.items.push_back(std::move(item));
   return r;
 }

@@ -1,5 +1,6 @@
 #include "paths/arbfp/arb_ir.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -35,6 +36,7 @@ Reg Reg::as_destination() const {
 
 bool Reg::same_register(const Reg& o) const {
   if (file != o.file) return false;
+  if (file == File::Literal) return false;  // each literal is its own (the counter merges)
   return file == File::Attrib || file == File::Output ? binding == o.binding : index == o.index;
 }
 
@@ -56,25 +58,34 @@ const OpInfo& info(Op op) {
   // In enum order. Sources and the program kinds from the two specs' instruction tables.
   static const OpInfo kOps[] = {
       {"ABS", 1, false, true, true},  {"ADD", 2, false, true, true},
-      {"CMP", 3, false, false, true}, {"COS", 1, false, false, true},
-      {"DP3", 2, false, true, true},  {"DP4", 2, false, true, true},
-      {"DPH", 2, false, true, true},  {"DST", 2, false, true, true},
-      {"EX2", 1, false, true, true},  {"EXP", 1, false, true, false},
-      {"FLR", 1, false, true, true},  {"FRC", 1, false, true, true},
-      {"KIL", 1, true, false, true},  {"LG2", 1, false, true, true},
-      {"LIT", 1, false, true, true},  {"LOG", 1, false, true, false},
-      {"LRP", 3, false, false, true}, {"MAD", 3, false, true, true},
-      {"MAX", 2, false, true, true},  {"MIN", 2, false, true, true},
-      {"MOV", 1, false, true, true},  {"MUL", 2, false, true, true},
-      {"POW", 2, false, true, true},  {"RCP", 1, false, true, true},
-      {"RSQ", 1, false, true, true},  {"SCS", 1, false, false, true},
-      {"SGE", 2, false, true, true},  {"SIN", 1, false, false, true},
-      {"SLT", 2, false, true, true},  {"SUB", 2, false, true, true},
+      {"ARL", 1, false, true, false}, {"CMP", 3, false, false, true},
+      {"COS", 1, false, false, true}, {"DP3", 2, false, true, true},
+      {"DP4", 2, false, true, true},  {"DPH", 2, false, true, true},
+      {"DST", 2, false, true, true},  {"EX2", 1, false, true, true},
+      {"EXP", 1, false, true, false}, {"FLR", 1, false, true, true},
+      {"FRC", 1, false, true, true},  {"KIL", 1, true, false, true},
+      {"LG2", 1, false, true, true},  {"LIT", 1, false, true, true},
+      {"LOG", 1, false, true, false}, {"LRP", 3, false, false, true},
+      {"MAD", 3, false, true, true},  {"MAX", 2, false, true, true},
+      {"MIN", 2, false, true, true},  {"MOV", 1, false, true, true},
+      {"MUL", 2, false, true, true},  {"POW", 2, false, true, true},
+      {"RCP", 1, false, true, true},  {"RSQ", 1, false, true, true},
+      {"SCS", 1, false, false, true}, {"SGE", 2, false, true, true},
+      {"SIN", 1, false, false, true}, {"SLT", 2, false, true, true},
+      {"SUB", 2, false, true, true},  {"SWZ", 1, false, true, true},
       {"TEX", 1, true, false, true},  {"TXB", 1, true, false, true},
       {"TXP", 1, true, false, true},  {"XPD", 2, false, true, true},
   };
   static_assert(sizeof kOps / sizeof kOps[0] == static_cast<size_t>(Op::XPD) + 1);
   return kOps[static_cast<size_t>(op)];
+}
+
+const char* header(ProgramKind kind) {
+  return kind == ProgramKind::Vertex ? "!!ARBvp1.0" : "!!ARBfp1.0";
+}
+
+bool Program::has_option(const std::string& name) const {
+  return std::find(options_.begin(), options_.end(), name) != options_.end();
 }
 
 std::vector<Instr> Program::instructions() const {
@@ -88,11 +99,15 @@ std::vector<Instr> Program::instructions() const {
 }
 
 const std::string& Program::name(const Reg& r) const {
-  LT_CHECK(r.valid() && (r.file == File::Temp || r.file == File::Param),
+  LT_CHECK(r.valid() && (r.file == File::Temp || r.file == File::Param || r.file == File::Address),
            "ARB IR: not a declared register");
   if (r.file == File::Temp) {
     LT_CHECK(static_cast<size_t>(r.index) < temps_.size(), "ARB IR: no such temporary");
     return temps_[static_cast<size_t>(r.index)];
+  }
+  if (r.file == File::Address) {
+    LT_CHECK(static_cast<size_t>(r.index) < addresses_.size(), "ARB IR: no such address register");
+    return addresses_[static_cast<size_t>(r.index)];
   }
   LT_CHECK(static_cast<size_t>(r.index) < params_.size(), "ARB IR: no such parameter");
   return params_[static_cast<size_t>(r.index)].name;
@@ -102,6 +117,9 @@ void Program::check_new_name(const std::string& name) const {
   LT_CHECK(!name.empty(), "ARB IR: a register needs a name");
   for (const std::string& t : temps_) LT_CHECK(t != name, "ARB IR: " + name + " declared twice");
   for (const Param& p : params_) LT_CHECK(p.name != name, "ARB IR: " + name + " declared twice");
+  for (const std::string& a : addresses_) {
+    LT_CHECK(a != name, "ARB IR: " + name + " declared twice");
+  }
 }
 
 Reg Program::temp(const std::string& name) {
@@ -113,14 +131,25 @@ Reg Program::temp(const std::string& name) {
   return r;
 }
 
+Reg Program::address(const std::string& name) {
+  LT_CHECK(kind_ == ProgramKind::Vertex, "ARB IR: address registers are vertex programs'");
+  check_new_name(name);
+  addresses_.push_back(name);
+  Reg r;
+  r.file = File::Address;
+  r.index = static_cast<int>(addresses_.size() - 1);
+  return r;
+}
+
 Block Program::block() {
   blocks_.emplace_back();
   return Block(*this, blocks_.size() - 1);
 }
 
-// What the specs would reject, caught where the generator wrote it: an opcode the program kind
-// lacks (CMP, _SAT and TEX in a vertex program), a wrong operand count, a destination that is
-// swizzled or an input, a source that is masked or an output, a register of no declaration.
+// What the specs would reject, caught where the generator (or the parser) wrote it: an opcode the
+// program kind lacks (CMP, _SAT and TEX in a vertex program), a wrong operand count, a
+// destination that is swizzled or an input (ARL's: an address register), a source that is masked,
+// an output or an address register, a register of no declaration.
 void Program::check(const Instr& in) const {
   const OpInfo& oi = info(in.op);
   const bool vertex = kind_ == ProgramKind::Vertex;
@@ -130,14 +159,18 @@ void Program::check(const Instr& in) const {
   LT_CHECK(!(vertex && in.saturate), what + "_SAT: vertex programs have no saturation");
   LT_CHECK(in.srcs.size() == static_cast<size_t>(oi.sources), what + ": wrong operand count");
   if (in.op != Op::KIL) {
-    LT_CHECK(in.dst.valid() && (in.dst.file == File::Temp || in.dst.file == File::Output),
-             what + ": the destination is a temporary or an output");
+    const bool arl = in.op == Op::ARL;
+    LT_CHECK(in.dst.valid() && (arl ? in.dst.file == File::Address
+                                    : in.dst.file == File::Temp || in.dst.file == File::Output),
+             what + (arl ? ": the destination is an address register"
+                         : ": the destination is a temporary or an output"));
     LT_CHECK(in.dst.swizzle.empty() && !in.dst.negate, what + ": a destination has a mask only");
-    if (in.dst.file == File::Temp) name(in.dst);
+    if (in.dst.file != File::Output) name(in.dst);
   }
   for (const Reg& s : in.srcs) {
-    LT_CHECK(s.valid() && s.file != File::Output && s.write_mask.empty(),
-             what + ": a source is a declared register or an input, with a swizzle only");
+    LT_CHECK(
+        s.valid() && s.file != File::Output && s.file != File::Address && s.write_mask.empty(),
+        what + ": a source is a declared register, an input or a literal, with a swizzle only");
     if (s.file == File::Temp || s.file == File::Param) name(s);
   }
   LT_CHECK(oi.texture == !in.texture_target.empty() || in.op == Op::KIL,
@@ -164,8 +197,17 @@ void Block::option(const std::string& name) {
 }
 
 Reg Block::param(const std::string& name, const std::string& value, const std::string& comment) {
-  program_->check_new_name(name);
-  program_->params_.push_back({name, value, comment});
+  Param d;
+  d.name = name;
+  d.value = value;
+  d.comment = comment;
+  return param(std::move(d));
+}
+
+Reg Block::param(Param declaration) {
+  program_->check_new_name(declaration.name);
+  declaration.after_instructions = program_->instrs_.size();
+  program_->params_.push_back(std::move(declaration));
   add({Program::Line::Kind::Param, "", program_->params_.size() - 1});
   Reg r;
   r.file = File::Param;
@@ -214,6 +256,8 @@ void Block::tex(const Reg& dst, const Reg& coord, int unit, const std::string& t
 namespace {
 
 std::string operand(const Program& p, const Reg& r) {
+  LT_CHECK(r.file != File::Literal && r.file != File::Address && r.element == 0,
+           "ARB IR: print writes generated programs (a parsed one's text is its source)");
   std::string s = r.negate ? "-" : "";
   s += r.file == File::Attrib || r.file == File::Output ? r.binding : p.name(r);
   const std::string& c = r.write_mask.empty() ? r.swizzle : r.write_mask;
@@ -241,7 +285,10 @@ std::string instruction(const Program& p, const Instr& in) {
 }  // namespace
 
 std::string print(const Program& p) {
-  std::string s = p.kind() == ProgramKind::Vertex ? "!!ARBvp1.0\n" : "!!ARBfp1.0\n";
+  LT_CHECK(p.addresses_.empty(),
+           "ARB IR: print writes generated programs (a parsed one's text is its source)");
+  std::string s = header(p.kind());
+  s += "\n";  // appended: GCC 12 warns (-Wrestrict) on the inlined operator+
   for (const auto& block : p.blocks_) {
     for (const Program::Line& l : block) {
       switch (l.kind) {
@@ -253,6 +300,8 @@ std::string print(const Program& p) {
           break;
         case Program::Line::Kind::Param: {
           const Param& d = p.params_[l.index];
+          LT_CHECK(d.slots.empty(),
+                   "ARB IR: print writes generated programs (a parsed one's text is its source)");
           s.append("PARAM ").append(d.name).append(" = ").append(d.value).append(";");
           if (!d.comment.empty()) s.append("  # ").append(d.comment);
           s += "\n";

@@ -1,10 +1,12 @@
 // An ARB_vertex_program / ARB_fragment_program as data: registers as handles into the program's
 // declarations, instructions as opcode + operands, and the comments and blank lines where they
-// print. The generator builds one (arb_generator.cpp), the budget counts it (arb_ir_counter.h)
-// and print() writes the assembly text GL loads. Hand-written programs stay text and go through
-// the text counter (arb_counter.h).
+// print. The generator builds one (arb_generator.cpp) and print() writes the assembly text GL
+// loads; the text parser (arb_text_parser.h) reads hand-written programs into one, as Mesa's
+// program_parse.y reads text into the prog_instruction list it also generates. The one counter
+// (arb_ir_counter.h) counts either.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,10 +17,23 @@ namespace lt::arbfp::ir {
 using budget::ProgramKind;
 
 enum class File {
-  Temp,    // a TEMP of the program
-  Param,   // a PARAM of the program
-  Attrib,  // an input binding: vertex.normal, fragment.texcoord[1]
-  Output,  // an output binding: result.color, result.texcoord[3]
+  Temp,     // a TEMP of the program
+  Param,    // a PARAM of the program
+  Attrib,   // an input binding: vertex.normal, fragment.texcoord[1]
+  Output,   // an output binding: result.color, result.texcoord[3]
+  Address,  // an ADDRESS register (vertex programs: ARL's destination; read only inside a[...])
+  Literal,  // a constant or a state / program binding written in the instruction (parsed text)
+};
+
+// One slot of the parameter file (a vec4): a constant, or a state / program binding. The
+// parser's; a generated PARAM has none (its value is text, one slot).
+struct ParamSlot {
+  bool constant = false;
+  std::array<float, 4> values = {0, 0, 0, 0};
+  // Components that are the constant's own: 1 for a scalar used in an instruction ("0.5"), 4
+  // for every vector and every declared PARAM (Mesa's paramConstScalarUse / paramConstVector).
+  int size = 4;
+  std::string binding;  // canonical, e.g. "state.matrix.mvp.row[1]", "program.local[3]"
 };
 
 // One operand. Temporaries and parameters are handles (index) into the program that declared
@@ -32,24 +47,29 @@ struct Reg {
   std::string swizzle;     // as a source: "" (.xyzw), "x", "xyz", ...
   std::string write_mask;  // as a destination: "" (all), "xyz", ...
   bool negate = false;
+  int element = 0;    // Param of an array (parsed text): the element; -1 for a[A0.x + n]
+  ParamSlot literal;  // Literal
 
   Reg swz(const std::string& components) const;
   Reg masked(const std::string& components) const;
   Reg operator-() const;
   // The same register and components as a destination: r.x read, r.x written.
   Reg as_destination() const;
-  bool valid() const { return file == File::Attrib || file == File::Output || index >= 0; }
+  bool valid() const {
+    return file == File::Attrib || file == File::Output || file == File::Literal || index >= 0;
+  }
   bool same_register(const Reg& o) const;
 };
 
 Reg attrib(const std::string& binding);
 Reg output(const std::string& binding);
 
-// The opcodes of ARBvp1.0 and ARBfp1.0 except ARL and SWZ (address registers and extended
-// swizzles: nothing generates them).
+// The opcodes of ARBvp1.0 and ARBfp1.0 (the generator writes neither ARL nor SWZ; hand-written
+// programs may).
 enum class Op {
   ABS,
   ADD,
+  ARL,
   CMP,
   COS,
   DP3,
@@ -78,6 +98,7 @@ enum class Op {
   SIN,
   SLT,
   SUB,
+  SWZ,
   TEX,
   TXB,
   TXP,
@@ -94,9 +115,9 @@ const OpInfo& info(Op op);
 
 struct Instr {
   Op op = Op::MOV;
-  bool saturate = false;  // _SAT (fragment programs only)
-  Reg dst;                // none for KIL
-  std::vector<Reg> srcs;
+  bool saturate = false;       // _SAT (fragment programs only)
+  Reg dst;                     // none for KIL; ARL: the address register
+  std::vector<Reg> srcs;       // SWZ: one, its swizzle the extended one ("0,1,-x,y" as "01-xy")
   int texture_unit = 0;        // texture instructions: texture[unit], target
   std::string texture_target;  // "1D", "2D", ...
   std::string comment;         // printed after the instruction: "MUL a, b, c;  # comment"
@@ -106,7 +127,16 @@ struct Param {
   std::string name;
   std::string value;    // as printed: "{1, 2, 3, 0}"
   std::string comment;  // printed after the declaration
+  // A parsed PARAM: its slots (an array's every element) and the instructions before it (Mesa's
+  // parameter list is built in statement order; a parsed program is one block, so this is its
+  // place in print order too). A generated PARAM has no slots: one slot, its value as text.
+  std::vector<ParamSlot> slots = {};
+  bool array = false;
+  size_t after_instructions = 0;
 };
+
+// The first line of a program's text: "!!ARBvp1.0" or "!!ARBfp1.0".
+const char* header(ProgramKind kind);
 
 class Block;
 
@@ -120,14 +150,18 @@ class Program {
   ProgramKind kind() const { return kind_; }
   const std::vector<std::string>& options() const { return options_; }
   const std::vector<std::string>& temps() const { return temps_; }
+  const std::vector<std::string>& addresses() const { return addresses_; }
   const std::vector<Param>& params() const { return params_; }
   // Every instruction, in print order.
   std::vector<Instr> instructions() const;
-  // Declared names, for printing: temps()[r.index] or params()[r.index].name.
+  bool has_option(const std::string& name) const;
+  // Declared names, for printing: temps()[r.index], params()[r.index].name or addresses()[...].
   const std::string& name(const Reg& r) const;
 
   // Declares a temporary; the TEMP statement (Block::temps) lists them in this order.
   Reg temp(const std::string& name);
+  // Declares an address register (vertex programs; ADDRESS statements are not printed).
+  Reg address(const std::string& name);
   // A new block after every block opened so far.
   Block block();
 
@@ -143,7 +177,7 @@ class Program {
   void check(const Instr& in) const;
 
   ProgramKind kind_;
-  std::vector<std::string> options_, temps_;
+  std::vector<std::string> options_, temps_, addresses_;
   std::vector<Param> params_;
   std::vector<Instr> instrs_;
   std::vector<std::vector<Line>> blocks_;
@@ -157,6 +191,8 @@ class Block {
   void text(const std::string& lines);
   void option(const std::string& name);
   Reg param(const std::string& name, const std::string& value, const std::string& comment = "");
+  // A parsed declaration (slots, array): printing it is not supported (its text is the source).
+  Reg param(Param declaration);
   // The program's TEMP statement prints here (nothing when there are no temporaries).
   void temps();
   void emit(Instr in);
@@ -175,7 +211,9 @@ class Block {
   size_t index_;
 };
 
-// The assembly text: the header (!!ARBvp1.0 / !!ARBfp1.0), every block, END.
+// The assembly text: the header (!!ARBvp1.0 / !!ARBfp1.0), every block, END. Of a generated
+// program: a parsed one's arrays, literals and address registers are not printed (its text is
+// the source it was parsed from).
 std::string print(const Program& p);
 
 // Literals for PARAM values. A float literal as the program reads it: the double rounded to

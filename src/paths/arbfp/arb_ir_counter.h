@@ -1,6 +1,6 @@
-// Counts an ARB program built as IR (arb_ir.h) the way the text counter (arb_counter.h) counts
-// its text: the same figures, read off the instruction list and the declarations instead of
-// parsed back, so the budget needs no guess about which names are temporaries.
+// The one counter of an ARB program (arb_counter.h's figures), read off the instruction list
+// and the declarations of an ir::Program: one the generator built or one the text parser read
+// (arb_text_parser.h), so generated and hand-written programs count alike.
 #pragma once
 
 #include "paths/arbfp/arb_counter.h"

@@ -9,10 +9,24 @@
 #include <string>
 #include <vector>
 
+#include "paths/arbfp/arb_ir.h"
 #include "paths/arbfp/arb_text_cursor.h"
-#include "paths/arbfp/arb_text_program.h"
 
 namespace lt::arbfp::text {
+
+using budget::ProgramKind;
+using ir::ParamSlot;
+
+// Implementation limits the parser checks, as Mesa 22's llvmpipe reports them
+// (glGetIntegerv / glGetProgramivARB): a driver's compiler refuses an index past them.
+struct Limits {
+  int texture_coords = 8;        // GL_MAX_TEXTURE_COORDS
+  int texture_image_units = 32;  // GL_MAX_TEXTURE_IMAGE_UNITS
+  int vertex_attribs = 16;       // GL_MAX_VERTEX_ATTRIBS
+  int lights = 8, clip_planes = 8, program_matrices = 8, draw_buffers = 8;
+  int env_params = 256, local_params = 2048;  // GL_MAX_PROGRAM_ENV/LOCAL_PARAMETERS
+  int address_offset = 64;  // |n| of a[A0.x + n] (Mesa accepts 64; the spec's minimum is 63)
+};
 
 // The cursor is at "fragment" or "vertex": the input binding.
 std::string parse_attrib_binding(Cursor& c, ProgramKind kind, const Limits& limits);

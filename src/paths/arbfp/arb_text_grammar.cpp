@@ -7,25 +7,21 @@ namespace lt::arbfp::text {
 
 namespace {
 
+using ir::Op;
+
 const OpcodeInfo kOpcodes[] = {
-    {"ABS", Form::Vector, 1, true, true},   {"ADD", Form::Vector, 2, true, true},
-    {"ARL", Form::Address, 1, true, false}, {"CMP", Form::Vector, 3, false, true},
-    {"COS", Form::Scalar, 1, false, true},  {"DP3", Form::Vector, 2, true, true},
-    {"DP4", Form::Vector, 2, true, true},   {"DPH", Form::Vector, 2, true, true},
-    {"DST", Form::Vector, 2, true, true},   {"EX2", Form::Scalar, 1, true, true},
-    {"EXP", Form::Scalar, 1, true, false},  {"FLR", Form::Vector, 1, true, true},
-    {"FRC", Form::Vector, 1, true, true},   {"KIL", Form::Kill, 1, false, true},
-    {"LG2", Form::Scalar, 1, true, true},   {"LIT", Form::Vector, 1, true, true},
-    {"LOG", Form::Scalar, 1, true, false},  {"LRP", Form::Vector, 3, false, true},
-    {"MAD", Form::Vector, 3, true, true},   {"MAX", Form::Vector, 2, true, true},
-    {"MIN", Form::Vector, 2, true, true},   {"MOV", Form::Vector, 1, true, true},
-    {"MUL", Form::Vector, 2, true, true},   {"POW", Form::Scalar, 2, true, true},
-    {"RCP", Form::Scalar, 1, true, true},   {"RSQ", Form::Scalar, 1, true, true},
-    {"SCS", Form::Scalar, 1, false, true},  {"SGE", Form::Vector, 2, true, true},
-    {"SIN", Form::Scalar, 1, false, true},  {"SLT", Form::Vector, 2, true, true},
-    {"SUB", Form::Vector, 2, true, true},   {"SWZ", Form::Swizzle, 1, true, true},
-    {"TEX", Form::Texture, 1, false, true}, {"TXB", Form::Texture, 1, false, true},
-    {"TXP", Form::Texture, 1, false, true}, {"XPD", Form::Vector, 2, true, true},
+    {Op::ABS, Form::Vector},  {Op::ADD, Form::Vector},  {Op::ARL, Form::Address},
+    {Op::CMP, Form::Vector},  {Op::COS, Form::Scalar},  {Op::DP3, Form::Vector},
+    {Op::DP4, Form::Vector},  {Op::DPH, Form::Vector},  {Op::DST, Form::Vector},
+    {Op::EX2, Form::Scalar},  {Op::EXP, Form::Scalar},  {Op::FLR, Form::Vector},
+    {Op::FRC, Form::Vector},  {Op::KIL, Form::Kill},    {Op::LG2, Form::Scalar},
+    {Op::LIT, Form::Vector},  {Op::LOG, Form::Scalar},  {Op::LRP, Form::Vector},
+    {Op::MAD, Form::Vector},  {Op::MAX, Form::Vector},  {Op::MIN, Form::Vector},
+    {Op::MOV, Form::Vector},  {Op::MUL, Form::Vector},  {Op::POW, Form::Scalar},
+    {Op::RCP, Form::Scalar},  {Op::RSQ, Form::Scalar},  {Op::SCS, Form::Scalar},
+    {Op::SGE, Form::Vector},  {Op::SIN, Form::Scalar},  {Op::SLT, Form::Vector},
+    {Op::SUB, Form::Vector},  {Op::SWZ, Form::Swizzle}, {Op::TEX, Form::Texture},
+    {Op::TXB, Form::Texture}, {Op::TXP, Form::Texture}, {Op::XPD, Form::Vector},
 };
 
 const char* const kFragmentOptions[] = {"ARB_precision_hint_fastest",
@@ -41,7 +37,7 @@ const char* const kVertexOptions[] = {"ARB_position_invariant"};
 
 const OpcodeInfo* find_opcode(const std::string& name) {
   for (const OpcodeInfo& o : kOpcodes) {
-    if (name == o.name) return &o;
+    if (name == ir::info(o.op).name) return &o;
   }
   return nullptr;
 }

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "paths/arbfp/arb_ir.h"
+
 namespace lt::arbfp::text {
 
 // How an opcode reads its operands (the instruction tables of ARB_vertex_program 2.14.5 and
@@ -19,11 +21,10 @@ enum class Form {
   Address,  // ARL: the address register, a scalar source
 };
 
+// The name, the sources and the program kinds are the instruction's (ir::info).
 struct OpcodeInfo {
-  const char* name;
+  ir::Op op;
   Form form;
-  int sources;
-  bool vertex, fragment;
 };
 
 // The opcode of that name (without _SAT), or nullptr.

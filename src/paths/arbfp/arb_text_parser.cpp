@@ -4,31 +4,28 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "paths/arbfp/arb_text_bindings.h"
 #include "paths/arbfp/arb_text_cursor.h"
 #include "paths/arbfp/arb_text_grammar.h"
+#include "paths/arbfp/arb_text_operands.h"
 
 namespace lt::arbfp::text {
 
-bool Program::has_option(const std::string& name) const {
-  return std::find(options.begin(), options.end(), name) != options.end();
-}
-
 namespace {
 
-bool valid_components(const std::string& s, const std::string& set) {
-  return std::all_of(s.begin(), s.end(),
-                     [&](char ch) { return set.find(ch) != std::string::npos; });
-}
+using ir::File;
+using ir::Reg;
 
 class Parser {
  public:
   Parser(const std::string& source, const Limits& limits) : c_(tokenize(source)), limits_(limits) {}
 
-  Program run() {
-    header();
+  ir::Program run() {
+    p_ = ir::Program(header());
+    b_.emplace(p_.block());
     while (c_.peek().is("OPTION")) option();
     while (!c_.peek().is("END")) {
       if (c_.peek().kind == TokenKind::End) c_.expected("an instruction, a declaration or END");
@@ -42,24 +39,23 @@ class Parser {
 
  private:
   struct Symbol {
-    RegFile file;
+    File file;
     int index = -1;
     std::string binding;
     Position at;
   };
 
-  bool vertex() const { return p_.kind == ProgramKind::Vertex; }
+  bool vertex() const { return p_.kind() == ProgramKind::Vertex; }
 
-  void header() {
+  ProgramKind header() {
     const Token& t = c_.peek();
-    if (t.is("!!ARBfp1.0")) {
-      p_.kind = ProgramKind::Fragment;
-    } else if (t.is("!!ARBvp1.0")) {
-      p_.kind = ProgramKind::Vertex;
-    } else {
-      c_.expected("the header !!ARBvp1.0 or !!ARBfp1.0 at the start of the program");
+    for (ProgramKind k : {ProgramKind::Fragment, ProgramKind::Vertex}) {
+      if (t.is(ir::header(k))) {
+        c_.take();
+        return k;
+      }
     }
-    p_.header = c_.take().text;
+    c_.expected("the header !!ARBvp1.0 or !!ARBfp1.0 at the start of the program");
   }
 
   void option() {
@@ -81,7 +77,7 @@ class Parser {
       if (o.rfind("ARB_fog_", 0) == 0) return std::string("ARB_fog_*");
       return o;
     };
-    for (const std::string& o : p_.options) {
+    for (const std::string& o : p_.options()) {
       // The same option twice is harmless (Mesa accepts it).
       if (o == t.text) {
         c_.expect(";");
@@ -92,7 +88,7 @@ class Parser {
                                   " was given before)");
       }
     }
-    p_.options.push_back(t.text);
+    b_->option(t.text);
     c_.expect(";");
   }
 
@@ -110,7 +106,7 @@ class Parser {
     return c_.take();
   }
 
-  void declare(const Token& name, RegFile file, int index, const std::string& binding) {
+  void declare(const Token& name, File file, int index, const std::string& binding) {
     names_[name.text] = Symbol{file, index, binding, name.at};
   }
   void declare(const Token& name, const Symbol& alias_of) {
@@ -127,9 +123,9 @@ class Parser {
       const Token& n = new_name();
       c_.expect("=");
       if (input) {
-        declare(n, RegFile::Attrib, -1, attrib_binding());
+        declare(n, File::Attrib, -1, attrib_binding());
       } else {
-        declare(n, RegFile::Output, -1, result_binding());
+        declare(n, File::Output, -1, result_binding());
       }
       return;
     }
@@ -159,63 +155,31 @@ class Parser {
     }
     do {
       const Token& n = new_name();
-      auto& list = address ? p_.addresses : p_.temps;
-      declare(n, address ? RegFile::Address : RegFile::Temp, static_cast<int>(list.size()), "");
-      list.push_back(n.text);
+      const Reg r = address ? p_.address(n.text) : p_.temp(n.text);
+      declare(n, r.file, r.index, "");
     } while (c_.accept(","));
-  }
-
-  float signed_number() {
-    const bool negative = c_.peek().is("-");
-    if (negative || c_.peek().is("+")) c_.take();
-    const Token& t = c_.peek();
-    if (t.kind != TokenKind::Integer && t.kind != TokenKind::Float) c_.expected("a number");
-    c_.take();
-    const float v = std::strtof(t.text.c_str(), nullptr);
-    return negative ? -v : v;
-  }
-
-  // '{' a [, b [, c [, d]]] '}': missing components are (0, 0, 1) as in ARB_vertex_program
-  // 2.14.3.4 ({x} is (x, 0, 0, 1)).
-  ParamSlot vector_constant() {
-    c_.expect("{");
-    ParamSlot s;
-    s.constant = true;
-    s.values = {0, 0, 0, 1};
-    int n = 0;
-    do {
-      if (n == 4) c_.expected("'}' (a vector has four components at most)");
-      s.values[static_cast<size_t>(n++)] = signed_number();
-    } while (c_.accept(","));
-    c_.expect("}", "',' or '}'");
-    return s;
-  }
-
-  bool starts_number(size_t ahead = 0) const {
-    const Token& t = c_.peek(ahead);
-    return t.kind == TokenKind::Integer || t.kind == TokenKind::Float;
   }
 
   // A PARAM's initialiser item: a constant, or a binding (`ranges`: may cover several slots).
   std::vector<ParamSlot> param_item(bool ranges) {
     const Token& t = c_.peek();
-    if (t.is("{")) return {vector_constant()};
-    if (starts_number() || ((t.is("-") || t.is("+")) && starts_number(1))) {
+    if (t.is("{")) return {vector_constant(c_)};
+    if (starts_number(c_) || ((t.is("-") || t.is("+")) && starts_number(c_, 1))) {
       // A declared scalar is replicated: PARAM k = 0.5 is (0.5, 0.5, 0.5, 0.5).
       ParamSlot s;
       s.constant = true;
-      const float v = signed_number();
+      const float v = signed_number(c_);
       s.values = {v, v, v, v};
       return {s};
     }
-    if (starts_param_binding(t)) return parse_param_binding(c_, p_.kind, limits_, ranges);
+    if (starts_param_binding(t)) return parse_param_binding(c_, p_.kind(), limits_, ranges);
     c_.expected("a constant, a state.* or a program.* binding");
   }
 
   void param() {
     c_.take();
     const Token& n = new_name();
-    ParamDecl d;
+    ir::Param d;
     d.name = n.text;
     if (c_.accept("[")) {
       d.array = true;
@@ -238,14 +202,12 @@ class Parser {
       c_.expect("=", "'=' or '['");
       d.slots = param_item(false);
     }
-    d.after_instructions = p_.code.size();
-    declare(n, RegFile::Param, static_cast<int>(p_.params.size()), "");
-    p_.params.push_back(std::move(d));
+    declare(n, File::Param, b_->param(std::move(d)).index, "");
   }
 
   std::string attrib_binding() {
     const Position at = c_.peek().at;
-    std::string b = parse_attrib_binding(c_, p_.kind, limits_);
+    std::string b = parse_attrib_binding(c_, p_.kind(), limits_);
     const std::string named = named_alias_of_generic(b);
     const std::string other = named.empty() ? generic_of_named(b) : named;
     if (!other.empty() && attribs_seen_.count(other)) {
@@ -257,63 +219,19 @@ class Parser {
   }
 
   std::string result_binding() {
-    return parse_result_binding(c_, p_.kind, limits_, p_.has_option("ARB_draw_buffers"));
+    return parse_result_binding(c_, p_.kind(), limits_, p_.has_option("ARB_draw_buffers"));
   }
 
   // ---- operands ----------------------------------------------------------------------------
 
-  // ".mask" of a destination: components in xyzw order, each once (rgba too in fragment
-  // programs).
-  std::string write_mask() {
-    if (!c_.peek().is(".")) return "";
-    const Token& dot = c_.take();
-    const Token& t = c_.expect_attached_name(dot, "a write mask (.x, .xy, .xyzw, ...)");
-    const std::string sets[] = {"xyzw", "rgba"};
-    for (const std::string& set : sets) {
-      if (set == "rgba" && vertex()) continue;
-      size_t last = 0;
-      bool ok = !t.text.empty() && t.text.size() <= 4;
-      for (size_t k = 0; ok && k < t.text.size(); ++k) {
-        const size_t at = set.find(t.text[k]);
-        ok = at != std::string::npos && (k == 0 || at > last);
-        last = at;
-      }
-      if (ok) return t.text;
-    }
-    Cursor::fail_at(t.at, "expected a write mask: components of " +
-                              std::string(vertex() ? "xyzw" : "xyzw or rgba") +
-                              " in that order, each once; found '" + t.text + "'");
-  }
-
-  // ".x" or ".xyzw" of a source (one or four components, ARB_vertex_program 2.14.2.2).
-  std::string swizzle(bool scalar) {
-    if (!c_.peek().is(".")) {
-      if (scalar) c_.expected("a scalar suffix (.x, .y, .z or .w)");
-      return "";
-    }
-    const Token& dot = c_.take();
-    const Token& t =
-        c_.expect_attached_name(dot, scalar ? "a scalar suffix (.x, .y, .z or .w)" : "a swizzle");
-    const bool xyzw = valid_components(t.text, "xyzw");
-    const bool rgba = !vertex() && valid_components(t.text, "rgba");
-    const size_t n = t.text.size();
-    if (!(xyzw || rgba) || (scalar ? n != 1 : (n != 1 && n != 4))) {
-      Cursor::fail_at(t.at, std::string("expected ") +
-                                (scalar ? "one component" : "one or four components") + " of " +
-                                (vertex() ? "xyzw" : "xyzw or rgba (not mixed)") + ", found '" +
-                                t.text + "'");
-    }
-    return t.text;
-  }
-
   // c[n], c[A0.x], c[A0.x + n], c[A0.x - n]: the element, or -1 for relative addressing.
-  int array_element(const ParamDecl& d) {
+  int array_element(const ir::Param& d) {
     c_.expect("[", "'[' and an index: '" + d.name + "' is an array");
     int element = -1;
     if (c_.peek().kind == TokenKind::Name) {
       const Token& a = c_.take();
       const auto it = names_.find(a.text);
-      if (!vertex() || it == names_.end() || it->second.file != RegFile::Address) {
+      if (!vertex() || it == names_.end() || it->second.file != File::Address) {
         Cursor::fail_at(
             a.at, vertex() ? "expected an index or an ADDRESS register, found '" + a.text + "'"
                            : "expected an index (relative addressing is "
@@ -340,30 +258,26 @@ class Parser {
   }
 
   // A source operand without its swizzle.
-  Operand source_register() {
-    Operand o;
+  Reg source_register() {
+    Reg o;
     const Token& t = c_.peek();
-    if (starts_number()) {
-      o.file = RegFile::InlineParam;
-      o.slot.constant = true;
+    if (starts_number(c_)) {
+      o.file = File::Literal;
+      o.literal.constant = true;
       const float v = std::strtof(c_.take().text.c_str(), nullptr);
-      o.slot.values = {v, v, v, v};
-      o.slot.size = 1;
+      o.literal.values = {v, v, v, v};
+      o.literal.size = 1;
       return o;
     }
     if (t.is("{")) {
-      o.file = RegFile::InlineParam;
-      o.slot = vector_constant();
+      o.file = File::Literal;
+      o.literal = vector_constant(c_);
       return o;
     }
-    if (starts_attrib_binding(t)) {
-      o.file = RegFile::Attrib;
-      o.binding = attrib_binding();
-      return o;
-    }
+    if (starts_attrib_binding(t)) return ir::attrib(attrib_binding());
     if (starts_param_binding(t)) {
-      o.file = RegFile::InlineParam;
-      o.slot = parse_param_binding(c_, p_.kind, limits_, false).front();
+      o.file = File::Literal;
+      o.literal = parse_param_binding(c_, p_.kind(), limits_, false).front();
       return o;
     }
     if (t.is("result")) c_.fail("expected a source register: outputs cannot be read");
@@ -373,22 +287,20 @@ class Parser {
     const Symbol s = it->second;
     c_.take();
     switch (s.file) {
-      case RegFile::Output:
+      case File::Output:
         Cursor::fail_at(t.at, "expected a source register: '" + t.text +
                                   "' is an output, which cannot be read");
-      case RegFile::Address:
+      case File::Address:
         Cursor::fail_at(t.at, "expected a source register: '" + t.text +
                                   "' is an address register (used only inside a[...])");
-      case RegFile::Attrib:
-        o.file = RegFile::Attrib;
-        o.binding = s.binding;
+      case File::Attrib:
         // An ATTRIB name is a read of its binding: the alias check applies as for inline uses.
         attribs_seen_.insert(s.binding);
-        return o;
-      case RegFile::Param: {
-        o.file = RegFile::Param;
+        return ir::attrib(s.binding);
+      case File::Param: {
+        o.file = File::Param;
         o.index = s.index;
-        const ParamDecl& d = p_.params[static_cast<size_t>(s.index)];
+        const ir::Param& d = p_.params()[static_cast<size_t>(s.index)];
         if (d.array) {
           o.element = array_element(d);
         } else if (c_.peek().is("[")) {
@@ -403,25 +315,24 @@ class Parser {
     }
   }
 
-  Operand source(bool scalar) {
+  Reg source(bool scalar) {
     bool negate = false;
     if (c_.peek().is("-") || c_.peek().is("+")) negate = c_.take().is("-");
-    Operand o = source_register();
+    Reg o = source_register();
     o.negate = negate;
-    o.swizzle = swizzle(scalar);
+    o.swizzle = swizzle(c_, vertex(), scalar);
     return o;
   }
 
-  Operand destination() {
+  Reg destination() {
     const Token& t = c_.peek();
-    Operand o;
+    Reg o;
     if (t.is("result")) {
-      o.file = RegFile::Output;
-      o.binding = result_binding();
+      o = ir::output(result_binding());
     } else {
       const auto it = t.kind == TokenKind::Name ? names_.find(t.text) : names_.end();
       if (it == names_.end() ||
-          (it->second.file != RegFile::Temp && it->second.file != RegFile::Output)) {
+          (it->second.file != File::Temp && it->second.file != File::Output)) {
         c_.expected("a temporary or an output as the destination");
       }
       c_.take();
@@ -429,42 +340,16 @@ class Parser {
       o.index = it->second.index;
       o.binding = it->second.binding;
     }
-    o.swizzle = write_mask();
+    o.write_mask = write_mask(c_, vertex());
     return o;
   }
 
-  // SWZ's four components: 0, 1, or a component, each with an optional sign.
-  std::string extended_swizzle() {
-    std::string out;
-    bool xyzw = false, rgba = false;
-    for (int k = 0; k < 4; ++k) {
-      if (k) c_.expect(",", "',' and the next extended swizzle component");
-      if (c_.peek().is("-") || c_.peek().is("+")) out += c_.take().text;
-      const Token& t = c_.peek();
-      // An integer of value 0 or 1 ("01" too: Mesa's extSwizSel reads an INTEGER's value).
-      std::string value;
-      if (t.kind == TokenKind::Integer) {
-        const size_t nonzero = t.text.find_first_not_of('0');
-        value = nonzero == std::string::npos ? "0" : t.text.substr(nonzero);
-      }
-      const bool constant = value == "0" || value == "1";
-      const bool comp = t.kind == TokenKind::Name && t.text.size() == 1 &&
-                        valid_components(t.text, vertex() ? "xyzw" : "xyzwrgba");
-      if (!constant && !comp) c_.expected("an extended swizzle component (0, 1, x, y, z, w)");
-      if (comp) (valid_components(t.text, "xyzw") ? xyzw : rgba) = true;
-      if (xyzw && rgba) c_.fail("expected components of xyzw or of rgba, not both");
-      out += constant ? value : t.text;
-      c_.take();
-    }
-    return out;
-  }
-
-  void texture_operands(Instruction& in) {
+  void texture_operands(ir::Instr& in) {
     c_.expect(",");
     c_.expect("texture", "texture[n]");
-    in.unit = 0;
+    in.texture_unit = 0;
     if (c_.accept("[")) {
-      in.unit = c_.expect_index(limits_.texture_image_units, "a texture image unit");
+      in.texture_unit = c_.expect_index(limits_.texture_image_units, "a texture image unit");
       c_.expect("]");
     }
     c_.expect(",");
@@ -481,27 +366,27 @@ class Parser {
                                   : "; SHADOW* with OPTION ARB_fragment_program_shadow)"));
     }
     // ARB_fragment_program 3.11.6: one texture image unit is sampled with one target.
-    const auto it = unit_targets_.find(in.unit);
+    const auto it = unit_targets_.find(in.texture_unit);
     if (it != unit_targets_.end() && it->second != t.text) {
-      c_.fail("expected target " + it->second + " for texture[" + std::to_string(in.unit) +
+      c_.fail("expected target " + it->second + " for texture[" + std::to_string(in.texture_unit) +
               "], as it is used before: one unit, one target");
     }
-    unit_targets_[in.unit] = t.text;
-    in.target = c_.take().text;
+    unit_targets_[in.texture_unit] = t.text;
+    in.texture_target = c_.take().text;
   }
 
   void instruction() {
     const Token& t = c_.peek();
     if (t.kind != TokenKind::Name) c_.expected("an instruction or a declaration");
-    Instruction in;
-    in.at = t.at;
+    ir::Instr in;
     std::string name = t.text;
     if (name.size() > 4 && name.compare(name.size() - 4, 4, "_SAT") == 0) {
       name = name.substr(0, name.size() - 4);
       in.saturate = true;
     }
     const OpcodeInfo* op = find_opcode(name);
-    if (!op || (in.saturate && vertex()) || !(vertex() ? op->vertex : op->fragment)) {
+    const ir::OpInfo* oi = op ? &ir::info(op->op) : nullptr;
+    if (!op || (in.saturate && vertex()) || !(vertex() ? oi->in_vertex : oi->in_fragment)) {
       const bool other_kind = op && !(in.saturate && vertex());
       c_.expected(
           std::string("an instruction or a declaration of ") + (vertex() ? "vertex" : "fragment") +
@@ -511,28 +396,25 @@ class Parser {
                : (in.saturate && vertex() && op ? " (no _SAT in vertex programs)" : "")));
     }
     c_.take();
-    in.opcode = op->name;
-    in.texture = op->form == Form::Texture || op->form == Form::Kill;
+    in.op = op->op;
     switch (op->form) {
       case Form::Kill:
-        in.has_dst = false;
         in.srcs.push_back(source(false));
         break;
       case Form::Address: {
         const Token& a = c_.peek();
         const auto it = names_.find(a.text);
-        if (a.kind != TokenKind::Name || it == names_.end() ||
-            it->second.file != RegFile::Address) {
+        if (a.kind != TokenKind::Name || it == names_.end() || it->second.file != File::Address) {
           c_.expected("an ADDRESS register as ARL's destination");
         }
         c_.take();
-        in.dst.file = RegFile::Address;
+        in.dst.file = File::Address;
         in.dst.index = it->second.index;
         const Token& dot = c_.expect(".", "'.x': ARL writes the address register's x");
         if (!c_.expect_attached_name(dot, "x, the address register's only component").is("x")) {
           Cursor::fail_at(dot.at, "expected .x, the address register's only component");
         }
-        in.dst.swizzle = "x";
+        in.dst.write_mask = "x";
         c_.expect(",");
         in.srcs.push_back(source(true));
         break;
@@ -542,10 +424,10 @@ class Parser {
         c_.expect(",");
         bool negate = false;
         if (c_.peek().is("-") || c_.peek().is("+")) negate = c_.take().is("-");
-        Operand s = source_register();
+        Reg s = source_register();
         s.negate = negate;
         c_.expect(",", "',' and the extended swizzle");
-        s.swizzle = extended_swizzle();
+        s.swizzle = extended_swizzle(c_, vertex());
         in.srcs.push_back(s);
         break;
       }
@@ -558,18 +440,19 @@ class Parser {
       case Form::Vector:
       case Form::Scalar:
         in.dst = destination();
-        for (int k = 0; k < op->sources; ++k) {
+        for (int k = 0; k < oi->sources; ++k) {
           c_.expect(",", k == 0 ? "','" : "',' and source " + std::to_string(k + 1));
           in.srcs.push_back(source(op->form == Form::Scalar));
         }
         break;
     }
-    p_.code.push_back(std::move(in));
+    b_->emit(std::move(in));
   }
 
   Cursor c_;
   Limits limits_;
-  Program p_;
+  ir::Program p_;
+  std::optional<ir::Block> b_;  // the program's one block, from the header on
   std::map<std::string, Symbol> names_;
   std::set<std::string> attribs_seen_;
   std::map<int, std::string> unit_targets_;
@@ -577,7 +460,7 @@ class Parser {
 
 }  // namespace
 
-Program parse(const std::string& source, const Limits& limits) {
+ir::Program parse(const std::string& source, const Limits& limits) {
   return Parser(source, limits).run();
 }
 
