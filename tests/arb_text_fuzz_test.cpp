@@ -2,7 +2,8 @@
 // the generator's) through `budget FILE`. Every case must end as 0 (fits), 1 (over) or 2 (not a
 // valid program, an InputError naming file:line:column), never another exception, a crash or a
 // hang; where both our parser and Mesa accept a mutant, every figure must be what its rule
-// predicts from Mesa's. The whole run is bounded (a few hundred cases in well under 10 s).
+// predicts from Mesa's. The run is a fixed few hundred cases (a few seconds); a hang is caught by
+// ctest's timeout, not by a wall-clock assertion, which failed on a loaded machine.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -155,7 +156,6 @@ TEST(ArbTextFuzz, MutatedProgramsEndAsZeroOneOrTwo) {
       kCases, outcomes[0], outcomes[1], outcomes[2], stricter_than_mesa, laxer_than_mesa, seconds);
   EXPECT_GT(outcomes[0], 0) << "some mutants stay valid";
   EXPECT_GT(outcomes[2], 0) << "most mutants are not valid";
-  if (!env_cases) EXPECT_LT(seconds, 10);
 }
 
 // The same kind of cases through the command line: the exit code is 0, 1 or 2, and a 2 is one
