@@ -93,10 +93,10 @@ TEST_P(GxExportCompiles, WithThePowerPcCompilerAgainstLibogc) {
       << "no gx variant renders " << GetParam();
 }
 
-// The module (`--format module`) of t=vertex, t=texgen and t=texgen:view=object, where the scene
-// takes them (lobe=xf-spec has none; the other variants change a LUT's size or the emulator's
-// rounding, not the module's code), and the Wii sample examples/wii/main.c with the module of the
-// scene its comment names.
+// The module (`--format module`) of t=vertex, t=texgen, t=texgen:view=object, lobe=xf-spec and
+// lobe=xf-spec:view=object, where the scene takes them (the other variants change a LUT's size or
+// the emulator's rounding, not the module's code), and the Wii sample examples/wii/main.c with the
+// module of the scene its comment names.
 TEST_P(GxExportCompiles, AsAModuleWithThePowerPcCompilerAgainstLibogc) {
   if (libogc_checkouts().empty())
     GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout (or several, ':'-separated) to "
@@ -104,7 +104,8 @@ TEST_P(GxExportCompiles, AsAModuleWithThePowerPcCompilerAgainstLibogc) {
   EXPECT_GT(expect_exports_compile(GetParam(), " --format module",
                                    [](const std::string& v) {
                                      return v == "t=vertex" || v == "t=texgen" ||
-                                            v == "t=texgen:view=object";
+                                            v == "t=texgen:view=object" || v == "lobe=xf-spec" ||
+                                            v == "lobe=xf-spec:view=object";
                                    }),
             0)
       << "no gx variant of " << GetParam() << " has a module";

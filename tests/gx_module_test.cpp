@@ -7,7 +7,8 @@
 // the t the emulator sends, bit for bit. The scene is first made what a game holds: float
 // positions, normals, camera and lights (the module's inputs are f32). t=texgen:view=object's
 // texture matrix, recomputed by the setup each frame from the meshes' centre, is held the same
-// way: the frames it drives must be the emulator's.
+// way: the frames it drives must be the emulator's, and so must lobe=xf-spec's (:view=object),
+// whose specular light and fitted lobe the setup recomputes each frame.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
@@ -17,6 +18,8 @@
 #include <set>
 #include <sstream>
 
+#include "model/rational_fit.h"
+#include "model/translucency.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/module/module_exporter.h"
@@ -235,19 +238,41 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   EXPECT_GT(stale_differs, 0) << "a frame drawn with the frame before's state looks the same";
 }
 
-// lobe=xf-spec fits its lobe per frame in double, which a module does not carry: one line naming
-// the variant, exit 2, no file.
-TEST(GxModuleExport, RefusesXfSpecNamingTheVariant) {
+// lobe=xf-spec's fit in C (ltr_fit_lobe) is model::fit_rational22 in C++, coefficient for
+// coefficient, on curves whose fit takes each branch: a steep lobe, a flat one (p = 0), a lobe cut
+// off inside [0, |d|] (c0 near 0), one fully saturated (c0 > 1 + |d|), d = 0 (the constant).
+TEST(GxModuleFit, IsTheEmulatorsFitBitForBit) {
   test::TempDir dir;
-  const fs::path out = dir / "m.c";
-  const test::RunResult r = test::run_ltrender(
-      "export gx " + (test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json").string() +
-      " --variant lobe=xf-spec --format module -o " + out.string());
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--variant"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("lobe=xf-spec"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(out));
+  const HostModule host(
+      dir, export_module(load_scene(test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json"),
+                         parse_gx_variant("lobe=xf-spec"), "backlit_sphere_ortho"));
+  ASSERT_TRUE(host.compiled) << host.compiler_output;
+  using FitFn = void(double, double, double, double, double, double, ltr_rational*);
+  auto* fit = host.get<FitFn>("ltr_fit_lobe");
+  ASSERT_TRUE(fit);
+  struct Curve {
+    double c0, d, a, s, p;
+  };
+  const Curve curves[] = {{0.6, 0.4, 0.1, 1.0, 8.0},   {0.6, 0.4, 0.1, 1.0, 0.0},
+                          {0.05, -0.5, 0.2, 0.7, 3.0}, {1.6, 0.3, 0.1, 1.0, 8.0},
+                          {0.3, 0.0, 0.1, 1.0, 2.0},   {-0.2, 0.9, 0.0, 1.5, 16.0}};
+  for (const Curve& c : curves) {
+    const double sign = c.d >= 0 ? -1.0 : 1.0;
+    const model::RationalFit want = model::fit_rational22(
+        [&](double x) {
+          return (c.a + c.s * model::lobe(std::clamp(c.c0 + sign * x, 0.0, 1.0), c.p)) /
+                 (c.a + c.s);
+        },
+        std::abs(c.d));
+    ltr_rational got{};
+    fit(c.c0, sign, std::abs(c.d), c.a, c.s, c.p, &got);
+    for (size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(got.a[i], want.r.a[i])
+          << "c0 " << c.c0 << " d " << c.d << " p " << c.p << " a" << i;
+      EXPECT_EQ(got.k[i], want.r.k[i])
+          << "c0 " << c.c0 << " d " << c.d << " p " << c.p << " k" << i;
+    }
+  }
 }
 
 std::vector<Case> cases() {
@@ -260,6 +285,10 @@ std::vector<Case> cases() {
   for (const std::string& s : test::json_files("scenes"))
     out.push_back({s, "t=texgen:view=object"});
   out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "t=texgen:view=object"});
+  // The XF specular light's direction, position and lobe fitted again each frame (ltr_fit_lobe).
+  for (const std::string& s : test::json_files("scenes"))
+    out.push_back({s, "lobe=xf-spec:view=object"});
+  out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "lobe=xf-spec"});
   return out;
 }
 

@@ -114,6 +114,22 @@ Function bind_frame_state(Function f, const PassPlan& p, bool t_from_normal) {
         c.args[i + 1] = field(l + ".position[" + std::to_string(i) + "]");
     } else if (fn == "GX_InitLightColor") {
       c.args[1] = field("LTR_GXCOLOR(" + slot() + ".color)");
+    } else if (fn == "GX_InitLightDir" &&
+               light_named(p, c.args[0].name).kind == LightObjectPlan::Kind::SpecularFit) {
+      const std::string l = slot();
+      for (size_t i = 0; i < 3; ++i)
+        c.args[i + 1] = field(l + ".direction[" + std::to_string(i) + "]");
+      st.comment =
+          "-u: the slot holds this frame's u = +-d V, eye space (x = N.u >= 0 on front faces)";
+    } else if (fn == "GX_InitLightAttn") {
+      const std::string l = slot();
+      for (size_t i = 0; i < 3; ++i) {
+        c.args[i + 1] = field(l + ".a[" + std::to_string(i) + "]");
+        c.args[i + 4] = field(l + ".k[" + std::to_string(i) + "]");
+      }
+      st.comment =
+          "A(x) = (a0 + a1 x + a2 x^2) / (k0 + k1 x + k2 x^2), fitted to this frame's lobe "
+          "(ltr_fit_lobe)";
     } else if (fn == "GX_InitLightAttnK") {
       const std::string l = slot();
       for (size_t i = 0; i < 3; ++i) c.args[i + 1] = field(l + ".k[" + std::to_string(i) + "]");
@@ -188,7 +204,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
   const std::string id = "ltrender_" + m.c_name;
   const std::string passes = "LTRENDER_" + m.c_name + "_PASSES";
   glm::dvec3 tint(1);
-  double a = 0, d = 0, t_max = 1;
+  double a = 0, d = 0, t_max = 1, power = 0;
   bool normalize_h = false;
   if (mat.translucency) {
     const Translucency& tr = *mat.translucency;
@@ -196,6 +212,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     a = tr.ambient;
     d = tr.distortion;
     normalize_h = tr.normalize_distorted_light;
+    power = tr.power;
   }
   bool sends_t = false;
   for (const PassPlan& p : m.passes) {
@@ -209,7 +226,8 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     << "const ltr_material " << id << "_material = {" << c_vec3(mat.albedo, c_double) << ", "
     << c_vec3(tint, c_double) << ", " << c_double(a) << ", " << c_double(d) << ", " << normalize_h
     << ", " << c_double(t_max) << ", " << v.lut_size << ", " << t_from_normal << ", "
-    << v.view_object << "};\n"
+    << v.view_object << ", " << (v.lobe == GxVariant::Lobe::XfSpec) << ", " << c_double(power)
+    << "};\n"
     << "// Per pass: diffuse only, first light, lights, translucent, LUT.\n"
     << "const ltr_pass_shape " << id << "_shapes[" << passes << "] = {";
   for (size_t i = 0; i < m.passes.size(); ++i) {
@@ -229,6 +247,10 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
               "so "
               "the\n// texture matrix of t is this frame's; set up one mesh at a time for a V per "
               "mesh.\n"
+            : "")
+    << (v.lobe == GxVariant::Lobe::XfSpec
+            ? "// lobe=xf-spec: the lobe is fitted again for this frame's V.L (ltr_fit_lobe: its "
+              "cost\n// per translucent light, and what a game may keep between frames).\n"
             : "")
     << "void " << id
     << "_setup(const ltr_view* view, const ltr_light lights[], const ltr_mesh meshes[],\n"
@@ -291,11 +313,6 @@ std::string module_runtime_source(const std::string& file) {
 
 std::string export_module(const Scene& scene, const GxVariant& variant,
                           const std::string& scene_argument) {
-  if (variant.lobe == GxVariant::Lobe::XfSpec)
-    throw InputError(
-        "--variant", to_string(variant),
-        "gx: --format module does not carry lobe=xf-spec: its lobe is a rational "
-        "fitted per frame in double (Sanathanan-Koerner iterations); use a LUT variant");
   const ScenePlan plan = plan_scene(scene, variant);
   const GeneratedPrograms g = emit_programs(plan);
   const bool t_from_normal = variant.t == GxVariant::TexCoord::Texgen;
