@@ -130,6 +130,28 @@ TEST(GxWiiExample, CompilesWithTheModuleItNames) {
   }
 }
 
+// A module with a declared light range (`--light-range`): the setup without the scan.
+TEST(GxModuleLightRange, CompilesWithThePowerPcCompilerAgainstLibogc) {
+  const std::vector<fs::path> checkouts = libogc_checkouts();
+  if (checkouts.empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile a --light-range module";
+  test::TempDir dir;
+  for (const char* variant : {"t=vertex", "t=texgen:view=object", "lobe=xf-spec:view=object"}) {
+    const fs::path c = dir / "module.c";
+    const test::RunResult r = test::run_ltrender(
+        "export gx " + (test::source_dir() / "scenes/three_point_blob.json").string() +
+        " --variant " + variant + " --light-range 0.5 --format module -o " + c.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(test::read_file(c).find("#define LTRENDER_LIGHT_RANGE 0.5"), std::string::npos);
+    for (const fs::path& ogc : checkouts) {
+      const fs::path log = dir / "cc.log";
+      EXPECT_EQ(std::system(compile_command(c, ogc, log).c_str()), 0)
+          << variant << " against " << ogc << ":\n"
+          << test::read_file(log);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GxExportCompiles, ::testing::ValuesIn(export_scenes()),
                          [](const auto& info) { return test::test_param_name(info.param); });
 

@@ -275,6 +275,49 @@ TEST(GxModuleFit, IsTheEmulatorsFitBitForBit) {
   }
 }
 
+// :light-range=0 declares the bound every scene keeps (att <= 1 / kc, N.L <= 1), so along the path
+// no TEV scale it chooses is below the scan's (which could only saturate more), and on a scene
+// whose point lights stay away from the objects some are above it: that is its cost.
+TEST(GxLightRange, TheSafeBoundNeverChoosesASmallerScaleThanTheScan) {
+  for (const std::string& file : test::json_files("scenes")) {
+    const Scene base = load_scene(test::source_dir() / file);
+    int larger = 0;
+    for (int k = 0; k < kFrames; ++k) {
+      const Scene s = scene_on_camera_path(base, k);
+      const ScenePlan scan = plan_scene(s, parse_gx_variant("t=vertex"));
+      const ScenePlan bound = plan_scene(s, parse_gx_variant("t=vertex:light-range=0"));
+      ASSERT_EQ(scan.materials.size(), bound.materials.size());
+      for (size_t m = 0; m < scan.materials.size(); ++m) {
+        ASSERT_EQ(scan.materials[m].passes.size(), bound.materials[m].passes.size());
+        for (size_t p = 0; p < scan.materials[m].passes.size(); ++p) {
+          const PassFigures& a = scan.materials[m].passes[p].figures;
+          const PassFigures& b = bound.materials[m].passes[p].figures;
+          EXPECT_GE(b.diffuse_scale, a.diffuse_scale) << file << " frame " << k << " pass " << p;
+          EXPECT_GE(b.translucency_scale, a.translucency_scale)
+              << file << " frame " << k << " pass " << p;
+          larger +=
+              b.diffuse_scale > a.diffuse_scale || b.translucency_scale > a.translucency_scale;
+        }
+      }
+    }
+    if (file.find("coloured_cubes") != std::string::npos)
+      EXPECT_GT(larger, 0) << file << ": the declared bound chose no larger scale than the scan";
+  }
+}
+
+// --light-range takes a distance >= 0: anything else is one line naming it, exit 2, no file.
+TEST(GxModuleExport, RefusesALightRangeThatIsNoDistance) {
+  test::TempDir dir;
+  const fs::path out = dir / "m.c";
+  const test::RunResult r = test::run_ltrender(
+      "export gx " + (test::source_dir() / "scenes/coloured_cubes.json").string() +
+      " --light-range -2 --format module -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("light-range=-2"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 std::vector<Case> cases() {
   std::vector<Case> out;
   for (const std::string& s : test::json_files("scenes")) out.push_back({s, "t=vertex"});
@@ -289,6 +332,12 @@ std::vector<Case> cases() {
   for (const std::string& s : test::json_files("scenes"))
     out.push_back({s, "lobe=xf-spec:view=object"});
   out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "lobe=xf-spec"});
+  // A declared light range instead of the scan (ltr_declared_range), on the scenes with point
+  // lights (and one with directional lights): the safe bound D = 0, and a tighter D = 1.5.
+  out.push_back({"scenes/coloured_cubes.json", "t=vertex:light-range=0"});
+  out.push_back({"scenes/three_point_blob.json", "t=texgen:view=object:light-range=0"});
+  out.push_back({"scenes/three_point_blob.json", "lobe=xf-spec:view=object:light-range=1.5"});
+  out.push_back({"scenes/backlit_sphere.json", "t=vertex:light-range=0"});
   return out;
 }
 

@@ -27,6 +27,7 @@ Action add_export(CLI::App& app) {
   auto width = std::make_shared<int>(0);
   auto height = std::make_shared<int>(0);
   auto program = std::make_shared<std::string>();
+  auto light_range = std::make_shared<std::string>();
   auto scene_options = std::make_shared<SceneOptions>();
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
@@ -40,6 +41,10 @@ Action add_export(CLI::App& app) {
   sub->add_option("--height", *height, "dff: frame height (default: the scene's)");
   sub->add_option("--program", *program,
                   "dff: a gx program file drawn instead of the generated programs");
+  sub->add_option("--light-range", *light_range,
+                  "D: no point light comes closer than D to a vertex it lights; the TEV scales "
+                  "are chosen for it instead of from the visible vertices (the variant's "
+                  ":light-range=D)");
   sub->add_option("-o,--output", *output, "FILE.c or FILE.dff")->required();
   add_lights_option(sub, *scene_options);
   return [=]() -> int {
@@ -53,7 +58,11 @@ Action add_export(CLI::App& app) {
       throw InputError("export", !program->empty() ? "--program" : "--width",
                        "--width, --height and --program are for --format dff");
     const PathInfo& info = find_path("gx");
-    const std::string v = resolve_variant(info, *variant);
+    // --light-range D is the variant's :light-range=D axis (gx_variant.h), which checks D.
+    const std::string v = resolve_variant(
+        info, light_range->empty() ? *variant
+                                   : (variant->empty() ? info.variants.front().name : *variant) +
+                                         ":light-range=" + *light_range);
     const Scene scene = load_scene(*scene_path, *scene_options);
     std::vector<fs::path> inputs = {*scene_path};
     if (!program->empty()) inputs.push_back(*program);

@@ -156,7 +156,7 @@ Function bind_frame_state(Function f, const PassPlan& p, bool t_from_normal) {
   return f;
 }
 
-std::string light_kinds(const Scene& scene) {
+std::string light_kinds(const Scene& scene, const GxVariant& variant) {
   std::ostringstream o;
   const size_t n = scene.lights.size();
   o << "#define LTRENDER_LIGHTS " << n << "\n"
@@ -172,6 +172,11 @@ std::string light_kinds(const Scene& scene) {
   o << "};\n"
     << "const ltr_scene ltrender_scene = {ltrender_light_kinds, LTRENDER_LIGHTS, "
     << c_vec3(scene.ambient_light, c_double) << "};\n\n";
+  if (variant.light_range)
+    o << "// --light-range: no point light comes closer than this to a vertex it lights (world "
+         "units);\n// the TEV scales are chosen for the attenuation there "
+         "(ltr_declared_range). A light that\n// comes closer saturates where it is brighter.\n"
+      << "#define LTRENDER_LIGHT_RANGE " << c_double(*variant.light_range) << "\n\n";
   const Camera& cam = scene.camera;
   o << "// The scene's camera and lights as exported: where a game starts from (world space).\n"
     << "#define LTRENDER_ORTHOGRAPHIC " << (cam.projection == Camera::Projection::Orthographic)
@@ -240,8 +245,13 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
   o << "};\n\n"
     << "// Every frame, before drawing " << mat.name << ": the state of each pass from the view,\n"
     << "// the lights (world space) and the material's meshes as drawn this frame (world space).\n"
-    << "// The TEV scales come from what the lights do at the vertices that can be seen, so every\n"
-    << "// mesh of the material takes part (ltr_light_range_of: its cost per vertex and light).\n"
+    << (v.light_range
+            ? "// The TEV scales come from the declared light range (LTRENDER_LIGHT_RANGE: no "
+              "point "
+              "light\n// comes closer to a vertex), not from the meshes' vertices.\n"
+            : "// The TEV scales come from what the lights do at the vertices that can be seen, so "
+              "every\n// mesh of the material takes part (ltr_light_range_of: its cost per vertex "
+              "and light).\n")
     << (v.view_object
             ? "// :view=object: V and L are taken at the centre of these meshes (ltr_centre_of), "
               "so "
@@ -256,16 +266,24 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     << "_setup(const ltr_view* view, const ltr_light lights[], const ltr_mesh meshes[],\n"
     << "    int mesh_count, ltr_pass_state state[" << passes << "]) {\n"
     << "  ltr_light_range ranges[LTRENDER_LIGHTS + 1];\n"
-    << "  double centre[3];\n"
-    << "  int l, m, p;\n"
-    << "  ltr_centre_of(meshes, mesh_count, centre);\n"
-    << "  for (l = 0; l < LTRENDER_LIGHTS; ++l) {\n"
-    << "    ranges[l].max_attenuation = ranges[l].max_diffuse = 0;\n"
-    << "    for (m = 0; m < mesh_count; ++m)\n"
-    << "      ltr_light_range_of(view, &ltrender_light_kinds[l], &lights[l], &meshes[m], "
-       "&ranges[l]);\n"
-    << "  }\n"
-    << "  for (p = 0; p < " << passes << "; ++p)\n"
+    << "  double centre[3] = {0, 0, 0};\n"
+    << "  int l, " << (v.light_range ? "" : "m, ") << "p;\n";
+  if (v.view_object)
+    o << "  ltr_centre_of(meshes, mesh_count, centre);\n";
+  else if (v.light_range)
+    o << "  (void)meshes;\n  (void)mesh_count;\n";
+  if (v.light_range) {
+    o << "  for (l = 0; l < LTRENDER_LIGHTS; ++l)\n"
+      << "    ltr_declared_range(&ltrender_light_kinds[l], LTRENDER_LIGHT_RANGE, &ranges[l]);\n";
+  } else {
+    o << "  for (l = 0; l < LTRENDER_LIGHTS; ++l) {\n"
+      << "    ranges[l].max_attenuation = ranges[l].max_diffuse = 0;\n"
+      << "    for (m = 0; m < mesh_count; ++m)\n"
+      << "      ltr_light_range_of(view, &ltrender_light_kinds[l], &lights[l], &meshes[m], "
+         "&ranges[l]);\n"
+      << "  }\n";
+  }
+  o << "  for (p = 0; p < " << passes << "; ++p)\n"
     << "    ltr_pass_setup(&ltrender_scene, &" << id << "_material, &" << id
     << "_shapes[p], view, lights, ranges, centre, &state[p]);\n"
     << "}\n";
@@ -331,7 +349,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << "// Setup puts the lights in eye space (a directional light far along its direction, as\n"
       << "// libogc's GX_InitSpecularDir does), divides each light's magnitude into its distance\n"
       << "// coefficients, and chooses the TEV scales from the lights' range over the visible "
-         "vertices.\n"
+         "vertices\n// (or, with --light-range, from the declared bound).\n"
       << "// Fixed at export: the materials, the light types and attenuations, the ambient light, "
          "which\n"
       << "// lights add translucency (a light whose colour or scale becomes 0 keeps its stages).\n"
@@ -349,7 +367,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << "\n// ---- runtime: the view matrix and the draw (libogc) ----\n"
       << module_runtime_source("ltrender_gx_draw.c") << "\n"
       << "// ---- the scene ----\n"
-      << light_kinds(scene);
+      << light_kinds(scene, variant);
   ProgramFile file = g.file;
   file.comment.clear();
   std::vector<Function> bound;

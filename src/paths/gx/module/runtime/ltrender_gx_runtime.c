@@ -143,6 +143,13 @@ void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const 
   }
 }
 
+void ltr_declared_range(const ltr_light_kind* kind, double min_distance, ltr_light_range* range) {
+  const double d = min_distance, den = kind->kc + kind->kl * d + kind->kq * d * d;
+  range->max_attenuation =
+      kind->point ? 1.0 / (den < ltr_min_denominator ? ltr_min_denominator : den) : 1.0;
+  range->max_diffuse = range->max_attenuation;
+}
+
 void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                 const ltr_material* material, const ltr_mesh* mesh, float* t) {
   const double d = material->distortion;

@@ -132,6 +132,12 @@ void ltr_view_of(const ltr_camera* camera, int orthographic, ltr_view* view);
 void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                         const ltr_mesh* mesh, ltr_light_range* range);
 
+/* The range of a declared bound instead of a scan (`--light-range D`, :light-range=D): every
+   point light stays at least `min_distance` from the vertices it lights, so its attenuation there
+   and att x N.L are at most 1 / (kc + kl D + kq D^2); a directional light's are 1. D = 0 holds
+   whatever the scene does. Cost: a handful of flops per light, none per vertex. */
+void ltr_declared_range(const ltr_light_kind* kind, double min_distance, ltr_light_range* range);
+
 /* The per-vertex t of one light, t = dot(V, -(L + N d)) unsaturated (the LUT's clamp saturates
    it per pixel), into t[0 .. vertex_count): V = the unit vector from the vertex to the eye
    (perspective) or -forward (orthographic), L = the unit vector from the vertex to a point
