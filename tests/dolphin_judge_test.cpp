@@ -200,10 +200,11 @@ TEST_P(DolphinJudge, DolphinsFrameIsLtrendersXfbPicture) {
 // each with its own camera and vertices. Dolphin plays them in order; each dump must be
 // ltrender's `:out=xfb` picture of that frame, held to the single frame's bounds. Dolphin's dumps
 // end at the log's last frame but one (dolphin_player.h); with a lead-in copy of frame 0 and the
-// 3 trailing copies of the last, the K frames are dumps [D - 2 - K + k]. A dump matched to the
-// wrong frame fails: the camera moves 10 degrees a frame. The scenes are the single-frame
-// judge's :view=object scenes (and the sphere's default): coloured_cubes' lobe=xf-spec:view=object,
-// tried too, measured one frame of eight over the interior bound (7 LSB in 58 pixels).
+// 3 trailing copies of the last (for_dolphin_animation), the K frames are dumps [D - 2 - K + k]. A
+// dump matched to the wrong frame fails: the camera moves 10 degrees a frame. The scenes are the
+// single-frame judge's :view=object scenes (and the sphere's default): coloured_cubes'
+// lobe=xf-spec:view=object, tried too, measured one frame of eight over the interior bound (7 LSB
+// in 58 pixels).
 struct AnimationCase {
   std::string scene, variant;
 };
@@ -234,13 +235,10 @@ TEST_P(DolphinJudgeAnimation, EachFrameOfTheModuleDrivenLogIsLtrendersPicture) {
     test::write_file(file, text);
     programs.push_back(gx::scene_programs_for(scenes[k], variant, file.string()));
   }
-  // Frame 0 twice: where the first video field falls after the first frame (a log of a few
-  // hundred kilobytes, three_point_blob's: measured, 9 dumps of 11 frames) the lead-in is the one
-  // not dumped.
-  std::vector<gx::fifo::FrameInput> inputs = {{variant, &programs[0], &scenes[0]}};
+  std::vector<gx::fifo::FrameInput> inputs;
   for (int k = 0; k < kCameraPathFrames; ++k) inputs.push_back({variant, &programs[k], &scenes[k]});
   const std::vector<std::uint8_t> log = gx::fifo::write_fifo_log(
-      gx::fifo::for_dolphin(gx::fifo::record_frames(base, inputs, {kWidth, kHeight})));
+      gx::fifo::for_dolphin_animation(gx::fifo::record_frames(base, inputs, {kWidth, kHeight})));
   judge::DolphinOptions options;
   const std::vector<Image> dumps = judge::play_fifo_log(log, options);
   const int K = kCameraPathFrames, D = static_cast<int>(dumps.size());

@@ -189,4 +189,9 @@ FifoLog for_dolphin(FifoLog log) {
   return log;
 }
 
+FifoLog for_dolphin_animation(FifoLog log) {
+  if (!log.frames.empty()) log.frames.insert(log.frames.begin(), log.frames.front());
+  return for_dolphin(std::move(log));
+}
+
 }  // namespace lt::gx::fifo
