@@ -93,10 +93,10 @@ TEST_P(GxExportCompiles, WithThePowerPcCompilerAgainstLibogc) {
       << "no gx variant renders " << GetParam();
 }
 
-// The module (`--format module`) of t=vertex, t=texgen and t=texgen:view=object, where the scene
-// takes them (lobe=xf-spec has none; the other variants change a LUT's size or the emulator's
-// rounding, not the module's code), and the Wii sample examples/wii/main.c with the module of the
-// scene its comment names.
+// The module (`--format module`) of t=vertex, t=texgen, t=texgen:view=object, lobe=xf-spec and
+// lobe=xf-spec:view=object, where the scene takes them (the other variants change a LUT's size or
+// the emulator's rounding, not the module's code), and the Wii sample examples/wii/main.c with the
+// module of the scene its comment names.
 TEST_P(GxExportCompiles, AsAModuleWithThePowerPcCompilerAgainstLibogc) {
   if (libogc_checkouts().empty())
     GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout (or several, ':'-separated) to "
@@ -104,7 +104,8 @@ TEST_P(GxExportCompiles, AsAModuleWithThePowerPcCompilerAgainstLibogc) {
   EXPECT_GT(expect_exports_compile(GetParam(), " --format module",
                                    [](const std::string& v) {
                                      return v == "t=vertex" || v == "t=texgen" ||
-                                            v == "t=texgen:view=object";
+                                            v == "t=texgen:view=object" || v == "lobe=xf-spec" ||
+                                            v == "lobe=xf-spec:view=object";
                                    }),
             0)
       << "no gx variant of " << GetParam() << " has a module";
@@ -126,6 +127,28 @@ TEST(GxWiiExample, CompilesWithTheModuleItNames) {
     EXPECT_EQ(std::system(compile_command(main_c, ogc, log).c_str()), 0)
         << "examples/wii/main.c against " << ogc << ":\n"
         << test::read_file(log);
+  }
+}
+
+// A module with a declared light range (`--light-range`): the setup without the scan.
+TEST(GxModuleLightRange, CompilesWithThePowerPcCompilerAgainstLibogc) {
+  const std::vector<fs::path> checkouts = libogc_checkouts();
+  if (checkouts.empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile a --light-range module";
+  test::TempDir dir;
+  for (const char* variant : {"t=vertex", "t=texgen:view=object", "lobe=xf-spec:view=object"}) {
+    const fs::path c = dir / "module.c";
+    const test::RunResult r = test::run_ltrender(
+        "export gx " + (test::source_dir() / "scenes/three_point_blob.json").string() +
+        " --variant " + variant + " --light-range 0.5 --format module -o " + c.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(test::read_file(c).find("#define LTRENDER_LIGHT_RANGE 0.5"), std::string::npos);
+    for (const fs::path& ogc : checkouts) {
+      const fs::path log = dir / "cc.log";
+      EXPECT_EQ(std::system(compile_command(c, ogc, log).c_str()), 0)
+          << variant << " against " << ogc << ":\n"
+          << test::read_file(log);
+    }
   }
 }
 

@@ -496,3 +496,41 @@ TEST(GxFifoCli, ExportWritesALogDolphinDumpsAndRefusesWhatTheConsoleCannotShow) 
 
 }  // namespace
 }  // namespace lt
+
+namespace lt::gx::fifo {
+namespace {
+
+// `export gx --format dff --frames N`: the camera path's N frames in one log, each its own (the
+// camera moves), with frame 0 in front once more and the last frame 3 times after
+// (for_dolphin_animation); frame 0 is the one-frame export's frame.
+TEST(GxFifoExport, FramesAlongTheCameraPathInOneLog) {
+  test::TempDir dir;
+  const std::string scene = (test::source_dir() / "scenes/backlit_sphere.json").string();
+  const fs::path anim = dir / "anim.dff", one = dir / "one.dff";
+  const std::string size = " --format dff --width 160 --height 120 -o ";
+  test::RunResult r =
+      test::run_ltrender("export gx " + scene + " --frames 3" + size + anim.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = test::run_ltrender("export gx " + scene + size + one.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto read = [](const fs::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    const std::vector<u8> bytes((std::istreambuf_iterator<char>(in)), {});
+    return read_fifo_log(bytes, f.string());
+  };
+  const FifoLog a = read(anim), o = read(one);
+  ASSERT_EQ(a.frames.size(), 1u + 3u + static_cast<size_t>(kDolphinTrailingCopies));
+  EXPECT_EQ(a.frames[0], a.frames[1]);
+  EXPECT_EQ(a.frames[1], o.frames[0]);
+  EXPECT_NE(a.frames[1].fifo, a.frames[2].fifo);
+  EXPECT_NE(a.frames[2].fifo, a.frames[3].fifo);
+  for (size_t i = 4; i < a.frames.size(); ++i) EXPECT_EQ(a.frames[i], a.frames[3]) << i;
+  // --frames is for a dff, and not with a program file (one frame's state): one line, exit 2.
+  r = test::run_ltrender("export gx " + scene + " --frames 2 -o " + (dir / "x.c").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "x.c"));
+}
+
+}  // namespace
+}  // namespace lt::gx::fifo

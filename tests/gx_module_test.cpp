@@ -7,8 +7,8 @@
 // the t the emulator sends, bit for bit. The scene is first made what a game holds: float
 // positions, normals, camera and lights (the module's inputs are f32). t=texgen:view=object's
 // texture matrix, recomputed by the setup each frame from the meshes' centre, is held the same
-// way: the frames it drives must be the emulator's.
-#include <dlfcn.h>
+// way: the frames it drives must be the emulator's, and so must lobe=xf-spec's (:view=object),
+// whose specular light and fitted lobe the setup recomputes each frame.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,11 +17,13 @@
 #include <set>
 #include <sstream>
 
+#include "gx_module_host/host_module.h"
+#include "model/rational_fit.h"
+#include "model/translucency.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/module/module_exporter.h"
 #include "paths/gx/module/runtime/ltrender_gx_runtime.h"
-#include "paths/gx/program/gx_name_table.h"
 #include "paths/gx/program/pass_programs.h"
 #include "paths/gx/vertex_stage.h"
 #include "render/camera_path.h"
@@ -32,92 +34,10 @@
 namespace lt::gx {
 namespace {
 
+using namespace test_module;
+
 constexpr int kFrames = kCameraPathFrames;  // render/camera_path.h: the path every frame is on
 constexpr int kSize = 96;
-
-// The scene as a game holds it: every input of the module in f32.
-void make_float(Scene& s) {
-  for (SceneObject& o : s.objects) {
-    for (auto& p : o.mesh.positions) p = rounded_to_float(p);
-    for (auto& n : o.mesh.normals) n = rounded_to_float(n);
-  }
-  s.camera.eye = rounded_to_float(s.camera.eye);
-  s.camera.target = rounded_to_float(s.camera.target);
-  s.camera.up = rounded_to_float(s.camera.up);
-  for (Light& l : s.lights) {
-    l.position = rounded_to_float(l.position);
-    l.direction = rounded_to_float(l.direction);
-    l.color = rounded_to_float(l.color);
-    l.translucency_scale = static_cast<float>(l.translucency_scale);
-  }
-}
-
-// The host side: the module and the recorder compiled into one shared object.
-class HostModule {
- public:
-  HostModule(const test::TempDir& dir, const std::string& module_text) {
-    std::ostringstream constants;
-    std::set<std::string> seen;
-    for (const GxName& n : kGxNames) {
-      if (seen.insert(n.name).second) constants << "#define " << n.name << " " << n.value << "\n";
-    }
-    test::write_file(dir / "gx_constants.h", constants.str());
-    const fs::path host = test::source_dir() / "tests" / "gx_module_host";
-    fs::copy_file(host / "gccore.h", dir / "gccore.h", fs::copy_options::overwrite_existing);
-    test::write_file(dir / "module.c", module_text);
-    const fs::path so = dir / "module.so", log = dir / "cc.log";
-    const std::string cc =
-        "cc -std=c99 -O1 -ffp-contract=off -fPIC -shared -Wall -Wextra -Werror -I" +
-        dir.path().string() + " " + (dir / "module.c").string() + " " +
-        (host / "gx_host.c").string() + " -o " + so.string() + " -lm >" + log.string() + " 2>&1";
-    compiled = std::system(cc.c_str()) == 0;
-    compiler_output = test::read_file(log);
-    if (compiled) handle_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
-  }
-  ~HostModule() {
-    if (handle_) dlclose(handle_);
-  }
-  template <typename F>
-  F* get(const std::string& name) const {
-    return reinterpret_cast<F*>(handle_ ? dlsym(handle_, name.c_str()) : nullptr);
-  }
-  bool compiled = false;
-  std::string compiler_output;
-
- private:
-  void* handle_ = nullptr;
-};
-
-using ViewFn = void(const ltr_camera*, ltr_view*);
-using SetupFn = void(const ltr_view*, const ltr_light*, const ltr_mesh*, int, ltr_pass_state*);
-using PassFn = void(ltr_pass_state*);
-using FillTFn = void(const ltr_view*, const ltr_light*, int, const ltr_mesh*, float*);
-using BeginFn = void(const char*);
-using VoidFn = void();
-using ProgramFn = const char*();
-
-void copy3(const glm::dvec3& v, float out[3]) {
-  for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(v[i]);
-}
-
-struct MeshArrays {
-  std::vector<float> positions, normals;
-  ltr_mesh mesh{};
-};
-
-MeshArrays arrays_of(const SceneObject& o) {
-  MeshArrays m;
-  for (size_t v = 0; v < o.mesh.positions.size(); ++v) {
-    for (int i = 0; i < 3; ++i) {
-      m.positions.push_back(static_cast<float>(o.mesh.positions[v][i]));
-      m.normals.push_back(static_cast<float>(o.mesh.normals[v][i]));
-    }
-  }
-  m.mesh.positions = m.positions.data();
-  m.mesh.normals = m.normals.data();
-  m.mesh.vertex_count = static_cast<int>(o.mesh.positions.size());
-  return m;
-}
 
 struct Case {
   std::string scene, variant;
@@ -135,12 +55,6 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   test::TempDir dir;
   const HostModule host(dir, export_module(base, variant, GetParam().scene));
   ASSERT_TRUE(host.compiled) << host.compiler_output;
-  auto* view_of = host.get<ViewFn>("ltrender_view");
-  auto* begin = host.get<BeginFn>("ltr_host_begin");
-  auto* end = host.get<VoidFn>("ltr_host_end");
-  auto* reset = host.get<VoidFn>("ltr_host_reset");
-  auto* program = host.get<ProgramFn>("ltr_host_program");
-  ASSERT_TRUE(view_of && begin && end && reset && program);
   const ScenePlan plan = plan_scene(base, variant);
   std::set<std::string> programs_seen, scales_seen;
   std::string previous_program;
@@ -148,67 +62,32 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   for (int k = 0; k < kFrames; ++k) {
     const Scene s = scene_on_camera_path(base, k);
     const std::string at = GetParam().scene + " frame " + std::to_string(k);
-    ltr_camera camera;
-    copy3(s.camera.eye, camera.eye);
-    copy3(s.camera.target, camera.target);
-    copy3(s.camera.up, camera.up);
-    std::vector<ltr_light> lights(std::max<size_t>(s.lights.size(), 1));
-    for (size_t l = 0; l < s.lights.size(); ++l) {
-      copy3(s.lights[l].position, lights[l].position);
-      copy3(s.lights[l].direction, lights[l].direction);
-      copy3(s.lights[l].color, lights[l].color);
-      lights[l].translucency_scale = static_cast<float>(s.lights[l].translucency_scale);
-    }
-    ltr_view view;
-    view_of(&camera, &view);
-    reset();
     const SceneView scene_view = SceneView::of(s);
-    for (const MaterialPlan& m : plan.materials) {
-      const std::string id = "ltrender_" + m.c_name;
-      std::vector<MeshArrays> arrays;
-      std::vector<size_t> objects;
-      for (size_t o = 0; o < s.objects.size(); ++o) {
-        if (s.objects[o].material != m.material) continue;
-        arrays.push_back(arrays_of(s.objects[o]));
-        objects.push_back(o);
-      }
-      std::vector<ltr_mesh> meshes;
-      for (MeshArrays& a : arrays) {
-        a.mesh.positions = a.positions.data();
-        a.mesh.normals = a.normals.data();
-        meshes.push_back(a.mesh);
-      }
-      std::vector<ltr_pass_state> state(m.passes.size());
-      auto* setup = host.get<SetupFn>(id + "_setup");
-      ASSERT_TRUE(setup) << id;
-      setup(&view, lights.data(), meshes.data(), static_cast<int>(meshes.size()), state.data());
-      for (const ltr_pass_state& st : state)
+    auto check = [&](const MaterialFrame& f, const ltr_view& view,
+                     const std::vector<ltr_light>& lights) {
+      const MaterialPlan& m = *f.plan;
+      for (const ltr_pass_state& st : f.states)
         scales_seen.insert(std::to_string(st.translucency_scale) + "/" +
                            std::to_string(st.diffuse_scale));
       for (size_t p = 0; p < m.passes.size(); ++p) {
-        const std::string name = pass_function_name(m.c_name, static_cast<int>(p));
-        auto* pass = host.get<PassFn>(name);
-        ASSERT_TRUE(pass) << name;
-        begin(name.c_str());
-        pass(&state[p]);
-        end();
         if (!m.passes[p].vertex.t) continue;
         // The t the module computes is the t the emulator sends (vertex_stage.h), bit for bit.
-        auto* fill_t = host.get<FillTFn>(id + "_fill_t");
-        ASSERT_TRUE(fill_t) << id;
+        auto* fill_t = host.get<FillTFn>("ltrender_" + m.c_name + "_fill_t");
+        ASSERT_TRUE(fill_t) << m.c_name;
         const size_t light = m.passes[p].figures.light;
-        for (size_t i = 0; i < objects.size(); ++i) {
-          const VertexStream stream = make_vertex_stream(s, s.objects[objects[i]], scene_view);
+        for (size_t i = 0; i < f.objects.size(); ++i) {
+          const VertexStream stream = make_vertex_stream(s, s.objects[f.objects[i]], scene_view);
           std::vector<float> t(stream.position.size());
-          fill_t(&view, lights.data(), static_cast<int>(light), &meshes[i], t.data());
+          fill_t(&view, lights.data(), static_cast<int>(light), &f.meshes[i], t.data());
           size_t differ = 0;
           for (size_t v = 0; v < t.size(); ++v) differ += t[v] != stream.t_per_light[light][v];
-          EXPECT_EQ(differ, 0u) << at << " " << name << " object " << objects[i] << ": vertices "
-                                << "whose t differs from the emulator's";
+          EXPECT_EQ(differ, 0u) << at << " pass " << p << " object " << f.objects[i]
+                                << ": vertices whose t differs from the emulator's";
         }
       }
-    }
-    const std::string text = program();
+    };
+    const std::string text = drive_frame(host, plan, s, check);
+    ASSERT_FALSE(text.empty()) << at;
     programs_seen.insert(text);
     const fs::path file = dir / ("frame" + std::to_string(k) + ".c");
     test::write_file(file, text);
@@ -235,17 +114,82 @@ TEST_P(GxModule, DrivesTheEmulatorToTheDirectlyRenderedFrameAlongAPath) {
   EXPECT_GT(stale_differs, 0) << "a frame drawn with the frame before's state looks the same";
 }
 
-// lobe=xf-spec fits its lobe per frame in double, which a module does not carry: one line naming
-// the variant, exit 2, no file.
-TEST(GxModuleExport, RefusesXfSpecNamingTheVariant) {
+// lobe=xf-spec's fit in C (ltr_fit_lobe) is model::fit_rational22 in C++, coefficient for
+// coefficient, on curves whose fit takes each branch: a steep lobe, a flat one (p = 0), a lobe cut
+// off inside [0, |d|] (c0 near 0), one fully saturated (c0 > 1 + |d|), d = 0 (the constant).
+TEST(GxModuleFit, IsTheEmulatorsFitBitForBit) {
+  test::TempDir dir;
+  const HostModule host(
+      dir, export_module(load_scene(test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json"),
+                         parse_gx_variant("lobe=xf-spec"), "backlit_sphere_ortho"));
+  ASSERT_TRUE(host.compiled) << host.compiler_output;
+  using FitFn = void(double, double, double, double, double, double, ltr_rational*);
+  auto* fit = host.get<FitFn>("ltr_fit_lobe");
+  ASSERT_TRUE(fit);
+  struct Curve {
+    double c0, d, a, s, p;
+  };
+  const Curve curves[] = {{0.6, 0.4, 0.1, 1.0, 8.0},   {0.6, 0.4, 0.1, 1.0, 0.0},
+                          {0.05, -0.5, 0.2, 0.7, 3.0}, {1.6, 0.3, 0.1, 1.0, 8.0},
+                          {0.3, 0.0, 0.1, 1.0, 2.0},   {-0.2, 0.9, 0.0, 1.5, 16.0}};
+  for (const Curve& c : curves) {
+    const double sign = c.d >= 0 ? -1.0 : 1.0;
+    const model::RationalFit want = model::fit_rational22(
+        [&](double x) {
+          return (c.a + c.s * model::lobe(std::clamp(c.c0 + sign * x, 0.0, 1.0), c.p)) /
+                 (c.a + c.s);
+        },
+        std::abs(c.d));
+    ltr_rational got{};
+    fit(c.c0, sign, std::abs(c.d), c.a, c.s, c.p, &got);
+    for (size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(got.a[i], want.r.a[i])
+          << "c0 " << c.c0 << " d " << c.d << " p " << c.p << " a" << i;
+      EXPECT_EQ(got.k[i], want.r.k[i])
+          << "c0 " << c.c0 << " d " << c.d << " p " << c.p << " k" << i;
+    }
+  }
+}
+
+// :light-range=0 declares the bound every scene keeps (att <= 1 / kc, N.L <= 1), so along the path
+// no TEV scale it chooses is below the scan's (which could only saturate more), and on a scene
+// whose point lights stay away from the objects some are above it: that is its cost.
+TEST(GxLightRange, TheSafeBoundNeverChoosesASmallerScaleThanTheScan) {
+  for (const std::string& file : test::json_files("scenes")) {
+    const Scene base = load_scene(test::source_dir() / file);
+    int larger = 0;
+    for (int k = 0; k < kFrames; ++k) {
+      const Scene s = scene_on_camera_path(base, k);
+      const ScenePlan scan = plan_scene(s, parse_gx_variant("t=vertex"));
+      const ScenePlan bound = plan_scene(s, parse_gx_variant("t=vertex:light-range=0"));
+      ASSERT_EQ(scan.materials.size(), bound.materials.size());
+      for (size_t m = 0; m < scan.materials.size(); ++m) {
+        ASSERT_EQ(scan.materials[m].passes.size(), bound.materials[m].passes.size());
+        for (size_t p = 0; p < scan.materials[m].passes.size(); ++p) {
+          const PassFigures& a = scan.materials[m].passes[p].figures;
+          const PassFigures& b = bound.materials[m].passes[p].figures;
+          EXPECT_GE(b.diffuse_scale, a.diffuse_scale) << file << " frame " << k << " pass " << p;
+          EXPECT_GE(b.translucency_scale, a.translucency_scale)
+              << file << " frame " << k << " pass " << p;
+          larger +=
+              b.diffuse_scale > a.diffuse_scale || b.translucency_scale > a.translucency_scale;
+        }
+      }
+    }
+    if (file.find("coloured_cubes") != std::string::npos)
+      EXPECT_GT(larger, 0) << file << ": the declared bound chose no larger scale than the scan";
+  }
+}
+
+// --light-range takes a distance >= 0: anything else is one line naming it, exit 2, no file.
+TEST(GxModuleExport, RefusesALightRangeThatIsNoDistance) {
   test::TempDir dir;
   const fs::path out = dir / "m.c";
   const test::RunResult r = test::run_ltrender(
-      "export gx " + (test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json").string() +
-      " --variant lobe=xf-spec --format module -o " + out.string());
+      "export gx " + (test::source_dir() / "scenes/coloured_cubes.json").string() +
+      " --light-range -2 --format module -o " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--variant"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("lobe=xf-spec"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("light-range=-2"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(out));
 }
@@ -260,6 +204,14 @@ std::vector<Case> cases() {
   for (const std::string& s : test::json_files("scenes"))
     out.push_back({s, "t=texgen:view=object"});
   out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "t=texgen:view=object"});
+  // The XF specular light's direction, position and lobe fitted again each frame (ltr_fit_lobe).
+  for (const std::string& s : test::json_files("scenes"))
+    out.push_back({s, "lobe=xf-spec:view=object"});
+  out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "lobe=xf-spec"});
+  // A declared light range instead of the scan (ltr_declared_range), on the two scenes with point
+  // lights: the safe bound D = 0, and a tighter D = 1.5 with the XF specular light.
+  out.push_back({"scenes/coloured_cubes.json", "t=vertex:light-range=0"});
+  out.push_back({"scenes/three_point_blob.json", "lobe=xf-spec:view=object:light-range=1.5"});
   return out;
 }
 

@@ -248,8 +248,13 @@ TEST(GxVariantParse, AcceptsTheGrammarAndRefusesTheRest) {
   EXPECT_EQ(parse_gx_variant("t=vertex:lut=37").lut_size, 37);
   EXPECT_EQ(to_string(parse_gx_variant("lut=64:t=texgen")), "t=texgen:lut=64");
   EXPECT_EQ(to_string(parse_gx_variant("lobe=xf-spec")), "lobe=xf-spec");
+  // A declared light range reads back as the same double (a sweep row builds by its name).
+  EXPECT_EQ(to_string(parse_gx_variant("light-range=0.1:t=vertex")), "t=vertex:light-range=0.1");
+  EXPECT_EQ(*parse_gx_variant("lobe=xf-spec:light-range=2").light_range, 2.0);
+  EXPECT_FALSE(parse_gx_variant("t=vertex").light_range);
   for (const char* bad : {"", "t=pixel", "lut=1", "lut=1025", "t=vertex:t=vertex",
-                          "lobe=xf-spec:lut=64", "pow=exact", "t=vertex:lut=64x"}) {
+                          "lobe=xf-spec:lut=64", "pow=exact", "t=vertex:lut=64x", "light-range=-1",
+                          "light-range=x", "light-range=1:light-range=2", "light-range=inf"}) {
     EXPECT_THROW(parse_gx_variant(bad), InputError) << bad;
   }
 }

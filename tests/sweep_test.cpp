@@ -105,6 +105,24 @@ TEST(Sweep, TheFramesMaxCoversEveryFrameAndRefusalsAreListed) {
   EXPECT_NE(table.find("| backlit_sphere | `t=texgen` | refused"), std::string::npos) << table;
 }
 
+// --light-range D: each variant a second time with :light-range=D, right after it; the declared
+// bound changes the TEV scales of a scene with point lights, so the figures differ.
+TEST(Sweep, ALightRangeAddsTheDeclaredRowOfEachVariant) {
+  SweepOptions o;
+  o.scenes = {test::source_dir() / "scenes/coloured_cubes.json"};
+  o.frames = 2;
+  o.width = 48;
+  o.height = 36;
+  o.variants = VariantSelection::Defaults;
+  o.light_range = "0";
+  const std::vector<SweepRow> rows = run_sweep(o);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].variant, "t=vertex");
+  EXPECT_EQ(rows[1].variant, "t=vertex:light-range=0");
+  EXPECT_EQ(rows[1].frames, 2);
+  EXPECT_NE(rows[0].mean_lsb, rows[1].mean_lsb);
+}
+
 TEST(SweepCli, OneOfWidthAndHeightIsBadInput) {
   const test::RunResult r = test::run_ltrender(
       "sweep " + (test::source_dir() / "scenes/backlit_sphere.json").string() + " --width 32");

@@ -8,10 +8,32 @@
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/module/module_exporter.h"
+#include "render/camera_path.h"
 #include "render/evaluate.h"
 #include "render/session.h"
 
 namespace lt::cli {
+
+namespace {
+
+// `--format dff --frames N`: the scene along the first N frames of the camera path
+// (render/camera_path.h, the module tests' animation), each frame its own camera, lights and
+// generated programs (the module's for that frame: GxModule), as one log Dolphin dumps every
+// frame of (for_dolphin_animation).
+std::vector<std::uint8_t> animation_fifo_log(const Scene& base, const std::string& variant,
+                                             int frames, gx::fifo::FrameSize size) {
+  const gx::GxVariant v = gx::parse_gx_variant(variant);
+  std::vector<Scene> scenes;
+  for (int k = 0; k < frames; ++k) scenes.push_back(scene_on_camera_path(base, k, frames));
+  std::vector<gx::ScenePrograms> programs;
+  for (const Scene& s : scenes) programs.push_back(gx::scene_programs_for(s, v, ""));
+  std::vector<gx::fifo::FrameInput> inputs;
+  for (size_t k = 0; k < scenes.size(); ++k) inputs.push_back({v, &programs[k], &scenes[k]});
+  return gx::fifo::write_fifo_log(
+      gx::fifo::for_dolphin_animation(gx::fifo::record_frames(base, inputs, size)));
+}
+
+}  // namespace
 
 // `ltrender export gx SCENE [--variant V] [--format c|module|dff] -o FILE` (gx.md §2): the
 // generated GX programs as C, with the error of exactly that program measured against the
@@ -27,6 +49,8 @@ Action add_export(CLI::App& app) {
   auto width = std::make_shared<int>(0);
   auto height = std::make_shared<int>(0);
   auto program = std::make_shared<std::string>();
+  auto light_range = std::make_shared<std::string>();
+  auto frames = std::make_shared<int>(1);
   auto scene_options = std::make_shared<SceneOptions>();
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
@@ -40,6 +64,14 @@ Action add_export(CLI::App& app) {
   sub->add_option("--height", *height, "dff: frame height (default: the scene's)");
   sub->add_option("--program", *program,
                   "dff: a gx program file drawn instead of the generated programs");
+  sub->add_option("--frames", *frames,
+                  "dff: N frames along the camera path (the eye orbits 70 degrees, the lights 50 "
+                  "the other way), one log; default 1, the scene as it is")
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--light-range", *light_range,
+                  "D: no point light comes closer than D to a vertex it lights; the TEV scales "
+                  "are chosen for it instead of from the visible vertices (the variant's "
+                  ":light-range=D)");
   sub->add_option("-o,--output", *output, "FILE.c or FILE.dff")->required();
   add_lights_option(sub, *scene_options);
   return [=]() -> int {
@@ -49,11 +81,22 @@ Action add_export(CLI::App& app) {
     const std::string extension = *format == "dff" ? ".dff" : ".c";
     if (fs::path(*output).extension() != extension)
       throw InputError(*output, "", "the exported file must end in " + extension);
-    if (*format != "dff" && (*width != 0 || *height != 0 || !program->empty()))
-      throw InputError("export", !program->empty() ? "--program" : "--width",
-                       "--width, --height and --program are for --format dff");
+    if (*format != "dff" && (*width != 0 || *height != 0 || !program->empty() || *frames != 1))
+      throw InputError("export",
+                       !program->empty() ? "--program"
+                       : *frames != 1    ? "--frames"
+                                         : "--width",
+                       "--width, --height, --program and --frames are for --format dff");
+    if (*frames != 1 && !program->empty())
+      throw InputError("export", "--frames",
+                       "a program file is one frame's state: --frames draws the generated "
+                       "programs of each frame");
     const PathInfo& info = find_path("gx");
-    const std::string v = resolve_variant(info, *variant);
+    // --light-range D is the variant's :light-range=D axis (gx_variant.h), which checks D.
+    const std::string v = resolve_variant(
+        info, light_range->empty() ? *variant
+                                   : (variant->empty() ? info.variants.front().name : *variant) +
+                                         ":light-range=" + *light_range);
     const Scene scene = load_scene(*scene_path, *scene_options);
     std::vector<fs::path> inputs = {*scene_path};
     if (!program->empty()) inputs.push_back(*program);
@@ -65,7 +108,8 @@ Action add_export(CLI::App& app) {
       gx::fifo::check_frame_size(size, *scene_path, *width ? "--width" : "width",
                                  *height ? "--height" : "height");
       const std::vector<std::uint8_t> bytes =
-          info.fifo_log(scene, v, PathOptions{*program, ""}, size.width, size.height);
+          *frames > 1 ? animation_fifo_log(scene, v, *frames, size)
+                      : info.fifo_log(scene, v, PathOptions{*program, ""}, size.width, size.height);
       write_atomically(*output, [&](const fs::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         out.write(reinterpret_cast<const char*>(bytes.data()),

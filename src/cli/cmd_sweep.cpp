@@ -30,12 +30,17 @@ Action add_sweep(CLI::App& app) {
   sub->add_option("--frames", o->frames,
                   "Frames along the path (default 8: the GxModule test's; 1 is the scene as it is)")
       ->check(CLI::Range(1, 1000));
+  sub->add_option("--light-range", o->light_range,
+                  "gx: D, each variant measured again with :light-range=D (the TEV scales from "
+                  "a declared bound: no point light closer than D to a vertex)");
   sub->add_option("--width", o->width, "Override the scene's width")->check(CLI::Range(1, 16384));
   sub->add_option("--height", o->height, "Override the scene's height")
       ->check(CLI::Range(1, 16384));
   return [o, scenes, variants, selections]() -> int {
     if ((o->width > 0) != (o->height > 0))
       throw InputError("--width/--height", "", "give both, or neither");
+    if (!o->light_range.empty() && o->path != "gx")
+      throw InputError("--light-range", o->light_range, "is a gx variant axis (--path gx)");
     o->variants = selections.at(*variants);
     for (const std::string& s : *scenes) o->scenes.emplace_back(s);
     o->progress = [](const std::string& scene) { std::cerr << "sweep: " << scene << "\n"; };

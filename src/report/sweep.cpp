@@ -34,12 +34,17 @@ std::vector<SweepRow> run_sweep(const SweepOptions& o) {
     // what the path refuses for the scene it refuses for every frame.
     std::vector<size_t> measured;
     const size_t first = rows.size();
+    std::vector<std::string> names;
     for (const VariantInfo& v : info.variants) {
       if (!selected(info, v, o.variants)) continue;
+      names.push_back(v.name);
+      if (!o.light_range.empty()) names.push_back(v.name + ":light-range=" + o.light_range);
+    }
+    for (const std::string& name : names) {
       SweepRow r;
       r.scene = file.stem().string();
-      r.variant = v.name;
-      if (info.refusal) r.refused = info.refusal(base, v.name);
+      r.variant = name;
+      if (info.refusal) r.refused = info.refusal(base, name);
       if (r.refused.empty()) measured.push_back(rows.size());
       rows.push_back(r);
     }

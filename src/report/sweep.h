@@ -25,6 +25,9 @@ struct SweepOptions {
   VariantSelection variants = VariantSelection::All;
   int frames = 8;
   int width = 0, height = 0;  // 0: the scene's
+  // gx: each variant measured a second time with `:light-range=` this (gx_variant.h), the TEV
+  // scales from the declared bound instead of the scan; empty: not.
+  std::string light_range;
   // Called before each scene (for a progress line); may be empty.
   std::function<void(const std::string& scene)> progress;
 };

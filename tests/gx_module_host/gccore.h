@@ -44,6 +44,7 @@ void GX_InitLightColor(GXLightObj* o, GXColor c);
 void GX_InitLightDir(GXLightObj* o, f32 x, f32 y, f32 z);
 void GX_InitLightSpot(GXLightObj* o, f32 cut_off, u8 fn);
 void GX_InitLightAttnK(GXLightObj* o, f32 k0, f32 k1, f32 k2);
+void GX_InitLightAttn(GXLightObj* o, f32 a0, f32 a1, f32 a2, f32 k0, f32 k1, f32 k2);
 void GX_LoadLightObj(const GXLightObj* o, u8 id);
 void GX_SetNumChans(u8 n);
 void GX_SetChanCtrl(s32 channel, u8 enable, u8 ambsrc, u8 matsrc, u8 litmask, u8 diff_fn,

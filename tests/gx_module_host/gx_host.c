@@ -94,6 +94,12 @@ void GX_InitLightDir(GXLightObj* o, f32 x, f32 y, f32 z) {
 void GX_InitLightAttnK(GXLightObj* o, f32 x, f32 y, f32 z) {
   light3("GX_InitLightAttnK", o, x, y, z);
 }
+void GX_InitLightAttn(GXLightObj* o, f32 a0, f32 a1, f32 a2, f32 k0, f32 k1, f32 k2) {
+  char v[6][40];
+  const int n = object_name(o, "GXLightObj");
+  append("  GX_InitLightAttn(&o%d, %s, %s, %s, %s, %s, %s);\n", n, flt(v[0], a0), flt(v[1], a1),
+         flt(v[2], a2), flt(v[3], k0), flt(v[4], k1), flt(v[5], k2));
+}
 void GX_InitLightColor(GXLightObj* o, GXColor c) {
   const int n = object_name(o, "GXLightObj");
   append("  GX_InitLightColor(&o%d, (GXColor){%d, %d, %d, %d});\n", n, c.r, c.g, c.b, c.a);

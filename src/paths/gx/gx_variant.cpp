@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 #include "core/error.h"
@@ -15,7 +16,8 @@ namespace {
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
-    ":lights=round-each, :map=rgb565, :base=tev (or :base=xf) and :out=xfb (or :out=efb)";
+    ":lights=round-each, :map=rgb565, :base=tev (or :base=xf), :out=xfb (or :out=efb) and "
+    ":light-range=D (D >= 0)";
 
 }  // namespace
 
@@ -23,7 +25,7 @@ GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
   bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
        seen_lights = false, seen_map = false, seen_out = false, seen_view = false,
-       seen_base = false;
+       seen_base = false, seen_range = false;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -80,6 +82,13 @@ GxVariant parse_gx_variant(const std::string& text) {
       seen_base = true;
       if (value != "tev" && value != "xf") bad("base=" + value + " is not tev or xf");
       v.base_in_tev = value == "tev";
+    } else if (key == "light-range" && !seen_range) {
+      seen_range = true;
+      double d = 0;
+      const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
+      if (r.ec != std::errc() || r.ptr != value.data() + value.size() || !std::isfinite(d) || d < 0)
+        bad("light-range=" + value + " is not a distance >= 0");
+      v.light_range = d;
     } else if (key == "view" && !seen_view) {
       seen_view = true;
       if (value != "object" && value != "exact") bad("view=" + value + " is not object or exact");
@@ -114,6 +123,12 @@ std::string to_string(const GxVariant& v) {
   if (v.round_each_light) s += ":lights=round-each";
   if (v.map_rgb565) s += ":map=rgb565";
   if (v.out == GxVariant::Output::Xfb) s += ":out=xfb";
+  if (v.light_range) {
+    // The shortest text that reads back as the same double (a sweep row builds by its name).
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, *v.light_range);
+    s += ":light-range=" + std::string(buf, r.ptr);
+  }
   return s;
 }
 

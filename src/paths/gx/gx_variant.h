@@ -22,12 +22,20 @@
 //   :base=tev           in the TEV, as a konst colour folded into the LUT stage, with COLOR0 the
 //                       unlit thickness: no XF light, no 8-bit truncation of a channel normalised
 //                       to its largest component (default :base=xf, the XF light's colour)
+// One axis replaces a choice the data made with a bound the user declares (issue 26):
+//   :light-range=D      every point light stays at least D (world units) from the vertices it
+//                       lights, so the TEV scales come from the attenuation at D (a directional
+//                       light: 1) instead of from a scan of the visible vertices; D = 0 holds
+//                       for any scene (the attenuation at the light itself, 1 / kc). The scan
+//                       is gone from the CPU's frame (the module's setup); the cost is in the
+//                       image (docs/porting-to-the-wii.md).
 // One axis picks which image the path returns (xfb_copy.h):
 //   :out=xfb            what the TV shows: the EFB copied to the XFB as YUYV 4:2:2 and decoded
 //                       again, as Dolphin's software renderer dumps it (default :out=efb, the
 //                       EFB itself)
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "scene/scene.h"
@@ -50,6 +58,9 @@ struct GxVariant {
   // V and L constant per object, from its centre (object_view.h); default: exact (t=texgen and
   // lobe=xf-spec then need an orthographic camera and directional lights).
   bool view_object = false;
+  // :light-range=D: the declared closest distance of a point light to a lit vertex; unset: the
+  // visible vertices are scanned (pass_planner.cpp light_stats).
+  std::optional<double> light_range;
 
   bool operator==(const GxVariant&) const = default;
 };

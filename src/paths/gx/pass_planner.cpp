@@ -39,8 +39,21 @@ struct LightStats {
   double max_diffuse = 0;  // max over vertices of att * max(N.L, 0)
 };
 
-LightStats light_stats(const Scene& scene, int material, const Light& light) {
+// With a declared :light-range=D (gx_variant.h) no vertex is looked at: a point light's
+// attenuation at D bounds both figures (N.L <= 1), as the module's ltr_declared_range computes it;
+// a directional light's are 1.
+LightStats light_stats(const Scene& scene, int material, const Light& light,
+                       const std::optional<double>& declared) {
   LightStats st;
+  if (declared) {
+    const double d = *declared;
+    const double den = light.kc + light.kl * d + light.kq * d * d;
+    st.max_attenuation = light.type == Light::Type::Point
+                             ? 1.0 / std::max(den, model::kMinAttenuationDenominator)
+                             : 1.0;
+    st.max_diffuse = st.max_attenuation;
+    return st;
+  }
   for (const SceneObject& o : scene.objects) {
     if (o.material != material) continue;
     for (size_t v = 0; v < o.mesh.positions.size(); ++v) {
@@ -194,7 +207,8 @@ PassPlan PassPlanner::diffuse_pass(int m, int pass, size_t first_light) {
   double magnitude = pass == 0 ? max3(scene_.ambient_light) : 0.0;
   for (size_t l = first_light; l < last; ++l) {
     const Light& light = scene_.lights[l];
-    magnitude += light_stats(scene_, m, light).max_diffuse * max3(light.color);
+    magnitude +=
+        light_stats(scene_, m, light, variant_.light_range).max_diffuse * max3(light.color);
   }
   const int sd = scale_for(magnitude);
   ChannelPlan c;
@@ -227,7 +241,7 @@ PassChoice PassPlanner::choose(int m, size_t l, const MapTexture* map) const {
   const Material& mat = scene_.materials[static_cast<size_t>(m)];
   const Translucency& tr = *mat.translucency;
   const Light& light = scene_.lights[l];
-  const LightStats st = light_stats(scene_, m, light);
+  const LightStats st = light_stats(scene_, m, light, variant_.light_range);
   PassChoice c;
   c.vertex_t = tr.thickness_source == ThicknessSource::Vertex;
   c.xf = variant_.lobe == GxVariant::Lobe::XfSpec;

@@ -103,8 +103,9 @@ void check_frame_size(FrameSize size, const std::string& file, const std::string
                          std::to_string(kEfbHeight) + " rows");
 }
 
-FifoLog record_frames(const Scene& scene, const std::vector<FrameInput>& frames, FrameSize size) {
-  check_frame_size(size, scene.file.string());
+FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& frames,
+                      FrameSize size) {
+  check_frame_size(size, first_scene.file.string());
   FifoLog log;
   {
     // The header snapshot: GX_Init's registers, then GxState{}'s, then the camera.
@@ -123,13 +124,19 @@ FifoLog record_frames(const Scene& scene, const std::vector<FrameInput>& frames,
     log.xf_memory = init.xf_memory;
     log.xf_registers = init.xf_registers;
   }
-  const SceneView view = SceneView::of(scene);
-  std::vector<VertexStream> streams;
-  for (const SceneObject& o : scene.objects) streams.push_back(make_vertex_stream(scene, o, view));
-  const glm::dvec3 bg = scene.background;
-  const Color8 background{to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
-
   for (const FrameInput& in : frames) {
+    const Scene& scene = in.scene ? *in.scene : first_scene;
+    if (scene.objects.size() != first_scene.objects.size() ||
+        scene.materials.size() != first_scene.materials.size())
+      throw InputError(first_scene.file.string(), "frames",
+                       "a frame's scene has other objects or materials than the first's");
+    // The vertices as this frame's view sends them (eye-relative positions, per-light t).
+    const SceneView view = SceneView::of(scene);
+    std::vector<VertexStream> streams;
+    for (const SceneObject& o : scene.objects)
+      streams.push_back(make_vertex_stream(scene, o, view));
+    const glm::dvec3 bg = scene.background;
+    const Color8 background{to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
     const ScenePrograms& programs = *in.programs;
     std::vector<TextureObject> luts;  // GX_TEXMAP0's fallback (gx.md §1), as the emulator's
     for (const Material& m : scene.materials) luts.push_back(lobe_lut(m, in.variant.lut_size));
@@ -180,6 +187,11 @@ FifoLog for_dolphin(FifoLog log) {
   for (int i = 0; i < kDolphinTrailingCopies && !log.frames.empty(); ++i)
     log.frames.push_back(log.frames.back());
   return log;
+}
+
+FifoLog for_dolphin_animation(FifoLog log) {
+  if (!log.frames.empty()) log.frames.insert(log.frames.begin(), log.frames.front());
+  return for_dolphin(std::move(log));
 }
 
 }  // namespace lt::gx::fifo

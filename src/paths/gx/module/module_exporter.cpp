@@ -114,6 +114,22 @@ Function bind_frame_state(Function f, const PassPlan& p, bool t_from_normal) {
         c.args[i + 1] = field(l + ".position[" + std::to_string(i) + "]");
     } else if (fn == "GX_InitLightColor") {
       c.args[1] = field("LTR_GXCOLOR(" + slot() + ".color)");
+    } else if (fn == "GX_InitLightDir" &&
+               light_named(p, c.args[0].name).kind == LightObjectPlan::Kind::SpecularFit) {
+      const std::string l = slot();
+      for (size_t i = 0; i < 3; ++i)
+        c.args[i + 1] = field(l + ".direction[" + std::to_string(i) + "]");
+      st.comment =
+          "-u: the slot holds this frame's u = +-d V, eye space (x = N.u >= 0 on front faces)";
+    } else if (fn == "GX_InitLightAttn") {
+      const std::string l = slot();
+      for (size_t i = 0; i < 3; ++i) {
+        c.args[i + 1] = field(l + ".a[" + std::to_string(i) + "]");
+        c.args[i + 4] = field(l + ".k[" + std::to_string(i) + "]");
+      }
+      st.comment =
+          "A(x) = (a0 + a1 x + a2 x^2) / (k0 + k1 x + k2 x^2), fitted to this frame's lobe "
+          "(ltr_fit_lobe)";
     } else if (fn == "GX_InitLightAttnK") {
       const std::string l = slot();
       for (size_t i = 0; i < 3; ++i) c.args[i + 1] = field(l + ".k[" + std::to_string(i) + "]");
@@ -140,7 +156,7 @@ Function bind_frame_state(Function f, const PassPlan& p, bool t_from_normal) {
   return f;
 }
 
-std::string light_kinds(const Scene& scene) {
+std::string light_kinds(const Scene& scene, const GxVariant& variant) {
   std::ostringstream o;
   const size_t n = scene.lights.size();
   o << "#define LTRENDER_LIGHTS " << n << "\n"
@@ -156,6 +172,11 @@ std::string light_kinds(const Scene& scene) {
   o << "};\n"
     << "const ltr_scene ltrender_scene = {ltrender_light_kinds, LTRENDER_LIGHTS, "
     << c_vec3(scene.ambient_light, c_double) << "};\n\n";
+  if (variant.light_range)
+    o << "// --light-range: no point light comes closer than this to a vertex it lights (world "
+         "units);\n// the TEV scales are chosen for the attenuation there "
+         "(ltr_declared_range). A light that\n// comes closer saturates where it is brighter.\n"
+      << "#define LTRENDER_LIGHT_RANGE " << c_double(*variant.light_range) << "\n\n";
   const Camera& cam = scene.camera;
   o << "// The scene's camera and lights as exported: where a game starts from (world space).\n"
     << "#define LTRENDER_ORTHOGRAPHIC " << (cam.projection == Camera::Projection::Orthographic)
@@ -188,7 +209,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
   const std::string id = "ltrender_" + m.c_name;
   const std::string passes = "LTRENDER_" + m.c_name + "_PASSES";
   glm::dvec3 tint(1);
-  double a = 0, d = 0, t_max = 1;
+  double a = 0, d = 0, t_max = 1, power = 0;
   bool normalize_h = false;
   if (mat.translucency) {
     const Translucency& tr = *mat.translucency;
@@ -196,6 +217,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     a = tr.ambient;
     d = tr.distortion;
     normalize_h = tr.normalize_distorted_light;
+    power = tr.power;
   }
   bool sends_t = false;
   for (const PassPlan& p : m.passes) {
@@ -209,7 +231,8 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     << "const ltr_material " << id << "_material = {" << c_vec3(mat.albedo, c_double) << ", "
     << c_vec3(tint, c_double) << ", " << c_double(a) << ", " << c_double(d) << ", " << normalize_h
     << ", " << c_double(t_max) << ", " << v.lut_size << ", " << t_from_normal << ", "
-    << v.view_object << "};\n"
+    << v.view_object << ", " << (v.lobe == GxVariant::Lobe::XfSpec) << ", " << c_double(power)
+    << "};\n"
     << "// Per pass: diffuse only, first light, lights, translucent, LUT.\n"
     << "const ltr_pass_shape " << id << "_shapes[" << passes << "] = {";
   for (size_t i = 0; i < m.passes.size(); ++i) {
@@ -222,28 +245,45 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
   o << "};\n\n"
     << "// Every frame, before drawing " << mat.name << ": the state of each pass from the view,\n"
     << "// the lights (world space) and the material's meshes as drawn this frame (world space).\n"
-    << "// The TEV scales come from what the lights do at the vertices that can be seen, so every\n"
-    << "// mesh of the material takes part (ltr_light_range_of: its cost per vertex and light).\n"
+    << (v.light_range
+            ? "// The TEV scales come from the declared light range (LTRENDER_LIGHT_RANGE: no "
+              "point "
+              "light\n// comes closer to a vertex), not from the meshes' vertices.\n"
+            : "// The TEV scales come from what the lights do at the vertices that can be seen, so "
+              "every\n// mesh of the material takes part (ltr_light_range_of: its cost per vertex "
+              "and light).\n")
     << (v.view_object
             ? "// :view=object: V and L are taken at the centre of these meshes (ltr_centre_of), "
               "so "
               "the\n// texture matrix of t is this frame's; set up one mesh at a time for a V per "
               "mesh.\n"
             : "")
+    << (v.lobe == GxVariant::Lobe::XfSpec
+            ? "// lobe=xf-spec: the lobe is fitted again for this frame's V.L (ltr_fit_lobe: its "
+              "cost\n// per translucent light, and what a game may keep between frames).\n"
+            : "")
     << "void " << id
     << "_setup(const ltr_view* view, const ltr_light lights[], const ltr_mesh meshes[],\n"
     << "    int mesh_count, ltr_pass_state state[" << passes << "]) {\n"
     << "  ltr_light_range ranges[LTRENDER_LIGHTS + 1];\n"
-    << "  double centre[3];\n"
-    << "  int l, m, p;\n"
-    << "  ltr_centre_of(meshes, mesh_count, centre);\n"
-    << "  for (l = 0; l < LTRENDER_LIGHTS; ++l) {\n"
-    << "    ranges[l].max_attenuation = ranges[l].max_diffuse = 0;\n"
-    << "    for (m = 0; m < mesh_count; ++m)\n"
-    << "      ltr_light_range_of(view, &ltrender_light_kinds[l], &lights[l], &meshes[m], "
-       "&ranges[l]);\n"
-    << "  }\n"
-    << "  for (p = 0; p < " << passes << "; ++p)\n"
+    << "  double centre[3] = {0, 0, 0};\n"
+    << "  int l, " << (v.light_range ? "" : "m, ") << "p;\n";
+  if (v.view_object)
+    o << "  ltr_centre_of(meshes, mesh_count, centre);\n";
+  else if (v.light_range)
+    o << "  (void)meshes;\n  (void)mesh_count;\n";
+  if (v.light_range) {
+    o << "  for (l = 0; l < LTRENDER_LIGHTS; ++l)\n"
+      << "    ltr_declared_range(&ltrender_light_kinds[l], LTRENDER_LIGHT_RANGE, &ranges[l]);\n";
+  } else {
+    o << "  for (l = 0; l < LTRENDER_LIGHTS; ++l) {\n"
+      << "    ranges[l].max_attenuation = ranges[l].max_diffuse = 0;\n"
+      << "    for (m = 0; m < mesh_count; ++m)\n"
+      << "      ltr_light_range_of(view, &ltrender_light_kinds[l], &lights[l], &meshes[m], "
+         "&ranges[l]);\n"
+      << "  }\n";
+  }
+  o << "  for (p = 0; p < " << passes << "; ++p)\n"
     << "    ltr_pass_setup(&ltrender_scene, &" << id << "_material, &" << id
     << "_shapes[p], view, lights, ranges, centre, &state[p]);\n"
     << "}\n";
@@ -291,11 +331,6 @@ std::string module_runtime_source(const std::string& file) {
 
 std::string export_module(const Scene& scene, const GxVariant& variant,
                           const std::string& scene_argument) {
-  if (variant.lobe == GxVariant::Lobe::XfSpec)
-    throw InputError(
-        "--variant", to_string(variant),
-        "gx: --format module does not carry lobe=xf-spec: its lobe is a rational "
-        "fitted per frame in double (Sanathanan-Koerner iterations); use a LUT variant");
   if (variant.base_in_tev)
     throw InputError("--variant", to_string(variant),
                      "gx: --format module does not carry base=tev: its setup recomputes the XF "
@@ -318,7 +353,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << "// Setup puts the lights in eye space (a directional light far along its direction, as\n"
       << "// libogc's GX_InitSpecularDir does), divides each light's magnitude into its distance\n"
       << "// coefficients, and chooses the TEV scales from the lights' range over the visible "
-         "vertices.\n"
+         "vertices\n// (or, with --light-range, from the declared bound).\n"
       << "// Fixed at export: the materials, the light types and attenuations, the ambient light, "
          "which\n"
       << "// lights add translucency (a light whose colour or scale becomes 0 keeps its stages).\n"
@@ -336,7 +371,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << "\n// ---- runtime: the view matrix and the draw (libogc) ----\n"
       << module_runtime_source("ltrender_gx_draw.c") << "\n"
       << "// ---- the scene ----\n"
-      << light_kinds(scene);
+      << light_kinds(scene, variant);
   ProgramFile file = g.file;
   file.comment.clear();
   std::vector<Function> bound;

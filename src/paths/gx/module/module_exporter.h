@@ -13,9 +13,8 @@
 
 namespace lt::gx {
 
-// The module's text. Throws InputError("--variant", ...) for lobe=xf-spec (its lobe is fitted per
-// frame by Sanathanan-Koerner iterations in double, which the module does not carry) and for
-// whatever plan_scene refuses.
+// The module's text. Throws InputError for whatever plan_scene refuses. lobe=xf-spec's lobe is
+// fitted again every frame (ltr_fit_lobe, model/rational_fit.cpp in C).
 std::string export_module(const Scene& scene, const GxVariant& variant,
                           const std::string& scene_argument);
 

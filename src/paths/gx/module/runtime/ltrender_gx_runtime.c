@@ -143,6 +143,13 @@ void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const 
   }
 }
 
+void ltr_declared_range(const ltr_light_kind* kind, double min_distance, ltr_light_range* range) {
+  const double d = min_distance, den = kind->kc + kind->kl * d + kind->kq * d * d;
+  range->max_attenuation =
+      kind->point ? 1.0 / (den < ltr_min_denominator ? ltr_min_denominator : den) : 1.0;
+  range->max_diffuse = range->max_attenuation;
+}
+
 void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                 const ltr_material* material, const ltr_mesh* mesh, float* t) {
   const double d = material->distortion;
@@ -241,6 +248,172 @@ void ltr_centre_of(const ltr_mesh meshes[], int mesh_count, double centre[3]) {
   for (i = 0; i < 3; ++i) centre[i] = lo[0] > hi[0] ? 0.0 : (lo[i] + hi[i]) * 0.5;
 }
 
+/* ---- lobe=xf-spec: the lobe as a rational of x = N.u (model/rational_fit.cpp) ---- */
+
+#define LTR_FIT_SAMPLES 513
+
+static double ltr_rational_at(const ltr_rational* r, double x) {
+  return (r->a[0] + r->a[1] * x + r->a[2] * x * x) / (r->k[0] + r->k[1] * x + r->k[2] * x * x);
+}
+
+/* The fit's sample i: x_max i / (samples - 1). */
+static double ltr_fit_x(double x_max, int i) {
+  return x_max * i / (LTR_FIT_SAMPLES - 1);
+}
+
+static double ltr_fit_max_error(const ltr_rational* r, double x_max, const double fs[]) {
+  double e = 0;
+  int i;
+  for (i = 0; i < LTR_FIT_SAMPLES; ++i) {
+    const double v = fabs(ltr_rational_at(r, ltr_fit_x(x_max, i)) - fs[i]);
+    if (e < v) e = v;
+  }
+  return e;
+}
+
+static double ltr_fit_min_denominator(const ltr_rational* r, double x_max) {
+  double m = 1e300;
+  int i;
+  for (i = 0; i < LTR_FIT_SAMPLES; ++i) {
+    const double x = ltr_fit_x(x_max, i), q = r->k[0] + r->k[1] * x + r->k[2] * x * x;
+    if (q < m) m = q;
+  }
+  return m;
+}
+
+/* m x = b for a 5x5 m (Gaussian elimination, partial pivoting; m is overwritten); 0 if
+   singular. */
+static int ltr_solve5(double m[5][5], double b[5]) {
+  int c, r, k;
+  for (c = 0; c < 5; ++c) {
+    int p = c;
+    for (r = c + 1; r < 5; ++r) {
+      if (fabs(m[r][c]) > fabs(m[p][c])) p = r;
+    }
+    if (fabs(m[p][c]) < 1e-300) return 0;
+    for (k = 0; k < 5; ++k) {
+      const double t = m[p][k];
+      m[p][k] = m[c][k];
+      m[c][k] = t;
+    }
+    {
+      const double t = b[p];
+      b[p] = b[c];
+      b[c] = t;
+    }
+    for (r = c + 1; r < 5; ++r) {
+      const double f = m[r][c] / m[c][c];
+      for (k = c; k < 5; ++k) m[r][k] -= f * m[c][k];
+      b[r] -= f * b[c];
+    }
+  }
+  for (c = 5; c-- > 0;) {
+    for (k = c + 1; k < 5; ++k) b[c] -= m[c][k] * b[k];
+    b[c] /= m[c][c];
+  }
+  return 1;
+}
+
+void ltr_fit_lobe(double c0, double sign, double x_max, double a, double s, double p,
+                  ltr_rational* out) {
+  double fs[LTR_FIT_SAMPLES], best_error;
+  ltr_rational current = {{0, 0, 0}, {1, 0, 0}}, best = {{0, 0, 0}, {1, 0, 0}};
+  int i, iter, r, c;
+  for (i = 0; i < LTR_FIT_SAMPLES; ++i) {
+    double t = c0 + sign * (x_max > 0 ? ltr_fit_x(x_max, i) : 0.0), lobe;
+    t = t < 0.0 ? 0.0 : (1.0 < t ? 1.0 : t);
+    lobe = p == 0 ? 1.0 : (t <= 0 ? 0.0 : pow(t, p)); /* 0^0 := 1: a flat lobe */
+    fs[i] = (a + s * lobe) / (a + s);
+    if (!(x_max > 0)) break;
+  }
+  best.a[0] = fs[0];
+  if (!(x_max > 0)) {
+    *out = best;
+    return;
+  }
+  /* Unknowns (a0, a1, a2, k1, k2): residual P(x) - f(x) (1 + k1 x + k2 x^2), each sample weighted
+     by 1 / Q_prev(x)^2 so the iteration converges to the true rational least squares. */
+  best_error = ltr_fit_max_error(&best, x_max, fs);
+  for (iter = 0; iter < 30; ++iter) {
+    double m[5][5] = {{0}}, rhs[5] = {0}, e;
+    ltr_rational next;
+    for (i = 0; i < LTR_FIT_SAMPLES; ++i) {
+      const double x = ltr_fit_x(x_max, i),
+                   q = current.k[0] + current.k[1] * x + current.k[2] * x * x;
+      const double w = 1.0 / (q * q);
+      const double row[5] = {1, x, x * x, -fs[i] * x, -fs[i] * x * x};
+      for (r = 0; r < 5; ++r) {
+        for (c = 0; c < 5; ++c) m[r][c] += w * row[r] * row[c];
+        rhs[r] += w * row[r] * fs[i];
+      }
+    }
+    /* A tiny ridge keeps the system solvable for flat curves (k1 = k2 = 0 is then the answer). */
+    for (r = 0; r < 5; ++r) m[r][r] += 1e-12 * (1 + m[r][r]);
+    if (!ltr_solve5(m, rhs)) break;
+    for (i = 0; i < 3; ++i) next.a[i] = rhs[i];
+    next.k[0] = 1;
+    next.k[1] = rhs[3];
+    next.k[2] = rhs[4];
+    if (ltr_fit_min_denominator(&next, x_max) < 1e-3) break;
+    e = ltr_fit_max_error(&next, x_max, fs);
+    if (e < best_error) {
+      best = next;
+      best_error = e;
+    }
+    current = next;
+  }
+  *out = best;
+}
+
+/* V and L held constant over the object (object_view.h): at the meshes' centre with
+   :view=object, else the exact variants' -forward and -direction. Returns the light's distance
+   attenuation there (1 but for :view=object and a point light). */
+static double ltr_constant_view(const ltr_material* material, const ltr_view* view,
+                                const ltr_light_kind* kind, const ltr_light* light,
+                                const double centre[3], double V[3], double L[3]) {
+  int i;
+  if (material->view_object) {
+    ltr_view_vector(view, centre, V);
+    /* A point light at the centre lights it head-on from the eye's side (L = V). */
+    return ltr_sample_light(kind, light, centre, V, L);
+  }
+  for (i = 0; i < 3; ++i) {
+    V[i] = -view->forward[i];
+    L[i] = -(double)light->direction[i];
+  }
+  return 1.0;
+}
+
+/* lobe=xf-spec's light (pass_planner_textures.cpp specular_light): x = max(0, N.u) with
+   u = -+k in eye space, k = -d V (the sign that makes x >= 0 on front faces), so t = c0 + sign x
+   with c0 = -V.L; the position far along V so the XF's N.l >= 0 test passes on front faces; the
+   numerator scaled by the light's magnitude 1 / inv_gain (its attenuation at the centre
+   included: the specular attenuation has no distance term). */
+static void ltr_specular_light(const ltr_view* view, const ltr_material* material,
+                               const ltr_light* light, const double V[3], const double L[3],
+                               const double color[3], double inv_gain, ltr_light_object* out) {
+  const double d = material->distortion, c0 = -ltr_dot(V, L), sign = d >= 0 ? -1.0 : 1.0;
+  const double m = ltr_max3(color), g = m > 0 ? 1.0 / inv_gain : 0.0;
+  double k_world[3], k_eye[3], v_eye[3], unit[3];
+  ltr_rational r;
+  int i;
+  for (i = 0; i < 3; ++i) k_world[i] = -d * V[i];
+  ltr_rotate(view, k_world, k_eye);
+  ltr_rotate(view, V, v_eye);
+  ltr_fit_lobe(c0, sign, fabs(d), material->ambient, light->translucency_scale, material->power,
+               &r);
+  for (i = 0; i < 3; ++i) {
+    /* GX_InitLightDir stores its argument negated: pass -u so the slot holds u. */
+    const double u = d >= 0 ? -k_eye[i] : k_eye[i];
+    out->position[i] = (float)(v_eye[i] * ltr_far_away);
+    unit[i] = m > 0 ? color[i] / m : 0.0;
+    out->direction[i] = (float)-u;
+    out->a[i] = (float)(r.a[i] * g);
+    out->k[i] = (float)r.k[i];
+  }
+  ltr_rgb8(unit, out->color);
+}
+
 /* One light's pass (pass_planner choose and light_pass): slot 0 the translucency light, slot 1
    the diffuse light, the scales from the light's range. */
 static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
@@ -251,7 +424,7 @@ static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
   const ltr_light* light = &lights[l];
   const ltr_light_kind* kind = &scene->kinds[l];
   const double s = light->translucency_scale, a = material->ambient;
-  double color[3], trans_color[3], s0, diffuse_mag, trans_mag;
+  double color[3], trans_color[3], s0, diffuse_mag, trans_mag, V[3], L[3], att;
   int i, sd, st, st_needed;
   ltr_widen(light->color, color);
   for (i = 0; i < 3; ++i) trans_color[i] = color[i] * material->albedo[i] * material->tint[i];
@@ -259,10 +432,14 @@ static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
   diffuse_mag =
       (l == 0 ? ltr_max3(scene->ambient_light) : 0.0) + ranges[l].max_diffuse * ltr_max3(color);
   sd = ltr_scale_for(diffuse_mag);
-  trans_mag = ranges[l].max_attenuation * s0;
+  /* t=texgen's and lobe=xf-spec's V and L; xf-spec's magnitude is the attenuation at the centre. */
+  att = ltr_constant_view(material, view, kind, light, centre, V, L);
+  trans_mag = (material->xf_spec ? att : ranges[l].max_attenuation) * s0;
   st_needed = ltr_scale_for(trans_mag);
   st = sd > st_needed ? sd : st_needed;
-  if (shape->translucent)
+  if (shape->translucent && material->xf_spec)
+    ltr_specular_light(view, material, light, V, L, trans_color, st / (s0 * att), &out->light[0]);
+  else if (shape->translucent)
     ltr_distance_light(view, kind, light, trans_color, s0 / st, &out->light[0]);
   ltr_distance_light(view, kind, light, color, ltr_max3(color) / sd, &out->light[1]);
   ltr_ambient(scene, 0, 1, out->ambient[0]);
@@ -280,17 +457,7 @@ static void ltr_light_pass(const ltr_scene* scene, const ltr_material* material,
        meshes' centre to the eye, L = from the centre to a point light or -direction; this is the
        per-frame texture matrix that spares the CPU its per-vertex t. */
     const double n = material->lut_size, scale = (n - 1) / n, offset = 0.5 / n;
-    double V[3], L[3];
     int r, c;
-    if (material->view_object) {
-      ltr_view_vector(view, centre, V);
-      ltr_sample_light(kind, light, centre, V, L);
-    } else {
-      for (i = 0; i < 3; ++i) {
-        V[i] = -view->forward[i];
-        L[i] = -(double)light->direction[i];
-      }
-    }
     for (r = 0; r < 3; ++r)
       for (c = 0; c < 4; ++c) out->lut_matrix[r][c] = 0.0f;
     for (c = 0; c < 3; ++c) out->lut_matrix[0][c] = (float)(-material->distortion * V[c] * scale);

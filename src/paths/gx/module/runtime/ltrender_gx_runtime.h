@@ -70,11 +70,16 @@ typedef struct {
 } ltr_light_range;
 
 /* One hardware light object: eye-space position, colour normalised to 255 at its largest
-   component, and the distance coefficients with the rest of its magnitude divided in. */
+   component, and the distance coefficients with the rest of its magnitude divided in. The XF
+   specular light of lobe=xf-spec has no distance term: k is then the fitted lobe's denominator,
+   `a` its numerator times the light's magnitude, and `direction` what GX_InitLightDir is passed
+   (the negated direction slot u, as libogc stores it negated [OGC gx.c L4686-4693]). */
 typedef struct {
   float position[3];
   unsigned char color[4];
   float k[3];
+  float a[3];
+  float direction[3];
 } ltr_light_object;
 
 /* Everything a pass function sets that changes from frame to frame. */
@@ -97,6 +102,8 @@ typedef struct {
   int lut_size;      /* W texels */
   int t_from_normal; /* t=texgen: t through a texture matrix from the raw normal */
   int view_object;   /* :view=object: V and L taken at the centre of the meshes set up together */
+  int xf_spec;       /* lobe=xf-spec: the lobe fitted as the XF specular attenuation */
+  double power;      /* p of the lobe t^p (what lobe=xf-spec fits) */
 } ltr_material;
 
 /* What the export fixed about one pass (which stages and lights it has). */
@@ -125,6 +132,12 @@ void ltr_view_of(const ltr_camera* camera, int orthographic, ltr_view* view);
 void ltr_light_range_of(const ltr_view* view, const ltr_light_kind* kind, const ltr_light* light,
                         const ltr_mesh* mesh, ltr_light_range* range);
 
+/* The range of a declared bound instead of a scan (`--light-range D`, :light-range=D): every
+   point light stays at least `min_distance` from the vertices it lights, so its attenuation there
+   and att x N.L are at most 1 / (kc + kl D + kq D^2); a directional light's are 1. D = 0 holds
+   whatever the scene does. Cost: a handful of flops per light, none per vertex. */
+void ltr_declared_range(const ltr_light_kind* kind, double min_distance, ltr_light_range* range);
+
 /* The per-vertex t of one light, t = dot(V, -(L + N d)) unsaturated (the LUT's clamp saturates
    it per pixel), into t[0 .. vertex_count): V = the unit vector from the vertex to the eye
    (perspective) or -forward (orthographic), L = the unit vector from the vertex to a point
@@ -139,6 +152,25 @@ void ltr_fill_t(const ltr_view* view, const ltr_light_kind* kind, const ltr_ligh
 /* The centre of the meshes' bounding box, world space: (lo + hi) x 0.5 over every vertex (what
    :view=object takes V and L at). Cost per vertex: 6 comparisons. */
 void ltr_centre_of(const ltr_mesh meshes[], int mesh_count, double centre[3]);
+
+/* A degree-2 rational (a0 + a1 x + a2 x^2) / (k0 + k1 x + k2 x^2): the XF's specular
+   attenuation (GX_AF_SPEC, numerator GX_InitLightAttnA, denominator GX_InitLightAttnK). */
+typedef struct {
+  double a[3], k[3];
+} ltr_rational;
+
+/* lobe=xf-spec's fit (model/rational_fit.cpp, the same operations in the same order): the curve
+   f(x) = (a + s lobe(clamp(c0 + sign x, 0, 1))) / (a + s), lobe(t) = t^p, over x in [0, x_max]
+   at 513 samples, by up to 30 Sanathanan-Koerner iterations of the linearised least squares
+   (k0 = 1), keeping the iterate of least max error whose denominator stays above 1e-3 (so the
+   XF never divides by zero); x_max <= 0 gives the constant f(0).
+   Cost: 513 pow() and about 65 000 flops per iteration (a 5x5 normal matrix summed over the
+   samples, its max error and least denominator), up to 30 iterations: up to about 2 million flops
+   a call. The setup calls it once per translucent light and frame; its result depends only on c0 =
+   -V.L and s (d, a and p are the material's), so a game whose V.L and s change slowly can keep it
+   and fit again only when they move. */
+void ltr_fit_lobe(double c0, double sign, double x_max, double a, double s, double p,
+                  ltr_rational* out);
 
 /* One pass's per-frame state from the view, the lights and their ranges (one per light), and
    `centre` (ltr_centre_of of the meshes drawn with it; read only with :view=object). */
