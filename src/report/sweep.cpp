@@ -39,7 +39,7 @@ std::vector<SweepRow> run_sweep(const SweepOptions& o) {
       SweepRow r;
       r.scene = file.stem().string();
       r.variant = v.name;
-      if (info.refusal) r.refused = info.refusal(base, v.name);
+      r.refused = info.refusal(base, v.name);
       if (r.refused.empty()) measured.push_back(rows.size());
       rows.push_back(r);
     }
