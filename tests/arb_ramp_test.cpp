@@ -32,7 +32,7 @@ TEST(ArbfpRamp, EveryVariantRendersTheRampScene) {
   const Image mul = render_scene(scene, "arbfp", "pow=mul", 160, 120);
   EXPECT_GT(test::covered_pixels(mul), mul.pixel_count() / 10);
   for (const VariantInfo& v : arbfp.variants) {
-    ASSERT_TRUE(!arbfp.refusal || arbfp.refusal(scene, v.name).empty()) << v.name;
+    ASSERT_TRUE(arbfp.refusal(scene, v.name).empty()) << v.name;
     const Image img = render_scene(scene, "arbfp", v.name, 160, 120);
     EXPECT_EQ(test::non_finite(img), 0u) << v.name;
     if (arbfp::parse_variant(v.name).per_vertex) {

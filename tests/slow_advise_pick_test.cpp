@@ -40,7 +40,7 @@ bool survives_hard_cases(const Target& target, const std::string& variant, const
   bool ok = true;
   for (const HardCase& hc : reachable_hard_cases(scene, scene.materials[kMaterial])) {
     const Scene hard = load_scene(hc.file);
-    if (target.path->refusal && !target.path->refusal(hard, variant).empty()) continue;
+    if (!target.path->refusal(hard, variant).empty()) continue;
     const Image img = render_scene(hard, target.path->name, variant, std::max(2, hard.width / 2),
                                    std::max(2, hard.height / 2), target.options);
     for (float v : img.rgba) ok = ok && std::isfinite(v);

@@ -95,7 +95,7 @@ class HardCaseRunner {
     HardResult r;
     r.scene = hc.file.stem().string();
     // A variant the path refuses for the case cannot meet it (render refuses it too).
-    const bool refused = path_.refusal && !path_.refusal(l.scene, variant).empty();
+    const bool refused = !path_.refusal(l.scene, variant).empty();
     if (!refused) {
       RenderSession session(l.scene, l.width, l.height);
       if (l.reference.rgba.empty()) l.reference = render_reference(session);
@@ -288,7 +288,7 @@ Advice run_advise(const AdviseOptions& o) {
     r.error.assign(nm, {});
     r.non_finite.assign(nm, 0);
     r.hard.assign(nm, std::nullopt);
-    if (path.refusal) r.refused = path.refusal(scene, cand.variant);
+    r.refused = path.refusal(scene, cand.variant);
     // A twin that is never cheaper is pruned without a look (unless exhaustive).
     if (!o.exhaustive && !cand.never_cheaper.empty()) r.pruned = cand.never_cheaper;
     if (r.refused.empty() && r.pruned.empty()) {

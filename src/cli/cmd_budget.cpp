@@ -72,10 +72,10 @@ std::map<std::string, std::string> profiles_per_path(const std::vector<std::stri
 // The path that counts a scene: --path, which must have a budget.
 const PathInfo& scene_path(const std::string& path) {
   const PathInfo& info = find_path(path);
-  if (!info.budget) {
+  if (info.budget_profiles.empty()) {
     std::string with;
     for (const PathInfo& p : all_paths()) {
-      if (p.budget) with += (with.empty() ? "" : ", ") + p.name;
+      if (!p.budget_profiles.empty()) with += (with.empty() ? "" : ", ") + p.name;
     }
     throw InputError("--path", path,
                      "path " + info.name + " has no budget (paths with one: " + with + ")");

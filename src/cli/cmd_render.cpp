@@ -27,10 +27,10 @@ void check_via_dolphin(const RenderArgs& a, const PathInfo& info) {
     throw InputError(a.output, "", "--via dolphin writes Dolphin's 8-bit frame: use a .png");
   if (!a.keep_fifo_log.empty() && meshio::lower_extension(a.keep_fifo_log) != ".dff")
     throw InputError(a.keep_fifo_log, "", "--keep-fifo-log writes a Dolphin FIFO log: use a .dff");
-  if (info.fifo_log) return;
+  if (info.writes_fifo_log) return;
   std::string with;
   for (const PathInfo& p : all_paths())
-    if (p.fifo_log) with += (with.empty() ? "" : ", ") + p.name;
+    if (p.writes_fifo_log) with += (with.empty() ? "" : ", ") + p.name;
   throw InputError("--via dolphin", "",
                    "path " + info.name + " models no console (" +
                        (with.empty() ? std::string("no path in this build has a FIFO log")
@@ -155,10 +155,8 @@ Action add_render(CLI::App& app) {
     for (const SceneObject& o : scene.objects) inputs.push_back(o.mesh_path);
     ensure_not_an_input(a->output, inputs);
     if (!a->keep_fifo_log.empty()) ensure_not_an_input(a->keep_fifo_log, inputs);
-    if (info.refusal) {
-      const std::string why = info.refusal(scene, variant);
-      if (!why.empty()) throw InputError("--variant", variant, info.name + ": " + why);
-    }
+    const std::string why = info.refusal(scene, variant);
+    if (!why.empty()) throw InputError("--variant", variant, info.name + ": " + why);
     const Image img = via_dolphin ? render_via_dolphin(*a, info, scene, variant, width, height)
                                   : render_scene(scene, info.name, variant, a->width, a->height,
                                                  PathOptions{a->program, a->profile});

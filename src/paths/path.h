@@ -1,11 +1,12 @@
 // A path is one way of rendering a scene: the reference (the ground truth), flat (the timing
 // baseline) and the ports (glsl, arbfp, combiners, half, gx). Each lives in its own folder under
-// paths/ behind this interface: a PathInfo says what the path is, takes and refuses, and a Path
-// renders one scene. Adding a path touches its folder and registry.cpp; the commands name none.
+// paths/ behind this interface: its PathInfo says what the path is, takes and refuses, parses its
+// variants, counts its budget, and builds a Path, which renders one scene. Adding a path touches
+// its folder and registry.cpp; the commands name none.
 #pragma once
 
 #include <cstdint>
-#include <functional>
+#include <functional>  // std::reference_wrapper
 #include <map>
 #include <memory>
 #include <ostream>
@@ -29,7 +30,7 @@ struct PathOptions {
 };
 
 // What a path renders with: the scene, a current context at the output size, the uploaded
-// geometry (matrices loaded), and the variant string the user picked (already validated).
+// geometry (matrices loaded) and the options (the variant goes to PathInfo::create).
 struct PathContext {
   const Scene& scene;
   gl::Context& gl;
@@ -96,48 +97,130 @@ struct VariantInfo {
 // timing baseline every ratio is against, or a port being judged.
 enum class PathRole { GroundTruth, Baseline, Port };
 
-struct PathInfo {
+// What a path is, takes and refuses, and what builds it: one class per path (its folder's
+// *_path.cpp), one instance in the registry. The description is data its constructor sets; the
+// behaviour is the virtual functions below. A path with variant axes derives TypedPathInfo (its
+// variant parsed once into a typed value), one with only listed names ListedPathInfo.
+class PathInfo {
+ public:
+  virtual ~PathInfo() = default;
+
   std::string name;
   std::string summary;
   std::vector<VariantInfo> variants;  // the first is the default; bench runs each of them
-  std::function<std::unique_ptr<Path>(const PathContext&, const std::string& variant)> create;
-  // A path whose variants are a grammar (gx: any LUT width) parses them here and returns the
-  // canonical name, throwing InputError naming the valid values; without it only the listed
-  // names are accepted.
-  std::function<std::string(const std::string& variant)> parse_variant = {};
-  // Why `variant` cannot be exact for this scene (empty when it can): `render` refuses it with
-  // this message, bench and the tests skip it and say why.
-  std::function<std::string(const Scene& scene, const std::string& variant)> refusal = {};
+  PathRole role = PathRole::Port;
   // Whether the path takes PathOptions::program_file, PathOptions::profile.
   bool takes_program_file = false;
   bool takes_profile = false;
-  PathRole role = PathRole::Port;
-  // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene (under a
-  // variant, "" = the default) against one of its profiles (empty: the path's default) into the
-  // one budget report (paths/budget/report.h), which the command prints. The path owns its
-  // counter and profiles; the command names no path.
-  std::function<budget::Report(const Scene& scene, const std::string& variant,
-                               const std::string& profile)>
-      budget = {};
-  // The profiles the path's budget takes, its default first: `budget --profile` gives each
-  // named profile to the path that has it.
-  std::vector<std::string> budget_profiles = {};
+  // The profiles budget() takes, its default first (`budget --profile` gives each named profile
+  // to the path that has it); empty: the path counts nothing and has no budget().
+  std::vector<std::string> budget_profiles;
   // `ltrender budget FILE`: a program file of this path's kind, recognised by its extension or,
-  // failing that, by the first characters of its text (after white space).
-  std::vector<std::string> program_extensions = {};
-  std::vector<std::string> program_headers = {};
-  std::function<budget::Report(const std::string& file, const std::string& profile)> budget_file =
-      {};
+  // failing that, by the first characters of its text (after white space); see budget_file().
+  std::vector<std::string> program_extensions;
+  std::vector<std::string> program_headers;
+  // Whether fifo_log() is there (paths that model a console).
+  bool writes_fifo_log = false;
+
+  // Builds the path for one scene; `variant` as resolve_variant returned it.
+  virtual std::unique_ptr<Path> create(const PathContext& ctx,
+                                       const std::string& variant) const = 0;
+  // The canonical name of `variant`, throwing InputError("--variant", ...) naming the valid
+  // values. Default: one of the listed names, as given.
+  virtual std::string parse_variant(const std::string& variant) const;
+  // Why `variant` cannot be exact for this scene (empty when it can): `render` refuses it with
+  // this message, bench and the tests skip it and say why.
+  virtual std::string refusal(const Scene& scene, const std::string& variant) const;
+  // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene (under a
+  // variant, "" = the default) against one of budget_profiles (empty: the default) into the one
+  // budget report (paths/budget/report.h), which the command prints. The path owns its counter
+  // and profiles; the command names no path.
+  virtual budget::Report budget(const Scene& scene, const std::string& variant,
+                                const std::string& profile) const;
+  // `ltrender budget FILE`: a program file of this path's kind, counted against a profile.
+  virtual budget::Report budget_file(const std::string& file, const std::string& profile) const;
   // `export --format dff` and `render --via dolphin`: one frame as a Dolphin FIFO log (the bytes
   // of a .dff file) encoded from exactly the state the path's emulator runs, for an
-  // implementation that is not ltrender's to play. Empty for paths that model no console.
-  std::function<std::vector<std::uint8_t>(const Scene& scene, const std::string& variant,
-                                          const PathOptions& options, int width, int height)>
-      fifo_log = {};
+  // implementation that is not ltrender's to play.
+  virtual std::vector<std::uint8_t> fifo_log(const Scene& scene, const std::string& variant,
+                                             const PathOptions& options, int width,
+                                             int height) const;
+};
+
+// A path whose variant is a typed value V: the string is parsed once at each entry point and
+// the path's own functions take V. parse throws InputError("--variant", text, ...) naming the
+// valid values; name_of gives the canonical spelling.
+template <class V>
+class TypedPathInfo : public PathInfo {
+ public:
+  virtual V parse(const std::string& variant) const = 0;
+  virtual std::string name_of(const V& variant) const = 0;
+  virtual std::unique_ptr<Path> build(const PathContext& ctx, const V& variant) const = 0;
+  virtual std::string refuse(const Scene&, const V&) const { return ""; }
+
+  std::unique_ptr<Path> create(const PathContext& ctx, const std::string& variant) const final {
+    return build(ctx, parse(variant));
+  }
+  std::string parse_variant(const std::string& variant) const final {
+    return name_of(parse(variant));
+  }
+  std::string refusal(const Scene& scene, const std::string& variant) const final {
+    return refuse(scene, parse(variant));
+  }
+};
+
+// One listed variant and its typed value.
+template <class V>
+struct ListedVariant {
+  VariantInfo info;
+  V value;
+};
+
+// Throws InputError("--variant", requested, "path PATH has no such variant (valid: ...)").
+[[noreturn]] void throw_unknown_variant(const std::string& path,
+                                        const std::vector<VariantInfo>& variants,
+                                        const std::string& requested);
+
+// The value of the listed variant named `text`; throws as throw_unknown_variant otherwise.
+template <class V>
+const V& find_listed(const std::string& path, const std::vector<ListedVariant<V>>& listed,
+                     const std::string& text) {
+  for (const ListedVariant<V>& l : listed) {
+    if (l.info.name == text) return l.value;
+  }
+  std::vector<VariantInfo> infos;
+  for (const ListedVariant<V>& l : listed) infos.push_back(l.info);
+  throw_unknown_variant(path, infos, text);
+}
+
+// A path whose variants are the listed names alone, each naming a value of V.
+template <class V>
+class ListedPathInfo : public TypedPathInfo<V> {
+ public:
+  ListedPathInfo(std::string path_name, std::string path_summary,
+                 std::vector<ListedVariant<V>> listed)
+      : listed_(std::move(listed)) {
+    this->name = std::move(path_name);
+    this->summary = std::move(path_summary);
+    for (const ListedVariant<V>& l : listed_) this->variants.push_back(l.info);
+  }
+  V parse(const std::string& variant) const override {
+    return find_listed(this->name, listed_, variant);
+  }
+  std::string name_of(const V& variant) const override {
+    for (const ListedVariant<V>& l : listed_) {
+      if (l.value == variant) return l.info.name;
+    }
+    return this->variants.front().name;  // unreachable: every value is listed
+  }
+
+ private:
+  std::vector<ListedVariant<V>> listed_;
 };
 
 // Every path, in the order the report lists them.
-const std::vector<PathInfo>& all_paths();
+// (A range of `const PathInfo&`: `for (const PathInfo& p : all_paths())`.)
+const std::vector<std::reference_wrapper<const PathInfo>>& all_paths();
 // Throws InputError(file_for_errors, "--path", ...) listing the valid names.
 const PathInfo& find_path(const std::string& name);
 // The one path of a role that has exactly one (GroundTruth, Baseline).

@@ -1,7 +1,4 @@
-#include <algorithm>
-
 #include "core/error.h"
-#include "core/find_named.h"
 #include "paths/arbfp/arbfp_path.h"
 #include "paths/combiners/combiners_path.h"
 #include "paths/flat/flat_path.h"
@@ -13,8 +10,8 @@
 
 namespace lt {
 
-const std::vector<PathInfo>& all_paths() {
-  static const std::vector<PathInfo> paths = {
+const std::vector<std::reference_wrapper<const PathInfo>>& all_paths() {
+  static const std::vector<std::reference_wrapper<const PathInfo>> paths = {
       reference_path_info(), glsl_path_info(), flat_path_info(), arbfp_path_info(),
       combiners_path_info(), half_path_info(), gx_path_info(),
   };
@@ -22,7 +19,12 @@ const std::vector<PathInfo>& all_paths() {
 }
 
 const PathInfo& find_path(const std::string& name) {
-  return find_named(all_paths(), name, "--path", "path");
+  std::string names;
+  for (const PathInfo& p : all_paths()) {
+    if (p.name == name) return p;
+    names += (names.empty() ? "" : ", ") + p.name;
+  }
+  throw InputError("--path", name, "unknown path (valid: " + names + ")");
 }
 
 const PathInfo& path_with_role(PathRole role) {
@@ -38,14 +40,44 @@ const PathInfo& path_with_role(PathRole role) {
 
 std::string resolve_variant(const PathInfo& path, const std::string& requested) {
   if (requested.empty()) return path.variants.front().name;
-  if (path.parse_variant) return path.parse_variant(requested);
+  return path.parse_variant(requested);
+}
+
+void throw_unknown_variant(const std::string& path, const std::vector<VariantInfo>& variants,
+                           const std::string& requested) {
   std::string names;
-  for (const VariantInfo& v : path.variants) {
-    if (v.name == requested) return requested;
-    names += (names.empty() ? "" : ", ") + v.name;
-  }
+  for (const VariantInfo& v : variants) names += (names.empty() ? "" : ", ") + v.name;
   throw InputError("--variant", requested,
-                   "path " + path.name + " has no such variant (valid: " + names + ")");
+                   "path " + path + " has no such variant (valid: " + names + ")");
+}
+
+// The defaults of what a path may leave out: listed variant names, no refusal; the capabilities
+// a path declares by its data (budget_profiles, program files, writes_fifo_log) and overrides.
+std::string PathInfo::parse_variant(const std::string& variant) const {
+  for (const VariantInfo& v : variants) {
+    if (v.name == variant) return variant;
+  }
+  throw_unknown_variant(name, variants, variant);
+}
+
+std::string PathInfo::refusal(const Scene&, const std::string&) const {
+  return "";
+}
+
+budget::Report PathInfo::budget(const Scene&, const std::string&, const std::string&) const {
+  check_failed("budget_profiles.empty()", __FILE__, __LINE__,
+               "path " + name + " has no budget (callers check budget_profiles)");
+}
+
+budget::Report PathInfo::budget_file(const std::string&, const std::string&) const {
+  check_failed("program_extensions.empty()", __FILE__, __LINE__,
+               "path " + name + " reads no program files (callers check program_extensions)");
+}
+
+std::vector<std::uint8_t> PathInfo::fifo_log(const Scene&, const std::string&, const PathOptions&,
+                                             int, int) const {
+  check_failed("!writes_fifo_log", __FILE__, __LINE__,
+               "path " + name + " writes no FIFO log (callers check writes_fifo_log)");
 }
 
 }  // namespace lt

@@ -8,6 +8,7 @@
 #include "core/fixed.h"
 #include "core/fs.h"
 #include "metrics/heatmap.h"
+#include "render/evaluate.h"
 #include "render/session.h"
 
 namespace lt {
@@ -126,9 +127,7 @@ CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& se
   CaseResult r;
   r.regress_case = c;
   r.golden = o.goldens / c.golden_name();
-  auto path = session.build(*c.path, c.variant);
-  path->frame();
-  Image render = path->result();
+  const Image render = render_frame(session, *c.path, c.variant);
   r.width = render.width;
   r.height = render.height;
   const std::string stem = fs::path(c.golden_name()).stem().string();
@@ -149,12 +148,7 @@ CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& se
                     std::to_string(golden.height) + ", the render " + std::to_string(render.width) +
                     "x" + std::to_string(render.height);
       } else {
-        // A PNG golden carries no coverage: take the render's, so that region "covered" judges
-        // the pixels the scene draws (the default judges every pixel).
-        for (size_t i = 0; i < golden.pixel_count(); ++i)
-          golden.rgba[i * 4 + 3] = render.rgba[i * 4 + 3];
-        // Compared as the 8-bit image it would be written as, against the golden's bytes.
-        comparison = compare_images(render, golden, TestEncoding::kUnorm8, TestEncoding::kUnorm8);
+        comparison = compare_with_golden(render, std::move(golden));
       }
     } catch (const InputError& e) {
       r.message = std::string("cannot read the golden: ") + e.what();

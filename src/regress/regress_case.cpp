@@ -103,7 +103,7 @@ std::vector<RegressCase> expand_cases(const std::vector<fs::path>& scene_files,
         c.path = r.path;
         c.variant = variant;
         c.default_variant = variant == r.path->variants.front().name;
-        if (r.path->refusal) c.skip_reason = r.path->refusal(scenes[s], variant);
+        c.skip_reason = r.path->refusal(scenes[s], variant);
         c.tolerance = regress_tolerance(scenes[s], *r.path);
         // The same case asked twice (glsl and glsl:pow=exact) runs once.
         if (!ids.insert(c.id()).second) continue;

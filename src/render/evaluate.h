@@ -1,6 +1,10 @@
-// The one evaluate step (render, reference, compare) that bench, export and advise share: the
-// ground truth of a session's scene, and a path's last frame compared with it as `compare` does.
+// The one evaluate step (render a path, the reference, the comparison) that bench, regress,
+// export and advise share: a path's frame in a session, the ground truth of the session's scene,
+// and a frame compared with the reference (as `compare` does) or with a golden (as `regress`
+// does).
 #pragma once
+
+#include <string>
 
 #include "image/image.h"
 #include "metrics/compare.h"
@@ -8,6 +12,10 @@
 #include "render/session.h"
 
 namespace lt {
+
+// One frame of `path` with `variant` (resolved) in this session: built, drawn, read back.
+Image render_frame(RenderSession& session, const PathInfo& path, const std::string& variant,
+                   const PathOptions& options = {});
 
 // One frame of the ground-truth path (the reference) in this session: float RGBA, alpha the
 // coverage every comparison's "covered" region is taken from.
@@ -18,5 +26,11 @@ TestEncoding test_encoding(const Path& path);
 
 // The error of `path`'s last frame (frame() already run) against `reference`.
 Comparison compare_with_reference(Path& path, const Image& reference);
+
+// The error of `render` against `golden`, an image of the same size read from an 8-bit file:
+// both compared as their bytes (the render as the 8-bit image it would be written as). A PNG
+// golden carries no coverage, so the render's is taken: region "covered" then judges the
+// pixels the scene draws.
+Comparison compare_with_golden(const Image& render, Image golden);
 
 }  // namespace lt

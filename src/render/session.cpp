@@ -1,6 +1,7 @@
 #include "render/session.h"
 
 #include "core/error.h"
+#include "render/evaluate.h"
 
 namespace lt {
 
@@ -39,9 +40,7 @@ Image render_scene(const Scene& scene, const std::string& path_name, const std::
                      "path " + info.name + " takes no program file (the gx path does)");
   check_profile_option(info, options.profile);
   RenderSession session(scene, width > 0 ? width : scene.width, height > 0 ? height : scene.height);
-  auto path = session.build(info, v, options);
-  path->frame();
-  return path->result();
+  return render_frame(session, info, v, options);
 }
 
 }  // namespace lt

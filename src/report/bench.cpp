@@ -101,7 +101,7 @@ std::vector<PlannedRow> plan_rows(const Scene& scene, const std::string& sname,
       if (!selected(*p, v, o.variants)) continue;
       // A variant that cannot be exact for this scene (gx t=texgen under perspective) is
       // no row: render would refuse it too.
-      const std::string why = p->refusal ? p->refusal(scene, v.name) : "";
+      const std::string why = p->refusal(scene, v.name);
       if (!why.empty()) {
         progress.note("bench: " + sname + ": " + p->name + " " + v.name + " skipped: " + why);
         continue;

@@ -225,7 +225,8 @@ std::string svg_chart(const std::vector<BenchRow>& rows, const ChartAxis& axis) 
   std::map<std::string, std::string> colour;
   for (const Point& p : points) colour[p.path] = palette[7];  // a path the registry lacks
   for (size_t i = 0; i < all_paths().size(); ++i) {
-    if (colour.count(all_paths()[i].name)) colour[all_paths()[i].name] = palette[i % 8];
+    const std::string& name = all_paths()[i].get().name;
+    if (colour.count(name)) colour[name] = palette[i % 8];
   }
   std::ostringstream s;
   s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H

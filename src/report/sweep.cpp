@@ -44,7 +44,7 @@ std::vector<SweepRow> run_sweep(const SweepOptions& o) {
       SweepRow r;
       r.scene = file.stem().string();
       r.variant = name;
-      if (info.refusal) r.refused = info.refusal(base, name);
+      r.refused = info.refusal(base, name);
       if (r.refused.empty()) measured.push_back(rows.size());
       rows.push_back(r);
     }

@@ -77,8 +77,8 @@ void bind_material_textures(const MaterialState* st) {
 
 class ArbfpPath final : public Path {
  public:
-  ArbfpPath(const PathContext& ctx, const std::string& variant)
-      : ctx_(ctx), variant_(arbfp::parse_variant(variant)) {
+  ArbfpPath(const PathContext& ctx, const arbfp::PowVariant& variant)
+      : ctx_(ctx), variant_(variant) {
     ctx.gl.require_extension("GL_ARB_vertex_program", "the arbfp path");
     ctx.gl.require_extension("GL_ARB_fragment_program", "the arbfp path");
     // The generator writes light positions relative to the eye; the geometry must agree.
@@ -252,52 +252,20 @@ class ArbfpPath final : public Path {
   size_t passes_ = 1;  // the most passes of any material
 };
 
-}  // namespace
-
-PathInfo arbfp_path_info() {
-  PathInfo info{
-      "arbfp",
-      "per-pixel ARB vertex/fragment programs (SM2), generated per material; pow variants (a "
-      "lobe-ramp material reads its ramp, one TEX per light, in every variant: no pow to "
-      "replace)",
-      {
-          // The default: the cheapest variant (fewest ALU + TEX on every demo scene, no texture)
-          // whose max error is <= 2 LSB on every demo scene (bench, see the closing note).
-          {"pow=mul", "t^p by repeated squaring (integer p; non-integer p uses exact POW)"},
-          // The Story variants (./run.sh's quick run) are the rows of docs/measurements.md's table:
-          // the cheapest fragment program, the 256-texel LUTs, the two spherical Gaussians.
-          // The cheapest fragment program (t and the lobe in the vertex program), not the default:
-          // its error is the lobe's Gouraud interpolation, which grows with triangle size.
-          {"pow=mul:vertex",
-           "t^p by repeated squaring per vertex, lobe interpolated: fewest fragment ALU, error "
-           "grows with triangle size (a ramp: t per vertex, the ramp per pixel)",
-           VariantRun::Story},
-          {"pow=exact", "POW with 0^0 guarded by CMP: float error only"},
-          {"pow=lut:256:u8",
-           "256-texel 8-bit LUT: 1 MAD + 1 TEX, u8 rounding (0.5/255 of the lobe)",
-           VariantRun::Story},
-          {"pow=lut:64:u8", "64-texel 8-bit LUT: interpolation error grows with p"},
-          {"pow=lut:16:u8", "16-texel 8-bit LUT: coarse, large error for p > 2"},
-          {"pow=lut:256:f16", "256-texel half-float LUT", VariantRun::Story},
-          {"pow=lut:64:f16", "64-texel half-float LUT"},
-          {"pow=lut:32:f32", "32-texel float LUT: interpolation error only"},
-          {"pow=sg", "exp2(n'(t-1)), n' = 1.4427p + 1.4427: 2 ALU, a close but different curve",
-           VariantRun::Story},
-          {"pow=sg-fitted", "exp2(n'(t-1)) with n' fitted per material to the max error"},
-          {"pow=sg-simplified", "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)",
-           VariantRun::Story},
-      },
-      [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
-        return std::make_unique<ArbfpPath>(ctx, variant);
-      }};
-  // The variant grammar: any LUT width and format the generator builds, not just the rows the
-  // bench runs ("pow=lut:128:f16").
-  info.parse_variant = [](const std::string& v) { return arbfp::parse_variant(v).name(); };
+// The variant grammar: any LUT width and format the generator builds, not just the rows the
+// bench runs ("pow=lut:128:f16").
+class ArbfpInfo final : public TypedPathInfo<arbfp::PowVariant> {
+ public:
+  ArbfpInfo();
+  arbfp::PowVariant parse(const std::string& v) const override { return arbfp::parse_variant(v); }
+  std::string name_of(const arbfp::PowVariant& v) const override { return v.name(); }
+  std::unique_ptr<Path> build(const PathContext& ctx, const arbfp::PowVariant& v) const override {
+    return std::make_unique<ArbfpPath>(ctx, v);
+  }
   // The per-vertex lobe (or t) packs four lights per texcoord: a scene with more lights cannot
   // take it (bench skips it and says so, render refuses it with this reason).
-  info.refusal = [](const Scene& scene, const std::string& v) -> std::string {
-    if (!arbfp::parse_variant(v).per_vertex || scene.lights.size() <= arbfp::kMaxVertexLobeLights)
-      return "";
+  std::string refuse(const Scene& scene, const arbfp::PowVariant& v) const override {
+    if (!v.per_vertex || scene.lights.size() <= arbfp::kMaxVertexLobeLights) return "";
     for (const Material& m : scene.materials) {
       if (m.translucency && arbfp::lobe_varies(*m.translucency)) {
         return "the per-vertex lobe takes at most " + std::to_string(arbfp::kMaxVertexLobeLights) +
@@ -306,16 +274,61 @@ PathInfo arbfp_path_info() {
       }
     }
     return "";
-  };
+  }
   // Instructions, temporaries, parameters and indirections against ps_2_0 and friends.
-  info.budget = budget::run_budget;
-  for (const budget::Profile& p : budget::all_profiles()) info.budget_profiles.push_back(p.name);
+  budget::Report budget(const Scene& scene, const std::string& v,
+                        const std::string& profile) const override {
+    return budget::run_budget(scene, v, profile);
+  }
   // Hand-written ARB_vertex_program / ARB_fragment_program text, checked by our counter and by
   // Mesa (arb_file_budget.h).
-  info.takes_profile = true;
-  info.program_extensions = {".fp", ".vp", ".arb"};
-  info.program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
-  info.budget_file = arbfp::budget_arb_file;
+  budget::Report budget_file(const std::string& file, const std::string& profile) const override {
+    return arbfp::budget_arb_file(file, profile);
+  }
+};
+
+ArbfpInfo::ArbfpInfo() {
+  name = "arbfp";
+  summary =
+      "per-pixel ARB vertex/fragment programs (SM2), generated per material; pow variants (a "
+      "lobe-ramp material reads its ramp, one TEX per light, in every variant: no pow to "
+      "replace)";
+  variants = {
+      // The default: the cheapest variant (fewest ALU + TEX on every demo scene, no texture)
+      // whose max error is <= 2 LSB on every demo scene (bench, see the closing note).
+      {"pow=mul", "t^p by repeated squaring (integer p; non-integer p uses exact POW)"},
+      // The Story variants (./run.sh's quick run) are the rows of docs/measurements.md's table:
+      // the cheapest fragment program, the 256-texel LUTs, the two spherical Gaussians.
+      // The cheapest fragment program (t and the lobe in the vertex program), not the default:
+      // its error is the lobe's Gouraud interpolation, which grows with triangle size.
+      {"pow=mul:vertex",
+       "t^p by repeated squaring per vertex, lobe interpolated: fewest fragment ALU, error "
+       "grows with triangle size (a ramp: t per vertex, the ramp per pixel)",
+       VariantRun::Story},
+      {"pow=exact", "POW with 0^0 guarded by CMP: float error only"},
+      {"pow=lut:256:u8", "256-texel 8-bit LUT: 1 MAD + 1 TEX, u8 rounding (0.5/255 of the lobe)",
+       VariantRun::Story},
+      {"pow=lut:64:u8", "64-texel 8-bit LUT: interpolation error grows with p"},
+      {"pow=lut:16:u8", "16-texel 8-bit LUT: coarse, large error for p > 2"},
+      {"pow=lut:256:f16", "256-texel half-float LUT", VariantRun::Story},
+      {"pow=lut:64:f16", "64-texel half-float LUT"},
+      {"pow=lut:32:f32", "32-texel float LUT: interpolation error only"},
+      {"pow=sg", "exp2(n'(t-1)), n' = 1.4427p + 1.4427: 2 ALU, a close but different curve",
+       VariantRun::Story},
+      {"pow=sg-fitted", "exp2(n'(t-1)) with n' fitted per material to the max error"},
+      {"pow=sg-simplified", "exp2(p(t-1)): another curve, ~35-40 LSB off (docs/spec/model.md)",
+       VariantRun::Story},
+  };
+  for (const budget::Profile& p : budget::all_profiles()) budget_profiles.push_back(p.name);
+  takes_profile = true;
+  program_extensions = {".fp", ".vp", ".arb"};
+  program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
+}
+
+}  // namespace
+
+const PathInfo& arbfp_path_info() {
+  static const ArbfpInfo info;
   return info;
 }
 

@@ -4,5 +4,5 @@
 namespace lt {
 // Per-pixel ARB vertex + fragment programs (SM2 model), generated per material, with the pow
 // variants of arb_variant.h selected by --variant.
-PathInfo arbfp_path_info();
+const PathInfo& arbfp_path_info();
 }  // namespace lt

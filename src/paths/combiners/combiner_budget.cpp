@@ -76,8 +76,9 @@ budget::Report combiner_budget(const Scene& scene, const std::string& profile,
                                const std::string& variant) {
   const CombinerBudgetProfile& p = find_profile(profile.empty() ? "gl13-2units" : profile);
   budget::Report r = report(scene.file.string(), "scene", p);
+  const CombinersVariant v = parse_combiners_variant(variant);  // an unknown name throws
   r.variant = variant.empty() ? "t=vertex" : variant;
-  for (const CombinerMaterialPlan& plan : plan_combiners(scene, r.variant)) {
+  for (const CombinerMaterialPlan& plan : plan_combiners(scene, v)) {
     if (!plan.used) continue;
     const std::string& material = scene.materials[plan.material].name;
     budget::Item item = row(budget::Scope::Material, "material " + material, p);

@@ -53,7 +53,7 @@ bool cube_holds_lobe(const Material& m, const Light& light) {
 
 }  // namespace
 
-std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant) {
+std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, CombinersVariant variant) {
   std::vector<CombinerMaterialPlan> plans(scene.materials.size());
   for (const SceneObject& o : scene.objects) plans[o.material].used = true;
   for (size_t i = 0; i < plans.size(); ++i) {
@@ -65,12 +65,12 @@ std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::
     } else {
       // One pass per light: the lobe needs att*T of its own light in the primary colour, and a
       // vertex has one primary colour (see combiners/README.md, "Why one pass per light").
-      const bool texgen = variant == "t=texgen" && texgen_applicable(scene, m);
+      const bool texgen = variant == CombinersVariant::TTexgen && texgen_applicable(scene, m);
       for (const Light& l : scene.lights) {
         if (samples_thickness_map(m)) {
           // The map is a texture stage of its own, whatever the variant (map_stage.h).
           p.pass_kinds.push_back(PassKind::LobeVertexMap);
-        } else if (variant == "lobe=cube" && cube_holds_lobe(m, l)) {
+        } else if (variant == CombinersVariant::LobeCube && cube_holds_lobe(m, l)) {
           // Constant thickness: the whole term depends on N only and fits in the cube's rgb.
           const bool constant = m.translucency->thickness_source == ThicknessSource::Constant;
           p.pass_kinds.push_back(constant ? PassKind::LobeCubeFull : PassKind::LobeCube);
@@ -113,7 +113,7 @@ void stream(GLuint buffer, const std::vector<float>& data) {
 
 class CombinersPath final : public Path {
  public:
-  CombinersPath(const PathContext& ctx, const std::string& variant)
+  CombinersPath(const PathContext& ctx, CombinersVariant variant)
       : ctx_(ctx), variant_(variant), plans_(plan_combiners(ctx.scene, variant)) {
     const Scene& s = ctx.scene;
     // A 1x1 white texture: bound by stages that sample nothing, so GL runs their environment.
@@ -253,12 +253,12 @@ class CombinersPath final : public Path {
         const PassKind kind = p.kind(pass);
         const std::string name = program_file(kind);
         std::string note;
-        if (variant_ == "t=texgen" && kind == PassKind::LobeVertex) {
+        if (variant_ == CombinersVariant::TTexgen && kind == PassKind::LobeVertex) {
           note =
               " (texgen not applicable: needs directional lights, an orthographic camera and "
               "unnormalised H; t computed per vertex on the CPU)";
         }
-        if (variant_ == "lobe=cube" && kind == PassKind::LobeVertex) {
+        if (variant_ == CombinersVariant::LobeCube && kind == PassKind::LobeVertex) {
           note = ctx_.scene.lights[static_cast<size_t>(pass)].type == Light::Type::Point
                      ? " (point light: no cube, t per vertex)"
                      : " (rgb lobe ramp with per-vertex thickness: the cube's alpha holds one "
@@ -299,7 +299,7 @@ class CombinersPath final : public Path {
     FrameStats s;
     s.cpu_vertex_seconds = cpu_seconds_;
     s.passes = passes_drawn_;
-    if (variant_ == "lobe=cube") s.cube_rebuild_seconds = cube_seconds_;
+    if (variant_ == CombinersVariant::LobeCube) s.cube_rebuild_seconds = cube_seconds_;
     return s;
   }
 
@@ -418,7 +418,7 @@ class CombinersPath final : public Path {
   }
 
   PathContext ctx_;
-  std::string variant_;
+  CombinersVariant variant_;
   std::vector<CombinerMaterialPlan> plans_;
   std::vector<LobeTable> tables_;  // [material]: t^p or its ramp
   std::vector<GLuint> table_textures_;
@@ -432,36 +432,61 @@ class CombinersPath final : public Path {
   int passes_drawn_ = 0;
 };
 
+const std::vector<ListedVariant<CombinersVariant>>& combiners_variants() {
+  static const std::vector<ListedVariant<CombinersVariant>> listed = {
+      {{"t=vertex",
+        "t, attenuation, diffuse and thickness per vertex on the CPU; lobe from "
+        "an 8-bit LUT per pixel (error grows with triangle size)"},
+       CombinersVariant::TVertex},
+      {{"t=texgen",
+        "t by texgen NORMAL_MAP and the texture matrix (directional lights, "
+        "orthographic camera; else as t=vertex)",
+        VariantRun::Story},
+       CombinersVariant::TTexgen},
+      {{"lobe=cube",
+        "per pixel: a cube map by the normal holds each directional light's "
+        "whole term (exact view only for an orthographic camera); point "
+        "lights as t=vertex",
+        VariantRun::Story},
+       CombinersVariant::LobeCube}};
+  return listed;
+}
+
+class CombinersInfo final : public ListedPathInfo<CombinersVariant> {
+ public:
+  CombinersInfo()
+      : ListedPathInfo("combiners",
+                       "GL 1.3 texture combiners, no shaders: power LUT at a per-vertex t, "
+                       "vertex-colour thickness and diffuse, one additive pass per light",
+                       combiners_variants()) {
+    for (const CombinerBudgetProfile& p : combiner_budget_profiles())
+      budget_profiles.push_back(p.name);
+    // A hand-written .comb file (combiners/README.md) as one pass.
+    program_extensions = {".comb"};
+  }
+  std::unique_ptr<Path> build(const PathContext& ctx,
+                              const CombinersVariant& variant) const override {
+    return std::make_unique<CombinersPath>(ctx, variant);
+  }
+  // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
+  budget::Report budget(const Scene& scene, const std::string& variant,
+                        const std::string& profile) const override {
+    return combiner_budget(scene, profile, variant);
+  }
+  budget::Report budget_file(const std::string& file, const std::string& profile) const override {
+    return combiner_budget_file(file, profile);
+  }
+};
+
 }  // namespace
 
-PathInfo combiners_path_info() {
-  PathInfo info{"combiners",
-                "GL 1.3 texture combiners, no shaders: power LUT at a per-vertex t, vertex-colour "
-                "thickness and diffuse, one additive pass per light",
-                {{"t=vertex",
-                  "t, attenuation, diffuse and thickness per vertex on the CPU; lobe from "
-                  "an 8-bit LUT per pixel (error grows with triangle size)"},
-                 {"t=texgen",
-                  "t by texgen NORMAL_MAP and the texture matrix (directional lights, "
-                  "orthographic camera; else as t=vertex)",
-                  VariantRun::Story},
-                 {"lobe=cube",
-                  "per pixel: a cube map by the normal holds each directional light's "
-                  "whole term (exact view only for an orthographic camera); point "
-                  "lights as t=vertex",
-                  VariantRun::Story}},
-                [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
-                  return std::make_unique<CombinersPath>(ctx, variant);
-                }};
-  // Stages, texture units, passes and constant colours against GL 1.3-class hardware.
-  info.budget = [](const Scene& scene, const std::string& variant, const std::string& profile) {
-    return combiner_budget(scene, profile, variant);
-  };
-  for (const CombinerBudgetProfile& p : combiner_budget_profiles())
-    info.budget_profiles.push_back(p.name);
-  // A hand-written .comb file (combiners/README.md) as one pass.
-  info.program_extensions = {".comb"};
-  info.budget_file = combiner_budget_file;
+CombinersVariant parse_combiners_variant(const std::string& name) {
+  return name.empty() ? combiners_variants().front().value
+                      : find_listed("combiners", combiners_variants(), name);
+}
+
+const PathInfo& combiners_path_info() {
+  static const CombinersInfo info;
   return info;
 }
 

@@ -13,7 +13,17 @@
 
 namespace lt {
 
-PathInfo combiners_path_info();
+const PathInfo& combiners_path_info();
+
+// The variants: where t (or the whole lobe) comes from.
+enum class CombinersVariant {
+  TVertex,   // "t=vertex": t per vertex on the CPU (the default)
+  TTexgen,   // "t=texgen": t by texgen NORMAL_MAP and the texture matrix (texgen_matrix.h)
+  LobeCube,  // "lobe=cube": a cube map by the normal holds the lobe (cube_lobe.h)
+};
+// The variant a --variant name names ("" = the default); throws InputError("--variant", name,
+// "path combiners has no such variant (valid: ...)").
+CombinersVariant parse_combiners_variant(const std::string& name);
 
 // What one pass draws, chosen once by plan_combiners; every later decision reads the kind.
 enum class PassKind {
@@ -45,11 +55,11 @@ struct CombinerMaterialPlan {
   PassKind kind(int pass) const { return pass_kinds[static_cast<size_t>(pass)]; }
   const combiners::CombinerProgram& program(int pass) const { return programs.at(kind(pass)); }
 };
-// `variant` as registered ("t=vertex", "t=texgen", "lobe=cube"). t=texgen serves only scenes
+// t=texgen serves only scenes
 // texgen_applicable accepts (else t=vertex); lobe=cube serves directional lights (point lights
 // get t=vertex passes, and so does an rgb lobe ramp with per-vertex thickness: lobe_cube.comb
 // holds the lobe in the cube's one alpha channel). A lobe ramp rides in every program's lobe
 // (the table, or the cube baked from it).
-std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, const std::string& variant);
+std::vector<CombinerMaterialPlan> plan_combiners(const Scene& scene, CombinersVariant variant);
 
 }  // namespace lt

@@ -42,16 +42,24 @@ class FlatPath final : public Path {
   PathContext ctx_;
 };
 
+// One variant, nothing to type.
+class FlatInfo final : public PathInfo {
+ public:
+  FlatInfo() {
+    name = "flat";
+    summary = "timing baseline: same geometry in one constant colour (not an approximation)";
+    variants = {{"constant", "albedo as a constant colour"}};
+    role = PathRole::Baseline;
+  }
+  std::unique_ptr<Path> create(const PathContext& ctx, const std::string&) const override {
+    return std::make_unique<FlatPath>(ctx);
+  }
+};
+
 }  // namespace
 
-PathInfo flat_path_info() {
-  PathInfo info{"flat",
-                "timing baseline: same geometry in one constant colour (not an approximation)",
-                {{"constant", "albedo as a constant colour"}},
-                [](const PathContext& ctx, const std::string&) -> std::unique_ptr<Path> {
-                  return std::make_unique<FlatPath>(ctx);
-                }};
-  info.role = PathRole::Baseline;
+const PathInfo& flat_path_info() {
+  static const FlatInfo info;
   return info;
 }
 

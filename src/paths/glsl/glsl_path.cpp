@@ -249,17 +249,28 @@ class GlslPath final : public Path {
   MaterialTextures textures_;
 };
 
+// The variants differ in the target alone (the shaders are the same).
+enum class GlslTarget { Unorm8, Float32 };
+
+class GlslInfo final : public ListedPathInfo<GlslTarget> {
+ public:
+  GlslInfo()
+      : ListedPathInfo(
+            "glsl", "per-pixel GLSL 1.10 shaders, exact pow, float arithmetic, 8-bit framebuffer",
+            {{{"pow=exact", "pow() with 0^0 guarded, 8-bit framebuffer"}, GlslTarget::Unorm8},
+             {{"pow=exact:f32", "the same shaders into an RGBA32F target: shader precision alone",
+               VariantRun::Story},
+              GlslTarget::Float32}}) {}
+  std::unique_ptr<Path> build(const PathContext& ctx, const GlslTarget& target) const override {
+    return std::make_unique<GlslPath>(ctx, target == GlslTarget::Float32);
+  }
+};
+
 }  // namespace
 
-PathInfo glsl_path_info() {
-  return {"glsl",
-          "per-pixel GLSL 1.10 shaders, exact pow, float arithmetic, 8-bit framebuffer",
-          {{"pow=exact", "pow() with 0^0 guarded, 8-bit framebuffer"},
-           {"pow=exact:f32", "the same shaders into an RGBA32F target: shader precision alone",
-            VariantRun::Story}},
-          [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
-            return std::make_unique<GlslPath>(ctx, variant == "pow=exact:f32");
-          }};
+const PathInfo& glsl_path_info() {
+  static const GlslInfo info;
+  return info;
 }
 
 }  // namespace lt

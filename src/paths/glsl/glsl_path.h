@@ -3,7 +3,7 @@
 
 namespace lt {
 // Per-pixel GLSL 1.10 with exact pow, one generated program per material.
-PathInfo glsl_path_info();
+const PathInfo& glsl_path_info();
 
 // The generated sources for one material (exposed for tests and `info`).
 struct GlslSources {

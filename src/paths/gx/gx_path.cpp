@@ -80,9 +80,9 @@ std::string pass_source(const ProgramFile& file, const std::string& function) {
 
 class GxPath final : public Path {
  public:
-  GxPath(const PathContext& ctx, const std::string& variant)
+  GxPath(const PathContext& ctx, const GxVariant& variant)
       : ctx_(ctx),
-        variant_(parse_gx_variant(variant)),
+        variant_(variant),
         programs_(scene_programs_for(ctx.scene, variant_, ctx.options.program_file)),
         view_(SceneView::of(ctx.scene)) {
     const Scene& s = ctx.scene;
@@ -274,8 +274,42 @@ class GxPath final : public Path {
 
 namespace lt {
 
-PathInfo gx_path_info() {
-  PathInfo info;
+namespace {
+
+class GxInfo final : public TypedPathInfo<gx::GxVariant> {
+ public:
+  GxInfo();
+  gx::GxVariant parse(const std::string& v) const override { return gx::parse_gx_variant(v); }
+  std::string name_of(const gx::GxVariant& v) const override { return gx::to_string(v); }
+  std::unique_ptr<Path> build(const PathContext& ctx, const gx::GxVariant& v) const override {
+    return std::make_unique<gx::GxPath>(ctx, v);
+  }
+  std::string refuse(const Scene& scene, const gx::GxVariant& v) const override {
+    return gx::refusal(scene, v);
+  }
+  // One frame as a Dolphin FIFO log: the programs the emulator runs (generated, or the program
+  // file), encoded on GX_Init's state, with the frame repeated so Dolphin dumps it.
+  std::vector<std::uint8_t> fifo_log(const Scene& scene, const std::string& v,
+                                     const PathOptions& options, int width,
+                                     int height) const override {
+    const gx::GxVariant variant = parse(v);
+    const gx::ScenePrograms programs = gx::scene_programs_for(scene, variant, options.program_file);
+    return gx::fifo::write_fifo_log(gx::fifo::for_dolphin(
+        gx::fifo::record_frames(scene, {{variant, &programs}}, {width, height})));
+  }
+  // TEV stages, texgens, texture maps, channels, lights, konst colours, registers and passes
+  // against the Wii's GX, for generated programs and for program files alike.
+  budget::Report budget(const Scene& scene, const std::string& v,
+                        const std::string& profile) const override {
+    return gx::gx_budget_scene(scene, v, profile);
+  }
+  budget::Report budget_file(const std::string& file, const std::string& profile) const override {
+    return gx::gx_budget_file(file, profile);
+  }
+};
+
+GxInfo::GxInfo() {
+  GxInfo& info = *this;
   info.name = "gx";
   info.summary =
       "the Wii's GX pipeline emulated in its own integer arithmetic: XF lighting per vertex, "
@@ -318,29 +352,16 @@ PathInfo gx_path_info() {
        "lobe=xf-spec under any camera and lights: V and L (and a point light's attenuation) taken "
        "once per object at its centre, the lobe fitted for them"},
   };
-  info.create = [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
-    return std::make_unique<gx::GxPath>(ctx, variant);
-  };
-  info.parse_variant = [](const std::string& v) { return gx::to_string(gx::parse_gx_variant(v)); };
-  info.refusal = [](const Scene& scene, const std::string& v) {
-    return gx::refusal(scene, gx::parse_gx_variant(v));
-  };
   info.takes_program_file = true;
-  // One frame as a Dolphin FIFO log: the programs the emulator runs (generated, or the program
-  // file), encoded on GX_Init's state, with the frame repeated so Dolphin dumps it.
-  info.fifo_log = [](const Scene& scene, const std::string& v, const PathOptions& options,
-                     int width, int height) {
-    const gx::GxVariant variant = gx::parse_gx_variant(v);
-    const gx::ScenePrograms programs = gx::scene_programs_for(scene, variant, options.program_file);
-    return gx::fifo::write_fifo_log(gx::fifo::for_dolphin(
-        gx::fifo::record_frames(scene, {{variant, &programs}}, {width, height})));
-  };
-  // TEV stages, texgens, texture maps, channels, lights, konst colours, registers and passes
-  // against the Wii's GX, for generated programs and for program files alike.
-  info.budget = gx::gx_budget_scene;
+  info.writes_fifo_log = true;
   for (const gx::GxProfile& p : gx::gx_profiles()) info.budget_profiles.push_back(p.name);
   info.program_extensions = {".c", ".gx"};
-  info.budget_file = gx::gx_budget_file;
+}
+
+}  // namespace
+
+const PathInfo& gx_path_info() {
+  static const GxInfo info;
   return info;
 }
 

@@ -34,5 +34,5 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
 }  // namespace lt::gx
 
 namespace lt {
-PathInfo gx_path_info();
+const PathInfo& gx_path_info();
 }  // namespace lt

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <thread>
 
-#include "core/error.h"
 #include "paths/common/cpu_shaded_path.h"
 #include "paths/half/half_shading.h"
 
@@ -18,20 +17,10 @@ namespace {
 // lit translucent surface is pure (1, 0, 1). The pixels are also counted in frame_stats.
 constexpr float kNonFiniteMarker[3] = {1, 0, 1};
 
-// One table for the names and the modes, so no name falls back to a default silently.
-fp16::PowMode pow_mode(const std::string& variant) {
-  if (variant == "pow=exact") return fp16::PowMode::Exact;
-  if (variant == "pow=sg") return fp16::PowMode::Sg;
-  if (variant == "pow=unguarded") return fp16::PowMode::Unguarded;
-  throw InputError("--variant", variant,
-                   "half: unknown variant (pow=exact, pow=sg, pow=unguarded)");
-}
-
 class HalfPath final : public CpuShadedPath {
  public:
-  HalfPath(const PathContext& ctx, const std::string& variant)
-      : CpuShadedPath(ctx, "the half path's G-buffer", "fp16 emulation (Imath half)"),
-        mode_(pow_mode(variant)) {
+  HalfPath(const PathContext& ctx, fp16::PowMode mode)
+      : CpuShadedPath(ctx, "the half path's G-buffer", "fp16 emulation (Imath half)"), mode_(mode) {
     // The shader sees the G-buffer's camera-relative space, so its light positions are too.
     const Scene relative = camera_relative_lights(ctx);
     scene_ = fp16::prepare_scene(relative, mode_);
@@ -65,19 +54,33 @@ class HalfPath final : public CpuShadedPath {
   size_t nonfinite_ = 0;
 };
 
+// The variants are the pow modes of half_shading.h, one name each.
+class HalfInfo final : public ListedPathInfo<fp16::PowMode> {
+ public:
+  HalfInfo()
+      : ListedPathInfo(
+            "half",
+            "the seed's half3 arithmetic emulated on the CPU (IEEE binary16 after every "
+            "operation)",
+            {{{"pow=exact",
+               "exp2(p * log2(t)) in half, the way fp16 POW does it, hard cases guarded"},
+              fp16::PowMode::Exact},
+             {{"pow=sg", "spherical-Gaussian exp2(t * n' - n') in half, hard cases guarded"},
+              fp16::PowMode::Sg},
+             {{"pow=unguarded",
+               "exp2(p * log2(t)) with no guards: NaN/Inf pixels counted (nonfinite_pixels) and "
+               "drawn magenta"},
+              fp16::PowMode::Unguarded}}) {}
+  std::unique_ptr<Path> build(const PathContext& ctx, const fp16::PowMode& mode) const override {
+    return std::make_unique<HalfPath>(ctx, mode);
+  }
+};
+
 }  // namespace
 
-PathInfo half_path_info() {
-  return {"half",
-          "the seed's half3 arithmetic emulated on the CPU (IEEE binary16 after every operation)",
-          {{"pow=exact", "exp2(p * log2(t)) in half, the way fp16 POW does it, hard cases guarded"},
-           {"pow=sg", "spherical-Gaussian exp2(t * n' - n') in half, hard cases guarded"},
-           {"pow=unguarded",
-            "exp2(p * log2(t)) with no guards: NaN/Inf pixels counted (nonfinite_pixels) and "
-            "drawn magenta"}},
-          [](const PathContext& ctx, const std::string& variant) -> std::unique_ptr<Path> {
-            return std::make_unique<HalfPath>(ctx, variant);
-          }};
+const PathInfo& half_path_info() {
+  static const HalfInfo info;
+  return info;
 }
 
 }  // namespace lt

@@ -4,5 +4,5 @@
 namespace lt {
 // The ground truth: a float G-buffer rasterised through OSMesa, shaded per pixel in double on the
 // CPU (model::shade) on every core.
-PathInfo reference_path_info();
+const PathInfo& reference_path_info();
 }  // namespace lt
