@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "gl/context.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
 #include "metrics/compare.h"
 #include "paths/combiners/combiners_path.h"

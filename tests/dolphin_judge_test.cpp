@@ -28,6 +28,7 @@
 #include <cstdio>
 
 #include "judge/dolphin_player.h"
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene.h"
 #include "test_util.h"

@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/module/module_exporter.h"

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "load/load_scene.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -35,7 +37,9 @@ const char* kGood = R"({
 class SceneFile : public ::testing::Test {
  protected:
   void SetUp() override { test::write_file(dir_ / "quad.obj", test::quad_obj()); }
-  Scene parse(const std::string& text) { return parse_scene(text, dir_ / "s.json", dir_.path()); }
+  Scene parse(const std::string& text) {
+    return load_scene(parse_scene(text, dir_ / "s.json", dir_.path()));
+  }
   // Replaces the first occurrence of `from` in the good scene.
   std::string edit(const std::string& from, const std::string& to) {
     std::string s = kGood;
