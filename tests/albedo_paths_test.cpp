@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "load/load_scene.h"
 #include "map_test_util.h"
+#include "model/texture_sampling.h"
 #include "paths/arbfp/arb_budget.h"
 #include "paths/combiners/combiner_budget.h"
 #include "paths/gx/generator.h"

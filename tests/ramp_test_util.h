@@ -15,6 +15,7 @@
 #include "load/thickness_map.h"
 #include "map_test_util.h"
 #include "metrics/compare.h"
+#include "model/texture_sampling.h"
 #include "render/session.h"
 
 namespace lt::test {

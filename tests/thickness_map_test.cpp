@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "load/load_scene.h"
 #include "map_test_util.h"
+#include "model/texture_sampling.h"
 #include "render/session.h"
 #include "scene/scene.h"
 #include "scene/scene_parse.h"
