@@ -8,6 +8,7 @@
 
 #include "advise/material_error.h"
 #include "core/build_paths.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/common/gbuffer.h"
 #include "paths/path.h"

@@ -13,6 +13,7 @@
 #include "advise/material_error.h"
 #include "advise/mesh_refinement.h"
 #include "core/build_paths.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"

@@ -1,8 +1,8 @@
-// Albedo maps as scene inputs (scene/albedo_map.h, scene/gltf/gltf_textures.h) and in the model:
+// Albedo maps as scene inputs (load/albedo_map.h, load/gltf/gltf_textures.h) and in the model:
 // what a file becomes (sRGB decoded, EXR linear), the wrap modes' taps, the JSON key's errors,
 // glTF's baseColorTexture with its sampler, texCoord and KHR_texture_transform, and the model's
 // product. No GL: the paths are tests/albedo_paths_test.cpp.
-#include "scene/albedo_map.h"
+#include "load/albedo_map.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "image/srgb.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
 #include "model/texture_sampling.h"
 #include "model/translucency.h"

@@ -1,4 +1,4 @@
-// An albedo map through every path (scene/albedo_map.h): a constant map of value a renders
+// An albedo map through every path (load/albedo_map.h): a constant map of value a renders
 // a x (the image without the map) up to each path's quantisation, with the bound derived from
 // the format (not measured and loosened); each path's budget shows the map's cost (one TEX, one
 // pass, one TEV stage and texture); what a path cannot take is refused with the scene's key. The
@@ -10,7 +10,9 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
+#include "model/texture_sampling.h"
 #include "paths/arbfp/arb_budget.h"
 #include "paths/combiners/combiner_budget.h"
 #include "paths/gx/generator.h"

@@ -10,6 +10,7 @@
 
 #include "arb_ir_query.h"
 #include "arb_test_util.h"
+#include "load/load_scene.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"
 #include "render/session.h"

@@ -13,6 +13,7 @@
 #include "arb_pass_util.h"
 #include "arb_test_util.h"
 #include "budget_test_util.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/arbfp/arb_generator.h"
 #include "paths/arbfp/arb_ir_counter.h"

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "test_util.h"
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "reference_cache.h"
 #include "render/session.h"

@@ -10,8 +10,10 @@
 #include <cstdio>
 
 #include "gl/context.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
 #include "metrics/compare.h"
+#include "model/texture_sampling.h"
 #include "paths/combiners/combiners_path.h"
 #include "paths/combiners/lobe_table.h"
 #include "ramp_test_util.h"

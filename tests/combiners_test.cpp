@@ -10,12 +10,14 @@
 
 #include "core/error.h"
 #include "gl/context.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/combiners/combiner_budget.h"
 #include "paths/combiners/combiner_program.h"
 #include "paths/combiners/combiners_path.h"
 #include "paths/combiners/texgen_matrix.h"
 #include "render/session.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -375,7 +377,8 @@ Scene sphere_scene(int s, const std::string& projection = "perspective", bool po
                            (point_light ? point : "") + R"( ],
     "objects": [ { "mesh": "sphere_s)" +
                            std::to_string(s) + R"(.ply", "material": "m" } ] })";
-  return parse_scene(text, "sphere_s" + std::to_string(s) + ".json", test::source_dir() / "meshes");
+  return load_scene(
+      parse_scene(text, "sphere_s" + std::to_string(s) + ".json", test::source_dir() / "meshes"));
 }
 
 TEST(CombinersTessellation, ErrorFallsAsTheSphereGetsFiner) {

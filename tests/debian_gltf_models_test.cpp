@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene.h"
 #include "test_util.h"

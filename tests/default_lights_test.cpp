@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gltf_test_util.h"
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene.h"
 

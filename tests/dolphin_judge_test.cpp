@@ -29,6 +29,7 @@
 
 #include "gx_module_host/host_module.h"
 #include "judge/dolphin_player.h"
+#include "load/load_scene.h"
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/module/module_exporter.h"

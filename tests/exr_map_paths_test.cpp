@@ -11,6 +11,7 @@
 
 #include "gl/context.h"
 #include "gl/map_texture.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
 #include "metrics/compare.h"
 #include "render/session.h"

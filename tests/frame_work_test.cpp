@@ -9,6 +9,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "load/load_scene.h"
 #include "paths/common/gbuffer.h"
 #include "render/session.h"
 #include "test_util.h"

@@ -22,6 +22,7 @@
 
 #include "core/error.h"
 #include "image/image.h"
+#include "load/load_scene.h"
 #include "mesh/mesh_io.h"
 #include "metrics/compare.h"
 #include "paths/path.h"

@@ -5,8 +5,9 @@
 
 #include "core/error.h"
 #include "gltf_test_util.h"
-#include "scene/gltf/gltf_lights.h"
-#include "scene/gltf/gltf_materials.h"
+#include "load/gltf/gltf_lights.h"
+#include "load/gltf/gltf_materials.h"
+#include "load/load_scene.h"
 #include "scene/scene.h"
 
 namespace lt {

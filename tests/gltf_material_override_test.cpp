@@ -5,8 +5,10 @@
 
 #include "core/error.h"
 #include "gltf_test_util.h"
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene.h"
+#include "scene/scene_parse.h"
 
 namespace lt {
 namespace {
@@ -44,7 +46,7 @@ class GltfMaterialOverride : public ::testing::Test {
             {"objects", {object}}};
   }
   Scene parse(const json& object) {
-    return parse_scene(scene_json(object).dump(), dir_ / "s.json", dir_.path());
+    return load_scene(parse_scene(scene_json(object).dump(), dir_ / "s.json", dir_.path()));
   }
   const Material& material_of(const Scene& s, std::size_t object) {
     return s.materials.at(static_cast<std::size_t>(s.objects.at(object).material));
@@ -97,7 +99,7 @@ TEST_F(GltfMaterialOverride, RendersAsTheSameSceneMaterialGivenWhole) {
   json jade = kJade;
   jade["albedo"] = {0.8, 0.6, 0.4};
   whole["materials"]["jade"] = jade;
-  const Scene given = parse_scene(whole.dump(), dir_ / "w.json", dir_.path());
+  const Scene given = load_scene(parse_scene(whole.dump(), dir_ / "w.json", dir_.path()));
   const Image a = render_scene(over, "reference", "", 64, 48);
   const Image b = render_scene(given, "reference", "", 64, 48);
   ASSERT_GT(a.at(32, 24)[0], 0.0f) << "backlit: the lobe alone lights it";

@@ -5,7 +5,9 @@
 
 #include "core/error.h"
 #include "gltf_test_util.h"
+#include "load/load_scene.h"
 #include "scene/scene.h"
+#include "scene/scene_parse.h"
 
 namespace lt {
 namespace {
@@ -28,7 +30,7 @@ class GltfObject : public ::testing::Test {
                     {"materials", {{"white", {{"albedo", {1, 1, 1}}}}}},
                     {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
                     {"objects", {object}}};
-    return parse_scene(s.dump(), dir_ / "s.json", dir_.path());
+    return load_scene(parse_scene(s.dump(), dir_ / "s.json", dir_.path()));
   }
   test::TempDir dir_;
 };

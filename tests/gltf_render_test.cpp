@@ -3,9 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "gltf_test_util.h"
+#include "load/gltf/gltf_lights.h"
+#include "load/gltf/gltf_materials.h"
+#include "load/load_scene.h"
 #include "render/session.h"
-#include "scene/gltf/gltf_lights.h"
-#include "scene/gltf/gltf_materials.h"
 #include "scene/scene.h"
 
 namespace lt {

@@ -1,11 +1,12 @@
 // Primitive modes (glTF 2.0 §3.7.2.1): strips and fans are the triangles the spec's formulas
 // give, and render exactly as the same quad written as a triangle list; points and lines are
 // skipped with one warning line, refused only when nothing else is left.
-#include "scene/gltf/gltf_topology.h"
+#include "load/gltf/gltf_topology.h"
 
 #include <gtest/gtest.h>
 
 #include "gltf_test_util.h"
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene.h"
 

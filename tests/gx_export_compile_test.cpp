@@ -9,6 +9,7 @@
 
 #include <sstream>
 
+#include "load/load_scene.h"
 #include "paths/path.h"
 #include "scene/scene.h"
 #include "test_util.h"

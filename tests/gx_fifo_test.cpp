@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "paths/gx/fifo/bp_registers.h"
 #include "paths/gx/fifo/cp_registers.h"
 #include "paths/gx/fifo/fifo_log.h"

@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "budget_test_util.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
 #include "metrics/compare.h"
 #include "render/session.h"

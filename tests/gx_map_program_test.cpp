@@ -8,8 +8,10 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "paths/gx/texture_unit.h"
 #include "render/session.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -25,7 +27,7 @@ Scene quad_scene(const test::TempDir& dir, bool uvs) {
     "materials": { "m": { "albedo": [1, 1, 1] } },
     "lights": [ { "type": "directional", "direction": [0, 0, -1], "intensity": 1 } ],
     "objects": [ { "mesh": "quad.obj", "material": "m" } ] })";
-  Scene scene = parse_scene(text, (dir / "quad.json").string(), dir.path());
+  Scene scene = load_scene(parse_scene(text, (dir / "quad.json").string(), dir.path()));
   if (uvs) {
     TriangleMesh& m = scene.objects[0].mesh;
     m.uvs.clear();

@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "load/load_scene.h"
 #include "gx_module_host/host_module.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"

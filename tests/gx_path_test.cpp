@@ -13,9 +13,11 @@
 #include "budget_test_util.h"
 #include "core/error.h"
 #include "gx_test_programs.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/gx/c_exporter.h"
 #include "render/session.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -45,7 +47,7 @@ Scene quad_scene(const test::TempDir& dir, const std::string& material_json, int
     "objects": [ { "mesh": ")" +
                            std::string(red < 0 ? "quad.obj" : "quad.ply") +
                            R"(", "material": "m" } ] })";
-  return parse_scene(text, (dir / "quad.json").string(), dir.path());
+  return load_scene(parse_scene(text, (dir / "quad.json").string(), dir.path()));
 }
 
 // Every covered pixel of `img` is exactly `rgb` (8-bit), and something is covered.

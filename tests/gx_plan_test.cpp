@@ -9,6 +9,7 @@
 #include <bit>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/program/interpreter.h"
 #include "paths/gx/program/parser.h"

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "gx_test_programs.h"
+#include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/program/interpreter.h"

@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_variant.h"
 #include "render/session.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -27,7 +29,7 @@ Scene off_axis_sphere() {
     "objects": [ { "mesh": "../meshes/sphere_s4.ply", "material": "m",
                    "transform": { "translate": [0.8, -0.3, 0.5], "scale": 0.5 } } ]
   })";
-  return parse_scene(text, "off_axis.json", test::source_dir() / "scenes");
+  return load_scene(parse_scene(text, "off_axis.json", test::source_dir() / "scenes"));
 }
 
 TEST(GxViewObject, TheTextureMatrixIsTheObjectCentresVAndL) {

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "image/image.h"
+#include "load/load_scene.h"
 #include "paths/gx/xfb_copy.h"
 #include "render/session.h"
 #include "test_util.h"

@@ -6,8 +6,10 @@
 
 #include <cmath>
 
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "render/session.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -106,7 +108,7 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
   const HalfQuadCase& c = GetParam();
   test::TempDir dir;
   test::write_file(dir / "quad.obj", test::quad_obj());
-  const Scene scene = parse_scene(quad_scene(c), dir / "quad.json", dir.path());
+  const Scene scene = load_scene(parse_scene(quad_scene(c), dir / "quad.json", dir.path()));
   const Rendered r = render_half(scene, c.variant);
   const bool marker = std::isnan(c.expected);
   EXPECT_EQ(r.stats.nonfinite_pixels.value(), marker ? 32.0 * 32.0 : 0.0);

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "image/image.h"
+#include "load/load_scene.h"
 #include "mesh/mesh_io.h"
 #include "scene/scene.h"
 #include "test_util.h"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "render/session.h"
 #include "test_util.h"

@@ -11,10 +11,12 @@
 
 #include "arb_test_util.h"
 #include "image/image.h"
+#include "load/load_scene.h"
+#include "load/thickness_map.h"
 #include "map_test_util.h"
 #include "metrics/compare.h"
+#include "model/texture_sampling.h"
 #include "render/session.h"
-#include "scene/thickness_map.h"
 
 namespace lt::test {
 

@@ -5,8 +5,10 @@
 
 #include <cmath>
 
+#include "load/load_scene.h"
 #include "model/translucency.h"
 #include "render/session.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -172,7 +174,7 @@ TEST_P(ReferenceQuad, EveryCoveredPixelHasTheHandComputedColour) {
   const QuadCase& c = GetParam();
   test::TempDir dir;
   test::write_file(dir / "quad.obj", test::quad_obj());
-  const Scene scene = parse_scene(quad_scene(c), dir / "quad.json", dir.path());
+  const Scene scene = load_scene(parse_scene(quad_scene(c), dir / "quad.json", dir.path()));
   const Image img = render_scene(scene, "reference", "");
   // The quad (side 2) fills the orthographic view (height 1): every pixel is covered.
   size_t covered = 0;

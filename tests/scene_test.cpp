@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "load/load_scene.h"
+#include "scene/scene_parse.h"
 #include "test_util.h"
 
 namespace lt {
@@ -35,7 +37,9 @@ const char* kGood = R"({
 class SceneFile : public ::testing::Test {
  protected:
   void SetUp() override { test::write_file(dir_ / "quad.obj", test::quad_obj()); }
-  Scene parse(const std::string& text) { return parse_scene(text, dir_ / "s.json", dir_.path()); }
+  Scene parse(const std::string& text) {
+    return load_scene(parse_scene(text, dir_ / "s.json", dir_.path()));
+  }
   // Replaces the first occurrence of `from` in the good scene.
   std::string edit(const std::string& from, const std::string& to) {
     std::string s = kGood;
@@ -53,6 +57,36 @@ class SceneFile : public ::testing::Test {
   }
   test::TempDir dir_;
 };
+
+// Parsing reads nothing the scene names (scene/scene_parse.h): a description of a scene whose
+// mesh and map are missing is made whole, the files resolved against the scene's folder; loading
+// it is what reads them, and names the scene's key of the first file missing.
+TEST_F(SceneFile, ParsingReadsNoFileTheSceneNamesLoadingDoes) {
+  const std::string text =
+      edit("\"plaster\": {\"albedo\": [0.7, 0.7, 0.7]}",
+           "\"plaster\": {\"albedo\": [0.7, 0.7, 0.7], \"albedo_map\": \"nowhere.png\"}");
+  const std::string missing_mesh = edit("\"mesh\": \"quad.obj\"", "\"mesh\": \"gone.obj\"");
+  const SceneDescription d = parse_scene(text, dir_ / "s.json", dir_.path());
+  ASSERT_EQ(d.materials.size(), 2u);
+  ASSERT_EQ(d.materials[1].maps.size(), 1u);
+  EXPECT_EQ(d.materials[1].maps[0].file, dir_.path() / "nowhere.png");
+  EXPECT_EQ(d.materials[1].maps[0].key, "materials.plaster.albedo_map");
+  EXPECT_FALSE(d.materials[1].material.albedo_map);  // not read
+  ASSERT_EQ(d.objects.size(), 1u);
+  EXPECT_EQ(d.objects[0].path, dir_.path() / "quad.obj");
+  const SceneDescription gone = parse_scene(missing_mesh, dir_ / "s.json", dir_.path());
+  EXPECT_EQ(gone.objects[0].path, dir_.path() / "gone.obj");
+  try {
+    load_scene(d);
+    ADD_FAILURE() << "a missing albedo map loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials.plaster.albedo_map: albedo map file not found"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NE(error_of(missing_mesh).find("objects[0].mesh: mesh file not found"), std::string::npos)
+      << error_of(missing_mesh);
+}
 
 TEST_F(SceneFile, GoodSceneParsesToWhatTheFileSays) {
   const Scene s = parse(kGood);

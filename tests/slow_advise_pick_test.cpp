@@ -15,6 +15,7 @@
 #include "advise/hard_cases.h"
 #include "advise/target.h"
 #include "core/build_paths.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "render/session.h"
 #include "scene/scene.h"

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 
+#include "load/load_scene.h"
 #include "render/camera_path.h"
 #include "render/evaluate.h"
 #include "test_util.h"

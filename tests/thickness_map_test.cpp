@@ -1,7 +1,7 @@
-// Thickness maps and lobe ramps as scene inputs (scene/thickness_map.h): what a file becomes
+// Thickness maps and lobe ramps as scene inputs (load/thickness_map.h): what a file becomes
 // (linear data, channel selection, orientation, float EXR), and every bad map as one error line
 // naming the scene, the key and the map, exit 2, nothing written.
-#include "scene/thickness_map.h"
+#include "load/thickness_map.h"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,12 @@
 #include <limits>
 
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "map_test_util.h"
+#include "model/texture_sampling.h"
 #include "render/session.h"
 #include "scene/scene.h"
+#include "scene/scene_parse.h"
 
 namespace lt {
 namespace {
@@ -26,7 +29,7 @@ class ThicknessMapFile : public ::testing::Test {
   }
   std::string error_of(const std::string& scene_text) {
     try {
-      parse_scene(scene_text, dir_ / "s.json", dir_.path());
+      load_scene(parse_scene(scene_text, dir_ / "s.json", dir_.path()));
     } catch (const InputError& e) {
       return e.what();
     }
@@ -139,9 +142,9 @@ TEST_F(ThicknessMapFile, RampIsOneRowHigh) {
   test::write_test_image(dir_ / "ramp.png", 4, 1, 3, std::vector<float>(12, 0.5f));
   test::write_test_image(dir_ / "tall.png", 4, 2, 1, std::vector<float>(8, 0.5f));
   test::write_test_image(dir_ / "rgb.png", 1, 1, 3, {0.5f, 0.5f, 0.5f});
-  const Scene s =
+  const Scene s = load_scene(
       parse_scene(test::map_scene(R"({"texture": "rgb.png"})", "uv_quad.gltf", "ramp.png"),
-                  dir_ / "s.json", dir_.path());
+                  dir_ / "s.json", dir_.path()));
   const Translucency& tr = *s.materials.at(0).translucency;
   ASSERT_TRUE(tr.ramp);
   EXPECT_EQ(tr.ramp->texture.width, 4);
@@ -187,8 +190,8 @@ TEST(GltfMaterialOverrideMap, AThicknessMapGivenByTheOverrideIsSampledAsAScenesO
   over["materials"] = json::object();
   over["objects"][0].erase("material");
   over["objects"][0]["materials"] = {{"*", own["materials"]["skin"]}};
-  const Scene a = parse_scene(own.dump(), dir / "own.json", dir.path());
-  const Scene b = parse_scene(over.dump(), dir / "over.json", dir.path());
+  const Scene a = load_scene(parse_scene(own.dump(), dir / "own.json", dir.path()));
+  const Scene b = load_scene(parse_scene(over.dump(), dir / "over.json", dir.path()));
   ASSERT_EQ(b.materials.at(0).translucency->thickness_source, ThicknessSource::Texture);
   for (const char* path : {"reference", "gx"}) {
     const Image want = render_scene(a, path, "", 64, 64);

@@ -13,6 +13,7 @@
 #include "advise/mesh_refinement.h"
 #include "advise/target.h"
 #include "core/error.h"
+#include "load/load_scene.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
 #include "render/session.h"

@@ -5,8 +5,8 @@
 
 #include "core/file_name.h"
 #include "core/fs.h"
+#include "load/gltf/gltf_document.h"
 #include "mesh/mesh_io.h"
-#include "scene/gltf/gltf_document.h"
 
 namespace lt::advise {
 

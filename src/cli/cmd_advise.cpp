@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "load/load_scene.h"
 
 namespace lt::cli {
 

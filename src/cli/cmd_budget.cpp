@@ -5,6 +5,7 @@
 #include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "load/load_scene.h"
 #include "paths/budget/report.h"
 #include "paths/path.h"
 

@@ -4,6 +4,7 @@
 #include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "load/load_scene.h"
 #include "paths/gx/c_exporter.h"
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/gx_budget.h"

@@ -2,6 +2,8 @@
 
 #include "cli/commands.h"
 #include "cli/lights_option.h"
+#include "load/load_scene.h"
+#include "model/texture_sampling.h"
 #include "render/session.h"
 
 namespace lt::cli {

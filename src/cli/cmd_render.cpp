@@ -6,6 +6,7 @@
 #include "core/fs.h"
 #include "image/image.h"
 #include "judge/dolphin_player.h"
+#include "load/load_scene.h"
 #include "mesh/reader_support.h"
 #include "render/session.h"
 

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene/scene.h"
+#include "load/load_scene.h"
 
 namespace lt::cli {
 

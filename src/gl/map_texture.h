@@ -1,4 +1,4 @@
-// A thickness map, a lobe ramp (scene/thickness_map.h) or an albedo map (scene/albedo_map.h) as
+// A thickness map, a lobe ramp (load/thickness_map.h) or an albedo map (load/albedo_map.h) as
 // a GL texture: GL_TEXTURE_2D, GL_LINEAR without mipmaps, GL_CLAMP_TO_EDGE (an albedo map: its
 // sampler's wrap), the texels uploaded in the widest format the
 // path's hardware class filters (row 0 = v = 0, model/texture_sampling.h), so GL's sampling is
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "gl/context.h"
-#include "scene/thickness_map.h"
+#include "model/texture_sampling.h"
 
 namespace lt::gl {
 

@@ -1,34 +1,20 @@
-// A texture as the GL paths upload it, and GL_LINEAR sampling of it in double: what the
-// reference reads a thickness map (and an artist's lobe ramp) with, and what every other path's
-// own sampling is judged against.
-//
-// Orientation: v = 0 is the BOTTOM row of the image, v = 1 the top (OpenGL's convention, and
-// the one the UV baker writes maps in). The texels are stored in that order too (row 0 is the
-// image's bottom row), which is the order glTexImage2D takes them in, so a GL path uploads
-// `texels` as they are.
+// GL_LINEAR sampling in double of a texture as the GL paths upload it (scene/texture_map.h, which
+// gives its orientation: v = 0 is the image's bottom row): what the reference reads a thickness
+// map (and an artist's lobe ramp) with, and what every other path's own sampling is judged
+// against.
 #pragma once
 
 #include <glm/glm.hpp>
-#include <vector>
+
+#include "scene/texture_map.h"
 
 namespace lt::model {
 
-// What a coordinate beyond [0, 1] reads (GL_TEXTURE_WRAP_S/T; a glTF sampler's wrapS/wrapT
-// names the same three GL enums [glTF 2.0 spec 3.8.4 Samplers]). Thickness maps and ramps are
-// always ClampToEdge; an albedo map from a glTF sampler may repeat.
-enum class Wrap { ClampToEdge, Repeat, MirroredRepeat };
+// The texture's data and wrap modes are the scene's (scene/texture_map.h); the names here are
+// the ones the model and the paths use.
+using Wrap = TextureWrap;
+using Texture = lt::Texture;
 const char* wrap_name(Wrap wrap);  // "CLAMP_TO_EDGE", "REPEAT", "MIRRORED_REPEAT"
-
-struct Texture {
-  int width = 0, height = 0;
-  std::vector<float> texels;  // width * height * 3 (rgb), row 0 = bottom row of the image (v = 0)
-  Wrap wrap_s = Wrap::ClampToEdge, wrap_t = Wrap::ClampToEdge;
-
-  glm::dvec3 texel(int x, int y) const {
-    const float* t = &texels[(static_cast<size_t>(y) * width + x) * 3];
-    return {t[0], t[1], t[2]};
-  }
-};
 
 // The four texels and two weights of GL_LINEAR at (u, v): texel i's centre is at
 // u = (i + 0.5) / W, so the texel-space position is x = u W - 0.5 (likewise y = v H - 0.5).

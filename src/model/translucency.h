@@ -52,7 +52,7 @@ struct SurfacePoint {
 };
 
 // The diffuse albedo at uv: the material's albedo, times its albedo map bilinearly sampled in
-// double with the map's wrap modes (scene/albedo_map.h) when it has one.
+// double with the map's wrap modes (load/albedo_map.h) when it has one.
 glm::dvec3 diffuse_albedo(const Material& material, glm::dvec2 uv);
 
 // The thickness T of model.md: (vertex colour, the map bilinearly sampled at uv in double, or the

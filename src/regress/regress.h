@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "regress/regress_case.h"
 #include "regress/shard.h"

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/frame_stats.h"
 #include "paths/path.h"

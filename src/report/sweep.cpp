@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "load/load_scene.h"
 #include "render/camera_path.h"
 #include "render/evaluate.h"
 #include "render/session.h"

@@ -1,5 +1,7 @@
-// The scene of scene-format.md, validated. A scene names only what it uses, and every stage a
-// path builds is derived from it (see SceneNeeds), so nothing is built for a feature it lacks.
+// The scene of scene-format.md, validated and loaded (load/load_scene.h: its meshes in world
+// space, its maps read): what every path draws. A scene names only what it uses, and every stage
+// a path builds is derived from it (see SceneNeeds), so nothing is built for a feature it lacks.
+// Plain data: nothing here reads a file.
 #pragma once
 
 #include <filesystem>
@@ -10,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/thickness_map.h"
+#include "scene/texture_map.h"
 #include "scene/triangle_mesh.h"
 
 namespace lt {
@@ -29,7 +31,7 @@ struct Camera {
   glm::dmat4 view_from_origin() const;
 };
 
-// Texture: a thickness map sampled at the mesh's UVs (scene/thickness_map.h).
+// Texture: a thickness map sampled at the mesh's UVs (load/thickness_map.h).
 enum class ThicknessSource { Vertex, Constant, Texture };
 
 struct Translucency {
@@ -49,7 +51,7 @@ struct Material {
   std::string name;
   glm::dvec3 albedo{1, 1, 1};
   // Set: the diffuse albedo is `albedo` times this map at the mesh's UVs (linear rgb, decoded
-  // from sRGB: scene/albedo_map.h), the seed's cDiffuseAlbedo read from a texture.
+  // from sRGB: load/albedo_map.h), the seed's cDiffuseAlbedo read from a texture.
   std::shared_ptr<const TextureMap> albedo_map;
   std::optional<Translucency> translucency;  // absent: plain diffuse, no translucency stage
 };
@@ -112,23 +114,6 @@ struct Scene {
   // What load_scene added when the scene had no light (scene/default_lights.h); empty: none.
   std::string default_lights;
 };
-
-struct SceneOptions {
-  std::string camera;  // glTF scenes: the camera (or its node) to look through, by name
-  // A scene with no light and no ambient light gets the default rig (scene/default_lights.h);
-  // `--lights none` turns this off and the scene renders unlit, as it says.
-  bool default_lights = true;
-};
-
-// Parses, validates and loads every mesh. Throws InputError naming the file and the key
-// (e.g. "materials.marble.translucency.power") or the line of a JSON syntax error. A .gltf or
-// .glb is imported as a whole scene (scene/gltf/gltf_scene.h), its errors naming the JSON
-// pointer; every command that takes a scene goes through here.
-Scene load_scene(const std::filesystem::path& path, const SceneOptions& options = {});
-
-// Parses a scene from text (for tests); meshes are resolved relative to `base_dir`.
-Scene parse_scene(const std::string& text, const std::filesystem::path& file_for_errors,
-                  const std::filesystem::path& base_dir);
 
 // What a scene uses, derived once, shared by every path and by `ltrender info`.
 struct SceneNeeds {

@@ -1,5 +1,5 @@
 // The bounds every scene obeys, whatever file it came from (a scene JSON, a glTF file): one
-// list, read by scene.cpp and by the glTF importer (scene/gltf/), so both refuse the same values.
+// list, read by scene.cpp and by the glTF importer (load/gltf/), so both refuse the same values.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 // Renderer-ready triangles: plain arrays in double, what every path draws. mesh/mesh_io.h makes
-// them from mesh files and scene/gltf/ from glTF primitives; nothing here depends on the mesh
+// them from mesh files and load/gltf/ from glTF primitives; nothing here depends on the mesh
 // library.
 #pragma once
 

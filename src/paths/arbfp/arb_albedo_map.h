@@ -1,4 +1,4 @@
-// An albedo map in the ARB programs (scene/albedo_map.h): one TEX (2D, texture unit 2) at the
+// An albedo map in the ARB programs (load/albedo_map.h): one TEX (2D, texture unit 2) at the
 // mesh's UVs times the material's albedo, the colour the final MUL applies. Kept apart from the
 // generator's light loop, like the thickness map (arb_thickness_map.h), whose UV varying it reads.
 #pragma once

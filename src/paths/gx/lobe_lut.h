@@ -11,7 +11,7 @@
 namespace lt::gx {
 
 // t^power as GX_TF_I8 (a material without translucency: the flat lobe of power 0). A lobe ramp
-// (scene/thickness_map.h) replaces t^power by the ramp at t_i (model::sample_ramp, linear between
+// (load/thickness_map.h) replaces t^power by the ramp at t_i (model::sample_ramp, linear between
 // its texel centres, as the reference reads it): GX_TF_I8 for a grey ramp, GX_TF_RGBA8 for a
 // coloured one, whose TEXC = (r, g, b) tints stage 0's lerp per channel.
 TextureObject lobe_lut(const Material& material, int width);

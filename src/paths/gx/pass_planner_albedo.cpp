@@ -1,4 +1,4 @@
-// The planner's albedo map (scene/albedo_map.h): GX_TEXMAP2's texture, one more texgen at the
+// The planner's albedo map (load/albedo_map.h): GX_TEXMAP2's texture, one more texgen at the
 // mesh's UVs, and the map multiplied into each part of the pass's sum before the sum is formed.
 //
 // The map scales everything the pass adds (the diffuse channel, the translucency and pass 0's

@@ -44,7 +44,7 @@ struct ThicknessTexture {
 ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb, bool grey,
                                    bool rgb565);
 
-// A material's thickness map as the scene loaded it (scene/thickness_map.h): float rgb texels,
+// A material's thickness map as the scene loaded it (load/thickness_map.h): float rgb texels,
 // row 0 the image's bottom row; empty when the material's thickness is not a map.
 struct MapTexels {
   int width = 0, height = 0;

@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_notes.h"
+#include "load/gltf/gltf_notes.h"
 
 #include <algorithm>
 #include <cmath>

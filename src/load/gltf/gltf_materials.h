@@ -2,9 +2,9 @@
 // the term's Material; docs/scenes-and-gltf.md's glTF table gives each row and its reason.
 #pragma once
 
-#include "scene/gltf/gltf_document.h"
-#include "scene/gltf/gltf_notes.h"
-#include "scene/gltf/gltf_textures.h"
+#include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_notes.h"
+#include "load/gltf/gltf_textures.h"
 #include "scene/scene.h"
 
 namespace lt::gltf {

@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_textures.h"
+#include "load/gltf/gltf_textures.h"
 
 #include <unistd.h>
 
@@ -7,7 +7,8 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "scene/albedo_map.h"
+#include "load/albedo_map.h"
+#include "model/texture_sampling.h"
 
 namespace lt::gltf {
 
@@ -16,13 +17,13 @@ using json = nlohmann::json;
 
 // A sampler's wrapS/wrapT: the GL enums glTF names [glTF 2.0 spec 3.8.4 Samplers]; REPEAT when
 // absent.
-model::Wrap wrap_of(const Document& doc, const json& sampler, const char* key,
+TextureWrap wrap_of(const Document& doc, const json& sampler, const char* key,
                     const std::string& pointer) {
-  if (!sampler.contains(key)) return model::Wrap::Repeat;
+  if (!sampler.contains(key)) return TextureWrap::Repeat;
   const json& v = sampler[key];
-  if (v == 33071) return model::Wrap::ClampToEdge;
-  if (v == 33648) return model::Wrap::MirroredRepeat;
-  if (v == 10497) return model::Wrap::Repeat;
+  if (v == 33071) return TextureWrap::ClampToEdge;
+  if (v == 33648) return TextureWrap::MirroredRepeat;
+  if (v == 10497) return TextureWrap::Repeat;
   doc.fail(
       pointer + "/" + key,
       "must be 33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 (REPEAT), not " + v.dump());
@@ -127,7 +128,7 @@ BaseColourTexture read_base_colour_texture(const Document& doc, const std::strin
     doc.fail(tp + "/source", "no such image");
   const std::string ip = "/images/" + std::to_string(source);
 
-  model::Wrap wrap_s = model::Wrap::Repeat, wrap_t = model::Wrap::Repeat;
+  TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
   if (texture.contains("sampler")) {
     const int si = doc.model.textures[static_cast<size_t>(index)].sampler;
     if (si < 0 || si >= static_cast<int>(doc.model.samplers.size()))

@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_topology.h"
+#include "load/gltf/gltf_topology.h"
 
 #include <tiny_gltf.h>
 

@@ -1,4 +1,4 @@
-#include "scene/thickness_map.h"
+#include "load/thickness_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +10,6 @@
 #include "scene/scene_limits.h"
 
 namespace lt {
-
-bool is_thickness_channels(const std::string& channels) {
-  return std::find(std::begin(kThicknessChannels), std::end(kThicknessChannels), channels) !=
-         std::end(kThicknessChannels);
-}
 
 namespace {
 
@@ -72,7 +67,7 @@ std::shared_ptr<TextureMap> load_texture_map(const std::filesystem::path& file,
     map->grey = true;
     source[0] = source[1] = source[2] = c;
   }
-  model::Texture& t = map->texture;
+  Texture& t = map->texture;
   t.width = image.width;
   t.height = image.height;
   t.texels.resize(image.pixel_count() * 3);

@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_accessor.h"
+#include "load/gltf/gltf_accessor.h"
 
 #include <algorithm>
 #include <cstring>

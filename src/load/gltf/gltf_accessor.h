@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf/gltf_document.h"
+#include "load/gltf/gltf_document.h"
 
 namespace lt::gltf {
 

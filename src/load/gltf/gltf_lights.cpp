@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_lights.h"
+#include "load/gltf/gltf_lights.h"
 
 #include <algorithm>
 #include <cmath>

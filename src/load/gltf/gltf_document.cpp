@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_document.h"
+#include "load/gltf/gltf_document.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,5 +1,5 @@
 // A glTF material's baseColorTexture (glTF 2.0 §3.9.2, textureInfo §5.22, texture §5.29, image
-// §3.8.3, sampler §3.8.4) as the material's albedo map (scene/albedo_map.h), and where its
+// §3.8.3, sampler §3.8.4) as the material's albedo map (load/albedo_map.h), and where its
 // coordinates come from: the texCoord set and KHR_texture_transform's offset, rotation and scale,
 // which the importer applies to the primitive's UVs (an affine map of the UVs is exact on the
 // interpolated coordinates, so the paths need no texture matrix).
@@ -9,9 +9,9 @@
 #include <memory>
 #include <optional>
 
-#include "scene/gltf/gltf_document.h"
-#include "scene/gltf/gltf_notes.h"
-#include "scene/thickness_map.h"
+#include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_notes.h"
+#include "load/thickness_map.h"
 
 namespace lt::gltf {
 

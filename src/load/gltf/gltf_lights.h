@@ -4,8 +4,8 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/gltf/gltf_document.h"
-#include "scene/gltf/gltf_notes.h"
+#include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_notes.h"
 #include "scene/scene.h"
 
 namespace lt::gltf {

@@ -1,10 +1,10 @@
-#include "scene/gltf/gltf_geometry.h"
+#include "load/gltf/gltf_geometry.h"
 
 #include <cmath>
 
-#include "scene/gltf/gltf_accessor.h"
-#include "scene/gltf/gltf_notes.h"
-#include "scene/gltf/gltf_topology.h"
+#include "load/gltf/gltf_accessor.h"
+#include "load/gltf/gltf_notes.h"
+#include "load/gltf/gltf_topology.h"
 #include "scene/scene_limits.h"
 
 namespace lt::gltf {

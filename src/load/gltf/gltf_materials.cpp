@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_materials.h"
+#include "load/gltf/gltf_materials.h"
 
 #include <cmath>
 #include <limits>

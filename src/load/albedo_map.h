@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "scene/thickness_map.h"
+#include "load/thickness_map.h"
 
 namespace lt {
 
@@ -22,7 +22,7 @@ namespace lt {
 // clamp to the edge, like thickness maps).
 std::shared_ptr<TextureMap> load_albedo_map(const std::filesystem::path& file,
                                             const std::string& scene_file, const std::string& key,
-                                            model::Wrap wrap_s = model::Wrap::ClampToEdge,
-                                            model::Wrap wrap_t = model::Wrap::ClampToEdge);
+                                            TextureWrap wrap_s = TextureWrap::ClampToEdge,
+                                            TextureWrap wrap_t = TextureWrap::ClampToEdge);
 
 }  // namespace lt

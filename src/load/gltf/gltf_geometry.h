@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf/gltf_document.h"
-#include "scene/gltf/gltf_textures.h"
+#include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_textures.h"
 #include "scene/triangle_mesh.h"
 
 namespace lt::gltf {

@@ -1,10 +1,10 @@
-#include "scene/albedo_map.h"
+#include "load/albedo_map.h"
 
 namespace lt {
 
 std::shared_ptr<TextureMap> load_albedo_map(const std::filesystem::path& file,
                                             const std::string& scene_file, const std::string& key,
-                                            model::Wrap wrap_s, model::Wrap wrap_t) {
+                                            TextureWrap wrap_s, TextureWrap wrap_t) {
   std::shared_ptr<TextureMap> map =
       load_texture_map(file, "rgb", scene_file, key, "albedo map", TexelEncoding::Srgb);
   map->texture.wrap_s = wrap_s;

@@ -1,0 +1,217 @@
+#include "load/gltf/gltf_scene.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+#include "load/gltf/gltf_cameras.h"
+#include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_importer.h"
+#include "load/gltf/gltf_notes.h"
+
+namespace lt::gltf {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// The product of a node's ancestors' transforms (glTF 2.0 §3.5.3: world = parent's world x
+// local), found through the children lists.
+glm::dmat4 ancestors_matrix(const Document& doc, int node) {
+  glm::dmat4 m(1.0);
+  for (int depth = 0; depth < 1024; ++depth) {
+    int parent = -1;
+    for (std::size_t p = 0; p < doc.model.nodes.size() && parent < 0; ++p) {
+      const auto& ch = doc.model.nodes[p].children;
+      if (std::find(ch.begin(), ch.end(), node) != ch.end()) parent = static_cast<int>(p);
+    }
+    if (parent < 0) return m;
+    m = local_matrix(doc.model.nodes[static_cast<std::size_t>(parent)]) * m;
+    node = parent;
+  }
+  doc.fail("/nodes/" + std::to_string(node), "the node hierarchy is deeper than 1024 (a cycle?)");
+}
+
+// The roots of the scene to render: §3.5.2 names it by `scene`; without it the spec leaves the
+// choice to the application, and the first is taken.
+const std::vector<int>& scene_roots(const Document& doc, int& scene_index) {
+  if (doc.model.scenes.empty()) doc.fail("/scenes", "the file has no scene to render");
+  scene_index = doc.model.defaultScene >= 0 ? doc.model.defaultScene : 0;
+  if (scene_index >= static_cast<int>(doc.model.scenes.size())) doc.fail("/scene", "no such scene");
+  return doc.model.scenes[static_cast<std::size_t>(scene_index)].nodes;
+}
+
+// The one warning line of a file whose point or line primitives were skipped (empty: none), and
+// the refusal when nothing else was left to draw.
+std::string skip_warning(const Document& doc, const std::vector<std::string>& skipped) {
+  if (skipped.empty()) return "";
+  std::string list;
+  for (std::size_t i = 0; i < skipped.size() && i < 3; ++i) list += (i ? ", " : "") + skipped[i];
+  if (skipped.size() > 3) list += " and " + std::to_string(skipped.size() - 3) + " more";
+  return doc.path.string() + ": skipped " + std::to_string(skipped.size()) +
+         (skipped.size() == 1 ? " primitive" : " primitives") +
+         " without a surface (points and lines are not shaded): " + list;
+}
+[[noreturn]] void refuse_nothing_left(const Document& doc, const Importer& im) {
+  doc.fail(im.first_skipped_mode,
+           im.first_skipped_name +
+               " carry no surface (points and lines are not shaded), and no triangles are left "
+               "to draw (" +
+               std::to_string(im.skipped.size()) + " skipped)");
+}
+
+// A file the JSON scene imports, read once however many objects take it: its materials are
+// mapped once (two objects of one file share them; appended twice they would be two materials
+// of one name, listed twice by `info` and refused by gx's C names), and a note it gives once.
+struct ImportedFile {
+  Document doc;
+  // As Importer::material_of, kept between its objects, per set of overrides (overrides_json).
+  std::map<std::string, std::map<int, int>> material_of;
+  std::set<std::string> notes;
+};
+
+// Every override names a material the file has ("*" always does).
+void check_override_selectors(const ObjectDescription& object, const Document& doc,
+                              const std::string& scene_file) {
+  const auto& materials = doc.model.materials;
+  for (const MaterialOverride& o : object.overrides) {
+    if (o.selector == "*") continue;
+    const bool named =
+        std::any_of(materials.begin(), materials.end(),
+                    [&](const tinygltf::Material& m) { return m.name == o.selector; });
+    const int index = o.selector.rfind('#', 0) == 0 ? hash_index(o.selector) : -1;
+    if (named || (index >= 0 && index < static_cast<int>(materials.size()))) continue;
+    std::string names;
+    for (std::size_t m = 0; m < materials.size() && m < 8; ++m)
+      names += (m ? ", " : "") + (materials[m].name.empty() ? "#" + std::to_string(m)
+                                                            : json(materials[m].name).dump());
+    if (materials.size() > 8) names += ", ...";
+    throw InputError(scene_file, o.key,
+                     "no material named \"" + o.selector + "\" (nor #N, N < " +
+                         std::to_string(materials.size()) + ") in " + object.path.string() +
+                         " (its materials: " + (names.empty() ? "none" : names) + ")");
+  }
+}
+
+void import_object(const ObjectDescription& object, ImportedFile& file,
+                   const std::string& scene_file, Scene& scene) {
+  const Document& doc = file.doc;
+  const std::size_t first_note = scene.import_notes.size();
+  check_override_selectors(object, doc, scene_file);
+  Importer im{doc, scene, file.material_of[object.overrides_json], {}, 0};
+  im.overrides = &object.overrides;
+  for (const SceneObject& o : scene.objects) im.vertices += o.mesh.positions.size();
+  im.import_lights = false;
+  im.material_override = object.material;
+  const std::size_t first = scene.objects.size();
+  if (object.node.empty()) {
+    int scene_index = 0;
+    for (int root : scene_roots(doc, scene_index)) im.visit(root, object.transform.matrix(), 0);
+  } else {
+    int found = -1;
+    for (std::size_t n = 0; n < doc.model.nodes.size() && found < 0; ++n) {
+      if (doc.model.nodes[n].name == object.node) found = static_cast<int>(n);
+    }
+    if (found < 0)
+      throw InputError(scene_file, object.key + ".node",
+                       "no node named \"" + object.node + "\" in " + object.path.string());
+    im.visit(found, object.transform.matrix() * ancestors_matrix(doc, found), 0);
+  }
+  if (scene.objects.size() == first && !im.skipped.empty()) refuse_nothing_left(doc, im);
+  const std::string warning = skip_warning(doc, im.skipped);
+  if (!warning.empty() && file.notes.insert(warning).second) scene.warnings.push_back(warning);
+  if (scene.objects.size() == first)
+    throw InputError(
+        scene_file, object.key,
+        "no mesh under " +
+            (object.node.empty() ? std::string("the scene") : "node \"" + object.node + "\"") +
+            " of " + object.path.string());
+  for (std::size_t i = first; i < scene.objects.size(); ++i)
+    scene.objects[i].transform = Transform{};
+  file.material_of[object.overrides_json] = im.material_of;
+  // The file's notes once: a second object of the file repeats what the first one noted.
+  auto kept = scene.import_notes.begin() + static_cast<std::ptrdiff_t>(first_note);
+  for (auto it = kept; it != scene.import_notes.end(); ++it) {
+    if (!file.notes.insert(*it).second) continue;
+    if (kept != it) *kept = std::move(*it);
+    ++kept;
+  }
+  scene.import_notes.erase(kept, scene.import_notes.end());
+}
+
+}  // namespace
+
+void import_objects(const std::vector<ObjectDescription>& objects, const std::string& scene_file,
+                    Scene& scene) {
+  std::map<fs::path, ImportedFile> files;
+  for (const ObjectDescription& object : objects) {
+    if (object.source != ObjectDescription::Source::Gltf) continue;
+    auto it = files.find(object.path.lexically_normal());
+    if (it == files.end()) {
+      it = files
+               .emplace(object.path.lexically_normal(),
+                        ImportedFile{read_document(object.path), {}, {}})
+               .first;
+      for (const std::string& w : it->second.doc.warnings) {
+        if (it->second.notes.insert(w).second) scene.import_notes.push_back(w);
+      }
+    }
+    import_object(object, it->second, scene_file, scene);
+  }
+}
+
+Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
+  const Document doc = read_document(path);
+  Scene scene;
+  scene.file = path;
+  scene.width = kDefaultWidth;
+  scene.height = kDefaultHeight;
+  Importer im{doc, scene, {}, {}, 0};
+  scene.import_notes.insert(scene.import_notes.end(), doc.warnings.begin(), doc.warnings.end());
+
+  int scene_index = 0;
+  for (int root : scene_roots(doc, scene_index)) im.visit(root, glm::dmat4(1.0), 0);
+  for (std::size_t s = 0; s < doc.model.scenes.size(); ++s) {
+    if (static_cast<int>(s) != scene_index)
+      scene.import_notes.push_back("ignored /scenes/" + std::to_string(s) +
+                                   ": not the scene to render");
+  }
+  if (scene.objects.empty() && !im.skipped.empty()) refuse_nothing_left(doc, im);
+  if (scene.objects.empty())
+    doc.fail("/scenes/" + std::to_string(scene_index), "the scene has no mesh to render");
+  if (!im.skipped.empty()) scene.warnings.push_back(skip_warning(doc, im.skipped));
+
+  if (!camera.empty()) {
+    camera_from(doc, chosen_camera(doc, im.cameras, camera), scene);
+  } else if (!im.cameras.empty()) {
+    camera_from(doc, im.cameras.front(), scene);
+  } else {
+    framing_camera(scene);
+  }
+  if (scene.lights.empty())
+    scene.import_notes.push_back(
+        "no KHR_lights_punctual light in the scene (`info`'s lights line says what lights it)");
+
+  // Textures, images and samplers are read through a base colour texture (its own notes say
+  // which); without one they are listed as ignored.
+  const bool sampled = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                   [](const Material& m) { return m.albedo_map != nullptr; });
+  if (sampled) {
+    note_unmapped_keys(doc.json, "",
+                       {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews",
+                        "buffers", "textures", "images", "samplers", "materials", "cameras",
+                        "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+                       "not used by the term", scene.import_notes);
+  } else {
+    note_unmapped_keys(
+        doc.json, "",
+        {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
+         "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+        "not used by the term", scene.import_notes);
+  }
+  return scene;
+}
+
+}  // namespace lt::gltf
