@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "image/image.h"
+#include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_variant.h"
