@@ -17,8 +17,8 @@
 #include <set>
 #include <sstream>
 
-#include "load/load_scene.h"
 #include "gx_module_host/host_module.h"
+#include "load/load_scene.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"
 #include "paths/gx/generator.h"

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "../test_util.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/module/runtime/ltrender_gx_runtime.h"
 #include "paths/gx/program/gx_name_table.h"
 #include "paths/gx/program/pass_programs.h"
 #include "render/camera_path.h"
 #include "scene/scene.h"
-#include "../test_util.h"
 
 namespace lt::gx::test_module {
 
