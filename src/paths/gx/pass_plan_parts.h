@@ -3,6 +3,7 @@
 // fit; pass_planner_albedo.cpp: the albedo map and its stage). Internal to the generator.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -15,6 +16,15 @@ namespace lt::gx {
 
 // The TEV and XF scales: x1, x2, x4 (GX_CS_SCALE_*). Magnitudes up to 4 are exact.
 inline constexpr double kMaxScale = 4;
+
+// A directional light is a point light this far away in eye space: libogc's own "large number"
+// for lights at infinity [OGC gx.c L23-25, GX_InitSpecularDir], small enough that |v|^2 (1e36)
+// stays finite in float.
+inline constexpr double kFarAway = 1.0e18;
+
+inline double max3(const glm::dvec3& v) {
+  return std::max({v.r, v.g, v.b});
+}
 
 // The smallest of x1, x2, x4 that holds `magnitude`; 4 where even that is too small.
 int scale_for(double magnitude);

@@ -20,17 +20,8 @@ namespace lt::gx {
 
 namespace {
 
-// A directional light is a point light this far away in eye space: libogc's own "large number"
-// for lights at infinity [OGC gx.c L23-25, GX_InitSpecularDir], small enough that |v|^2 (1e36)
-// stays finite in float.
-constexpr double kFarAway = 1.0e18;
-
 // How far past the silhouette (N.V < 0) a vertex still counts as possibly seen.
 constexpr double kBackFacing = 0.2;
-
-double max3(const glm::dvec3& v) {
-  return std::max({v.r, v.g, v.b});
-}
 
 // What the lights do at the vertices of one material, in double (the generator's CPU side):
 // the largest attenuation, and the largest diffuse sum, to choose the scales.

@@ -15,13 +15,6 @@ namespace lt::gx {
 
 namespace {
 
-// A directional light at libogc's "large number" (pass_planner.cpp, [OGC gx.c L23-25]).
-constexpr double kFarAway = 1.0e18;
-
-double max3(const glm::dvec3& v) {
-  return std::max({v.r, v.g, v.b});
-}
-
 // lobe=xf-spec: x = max(0, N . u) with u = -+k in eye space (the sign that makes x >= 0 on
 // front faces, where N . V >= 0), so t = c0 + sign x with x in [0, |d|]; the curve
 // (a + s lobe(sat(t))) / (a + s) is fitted as a rational of x in double. V and L are the
