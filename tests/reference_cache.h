@@ -11,7 +11,6 @@
 // run without that variable renders its own reference, as before.
 #pragma once
 
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
