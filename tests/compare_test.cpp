@@ -94,7 +94,7 @@ TEST(CompareMetrics, RoundedReferenceIsWithinHalfAnLsb) {
   EXPECT_EQ(cmp.image.percent_over_1_lsb, 0.0);
   EXPECT_EQ(cmp.image.pixels, 97u * 13u);
   EXPECT_EQ(cmp.covered.pixels, 97u * 13u);
-  EXPECT_TRUE(judge(cmp, Tolerance{}).pass);
+  EXPECT_TRUE(apply_tolerance(cmp, Tolerance{}).pass);
 }
 
 TEST(CompareMetrics, SinglePixelOffsetGivesKnownFigures) {
@@ -129,7 +129,7 @@ TEST(CompareMetrics, IdenticalImagesHaveInfinitePsnr) {
   EXPECT_TRUE(std::isinf(cmp.image.psnr_db));
   EXPECT_TRUE(std::isinf(cmp.covered.psnr_db));
   // JSON has no infinity: null, as compare.h documents.
-  const auto j = to_json(cmp, Tolerance{}, judge(cmp, Tolerance{}));
+  const auto j = to_json(cmp, Tolerance{}, apply_tolerance(cmp, Tolerance{}));
   EXPECT_TRUE(j["image"]["psnr_db"].is_null());
   EXPECT_TRUE(j["thresholds"]["hard_fail_lsb"].is_null());
 }
@@ -207,10 +207,10 @@ TEST(CompareMetrics, EmptyCoverageHasNoFigures) {
   EXPECT_EQ(cmp.covered.max_channel, -1);
   EXPECT_EQ(cmp.covered.max_lsb, 0.0);
   EXPECT_DOUBLE_EQ(cmp.image.max_lsb, 255.0);
-  EXPECT_TRUE(judge(cmp, Tolerance{}).pass);  // nothing covered, nothing to fail
+  EXPECT_TRUE(apply_tolerance(cmp, Tolerance{}).pass);  // nothing covered, nothing to fail
   Tolerance whole;
   whole.region = Region::kImage;
-  EXPECT_FALSE(judge(cmp, whole).pass);
+  EXPECT_FALSE(apply_tolerance(cmp, whole).pass);
 }
 
 TEST(CompareMetrics, NonFiniteTestPixelsAreCountedAndLeftOut) {
@@ -230,7 +230,7 @@ TEST(CompareMetrics, NonFiniteTestPixelsAreCountedAndLeftOut) {
   Tolerance lenient;
   lenient.fail_lsb = 255.0;
   lenient.fail_percent = 100.0;
-  const Verdict v = judge(cmp, lenient);
+  const Verdict v = apply_tolerance(cmp, lenient);
   EXPECT_FALSE(v.pass);
   ASSERT_EQ(v.reasons.size(), 1u);
   EXPECT_NE(v.reasons[0].find("non-finite"), std::string::npos);
@@ -248,14 +248,14 @@ Comparison one_pixel_off(int lsb) {
 }
 
 TEST(CompareJudge, FailLsbIsStrictlyGreater) {
-  const Comparison cmp = one_pixel_off(1);  // exactly 1.0 LSB
-  Verdict v = judge(cmp, Tolerance{});      // default: fail_lsb 1, fail_percent 0
+  const Comparison cmp = one_pixel_off(1);        // exactly 1.0 LSB
+  Verdict v = apply_tolerance(cmp, Tolerance{});  // default: fail_lsb 1, fail_percent 0
   EXPECT_TRUE(v.pass);
   EXPECT_EQ(v.failing_pixels, 0u);
 
   Tolerance tight;
   tight.fail_lsb = 0.99;
-  v = judge(cmp, tight);
+  v = apply_tolerance(cmp, tight);
   EXPECT_FALSE(v.pass);
   EXPECT_EQ(v.failing_pixels, 1u);
   EXPECT_DOUBLE_EQ(v.failing_percent, 6.25);
@@ -266,12 +266,12 @@ TEST(CompareJudge, FailPercentBoundary) {
   const Comparison cmp = one_pixel_off(10);  // 1 of 16 pixels = 6.25% over 1 LSB
   Tolerance t;
   t.fail_percent = 6.25;
-  EXPECT_TRUE(judge(cmp, t).pass);  // "more than P percent" fails, exactly P passes
+  EXPECT_TRUE(apply_tolerance(cmp, t).pass);  // "more than P percent" fails, exactly P passes
   t.fail_percent = 6.2;
-  EXPECT_FALSE(judge(cmp, t).pass);
+  EXPECT_FALSE(apply_tolerance(cmp, t).pass);
   t.fail_percent = 0.0;
   t.fail_lsb = 10.0;
-  EXPECT_TRUE(judge(cmp, t).pass);
+  EXPECT_TRUE(apply_tolerance(cmp, t).pass);
 }
 
 TEST(CompareJudge, HardFailIsAnyPixel) {
@@ -279,9 +279,9 @@ TEST(CompareJudge, HardFailIsAnyPixel) {
   Tolerance t;
   t.fail_percent = 100.0;
   t.hard_fail_lsb = 10.0;
-  EXPECT_TRUE(judge(cmp, t).pass);
+  EXPECT_TRUE(apply_tolerance(cmp, t).pass);
   t.hard_fail_lsb = 9.99;
-  const Verdict v = judge(cmp, t);
+  const Verdict v = apply_tolerance(cmp, t);
   EXPECT_FALSE(v.pass);
   EXPECT_EQ(v.hard_failing_pixels, 1u);
   ASSERT_EQ(v.reasons.size(), 1u);
@@ -295,9 +295,9 @@ TEST(CompareJudge, RegionPicksWhichPixelsAreJudged) {
   test.at(1, 0)[0] = byte(50);
   const Comparison cmp = compare_images(test, ref, TestEncoding::kUnorm8);
   Tolerance t;
-  EXPECT_TRUE(judge(cmp, t).pass);
+  EXPECT_TRUE(apply_tolerance(cmp, t).pass);
   t.region = Region::kImage;
-  const Verdict v = judge(cmp, t);
+  const Verdict v = apply_tolerance(cmp, t);
   EXPECT_FALSE(v.pass);
   EXPECT_DOUBLE_EQ(v.failing_percent, 50.0);
 }
@@ -411,7 +411,7 @@ TEST_F(CompareFiles, IdenticalEightBitFilesHaveNoErrorAndNoMaxLocation) {
     EXPECT_EQ(s->max_channel, -1);
     EXPECT_EQ(s->max_x, -1);
   }
-  const Verdict v = judge(cmp, Tolerance{});
+  const Verdict v = apply_tolerance(cmp, Tolerance{});
   const std::string table = to_table(cmp, Tolerance{}, v);
   EXPECT_NE(table.find("PSNR dB                   inf            inf"), std::string::npos) << table;
   EXPECT_NE(table.find("  at x,y ch                 -              -"), std::string::npos) << table;
@@ -426,7 +426,7 @@ TEST_F(CompareFiles, IdenticalEightBitFilesHaveNoErrorAndNoMaxLocation) {
   write_image(path("step.png"), step);
   const Comparison one = compare_files(path("step.png"), path("a.png"));
   EXPECT_EQ(one.image.max_lsb, 1.0);
-  EXPECT_EQ(judge(one, Tolerance{}).failing_pixels, 0u);
+  EXPECT_EQ(apply_tolerance(one, Tolerance{}).failing_pixels, 0u);
 }
 
 TEST_F(CompareFiles, ReferenceWithoutAlphaIsAllCovered) {

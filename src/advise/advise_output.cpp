@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/file_name.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 #include "paths/gx/c_exporter.h"
 #include "paths/gx/gx_budget.h"
@@ -16,19 +17,14 @@ namespace lt::advise {
 
 namespace {
 
-std::string fixed(double v, int digits = 2) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
 std::string cost_text(const Cost& c) {
   return fixed(c.ops, 0) + " ops" +
          (c.texture_bytes > 0 ? " + " + fixed(c.texture_bytes, 0) + " B" : "");
 }
 
 std::string error_text(const ErrorStats& e) {
-  return "max " + fixed(e.max_lsb) + ", p99 " + fixed(e.p99_lsb) + ", mean " + fixed(e.mean_lsb);
+  return "max " + fixed(e.max_lsb, 2) + ", p99 " + fixed(e.p99_lsb, 2) + ", mean " +
+         fixed(e.mean_lsb, 2);
 }
 
 // How the pick compares with the path's default for one material.
@@ -46,7 +42,7 @@ std::string against_default(const Advice& a, size_t m, size_t pick) {
          "%) and " + fixed(d.cost[m].texture_bytes - p.cost[m].texture_bytes, 0) + " texture bytes";
 }
 
-nlohmann::ordered_json error_json(const ErrorStats& e) {
+nlohmann::ordered_json error_summary_json(const ErrorStats& e) {
   return {{"max", e.max_lsb}, {"p99", e.p99_lsb}, {"mean", e.mean_lsb}};
 }
 
@@ -64,8 +60,8 @@ std::string to_text(const Advice& a) {
   std::ostringstream out;
   const AdviseOptions& o = a.options;
   out << "advise: " << o.scene_file.string() << " on " << o.profile << " (path " << a.path
-      << "), budget " << fixed(o.max_lsb) << " LSB " << to_string(o.stat) << ", " << a.width << "x"
-      << a.height << "\n";
+      << "), budget " << fixed(o.max_lsb, 2) << " LSB " << to_string(o.stat) << ", " << a.width
+      << "x" << a.height << "\n";
   size_t pruned = 0, excluded = 0;
   for (const CandidateResult& c : a.candidates) {
     pruned += c.pruned.empty() ? 0 : 1;
@@ -98,7 +94,7 @@ std::string to_text(const Advice& a) {
            {std::pair{"adaptive", &r.adaptive}, std::pair{"uniform", &r.uniform}}) {
         out << "    " << name << ":";
         for (const RefinementStep& s : *steps)
-          out << " " << s.vertices << ": " << fixed(stat_of(s.error, o.stat));
+          out << " " << s.vertices << ": " << fixed(stat_of(s.error, o.stat), 2);
         out << "\n";
       }
       for (size_t i : r.tried)
@@ -194,7 +190,7 @@ nlohmann::ordered_json to_json(const Advice& a) {
         nlohmann::ordered_json out = nlohmann::ordered_json::array();
         for (const RefinementStep& s : v)
           out.push_back({{"vertices", s.vertices},
-                         {"error", error_json(s.error)},
+                         {"error", error_summary_json(s.error)},
                          {"non_finite_pixels", s.non_finite}});
         return out;
       };
@@ -219,7 +215,7 @@ nlohmann::ordered_json to_json(const Advice& a) {
       jc["ops"] = c.cost[m].ops;
       jc["texture_bytes"] = c.cost[m].texture_bytes;
       jc["rendered"] = c.rendered;
-      jc["error"] = c.rendered ? error_json(c.error[m]) : nlohmann::ordered_json(nullptr);
+      jc["error"] = c.rendered ? error_summary_json(c.error[m]) : nlohmann::ordered_json(nullptr);
       jc["non_finite_pixels"] = c.non_finite[m];
       jc["refused"] = c.refused;
       jc["over_profile"] = c.over_profile;

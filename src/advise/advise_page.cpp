@@ -6,17 +6,12 @@
 #include <limits>
 #include <sstream>
 
+#include "core/fixed.h"
 #include "core/markup.h"
 
 namespace lt::advise {
 
 namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
 
 // Chart geometry, in SVG units.
 constexpr double kW = 640, kH = 320, kLeft = 70, kRight = 20, kTop = 20, kBottom = 50;
@@ -121,9 +116,9 @@ std::string chart(const Advice& a, const MaterialAdvice& ma) {
   s << "<text x=\"" << (kLeft + kW - kRight) / 2 << "\" y=\"" << kH - 12
     << "\" text-anchor=\"middle\">operations a frame" << (axis.log ? " (log)" : "") << "</text>\n";
   for (double t : cost_ticks(axis)) {
-    s << "<line x1=\"" << num(x(t)) << "\" y1=\"" << kH - kBottom << "\" x2=\"" << num(x(t))
-      << "\" y2=\"" << kH - kBottom + 5 << "\" stroke=\"#444\"/>\n";
-    s << "<text class=\"tick\" x=\"" << num(x(t)) << "\" y=\"" << kH - kBottom + 18
+    s << "<line x1=\"" << fixed(x(t), 1) << "\" y1=\"" << kH - kBottom << "\" x2=\""
+      << fixed(x(t), 1) << "\" y2=\"" << kH - kBottom + 5 << "\" stroke=\"#444\"/>\n";
+    s << "<text class=\"tick\" x=\"" << fixed(x(t), 1) << "\" y=\"" << kH - kBottom + 18
       << "\" text-anchor=\"middle\">" << tick_label(t) << "</text>\n";
   }
   s << "<text x=\"14\" y=\"" << (kTop + kH - kBottom) / 2 << "\" transform=\"rotate(-90 14 "
@@ -141,7 +136,7 @@ std::string chart(const Advice& a, const MaterialAdvice& ma) {
   std::string points;
   for (size_t i : ma.front) {
     const CandidateResult& c = a.candidates[i];
-    points += num(x(c.cost[m].ops)) + "," + num(y(stat_of(c.error[m], stat))) + " ";
+    points += fixed(x(c.cost[m].ops), 1) + "," + fixed(y(stat_of(c.error[m], stat)), 1) + " ";
   }
   s << "<polyline class=\"front-line\" fill=\"none\" stroke=\"#26a\" points=\"" << points
     << "\"/>\n";
@@ -163,17 +158,17 @@ std::string chart(const Advice& a, const MaterialAdvice& ma) {
       << (pick       ? "pick"
           : on_front ? "on-front"
                      : "candidate")
-      << "\" cx=\"" << num(x(c.cost[m].ops)) << "\" cy=\"" << num(y(e)) << "\" r=\""
+      << "\" cx=\"" << fixed(x(c.cost[m].ops), 1) << "\" cy=\"" << fixed(y(e), 1) << "\" r=\""
       << (pick ? 7 : 4) << "\" fill=\""
       << (pick       ? "#d22"
           : on_front ? "#26a"
                      : "#aaa")
-      << "\"><title>" << markup_escape(c.candidate.variant) << ": " << num(c.cost[m].ops)
-      << " ops, " << num(c.cost[m].texture_bytes) << " texture bytes, " << to_string(stat) << " "
-      << num(e) << " LSB</title></circle>\n";
+      << "\"><title>" << markup_escape(c.candidate.variant) << ": " << fixed(c.cost[m].ops, 1)
+      << " ops, " << fixed(c.cost[m].texture_bytes, 1) << " texture bytes, " << to_string(stat)
+      << " " << fixed(e, 1) << " LSB</title></circle>\n";
     if (pick) {
-      s << "<text class=\"pick-label\" x=\"" << num(x(c.cost[m].ops) + 10) << "\" y=\""
-        << num(y(e) - 10) << "\">" << markup_escape(c.candidate.variant) << "</text>\n";
+      s << "<text class=\"pick-label\" x=\"" << fixed(x(c.cost[m].ops) + 10, 1) << "\" y=\""
+        << fixed(y(e) - 10, 1) << "\">" << markup_escape(c.candidate.variant) << "</text>\n";
     }
   }
   s << "</svg>\n";
@@ -189,7 +184,7 @@ std::string pick_words(const Advice& a, const MaterialAdvice& ma) {
     const Refinement& r = *ma.refinement;
     return "pick: <b>" + markup_escape(a.candidates[r.candidate].candidate.variant) +
            "</b> on a refined mesh, +" + std::to_string(r.vertices_added()) + " vertices, max " +
-           num(r.pick_step().error.max_lsb) +
+           fixed(r.pick_step().error.max_lsb, 1) +
            " LSB (the chart shows the variants on the scene's own mesh)";
   }
   return "no candidate within the budget";

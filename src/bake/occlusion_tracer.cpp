@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 
 namespace lt::bake {
 
@@ -97,6 +98,13 @@ glm::dvec2 unit_circle(double turns) {
   const double phi = 2.0 * std::numbers::pi * turns;
   return {std::cos(phi), std::sin(phi)};
 }
+
+}  // namespace
+
+// Named, not anonymous: OcclusionTracer::Impl (declared in the header) holds an EmbreeScene, and
+// GCC warns (-Wsubobject-linkage) when such a member's type is in an anonymous namespace of a
+// file it takes for a header -- which every file of the unity build is (CMakeLists.txt).
+namespace embree_raii {
 
 // ---------------------------------------------------------------------------------------------
 // Embree, with RAII and errors collected from its callback.
@@ -191,6 +199,10 @@ class EmbreeScene {
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
 };
+
+}  // namespace embree_raii
+
+namespace {
 
 // ---------------------------------------------------------------------------------------------
 // Per-point work.
@@ -290,10 +302,6 @@ struct Tracer {
   }
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 struct OcclusionTracer::Impl {
@@ -307,7 +315,7 @@ struct OcclusionTracer::Impl {
   int threads = 1;
   double build_seconds = 0.0;
   double trace_seconds = 0.0;
-  std::optional<EmbreeScene> embree;
+  std::optional<embree_raii::EmbreeScene> embree;
   std::vector<glm::dvec2> azimuths;  // the stratified sampler's, once per bake
 };
 
@@ -375,7 +383,7 @@ std::vector<double> OcclusionTracer::trace(const std::vector<RayOrigin>& origins
     return occlusion;
   }
   if (!m.embree) {
-    const auto build_start = std::chrono::steady_clock::now();
+    const auto build_start = SteadyClock::now();
     m.embree.emplace(m.relative, m.triangles, m.threads);
     m.build_seconds = seconds_since(build_start);
     if (m.settings.sampler == Sampler::Stratified) {
@@ -414,7 +422,7 @@ std::vector<double> OcclusionTracer::trace(const std::vector<RayOrigin>& origins
     }
   };
 
-  const auto trace_start = std::chrono::steady_clock::now();
+  const auto trace_start = SteadyClock::now();
   {
     std::vector<std::jthread> workers;
     for (int i = 1; i < m.threads; ++i) workers.emplace_back(work, false);

@@ -14,11 +14,6 @@ namespace lt::bake {
 
 namespace {
 
-bool usable(const glm::dvec3& v) {
-  const double len = glm::length(v);
-  return std::isfinite(len) && len > 0.0;
-}
-
 // Vertices with bit-identical positions share one id, ids numbered in sorted position order.
 // Sorting, not hashing, so that -0.0 and 0.0 weld like they do geometrically.
 struct Welding {
@@ -48,6 +43,11 @@ Welding weld_by_position(const std::vector<glm::dvec3>& positions) {
 }
 
 }  // namespace
+
+bool usable_normal(const glm::dvec3& n) {
+  const double len = glm::length(n);
+  return std::isfinite(len) && len > 0.0;
+}
 
 // ---------------------------------------------------------------------------------------------
 
@@ -82,22 +82,22 @@ BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t g = weld.id[v];
     representative[g] = std::min(representative[g], static_cast<std::uint32_t>(v));
-    if (usable(normals[v])) normal_sum[g] += glm::normalize(normals[v]);
+    if (usable_normal(normals[v])) normal_sum[g] += glm::normalize(normals[v]);
   }
   // Fallback where no copy has a usable normal: the area-weighted normal of the faces around the
   // position (a cross product's length is twice its triangle's area).
   bool any_missing = false;
-  for (const auto& n : normal_sum) any_missing = any_missing || !usable(n);
+  for (const auto& n : normal_sum) any_missing = any_missing || !usable_normal(n);
   if (any_missing) {
     std::vector<glm::dvec3> face_sum(ng, glm::dvec3(0.0));
     for (const auto& t : triangles) {
       const glm::dvec3 n =
           glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]);
-      if (!usable(n)) continue;
+      if (!usable_normal(n)) continue;
       for (const unsigned v : {t.x, t.y, t.z}) face_sum[weld.id[v]] += n;
     }
     for (std::size_t g = 0; g < ng; ++g) {
-      if (!usable(normal_sum[g])) normal_sum[g] = face_sum[g];
+      if (!usable_normal(normal_sum[g])) normal_sum[g] = face_sum[g];
     }
   }
   // The positions to trace, in the order of their first vertex, each seeded by that vertex's
@@ -107,7 +107,7 @@ BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,
   std::vector<RayOrigin> origins;
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t g = weld.id[v];
-    if (!usable(normal_sum[g])) {
+    if (!usable_normal(normal_sum[g])) {
       ++result.vertices_without_normal;
     } else if (representative[g] == v) {
       tasks.push_back(g);

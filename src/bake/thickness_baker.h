@@ -29,6 +29,10 @@
 
 namespace lt::bake {
 
+// Whether a vertex normal gives a direction to bake along (finite and not zero); both bakers
+// skip or repair the others.
+bool usable_normal(const glm::dvec3& n);
+
 struct BakeResult {
   std::vector<double> occlusion;            // per vertex, in [0, 1], 1 = thin (see Estimator)
   double max_distance = 0.0;                // D actually used, scene units

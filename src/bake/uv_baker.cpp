@@ -9,15 +9,6 @@
 
 namespace lt::bake {
 
-namespace {
-
-bool usable(const glm::dvec3& v) {
-  const double len = glm::length(v);
-  return std::isfinite(len) && len > 0.0;
-}
-
-}  // namespace
-
 UvBakeResult bake_uv(const std::vector<glm::dvec3>& positions,
                      const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec2>& uvs,
                      const std::vector<glm::uvec3>& triangles, const BakeSettings& settings,
@@ -40,7 +31,7 @@ UvBakeResult bake_uv(const std::vector<glm::dvec3>& positions,
   // Unit normals, zero where the file has none (they then add nothing to the blend).
   std::vector<glm::dvec3> unit(normals.size(), glm::dvec3(0.0));
   for (std::size_t v = 0; v < normals.size(); ++v) {
-    if (usable(normals[v])) unit[v] = glm::normalize(normals[v]);
+    if (usable_normal(normals[v])) unit[v] = glm::normalize(normals[v]);
   }
   std::vector<RayOrigin> origins;
   std::vector<std::size_t> texel_of;  // per origin
@@ -52,10 +43,10 @@ UvBakeResult bake_uv(const std::vector<glm::dvec3>& positions,
     const glm::dvec3& b = coverage.barycentric[i];
     const glm::dvec3 p = b.x * positions[t.x] + b.y * positions[t.y] + b.z * positions[t.z];
     glm::dvec3 n = b.x * unit[t.x] + b.y * unit[t.y] + b.z * unit[t.z];
-    if (!usable(n)) {
+    if (!usable_normal(n)) {
       n = glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]);
     }
-    if (!usable(n)) {
+    if (!usable_normal(n)) {
       ++result.texels_without_normal;
       continue;
     }

@@ -21,6 +21,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/stopwatch.h"
 #include "image/image.h"
 #include "mesh/mesh_io.h"
 
@@ -183,10 +184,6 @@ void warn_about_edges(const std::string& mesh, const bake::EdgeReport& edges) {
   }
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 double mrays_per_second(std::uint64_t rays, double seconds) {
   return seconds > 0.0 ? static_cast<double>(rays) / seconds / 1e6 : 0.0;
 }
@@ -202,7 +199,7 @@ int run_vertex_bake(const BakeOptions& o, const bake::BakeSettings& settings,
   for (const auto& w : loaded.warnings) warn(o.mesh, w);
 
   ProgressBar bar;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   const bake::MeshBakeReport report =
       bake::bake_mesh(loaded.mesh, settings, map, o.smooth,
                       [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });
@@ -264,7 +261,7 @@ int run_texture_bake(const BakeOptions& o, const bake::BakeSettings& settings,
   }
 
   ProgressBar bar;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   const bake::UvBakeResult r = bake::bake_uv(
       mesh.positions, mesh.normals, mesh.uvs, mesh.triangles, settings, size.width, size.height,
       o.margin, [&bar](std::size_t done, std::size_t total) { bar.update(done, total); });

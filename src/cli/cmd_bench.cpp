@@ -66,7 +66,10 @@ std::string pin_to_core(const std::string& spec, bool& pinned) {
   }
   if (!pin_process_to_core(core)) {
     std::string list;
-    for (int c : allowed) list += (list.empty() ? "" : ",") + std::to_string(c);
+    for (int c : allowed) {
+      if (!list.empty()) list += ',';  // appended piecewise: GCC 12 warns falsely (-Wrestrict)
+      list += std::to_string(c);       // on "" + std::string in the unity build
+    }
     throw InputError("--pin-core", "",
                      "core " + spec + " is not one this process may use (" + list + ")");
   }

@@ -72,7 +72,7 @@ int run_compare(const CompareOptions& opt) {
   }
 
   const Comparison comparison = compare_files(opt.test, opt.reference);
-  const Verdict verdict = judge(comparison, tolerance);
+  const Verdict verdict = apply_tolerance(comparison, tolerance);
 
   // Written on pass and on fail (a failing comparison is when it is wanted), never on bad input:
   // every InputError above is thrown before this point.

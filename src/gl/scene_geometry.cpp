@@ -135,4 +135,10 @@ size_t SceneGeometry::total_triangles() const {
   return n;
 }
 
+void stream_array_buffer(GLuint buffer, const std::vector<float>& data) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STREAM_DRAW);
+}
+
 }  // namespace lt::gl

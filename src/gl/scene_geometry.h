@@ -59,4 +59,8 @@ class SceneGeometry {
   glm::dmat4 projection_, view_;
 };
 
+// Replaces an array buffer's contents with vertex data made on the CPU every frame (the combiners
+// and gx paths light per vertex there), leaving it bound.
+void stream_array_buffer(GLuint buffer, const std::vector<float>& data);
+
 }  // namespace lt::gl

@@ -51,7 +51,7 @@ namespace {
 
 // "WxH", or "WxHxD" for a volume. Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a
 // chained operator+ starting with a short literal.
-std::string size_text(const ImageFileSpec& spec) {
+std::string dimensions_text(const ImageFileSpec& spec) {
   std::string s = std::to_string(spec.width);
   s.append("x").append(std::to_string(spec.height));
   if (spec.depth > 1) s.append("x").append(std::to_string(spec.depth));
@@ -78,7 +78,7 @@ class CheckedInput {
     // 40000 x 40000 pixels (13.7 GB as float RGB).
     const long long pixels = static_cast<long long>(spec.width) * spec.height;
     if (pixels > kMaxImagePixels || spec.depth > 1) {
-      fail("header claims " + size_text(spec) + " pixels, over the limit of " +
+      fail("header claims " + dimensions_text(spec) + " pixels, over the limit of " +
            std::to_string(kMaxImagePixels) + " (4096^2) pixels");
     }
   }

@@ -28,7 +28,6 @@
 
 namespace lt {
 
-using namespace meshio;
 using OpenMesh::IO::Options;
 
 namespace {
@@ -36,6 +35,7 @@ namespace {
 const char* const kReadable = ".ply, .obj, .off, .stl, .stla, .stlb, .om";
 
 LoadedMesh read_mesh_unguarded(const fs::path& path) {
+  using namespace meshio;  // in the function: the core is a unity build (CMakeLists.txt)
   const std::string file = path.string();
   // Regular files within the size cap only, before anything opens it (the OM reader in its
   // child opens it by name).
@@ -151,10 +151,10 @@ TriangleMesh load_triangle_mesh(const fs::path& path) {
 
 void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options,
                 const std::vector<ExtraVertexProperty>& extras) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = meshio::lower_extension(path);
   if (ext == ".ply") {
-    write_atomically(path,
-                     [&](const fs::path& tmp) { write_ply(tmp, path, mesh, options, extras); });
+    write_atomically(
+        path, [&](const fs::path& tmp) { meshio::write_ply(tmp, path, mesh, options, extras); });
     return;
   }
   if (!extras.empty()) {
@@ -170,7 +170,7 @@ void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options,
         "unknown mesh format '" + ext + "' (writable: .ply, .obj, .off, .om, .stl, .vtk)");
   }
   write_atomically(path, [&](const fs::path& tmp) {
-    OpenMeshLogCapture capture;
+    meshio::OpenMeshLogCapture capture;
     // 17 significant digits: OpenMesh's default of 6 would move a vertex at 1e6 by up to 0.5.
     if (!OpenMesh::IO::write_mesh(mesh, tmp.string(), options, 17)) {
       const std::string why = capture.last_line();
@@ -194,7 +194,7 @@ void write_triangle_mesh(const fs::path& path, const TriangleMesh& m) {
     if (!m.uvs.empty()) mesh.set_texcoord2D(vh, to_om(m.uvs[i]));
   }
   {
-    OpenMeshLogCapture capture;  // add_face reports a complex edge on its log, then refuses
+    meshio::OpenMeshLogCapture capture;  // add_face reports a complex edge on its log, then refuses
     for (const glm::uvec3& t : m.triangles) {
       const auto fh = mesh.add_face(OpenMesh::VertexHandle(static_cast<int>(t[0])),
                                     OpenMesh::VertexHandle(static_cast<int>(t[1])),

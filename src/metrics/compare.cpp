@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/fixed.h"
 
 namespace lt {
 
@@ -109,7 +110,7 @@ std::string format(const char* fmt, double v) {
 }
 
 std::string lsb_string(double v) {
-  return std::isfinite(v) ? format("%.3f", v) : "inf";
+  return std::isfinite(v) ? fixed(v, 3) : "inf";
 }
 
 std::string location_string(const ErrorStats& s) {
@@ -188,7 +189,7 @@ Comparison compare_images(const Image& test, const Image& reference, TestEncodin
   return out;
 }
 
-Verdict judge(const Comparison& comparison, const Tolerance& tolerance) {
+Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance) {
   LT_CHECK(
       tolerance.fail_lsb >= 0.0 && tolerance.fail_percent >= 0.0 && tolerance.hard_fail_lsb >= 0.0,
       "tolerances must be >= 0 (the CLI rejects others as bad input)");
@@ -312,8 +313,8 @@ std::string to_table(const Comparison& comparison, const Tolerance& tolerance,
   row("RMSE", lsb_string(c.rmse_lsb), lsb_string(a.rmse_lsb));
   row("PSNR dB", lsb_string(c.psnr_db), lsb_string(a.psnr_db));
   row("p99", lsb_string(c.p99_lsb), lsb_string(a.p99_lsb));
-  row("% > 1 LSB", format("%.3f", c.percent_over_1_lsb), format("%.3f", a.percent_over_1_lsb));
-  row("% > 4 LSB", format("%.3f", c.percent_over_4_lsb), format("%.3f", a.percent_over_4_lsb));
+  row("% > 1 LSB", fixed(c.percent_over_1_lsb, 3), fixed(a.percent_over_1_lsb, 3));
+  row("% > 4 LSB", fixed(c.percent_over_4_lsb, 3), fixed(a.percent_over_4_lsb, 3));
   out += "non-finite test values: " + std::to_string(comparison.test_non_finite) + "\n";
   out += std::string("thresholds (") + to_string(tolerance.region) + " pixels): fail if > " +
          format("%g", tolerance.fail_percent) + "% have error > " +

@@ -103,7 +103,7 @@ struct Verdict {
 Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding,
                           TestEncoding reference_encoding = TestEncoding::kFloat);
 
-Verdict judge(const Comparison& comparison, const Tolerance& tolerance);
+Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance);
 
 // The encoding of an image file, from OpenImageIO's spec: 8-bit formats are kUnorm8, anything
 // wider is kFloat. Throws InputError naming the file if it cannot be opened.

@@ -4,17 +4,12 @@
 #include <map>
 #include <sstream>
 
+#include "core/fixed.h"
 #include "core/markup.h"
 
 namespace lt {
 
 namespace {
-
-std::string seconds(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", s);
-  return buf;
-}
 
 struct Counts {
   size_t tests = 0, failures = 0, skipped = 0;
@@ -28,14 +23,14 @@ struct Counts {
   std::string attributes() const {
     return "tests=\"" + std::to_string(tests) + "\" failures=\"" + std::to_string(failures) +
            "\" errors=\"0\" skipped=\"" + std::to_string(skipped) + "\" time=\"" +
-           lt::seconds(seconds) + "\"";
+           lt::fixed(seconds, 3) + "\"";
   }
 };
 
 void write_testcase(std::ostringstream& x, const CaseResult& r) {
   const RegressCase& c = r.regress_case;
   x << "    <testcase classname=\"regress." << markup_escape(c.scene) << "\" name=\""
-    << markup_escape(c.path->name + ":" + c.variant) << "\" time=\"" << seconds(r.seconds) << "\"";
+    << markup_escape(c.path->name + ":" + c.variant) << "\" time=\"" << fixed(r.seconds, 3) << "\"";
   if (!is_failure(r.status) && r.status != CaseStatus::kSkipped) {
     x << "/>\n";
     return;

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/fixed.h"
 #include "core/fs.h"
+#include "core/stopwatch.h"
 #include "metrics/heatmap.h"
 #include "render/evaluate.h"
 #include "render/session.h"
@@ -14,12 +15,6 @@
 namespace lt {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // The figures, then the verdict's reasons. A reason states its own figures (the failing share,
 // the max and where it is), so the figures line leaves out what a reason states: each figure
@@ -123,7 +118,7 @@ Plan make_plan(const RegressOptions& o) {
 // writes the golden. The report's images are written when there is a report dir.
 CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& session,
                     const RegressCase& c) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   CaseResult r;
   r.regress_case = c;
   r.golden = o.goldens / c.golden_name();
@@ -155,7 +150,7 @@ CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& se
     }
   }
   if (comparison) {
-    r.verdict = judge(*comparison, c.tolerance);
+    r.verdict = apply_tolerance(*comparison, c.tolerance);
     r.figures = c.tolerance.region == Region::kCovered ? comparison->covered : comparison->image;
     r.comparison_json = to_json(*comparison, c.tolerance, r.verdict);
     r.details = to_table(*comparison, c.tolerance, r.verdict);
@@ -243,7 +238,7 @@ std::string update_command(const RegressOptions& o, const RegressCase& c,
 }
 
 RegressRun run_regress(const RegressOptions& o) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   const Plan plan = make_plan(o);
   RegressRun run;
   run.shard = o.shard;

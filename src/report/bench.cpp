@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/file_name.h"
 #include "core/fs.h"
+#include "core/stopwatch.h"
 #include "metrics/heatmap.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
@@ -31,17 +32,15 @@ PathOptions profile_options(const PathInfo& p, const BenchOptions& o) {
   return out;
 }
 
-using Clock = std::chrono::steady_clock;
-
 // Each figure a path reports, over the timed frames.
 using StatSamples = std::array<std::vector<double>, FrameStats::kFields.size()>;
 
 // One frame in milliseconds: it is over when the GL work is, not when the calls return.
 double timed_frame(Path& path) {
-  const auto t0 = Clock::now();
+  const auto t0 = SteadyClock::now();
   path.frame();
   glFinish();
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return std::chrono::duration<double, std::milli>(SteadyClock::now() - t0).count();
 }
 
 void collect_stats(const Path& path, StatSamples& stats) {

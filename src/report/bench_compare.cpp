@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 
 namespace lt {
@@ -13,12 +14,6 @@ namespace {
 
 std::string row_key(const std::string& scene, const std::string& path, const std::string& v) {
   return scene + " | " + path + " | " + v;
-}
-
-std::string num(double v) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.3f", v);
-  return s;
 }
 
 }  // namespace
@@ -103,10 +98,12 @@ std::string comparison_markdown(const EarlierBench& before, const BenchCompariso
     s << "| scene | path | variant | before | now | change |\n|---|---|---|---|---|---|\n";
     for (const auto& r : c.changed) {
       const double pct = r.before.median > 0 ? 100 * (r.after.median / r.before.median - 1) : 0;
-      s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | " << num(r.before.median)
-        << " (" << num(r.before.low) << "-" << num(r.before.high) << ") | " << num(r.after.median)
-        << " (" << num(r.after.low) << "-" << num(r.after.high) << ") | "
-        << (r.slower() ? "slower " : "faster ") << (pct >= 0 ? "+" : "") << num(pct) << "% |\n";
+      s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
+        << fixed(r.before.median, 3) << " (" << fixed(r.before.low, 3) << "-"
+        << fixed(r.before.high, 3) << ") | " << fixed(r.after.median, 3) << " ("
+        << fixed(r.after.low, 3) << "-" << fixed(r.after.high, 3) << ") | "
+        << (r.slower() ? "slower " : "faster ") << (pct >= 0 ? "+" : "") << fixed(pct, 3)
+        << "% |\n";
     }
   }
   return s.str();

@@ -4,22 +4,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/fixed.h"
 #include "load/load_scene.h"
 #include "render/camera_path.h"
 #include "render/evaluate.h"
 #include "render/session.h"
 
 namespace lt {
-
-namespace {
-
-std::string lsb(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
-}  // namespace
 
 std::vector<SweepRow> run_sweep(const SweepOptions& o) {
   const PathInfo& info = find_path(o.path);
@@ -83,7 +74,8 @@ std::string sweep_markdown(const std::vector<SweepRow>& rows) {
       o << "refused | | |\n";
       continue;
     }
-    o << lsb(r.max_lsb) << " | " << lsb(r.mean_lsb) << " | " << lsb(r.p99_lsb) << " |\n";
+    o << fixed(r.max_lsb, 2) << " | " << fixed(r.mean_lsb, 2) << " | " << fixed(r.p99_lsb, 2)
+      << " |\n";
   }
   return o.str();
 }

@@ -164,7 +164,7 @@ PlyHeader parse_ply_header(const std::string& data, const std::string& file) {
 }
 
 template <typename T>
-double load(const unsigned char* bytes) {
+double load_as_double(const unsigned char* bytes) {
   T v;
   std::memcpy(&v, bytes, sizeof v);
   return static_cast<double>(v);
@@ -219,21 +219,21 @@ class PlyBody {
     if (format_ == PlyFormat::BinaryBig) std::reverse(b, b + n);  // to native (little) order
     switch (type) {
       case PlyType::Int8:
-        return load<std::int8_t>(b);
+        return load_as_double<std::int8_t>(b);
       case PlyType::UInt8:
-        return load<std::uint8_t>(b);
+        return load_as_double<std::uint8_t>(b);
       case PlyType::Int16:
-        return load<std::int16_t>(b);
+        return load_as_double<std::int16_t>(b);
       case PlyType::UInt16:
-        return load<std::uint16_t>(b);
+        return load_as_double<std::uint16_t>(b);
       case PlyType::Int32:
-        return load<std::int32_t>(b);
+        return load_as_double<std::int32_t>(b);
       case PlyType::UInt32:
-        return load<std::uint32_t>(b);
+        return load_as_double<std::uint32_t>(b);
       case PlyType::Float32:
-        return load<float>(b);
+        return load_as_double<float>(b);
       case PlyType::Float64:
-        return load<double>(b);
+        return load_as_double<double>(b);
     }
     return 0;
   }

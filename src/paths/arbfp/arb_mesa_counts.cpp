@@ -14,7 +14,7 @@ int query(GLenum target, GLenum pname) {
   return v;
 }
 
-MesaFigures figures(GLenum target, bool native) {
+MesaFigures query_figures(GLenum target, bool native) {
   MesaFigures f;
   auto q = [&](GLenum api, GLenum nat) { return query(target, native ? nat : api); };
   f.instructions = q(GL_PROGRAM_INSTRUCTIONS_ARB, GL_PROGRAM_NATIVE_INSTRUCTIONS_ARB);
@@ -44,8 +44,8 @@ MesaCounts mesa_counts(budget::ProgramKind kind, const std::string& source) {
   m.error_offset = load.error_position;
   m.error = load.error;
   if (!m.accepted) return m;
-  m.native = figures(target, true);
-  m.api = figures(target, false);
+  m.native = query_figures(target, true);
+  m.api = query_figures(target, false);
   glDeleteProgramsARB(1, &load.id);
   return m;
 }

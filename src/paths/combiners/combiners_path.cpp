@@ -105,12 +105,6 @@ std::string describe_ramp(const Translucency& tr, const LobeTable& table) {
          std::to_string(table.width) + " texels at u = t)";
 }
 
-void stream(GLuint buffer, const std::vector<float>& data) {
-  glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
-               GL_STREAM_DRAW);
-}
-
 class CombinersPath final : public Path {
  public:
   CombinersPath(const PathContext& ctx, CombinersVariant variant)
@@ -324,9 +318,9 @@ class CombinersPath final : public Path {
       const CubeLobe& c = cubes_[static_cast<size_t>(mesh.material)][l];
       in.textures["lobe_cube"] = {GL_TEXTURE_CUBE_MAP, c.texture};
       in.constants["lobe_color"] = glm::dvec4(c.lobe_color, 1);
-      stream(buf[0], vt.thickness);
+      gl::stream_array_buffer(buf[0], vt.thickness);
     } else if (kind == PassKind::DiffuseOnly) {
-      stream(buf[0], vt.diffuse);
+      gl::stream_array_buffer(buf[0], vt.diffuse);
     } else {
       const Light& light = s.lights[l];
       const size_t mi = static_cast<size_t>(mesh.material);
@@ -339,11 +333,11 @@ class CombinersPath final : public Path {
         in.constants["lobe_color"] =
             glm::dvec4(lobe_constant(mat, light) / fold_factors(s, mat)[l], 1);
       }
-      stream(buf[0], vt.primary[l]);
-      stream(buf[2], vt.secondary[l]);
+      gl::stream_array_buffer(buf[0], vt.primary[l]);
+      gl::stream_array_buffer(buf[2], vt.secondary[l]);
       secondary = true;
       if (program.stages[0].texcoord == combiners::TexCoord::Array) {
-        stream(buf[1], vt.texcoord[l]);
+        gl::stream_array_buffer(buf[1], vt.texcoord[l]);
         texcoords = true;
       }
     }

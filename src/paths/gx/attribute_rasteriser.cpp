@@ -45,11 +45,6 @@ void set_cull_mode(u8 gx_mode) {
   glCullFace(gx_mode == kCullBack ? GL_FRONT : gx_mode == kCullFront ? GL_BACK : GL_FRONT_AND_BACK);
 }
 
-void stream(GLuint buffer, const void* data, size_t bytes) {
-  glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STREAM_DRAW);
-}
-
 }  // namespace
 
 AttributeRasteriser::AttributeRasteriser(const PathContext& ctx, int texgens)
@@ -105,8 +100,8 @@ void AttributeRasteriser::rasterise(const std::vector<const VertexOutputs*>& out
       }
     }
     const auto& b = buffers_[i];
-    stream(b[0], color0.data(), color0.size() * sizeof(float));
-    stream(b[1], color1.data(), color1.size() * sizeof(float));
+    gl::stream_array_buffer(b[0], color0);
+    gl::stream_array_buffer(b[1], color1);
     for (int g = 0; g < texgens_; ++g) {
       tc.assign(n * 3, 0.0f);
       if (out && g < out->num_texgens) {
@@ -114,7 +109,7 @@ void AttributeRasteriser::rasterise(const std::vector<const VertexOutputs*>& out
           for (int c = 0; c < 3; ++c) tc[v * 3 + c] = out->texcoords[v][static_cast<size_t>(g)][c];
         }
       }
-      stream(b[static_cast<size_t>(2 + g)], tc.data(), tc.size() * sizeof(float));
+      gl::stream_array_buffer(b[static_cast<size_t>(2 + g)], tc);
     }
     glUniform1f(program_->uniform("u_material"), static_cast<float>(mesh.material));
     set_cull_mode(cull_modes[i]);

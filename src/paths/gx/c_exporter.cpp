@@ -4,20 +4,13 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 #include "paths/gx/program/printer.h"
 
 namespace lt::gx {
 
-namespace {
-
-std::string fixed(double v, int digits) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << v;
-  return s.str();
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
   std::ostringstream h;

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "image/image.h"
 #include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/fifo/frame_recording.h"
@@ -61,12 +62,6 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // The printed C of one pass function, for `info --source`.
 std::string pass_source(const ProgramFile& file, const std::string& function) {
@@ -129,7 +124,7 @@ class GxPath final : public Path {
     // from the material's last pass: under that pass's cull mode.
     std::vector<u8> cull(s.objects.size(), kCullNone);
     for (size_t pass = 0; pass < pixel_programs_.size(); ++pass) {
-      auto t0 = Clock::now();
+      auto t0 = SteadyClock::now();
       for (size_t i = 0; i < s.objects.size(); ++i) {
         const PixelProgram& pp = pixel_programs_[pass][static_cast<size_t>(s.objects[i].material)];
         drawn[i] = nullptr;
@@ -146,7 +141,7 @@ class GxPath final : public Path {
       }
       vertex_seconds_ += seconds_since(t0);
       rasteriser_->rasterise(drawn, cull);
-      t0 = Clock::now();
+      t0 = SteadyClock::now();
       stage_pixels_ += shade_pass(*rasteriser_, pixel_programs_[pass], efb_, variant_.round_colors);
       pixel_seconds_ += seconds_since(t0);
     }

@@ -17,8 +17,8 @@ u8 interpolated_color(float v, bool round) {
 namespace {
 
 // The texel stage `s` fetches at this pixel.
-Color8 fetch(const PixelProgram& p, const TevStage& stage, const AttributeRasteriser& raster,
-             size_t g) {
+Color8 stage_texel(const PixelProgram& p, const TevStage& stage, const AttributeRasteriser& raster,
+                   size_t g) {
   const TextureObject* tex = p.textures[stage.texmap];
   const int texgens = p.state->texgen.num_texgens;
   // Zero texgens read a black texel, and a texcoord beyond them reads texcoord 0 (Dolphin's
@@ -62,7 +62,7 @@ size_t shade_pass(const AttributeRasteriser& raster, const std::vector<PixelProg
       for (int s = 0; s < st.tev.num_stages; ++s) {
         const TevStage& stage = st.tev.stages[static_cast<size_t>(s)];
         in.texels[static_cast<size_t>(s)] =
-            stage.texmap == kTexMapNull ? Color8{} : fetch(p, stage, raster, g);
+            stage.texmap == kTexMapNull ? Color8{} : stage_texel(p, stage, raster, g);
       }
       stage_pixels[worker] += static_cast<size_t>(st.tev.num_stages);
       const Color8 src = tev_to_efb(run_tev(st.tev, in));

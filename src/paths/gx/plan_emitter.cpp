@@ -139,7 +139,7 @@ std::vector<Arg> combiner_in(const Arg& stage, const CombinerPlan<In>& c) {
   return {stage, gx(c.in[0]), gx(c.in[1]), gx(c.in[2]), gx(c.in[3])};
 }
 template <NameGroup In>
-std::vector<Arg> combiner_op(const Arg& stage, const CombinerPlan<In>& c) {
+std::vector<Arg> combiner_op_args(const Arg& stage, const CombinerPlan<In>& c) {
   return {stage, gx(c.op), gx(c.bias), gx(c.scale), gx(c.clamp), gx(c.dest)};
 }
 
@@ -156,10 +156,10 @@ void tev(Writer& w, const PassPlan& p) {
     w.call("GX_SetTevOrder", {stage, gx(s.texcoord), gx(s.texmap), gx(s.channel)}, s.what);
     if (s.konst_color) w.call("GX_SetTevKColorSel", {stage, gx(*s.konst_color)});
     w.call("GX_SetTevColorIn", combiner_in(stage, s.color));
-    w.call("GX_SetTevColorOp", combiner_op(stage, s.color));
+    w.call("GX_SetTevColorOp", combiner_op_args(stage, s.color));
     w.call("GX_SetTevAlphaIn", combiner_in(stage, s.alpha));
     w.call("GX_SetTevKAlphaSel", {stage, gx(s.konst_alpha)});
-    w.call("GX_SetTevAlphaOp", combiner_op(stage, s.alpha));
+    w.call("GX_SetTevAlphaOp", combiner_op_args(stage, s.alpha));
   }
 }
 

@@ -15,11 +15,6 @@ namespace lt::gx {
 
 namespace {
 
-// libogc's constants [OGC gx.h L172-203], the values ChannelControl stores.
-constexpr u8 kSrcReg = 0, kSrcVtx = 1;
-constexpr u8 kDiffuseNone = 0, kDiffuseSigned = 1, kDiffuseClamp = 2;
-constexpr u8 kAttnSpec = 0, kAttnSpot = 1, kAttnNone = 2;
-
 // Dolphin's Vec3 dot product, x*x' + y*y' + z*z' in this order, in float [DSW Vec3.h].
 float dot3(const glm::vec3& a, const glm::vec3& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;

@@ -23,6 +23,11 @@ struct XfLight {
   bool operator==(const XfLight&) const = default;
 };
 
+// libogc's constants [OGC gx.h L172-203], the values ChannelControl stores.
+inline constexpr u8 kSrcReg = 0, kSrcVtx = 1;
+inline constexpr u8 kDiffuseNone = 0, kDiffuseSigned = 1, kDiffuseClamp = 2;
+inline constexpr u8 kAttnSpec = 0, kAttnSpot = 1, kAttnNone = 2;
+
 // GX_SetChanCtrl, in libogc's terms [OGC gx.h L1873, gx.c L2193-2209]. attn_fn is libogc's
 // GX_AF_SPEC 0 / GX_AF_SPOT 1 / GX_AF_NONE 2; GX_SetChanCtrl forces diff_fn to GX_DF_NONE when
 // attn_fn is GX_AF_SPEC (gx.c L2195), and the parser stores the forced value.

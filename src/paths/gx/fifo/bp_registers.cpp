@@ -44,9 +44,6 @@ constexpr u32 kTmemEven[kMaxTexMaps] = {0x00000, 0x90000, 0x20000, 0xB0000,
 constexpr u32 kTmemOdd[kMaxTexMaps] = {0x80000, 0x10000, 0xA0000, 0x30000,
                                        0x88000, 0x50000, 0xA8000, 0x70000};
 
-// libogc's 342 ("0x156") offset of the scissor and copy coordinates [OGC gx.c GX_SetScissor].
-constexpr u32 kScreenOffset = 342;
-
 }  // namespace
 
 // genmode [OGC gx.c GX_SetNumTexGens L2937 bits 0-3, GX_SetNumChans L3982 bits 4-6,

@@ -36,6 +36,11 @@ constexpr u8 texture_register(u8 base, int map) {
 }
 }  // namespace bp
 
+// libogc's 342 ("0x156") offset of the screen coordinates: scissor and copy rectangles start at
+// it [OGC gx.c GX_SetScissor] and the viewport centre is moved by it [OGC gx.c
+// GX_SetViewportJitter Yfactor].
+inline constexpr u32 kScreenOffset = 342;
+
 // The values of one pass's BP registers.
 u32 gen_mode(const GxState& state);
 u32 tev_order(const TevState& tev, int pair);  // stages 2 pair, 2 pair + 1

@@ -6,9 +6,7 @@
 namespace lt::gx::fifo {
 
 namespace {
-constexpr u8 kAttnSpec = 0, kAttnNone = 2;  // GX_AF_SPEC, GX_AF_NONE [OGC gx.h]
-constexpr float kScreenOffset = 342.0f;     // [OGC gx.c GX_SetViewportJitter Yfactor]
-constexpr float kZMax = 16777215.0f;        // 2^24 - 1 [OGC gx.c GX_SetViewportJitter Zfactor]
+constexpr float kZMax = 16777215.0f;  // 2^24 - 1 [OGC gx.c GX_SetViewportJitter Zfactor]
 
 void load_floats(CommandStream& out, u32 address, const std::vector<float>& values) {
   std::vector<u32> words;
@@ -85,8 +83,8 @@ std::array<u32, 6> viewport_words(FrameSize size) {
   return {float_bits(w * 0.5f),
           float_bits(-h * 0.5f),
           float_bits(kZMax),
-          float_bits(w * 0.5f + kScreenOffset),
-          float_bits(h * 0.5f + kScreenOffset),
+          float_bits(w * 0.5f + static_cast<float>(kScreenOffset)),
+          float_bits(h * 0.5f + static_cast<float>(kScreenOffset)),
           float_bits(kZMax)};
 }
 
