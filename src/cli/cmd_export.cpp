@@ -57,9 +57,9 @@ const PathInfo& export_path(const std::string& target) {
   throw InputError("export", target, "unknown export target (valid: " + valid + ")");
 }
 
-// The index of --format in the path's formats; "" is the default, the first.
-std::size_t export_format(const PathInfo& path, const std::string& name) {
-  if (name.empty()) return 0;
+// The index of --format in the path's formats; not given: the default, the first.
+std::size_t export_format(const PathInfo& path, const CLI::Option& given, const std::string& name) {
+  if (given.count() == 0) return 0;
   std::string valid;
   for (std::size_t i = 0; i < path.export_formats.size(); ++i) {
     if (path.export_formats[i].name == name) return i;
@@ -90,7 +90,8 @@ Action add_export(CLI::App& app) {
   sub->add_option("--variant", r->variant, exporters([](const PathInfo& p) {
                     return "The " + p.name + " variant (default " + p.variants.front().name + ")";
                   }));
-  sub->add_option("--format", *format, exporters(formats_help, "; "));
+  const CLI::Option* format_option =
+      sub->add_option("--format", *format, exporters(formats_help, "; "));
   sub->add_option("--width", r->width, "dff: frame width (default: the scene's)");
   sub->add_option("--height", r->height, "dff: frame height (default: the scene's)");
   sub->add_option("--program", r->program_file,
@@ -107,7 +108,7 @@ Action add_export(CLI::App& app) {
   add_lights_option(sub, *scene_options);
   return [=]() -> int {
     const PathInfo& info = export_path(*target);
-    r->format = export_format(info, *format);
+    r->format = export_format(info, *format_option, *format);
     const std::string extension = info.export_formats[r->format].extension;
     if (fs::path(*output).extension() != extension)
       throw InputError(*output, "", "the exported file must end in " + extension);
