@@ -10,6 +10,7 @@
 #include "paths/combiners/combiners_path.h"
 #include "paths/path.h"
 #include "render/evaluate.h"
+#include "test_util.h"
 
 namespace lt {
 namespace {
@@ -75,6 +76,70 @@ TEST(PathInfo, CapabilitiesFollowTheirData) {
   EXPECT_DEATH((void)half.budget(Scene{}, "", ""), "path half has no budget");
   EXPECT_TRUE(find_path("gx").writes_fifo_log);
   EXPECT_FALSE(find_path("combiners").budget_profiles.empty());
+}
+
+// `export TARGET`: TARGET is a path that exports (export_formats). A path that exports nothing,
+// or no path, is refused in one line naming the valid targets, exit 2, nothing written.
+TEST(PathInfo, ExportRefusesAPathThatExportsNothingNamingThoseThatDo) {
+  std::string valid;
+  for (const PathInfo& p : all_paths())
+    if (!p.export_formats.empty()) valid += (valid.empty() ? "" : ", ") + p.name;
+  EXPECT_NE(valid.find("gx"), std::string::npos) << valid;
+  ASSERT_TRUE(find_path("glsl").export_formats.empty());
+  test::TempDir dir;
+  const std::string scene = (test::source_dir() / "scenes/backlit_sphere.json").string();
+  const auto glsl = test::run_ltrender("export glsl " + scene + " -o " + (dir / "x.c").string());
+  EXPECT_EQ(glsl.exit_code, 2);
+  EXPECT_EQ(glsl.err,
+            "ltrender: error: export:glsl: path glsl exports nothing (valid: " + valid + ")\n");
+  const auto none = test::run_ltrender("export nope " + scene + " -o " + (dir / "x.c").string());
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_EQ(none.err,
+            "ltrender: error: export:nope: unknown export target (valid: " + valid + ")\n");
+  EXPECT_FALSE(fs::exists(dir / "x.c"));
+}
+
+// `export --help` lists what the registry declares: every exporting path with its target, and
+// every format with its summary and the extension it writes; gx's are the three of cli.md.
+TEST(PathInfo, ExportHelpListsTheRegistrysFormats) {
+  const auto help = test::run_ltrender("export --help");
+  ASSERT_EQ(help.exit_code, 0) << help.err;
+  for (const PathInfo& p : all_paths()) {
+    if (p.export_formats.empty()) continue;
+    EXPECT_NE(help.out.find(p.name + " (" + p.export_target + ")"), std::string::npos) << p.name;
+    for (const ExportFormat& f : p.export_formats) {
+      EXPECT_NE(help.out.find(f.name + ": " + f.summary), std::string::npos) << f.name;
+      EXPECT_NE(help.out.find("FILE" + f.extension), std::string::npos) << f.name;
+    }
+  }
+  std::vector<std::string> gx;
+  for (const ExportFormat& f : find_path("gx").export_formats) gx.push_back(f.name);
+  EXPECT_EQ(gx, (std::vector<std::string>{"c", "module", "dff"}));
+}
+
+// A path whose formats take none of --program, --frames, --width/--height, --light-range
+// refuses each by name (PathInfo::export_variant's default) and exports the variant alone.
+TEST(PathInfo, AnExportOptionThePathDoesNotTakeIsRefused) {
+  struct TextExport : PathInfo {
+    TextExport() {
+      name = "text";
+      variants = {{"plain", "one variant"}};
+      export_formats = {{"txt", ".txt", "the scene as text"}};
+    }
+    std::unique_ptr<Path> create(const PathContext&, const std::string&) const override {
+      return nullptr;
+    }
+  } text;
+  EXPECT_EQ(text.export_variant(ExportRequest{}), "plain");
+  const auto refused = [&](ExportRequest r) {
+    return input_error([&] { (void)text.export_variant(r); });
+  };
+  EXPECT_NE(refused({.light_range = "5"}).find("--light-range"), std::string::npos);
+  EXPECT_NE(refused({.frames = 3}).find("--frames"), std::string::npos);
+  EXPECT_NE(refused({.height = 240}).find("--width/--height"), std::string::npos);
+  const std::string program = refused({.program_file = "p.c"});
+  EXPECT_NE(program.find("--program"), std::string::npos) << program;
+  EXPECT_NE(program.find("path text"), std::string::npos) << program;
 }
 
 // regress's comparison with a golden: the golden's alpha is replaced by the render's coverage,

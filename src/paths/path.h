@@ -1,12 +1,16 @@
 // A path is one way of rendering a scene: the reference (the ground truth), flat (the timing
 // baseline) and the ports (glsl, arbfp, combiners, half, gx). Each lives in its own folder under
 // paths/ behind this interface: its PathInfo says what the path is, takes and refuses, parses its
-// variants, counts its budget, and builds a Path, which renders one scene. Adding a path touches
-// its folder and registry.cpp; the commands name none.
+// variants, counts its budget, builds a Path, which renders one scene, and (`ltrender export`)
+// writes its programs in its export_formats for a target that is not ltrender: the command
+// parses the options into an ExportRequest, the path refuses what its format does not take
+// (export_variant) and returns the file (export_scene). Adding a path touches its folder and
+// registry.cpp; the commands name none.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
-#include <functional>  // std::reference_wrapper
+#include <functional>  // std::function, std::reference_wrapper
 #include <map>
 #include <memory>
 #include <ostream>
@@ -93,6 +97,37 @@ struct VariantInfo {
   VariantRun run = VariantRun::Full;
 };
 
+struct ErrorStats;  // metrics/compare.h (not included: its lt::judge would hide namespace judge)
+
+// `ltrender export PATH SCENE --format F -o FILE`: one format a path writes its programs in.
+struct ExportFormat {
+  std::string name;       // as given to --format: "c"
+  std::string extension;  // of the file it writes: ".c"
+  std::string summary;    // one line, for --help
+};
+
+// What `export` was given besides the path and the output; the path refuses (export_variant)
+// the options its format does not take before the scene is read.
+struct ExportRequest {
+  std::size_t format = 0;     // index into the path's export_formats
+  std::string scene_file;     // as given: for messages and the file's comments
+  std::string variant;        // as given; "" = the default
+  std::string program_file;   // --program: drawn instead of the generated programs
+  int width = 0, height = 0;  // --width, --height; 0: the scene's
+  int frames = 1;             // --frames N: the first N frames of the camera path
+  std::string light_range;    // --light-range D; "": not given
+};
+
+// What the command hands export_scene once the scene is read.
+struct ExportInput {
+  const Scene& scene;
+  std::string variant;        // as export_variant returned it
+  std::vector<Scene> frames;  // --frames N > 1: the scene on frames 0..N-1 of the camera path
+  // The covered error of the path's variant against the reference at the scene's size (the
+  // evaluate step, render/evaluate.h, which is above paths/), measured when called.
+  std::function<ErrorStats()> error;
+};
+
 // What a path is to the bench and the goldens: the ground truth every error is against, the
 // timing baseline every ratio is against, or a port being judged.
 enum class PathRole { GroundTruth, Baseline, Port };
@@ -121,6 +156,10 @@ class PathInfo {
   std::vector<std::string> program_headers;
   // Whether fifo_log() is there (paths that model a console).
   bool writes_fifo_log = false;
+  // `ltrender export NAME`: what the path's exports are for ("libogc C for the Wii / GameCube")
+  // and their formats, the default first; none: the path exports nothing.
+  std::string export_target;
+  std::vector<ExportFormat> export_formats;
 
   // Builds the path for one scene; `variant` as resolve_variant returned it.
   virtual std::unique_ptr<Path> create(const PathContext& ctx,
@@ -145,6 +184,12 @@ class PathInfo {
   virtual std::vector<std::uint8_t> fifo_log(const Scene& scene, const std::string& variant,
                                              const PathOptions& options, int width,
                                              int height) const;
+  // `ltrender export`, before the scene is read: refuses (InputError) what `request` gives that
+  // its format does not take and returns the variant to export, resolved. Default: the variant
+  // alone, every other option refused.
+  virtual std::string export_variant(const ExportRequest& request) const;
+  // The bytes of the exported file, which the command writes.
+  virtual std::string export_scene(const ExportRequest& request, const ExportInput& input) const;
 };
 
 // A path whose variant is a typed value V: the string is parsed once at each entry point and

@@ -52,7 +52,8 @@ void throw_unknown_variant(const std::string& path, const std::vector<VariantInf
 }
 
 // The defaults of what a path may leave out: listed variant names, no refusal; the capabilities
-// a path declares by its data (budget_profiles, program files, writes_fifo_log) and overrides.
+// a path declares by its data (budget_profiles, program files, writes_fifo_log, export_formats)
+// and overrides.
 std::string PathInfo::parse_variant(const std::string& variant) const {
   for (const VariantInfo& v : variants) {
     if (v.name == variant) return variant;
@@ -78,6 +79,21 @@ std::vector<std::uint8_t> PathInfo::fifo_log(const Scene&, const std::string&, c
                                              int, int) const {
   check_failed("!writes_fifo_log", __FILE__, __LINE__,
                "path " + name + " writes no FIFO log (callers check writes_fifo_log)");
+}
+
+std::string PathInfo::export_variant(const ExportRequest& r) const {
+  const char* given = !r.program_file.empty()  ? "--program"
+                      : r.frames != 1          ? "--frames"
+                      : r.width || r.height    ? "--width/--height"
+                      : !r.light_range.empty() ? "--light-range"
+                                               : nullptr;
+  if (given) throw InputError("export", given, "path " + name + "'s export takes no " + given);
+  return resolve_variant(*this, r.variant);
+}
+
+std::string PathInfo::export_scene(const ExportRequest&, const ExportInput&) const {
+  check_failed("export_formats.empty()", __FILE__, __LINE__,
+               "path " + name + " exports nothing (callers check export_formats)");
 }
 
 }  // namespace lt

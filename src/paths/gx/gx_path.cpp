@@ -13,6 +13,7 @@
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
+#include "paths/gx/gx_export.h"
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/pixel_stage.h"
 #include "paths/gx/program/parser.h"
@@ -301,6 +302,12 @@ class GxInfo final : public TypedPathInfo<gx::GxVariant> {
   budget::Report budget_file(const std::string& file, const std::string& profile) const override {
     return gx::gx_budget_file(file, profile);
   }
+  std::string export_variant(const ExportRequest& r) const override {
+    return gx::gx_export_variant(*this, r);
+  }
+  std::string export_scene(const ExportRequest& r, const ExportInput& in) const override {
+    return gx::gx_export_scene(*this, r, in);
+  }
 };
 
 GxInfo::GxInfo() {
@@ -351,6 +358,8 @@ GxInfo::GxInfo() {
   info.writes_fifo_log = true;
   for (const gx::GxProfile& p : gx::gx_profiles()) info.budget_profiles.push_back(p.name);
   info.program_extensions = {".c", ".gx"};
+  info.export_target = "libogc C for the Wii / GameCube";
+  info.export_formats = gx::gx_export_formats();
 }
 
 }  // namespace
