@@ -97,7 +97,7 @@ struct VariantInfo {
   VariantRun run = VariantRun::Full;
 };
 
-struct ErrorStats;  // metrics/compare.h (not included: its lt::judge would hide namespace judge)
+struct ErrorStats;  // metrics/compare.h
 
 // `ltrender export PATH SCENE --format F -o FILE`: one format a path writes its programs in.
 struct ExportFormat {
