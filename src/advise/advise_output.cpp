@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "core/file_name.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 #include "paths/gx/c_exporter.h"
 #include "paths/gx/gx_budget.h"
@@ -16,19 +16,14 @@ namespace lt::advise {
 
 namespace {
 
-std::string fixed(double v, int digits = 2) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
 std::string cost_text(const Cost& c) {
   return fixed(c.ops, 0) + " ops" +
          (c.texture_bytes > 0 ? " + " + fixed(c.texture_bytes, 0) + " B" : "");
 }
 
 std::string error_text(const ErrorStats& e) {
-  return "max " + fixed(e.max_lsb) + ", p99 " + fixed(e.p99_lsb) + ", mean " + fixed(e.mean_lsb);
+  return "max " + fixed(e.max_lsb, 2) + ", p99 " + fixed(e.p99_lsb, 2) + ", mean " +
+         fixed(e.mean_lsb, 2);
 }
 
 // How the pick compares with the path's default for one material.
@@ -64,8 +59,8 @@ std::string to_text(const Advice& a) {
   std::ostringstream out;
   const AdviseOptions& o = a.options;
   out << "advise: " << o.scene_file.string() << " on " << o.profile << " (path " << a.path
-      << "), budget " << fixed(o.max_lsb) << " LSB " << to_string(o.stat) << ", " << a.width << "x"
-      << a.height << "\n";
+      << "), budget " << fixed(o.max_lsb, 2) << " LSB " << to_string(o.stat) << ", " << a.width
+      << "x" << a.height << "\n";
   size_t pruned = 0, excluded = 0;
   for (const CandidateResult& c : a.candidates) {
     pruned += c.pruned.empty() ? 0 : 1;
@@ -98,7 +93,7 @@ std::string to_text(const Advice& a) {
            {std::pair{"adaptive", &r.adaptive}, std::pair{"uniform", &r.uniform}}) {
         out << "    " << name << ":";
         for (const RefinementStep& s : *steps)
-          out << " " << s.vertices << ": " << fixed(stat_of(s.error, o.stat));
+          out << " " << s.vertices << ": " << fixed(stat_of(s.error, o.stat), 2);
         out << "\n";
       }
       for (size_t i : r.tried)

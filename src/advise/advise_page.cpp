@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/fixed.h"
 #include "core/markup.h"
 
 namespace lt::advise {
@@ -13,9 +14,7 @@ namespace lt::advise {
 namespace {
 
 std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
+  return fixed(v, 1);
 }
 
 // Chart geometry, in SVG units.

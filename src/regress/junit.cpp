@@ -1,9 +1,9 @@
 #include "regress/junit.h"
 
-#include <cstdio>
 #include <map>
 #include <sstream>
 
+#include "core/fixed.h"
 #include "core/markup.h"
 
 namespace lt {
@@ -11,9 +11,7 @@ namespace lt {
 namespace {
 
 std::string seconds(double s) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", s);
-  return buf;
+  return fixed(s, 3);
 }
 
 struct Counts {

@@ -1,10 +1,10 @@
 #include "report/bench_compare.h"
 
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 
 namespace lt {
@@ -16,9 +16,7 @@ std::string row_key(const std::string& scene, const std::string& path, const std
 }
 
 std::string num(double v) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.3f", v);
-  return s;
+  return fixed(v, 3);
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 #include "report/sweep.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
 
+#include "core/fixed.h"
 #include "load/load_scene.h"
 #include "render/camera_path.h"
 #include "render/evaluate.h"
@@ -14,9 +14,7 @@ namespace lt {
 namespace {
 
 std::string lsb(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
+  return fixed(v, 2);
 }
 
 }  // namespace
