@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "core/seconds_since.h"
 
 namespace lt::bake {
 
@@ -289,10 +290,6 @@ struct Tracer {
     return static_cast<double>(hits) / n;
   }
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 

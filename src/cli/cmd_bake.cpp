@@ -21,6 +21,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/seconds_since.h"
 #include "image/image.h"
 #include "mesh/mesh_io.h"
 
@@ -181,10 +182,6 @@ void warn_about_edges(const std::string& mesh, const bake::EdgeReport& edges) {
                    " non-manifold edges; rays leaving through an opening count as unoccluded "
                    "(thick)");
   }
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double mrays_per_second(std::uint64_t rays, double seconds) {

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/fixed.h"
 #include "core/fs.h"
+#include "core/seconds_since.h"
 #include "metrics/heatmap.h"
 #include "render/evaluate.h"
 #include "render/session.h"
@@ -16,10 +17,6 @@ namespace lt {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // The figures, then the verdict's reasons. A reason states its own figures (the failing share,
 // the max and where it is), so the figures line leaves out what a reason states: each figure
