@@ -129,10 +129,4 @@ void SceneGeometry::unbind() const {
   glClientActiveTexture(GL_TEXTURE0);
 }
 
-size_t SceneGeometry::total_triangles() const {
-  size_t n = 0;
-  for (const GpuMesh& g : meshes_) n += static_cast<size_t>(g.index_count) / 3;
-  return n;
-}
-
 }  // namespace lt::gl
