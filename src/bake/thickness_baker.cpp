@@ -14,11 +14,6 @@ namespace lt::bake {
 
 namespace {
 
-bool usable(const glm::dvec3& v) {
-  const double len = glm::length(v);
-  return std::isfinite(len) && len > 0.0;
-}
-
 // Vertices with bit-identical positions share one id, ids numbered in sorted position order.
 // Sorting, not hashing, so that -0.0 and 0.0 weld like they do geometrically.
 struct Welding {

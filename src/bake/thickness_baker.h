@@ -16,6 +16,7 @@
 // mesh-level functions below add OpenMesh smoothing and the colour attribute.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -39,6 +40,12 @@ struct BakeResult {
   double build_seconds = 0.0;  // Embree BVH
   double trace_seconds = 0.0;
 };
+
+// A normal with a direction: non-zero and finite (it need not be unit length).
+inline bool usable(const glm::dvec3& normal) {
+  const double len = glm::length(normal);
+  return std::isfinite(len) && len > 0.0;
+}
 
 // The core. Vertices at bit-identical positions (split for hard edges or seams) are baked once,
 // together, with the mean of their unit normals, seeded by their lowest vertex index; `normals`

@@ -9,15 +9,6 @@
 
 namespace lt::bake {
 
-namespace {
-
-bool usable(const glm::dvec3& v) {
-  const double len = glm::length(v);
-  return std::isfinite(len) && len > 0.0;
-}
-
-}  // namespace
-
 UvBakeResult bake_uv(const std::vector<glm::dvec3>& positions,
                      const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec2>& uvs,
                      const std::vector<glm::uvec3>& triangles, const BakeSettings& settings,
