@@ -13,6 +13,7 @@
 #include "advise/mesh_refinement.h"
 #include "advise/target.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "load/load_scene.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
@@ -419,7 +420,7 @@ Advice run_advise(const AdviseOptions& o) {
       ma.refinement = std::move(r);
     }
   }
-  a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  a.seconds = seconds_since(start);
   return a;
 }
 

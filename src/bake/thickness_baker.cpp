@@ -44,11 +44,6 @@ Welding weld_by_position(const std::vector<glm::dvec3>& positions) {
 
 }  // namespace
 
-bool usable_normal(const glm::dvec3& n) {
-  const double len = glm::length(n);
-  return std::isfinite(len) && len > 0.0;
-}
-
 // ---------------------------------------------------------------------------------------------
 
 BakeResult bake_occlusion(const std::vector<glm::dvec3>& positions,

@@ -16,6 +16,7 @@
 // mesh-level functions below add OpenMesh smoothing and the colour attribute.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -29,10 +30,6 @@
 
 namespace lt::bake {
 
-// Whether a vertex normal gives a direction to bake along (finite and not zero); both bakers
-// skip or repair the others.
-bool usable_normal(const glm::dvec3& n);
-
 struct BakeResult {
   std::vector<double> occlusion;            // per vertex, in [0, 1], 1 = thin (see Estimator)
   double max_distance = 0.0;                // D actually used, scene units
@@ -43,6 +40,13 @@ struct BakeResult {
   double build_seconds = 0.0;  // Embree BVH
   double trace_seconds = 0.0;
 };
+
+// A normal with a direction, which both bakers bake along: non-zero and finite (it need not be
+// unit length).
+inline bool usable_normal(const glm::dvec3& normal) {
+  const double len = glm::length(normal);
+  return std::isfinite(len) && len > 0.0;
+}
 
 // The core. Vertices at bit-identical positions (split for hard edges or seams) are baked once,
 // together, with the mean of their unit normals, seeded by their lowest vertex index; `normals`

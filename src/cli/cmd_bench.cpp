@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -93,15 +92,11 @@ Action add_bench(CLI::App& app) {
   sub->add_option("--warmup", o->warmup, "Warm-up frames (at least; at 1280x720 until settled)")
       ->check(CLI::Range(0, 1000));
   auto apply_timing = add_timing_options(*sub, *o);
-  const std::map<std::string, VariantSelection> selections = {
-      {"all", VariantSelection::All},
-      {"default", VariantSelection::Defaults},
-      {"story", VariantSelection::Story}};
   auto variants = std::make_shared<std::string>("all");
   sub->add_option("--variants", *variants,
                   "Which variants of each path: all (default), default (each path's first), "
                   "story (the default and those the docs compare it with: ./run.sh's run)")
-      ->check(CLI::IsMember(selections));
+      ->check(CLI::IsMember(variant_selections()));
   auto compare_with = std::make_shared<std::string>();
   sub->add_option("--compare", *compare_with,
                   "An earlier report.json: rows whose ratio intervals do not overlap are listed "
@@ -137,9 +132,9 @@ Action add_bench(CLI::App& app) {
                   "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
                   "drawn in additive passes (the cost column says how many)");
   return [o, scenes, paths, out, lp_threads, cpu_threads, pin_core, compare_with, apply_timing,
-          variants, selections, jobs, role]() -> int {
+          variants, jobs, role]() -> int {
     apply_timing();
-    o->variants = selections.at(*variants);
+    o->variants = variant_selections().at(*variants);
     // A line redrawn in place means nothing in a log: only a person at a terminal gets it.
     o->live_progress = ::isatty(STDERR_FILENO) == 1 && !role->is_job();
     // Before any thread or context exists: what is started later inherits the core. A parent

@@ -2,7 +2,6 @@
 // frames of the camera path (report/sweep.h says what the figures are), as a Markdown table on
 // stdout: what docs/porting-to-the-wii.md's table of the moving camera is made with.
 #include <iostream>
-#include <map>
 #include <memory>
 
 #include "cli/commands.h"
@@ -20,12 +19,8 @@ Action add_sweep(CLI::App& app) {
       "sweep", "A path's variants against the reference along a moving camera and lights");
   sub->add_option("SCENE", *scenes, "Scene files")->required();
   sub->add_option("--path", o->path, "The path whose variants are measured (default gx)");
-  const std::map<std::string, VariantSelection> selections = {
-      {"all", VariantSelection::All},
-      {"default", VariantSelection::Defaults},
-      {"story", VariantSelection::Story}};
   sub->add_option("--variants", *variants, "all (default), default or story, as bench takes it")
-      ->check(CLI::IsMember(selections));
+      ->check(CLI::IsMember(variant_selections()));
   o->frames = kCameraPathFrames;
   sub->add_option("--frames", o->frames,
                   "Frames along the path (default 8: the GxModule test's; 1 is the scene as it is)")
@@ -36,12 +31,12 @@ Action add_sweep(CLI::App& app) {
   sub->add_option("--width", o->width, "Override the scene's width")->check(CLI::Range(1, 16384));
   sub->add_option("--height", o->height, "Override the scene's height")
       ->check(CLI::Range(1, 16384));
-  return [o, scenes, variants, selections]() -> int {
+  return [o, scenes, variants]() -> int {
     if ((o->width > 0) != (o->height > 0))
       throw InputError("--width/--height", "", "give both, or neither");
     if (!o->light_range.empty() && o->path != "gx")
       throw InputError("--light-range", o->light_range, "is a gx variant axis (--path gx)");
-    o->variants = selections.at(*variants);
+    o->variants = variant_selections().at(*variants);
     for (const std::string& s : *scenes) o->scenes.emplace_back(s);
     o->progress = [](const std::string& scene) { std::cerr << "sweep: " << scene << "\n"; };
     std::cout << sweep_markdown(run_sweep(*o));

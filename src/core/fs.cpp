@@ -6,13 +6,13 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <new>
 #include <vector>
 
 #include "core/error.h"
+#include "core/fixed.h"
 
 namespace lt {
 
@@ -174,10 +174,7 @@ const char* kind_noun(InputKind kind) {
 
 std::string size_text(std::uintmax_t bytes) {
   if (bytes < kMiB) return std::to_string(bytes) + " bytes";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.1f MiB",
-                static_cast<double>(bytes) / static_cast<double>(kMiB));
-  return buf;
+  return fixed(static_cast<double>(bytes) / static_cast<double>(kMiB), 1, " MiB");
 }
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& what) {

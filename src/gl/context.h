@@ -24,9 +24,6 @@ class Context {
   void require_extension(const std::string& name, const std::string& why) const;
   std::string renderer() const;
 
-  // The colour buffer as OSMesa holds it (bottom row first, RGBA8).
-  const std::vector<unsigned char>& color_buffer() const { return buffer_; }
-
  private:
   OSMesaContext ctx_ = nullptr;
   int width_, height_;

@@ -129,12 +129,6 @@ void SceneGeometry::unbind() const {
   glClientActiveTexture(GL_TEXTURE0);
 }
 
-size_t SceneGeometry::total_triangles() const {
-  size_t n = 0;
-  for (const GpuMesh& g : meshes_) n += static_cast<size_t>(g.index_count) / 3;
-  return n;
-}
-
 void stream_array_buffer(GLuint buffer, const std::vector<float>& data) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),

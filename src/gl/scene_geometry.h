@@ -51,8 +51,6 @@ class SceneGeometry {
   void draw(const GpuMesh& mesh) const;
   void unbind() const;
 
-  size_t total_triangles() const;
-
  private:
   std::vector<GpuMesh> meshes_;
   glm::dvec3 origin_;

@@ -1,6 +1,5 @@
 #include "regress/junit.h"
 
-#include <cstdio>
 #include <map>
 #include <sstream>
 

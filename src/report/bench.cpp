@@ -248,6 +248,14 @@ void set_timing_mode(BenchOptions& o, TimingMode mode) {
   }
 }
 
+const std::map<std::string, VariantSelection>& variant_selections() {
+  static const std::map<std::string, VariantSelection> names = {
+      {"all", VariantSelection::All},
+      {"default", VariantSelection::Defaults},
+      {"story", VariantSelection::Story}};
+  return names;
+}
+
 bool selected(const PathInfo& path, const VariantInfo& variant, VariantSelection selection) {
   if (selection == VariantSelection::All || variant.name == path.variants.front().name) return true;
   return selection == VariantSelection::Story && variant.run == VariantRun::Story;

@@ -28,6 +28,8 @@ const char* to_string(TimingMode mode);
 // Which variants of each path get rows (bench --variants): every one, each path's default, or
 // the default and the variants marked VariantRun::Story (./run.sh's quick run).
 enum class VariantSelection { All, Defaults, Story };
+// The names --variants takes (bench and sweep): "all", "default", "story".
+const std::map<std::string, VariantSelection>& variant_selections();
 bool selected(const PathInfo& path, const VariantInfo& variant, VariantSelection selection);
 
 struct BenchOptions {

@@ -1,6 +1,5 @@
 #include "report/bench_compare.h"
 
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/stopwatch.h"
+
 namespace lt {
 
 std::optional<double> seconds_left(std::size_t done, std::size_t total, double elapsed_s) {
@@ -43,8 +45,7 @@ void BenchProgress::start_phase(std::string phase, std::size_t total) {
 
 void BenchProgress::step(const std::string& what) {
   if (!live_) return;
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - phase_start_).count();
+  const double elapsed = seconds_since(phase_start_);
   // A pace from under two seconds of work says little (the first rows' start-up dominates it).
   const std::optional<double> left =
       elapsed >= 2.0 ? seconds_left(done_, total_, elapsed) : std::nullopt;

@@ -1,7 +1,6 @@
 #include "report/sweep.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
 
 #include "core/fixed.h"

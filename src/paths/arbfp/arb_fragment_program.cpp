@@ -16,8 +16,7 @@ using ir::Reg;
 
 namespace {
 
-// The program's own description, at its top (what `ltrender info --source` shows).
-// The programs' own description, at their top (what `ltrender info --source` shows).
+// The program's own description, at their top (what `ltrender info --source` shows).
 const char kFragmentHeader[] =
     R"(# arbfp path, fragment program: the equation of model.md per pixel in ARB_fragment_program
 # assembly (the SM2 model). Generated per material by src/paths/arbfp/arb_generator.cpp, which

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/stopwatch.h"
 #include "gl/context.h"
 #include "gl/map_texture.h"
 #include "gl/program.h"
@@ -149,8 +150,7 @@ class CombinersPath final : public Path {
         cubes_[p.material][static_cast<size_t>(pass)] =
             build_cube_lobe(ctx_.scene, ctx_.geometry.origin(), p.material,
                             static_cast<size_t>(pass), p.kind(pass) == PassKind::LobeCubeFull);
-        cube_seconds_ +=
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        cube_seconds_ += seconds_since(t0);
       }
     }
     for (size_t i = 0; i < ctx.geometry.meshes().size(); ++i) {
@@ -181,7 +181,7 @@ class CombinersPath final : public Path {
     std::vector<VertexTerms> terms(meshes.size());
     for (size_t i = 0; i < meshes.size(); ++i)
       terms[i] = vertex_terms(ctx_.scene, ctx_.geometry.origin(), i, table_of(i));
-    cpu_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    cpu_seconds_ = seconds_since(t0);
 
     begin_frame(ctx_);
     glDepthFunc(GL_LESS);

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <utility>
 
+#include "core/stopwatch.h"
+
 namespace lt {
 
 CpuShadedPath::CpuShadedPath(const PathContext& ctx, const std::string& gbuffer_user,
@@ -13,7 +15,7 @@ void CpuShadedPath::frame() {
   gbuffer_.rasterise();
   const auto t0 = std::chrono::steady_clock::now();
   shade();
-  shading_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  shading_seconds_ = seconds_since(t0);
 }
 
 std::vector<BuiltStage> CpuShadedPath::stages() const {

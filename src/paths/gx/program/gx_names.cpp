@@ -16,13 +16,6 @@ const GxName* find_gx_name(std::string_view name) {
   return it == index.end() ? nullptr : it->second;
 }
 
-std::string gx_name_of(NameGroup group, long long value) {
-  for (const GxName& n : kGxNames) {
-    if (n.group == group && n.value == value) return n.name;
-  }
-  return "";
-}
-
 std::string describe(NameGroup group) {
   switch (group) {
     case NameGroup::PosMtx:

@@ -20,9 +20,6 @@ const GxName* find_gx_name(std::string_view name);
 // "a colour input (GX_CC_*)": how a message names what a parameter expects.
 std::string describe(NameGroup group);
 
-// The name of `value` in `group` (the first in table order), for printing; empty if none.
-std::string gx_name_of(NameGroup group, long long value);
-
 // The compile-time side of the table: a GX_* name of group G, looked up while ltrender is
 // compiled. `GxConst<NameGroup::ColorArg>{"GX_CC_RASC"}` compiles; a misspelt name or one of
 // another group ("GX_CA_ZERO" where a colour input is expected) is a compile error naming

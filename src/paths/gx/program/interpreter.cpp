@@ -55,10 +55,4 @@ GxState run_program(const std::string& file,
   return m.state;
 }
 
-std::vector<std::string> modelled_calls() {
-  std::vector<std::string> out;
-  for (const auto& [name, info] : interp::calls()) out.push_back(name);
-  return out;
-}
-
 }  // namespace lt::gx

@@ -19,7 +19,4 @@ namespace lt::gx {
 GxState run_program(const std::string& file,
                     const std::vector<const std::vector<Statement>*>& blocks);
 
-// The calls the interpreter understands, for help texts and docs/.
-std::vector<std::string> modelled_calls();
-
 }  // namespace lt::gx
