@@ -184,13 +184,9 @@ void import_objects(const std::vector<ObjectDescription>& objects, const std::st
   std::map<fs::path, ImportedFile> files;
   for (const ObjectDescription& object : objects) {
     if (object.source != ObjectDescription::Source::Gltf) continue;
-    auto it = files.find(object.path.lexically_normal());
-    if (it == files.end()) {
-      it = files
-               .emplace(object.path.lexically_normal(),
-                        ImportedFile{
-                            std::make_shared<const Document>(read_document(object.path)), {}, {}})
-               .first;
+    auto [it, first] = files.try_emplace(object.path.lexically_normal());
+    if (first) {
+      it->second.doc = std::make_shared<const Document>(read_document(object.path));
       for (const std::string& w : it->second.doc->warnings) {
         if (it->second.notes.insert(w).second) scene.import_notes.push_back(w);
       }
