@@ -128,7 +128,7 @@ Scene load_scene(const fs::path& path, const SceneOptions& options) {
                      "only a glTF scene (.gltf, .glb) has named cameras");
   }
   try {
-    Scene scene = gltf_file ? gltf::load_gltf_scene(path, options.camera)
+    Scene scene = gltf_file ? gltf::load_gltf_scene(gltf::describe_gltf_scene(path), options.camera)
                             : load_scene(parse_scene_file(path));
     if (options.default_lights && renders_unlit(scene)) {
       scene.default_lights = add_default_lights(scene);

@@ -26,8 +26,8 @@ struct SceneOptions {
 // vertex colours for "thickness": "vertex", UVs for a map) name the scene's key.
 Scene load_scene(SceneDescription description);
 
-// Parses (scene/scene_parse.h) and loads. A .gltf or .glb is imported as a whole scene
-// (load/gltf/gltf_scene.h), its errors naming the JSON pointer. Adds the default lights when
+// Parses (scene/scene_parse.h) and loads. A .gltf or .glb is described then loaded as a whole
+// scene (load/gltf/gltf_scene.h), its errors naming the JSON pointer. Adds the default lights when
 // `options` asks and the scene has none, and prints the scene's warnings, once.
 Scene load_scene(const std::filesystem::path& path, const SceneOptions& options = {});
 

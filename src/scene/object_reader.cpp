@@ -31,7 +31,7 @@ double ObjectReader::number(const std::string& key, std::optional<double> def, d
   const double d = v.get<double>();
   if (!std::isfinite(d)) fail(key_path(key), "must be finite");
   if (d < lo || d > hi) {
-    fail(key_path(key), "out of range: " + v.dump() + " (allowed " + range(lo, hi) + ")");
+    fail(key_path(key), "out of range: " + v.dump() + " (allowed " + range_text(lo, hi) + ")");
   }
   return d;
 }
@@ -45,7 +45,7 @@ int ObjectReader::integer(const std::string& key, int def, int lo, int hi) {
   if (!v.is_number_integer()) fail(key_path(key), "expected an integer");
   const auto i = v.get<long long>();
   if (i < lo || i > hi) {
-    fail(key_path(key), "out of range: " + v.dump() + " (allowed " + range(lo, hi) + ")");
+    fail(key_path(key), "out of range: " + v.dump() + " (allowed " + range_text(lo, hi) + ")");
   }
   return static_cast<int>(i);
 }
@@ -69,7 +69,7 @@ glm::dvec3 ObjectReader::vec3_value(const json& v, const std::string& kp, double
     r[i] = v[i].get<double>();
     if (!std::isfinite(r[i])) fail(kp, "must be finite");
     if (r[i] < lo || r[i] > hi) {
-      fail(kp, "component out of range: " + v[i].dump() + " (allowed " + range(lo, hi) + ")");
+      fail(kp, "component out of range: " + v[i].dump() + " (allowed " + range_text(lo, hi) + ")");
     }
   }
   return r;
@@ -106,12 +106,12 @@ void ObjectReader::finish() const {
   }
 }
 
-std::string ObjectReader::range(double lo, double hi) {
+std::string range_text(double lo, double hi) {
   // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on chained operator+ here.
   auto s = [](double v) {
     if (v == INFINITY) return std::string("inf");
     if (v == -INFINITY) return std::string("-inf");
-    return json(v).dump();
+    return nlohmann::json(v).dump();
   };
   std::string r = "[";
   r.append(s(lo)).append(", ").append(s(hi)).append("]");

@@ -43,13 +43,14 @@ class ObjectReader {
   void finish() const;
 
  private:
-  static std::string range(double lo, double hi);
-
   const json& j_;
   std::string path_;
   const std::string& file_;
   std::set<std::string> used_;
 };
+
+// "[lo, hi]" as the range errors write it ("inf" for an infinite bound).
+std::string range_text(double lo, double hi);
 
 // JSON may hold "\u0000", the file system cannot: every system call would stop at the NUL (and
 // read another file), and so would the printed message. Refuses `file_name` at `key` if it has one.

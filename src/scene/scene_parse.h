@@ -1,6 +1,6 @@
 // A scene JSON (scene-format.md) read into its description (scene/scene_description.h): every key
-// checked, nothing it names read. A .gltf or .glb scene has no description: the glTF importer
-// (load/gltf/gltf_scene.h) reads it whole when it is loaded.
+// checked, nothing it names read. A .gltf or .glb scene is described by the glTF parse stage
+// (load/gltf/gltf_scene.h), which reads what tinygltf reads: the file, its buffers and images.
 #pragma once
 
 #include <filesystem>

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "load/gltf/gltf_importer.h"
 #include "load/gltf/gltf_scene.h"
 #include "scene/scene_limits.h"
 

@@ -5,9 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "load/gltf/gltf_document.h"
-#include "load/gltf/gltf_importer.h"
-#include "scene/scene.h"
+#include "load/gltf/gltf_description.h"
 
 namespace lt::gltf {
 

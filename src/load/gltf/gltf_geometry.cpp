@@ -3,7 +3,8 @@
 #include <cmath>
 
 #include "load/gltf/gltf_accessor.h"
-#include "load/gltf/gltf_notes.h"
+#include "load/gltf/gltf_importer.h"
+#include "load/gltf/gltf_textures.h"
 #include "load/gltf/gltf_topology.h"
 #include "scene/scene_limits.h"
 
@@ -19,12 +20,13 @@ bool is_read_attribute(const std::string& name, const std::string& uv_name) {
 
 }  // namespace
 
-PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_index,
-                             const TextureCoordinates& uv_source) {
+TriangleMesh load_primitive(const Document& doc, const PrimitiveDescription& d, const Material& mat,
+                            const TextureCoordinates& uv_source, std::size_t& vertices,
+                            Notes& notes) {
   const std::string ptr =
-      "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(primitive_index);
-  const tinygltf::Primitive& prim = doc.model.meshes[static_cast<std::size_t>(mesh_index)]
-                                        .primitives[static_cast<std::size_t>(primitive_index)];
+      "/meshes/" + std::to_string(d.mesh) + "/primitives/" + std::to_string(d.primitive);
+  const tinygltf::Primitive& prim = doc.model.meshes[static_cast<std::size_t>(d.mesh)]
+                                        .primitives[static_cast<std::size_t>(d.primitive)];
   // §3.7.2.1: mode defaults to 4 (TRIANGLES); strips and fans become triangle lists, the one
   // topology the paths draw. Points and lines are the importer's to skip (carries_surface).
   if (!carries_surface(prim.mode)) {
@@ -33,8 +35,7 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
                                 ") carries no surface: TRIANGLES, TRIANGLE_STRIP or "
                                 "TRIANGLE_FAN (4, 5, 6) are drawn");
   }
-  PrimitiveMesh out;
-  TriangleMesh& mesh = out.mesh;
+  TriangleMesh mesh;
   auto attribute = [&](const char* name) {
     auto it = prim.attributes.find(name);
     return it == prim.attributes.end() ? -1 : it->second;
@@ -93,12 +94,12 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
   auto triangles = assemble_triangles(prim.mode, indices);
   if (!triangles) doc.fail(ptr, count_mismatch(prim.mode, indices.size(), prim.indices >= 0));
   mesh.triangles = std::move(*triangles);
-  out.notes.push_back(
-      "mapped " + ptr + ": " + std::to_string(mesh.triangles.size()) + " triangles" +
-      (prim.mode == TINYGLTF_MODE_TRIANGLES
-           ? std::string()
-           : std::string(" (from a ") + mode_name(prim.mode) + ")") +
-      ", " + std::to_string(n) + " vertices" + (prim.indices >= 0 ? ", indexed" : ", not indexed"));
+  notes.push_back("mapped " + ptr + ": " + std::to_string(mesh.triangles.size()) + " triangles" +
+                  (prim.mode == TINYGLTF_MODE_TRIANGLES
+                       ? std::string()
+                       : std::string(" (from a ") + mode_name(prim.mode) + ")") +
+                  ", " + std::to_string(n) + " vertices" +
+                  (prim.indices >= 0 ? ", indexed" : ", not indexed"));
 
   // NORMAL: unit vectors by §3.7.2.1; anything not finite or of zero length is recomputed, as
   // the mesh reader does.
@@ -117,9 +118,9 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
   }
   if (!normals_usable) {
     compute_area_weighted_normals(mesh);
-    out.notes.push_back("computed " + ptr + "/attributes/NORMAL: " +
-                        std::string(normal >= 0 ? "not finite or zero somewhere" : "absent") +
-                        ", computed from the triangles (area-weighted)");
+    notes.push_back("computed " + ptr + "/attributes/NORMAL: " +
+                    std::string(normal >= 0 ? "not finite or zero somewhere" : "absent") +
+                    ", computed from the triangles (area-weighted)");
   }
 
   // COLOR_0: vec3 or vec4, float or normalised u8/u16 (§3.7.2.1); alpha is not part of the term.
@@ -143,19 +144,37 @@ PrimitiveMesh read_primitive(const Document& doc, int mesh_index, int primitive_
     // OBJ's vt and the UV baker do: v flips here, once, after a KHR_texture_transform.
     for (std::size_t v = 0; v < n; ++v)
       mesh.uvs[v] = importer_uv(uv_source, {a.values[v * 2], a.values[v * 2 + 1]});
-    out.notes.push_back(
-        "kept " + ptr + "/attributes/" + uv_name +
-        " (for maps; v flipped to OpenGL's bottom-up convention" +
-        (uv_source.transform ? ", after the material's KHR_texture_transform" : "") + ")");
+    notes.push_back("kept " + ptr + "/attributes/" + uv_name +
+                    " (for maps; v flipped to OpenGL's bottom-up convention" +
+                    (uv_source.transform ? ", after the material's KHR_texture_transform" : "") +
+                    ")");
   }
   for (const auto& [name, index] : prim.attributes) {
     if (!is_read_attribute(name, uv_name)) {
-      out.notes.push_back("ignored " + ptr + "/attributes/" + name + ": not part of the term");
+      notes.push_back("ignored " + ptr + "/attributes/" + name + ": not part of the term");
     }
   }
   note_unmapped_keys(at_pointer(doc.json, ptr), ptr, {"attributes", "indices", "material", "mode"},
-                     "not part of the term (targets: morph targets are not animated)", out.notes);
-  return out;
+                     "not part of the term (targets: morph targets are not animated)", notes);
+  vertices += n;
+  if (vertices > kMaxSceneVertices)
+    doc.fail(ptr, over_limit_message(vertices, "vertices", kMaxSceneVertices));
+  if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
+    if (!mesh.has_colors())
+      doc.fail(ptr, "material \"" + mat.name +
+                        "\" takes its thickness from COLOR_0, which this primitive lacks");
+    check_vertex_thickness(mesh, doc.path.string(), ptr + "/attributes/COLOR_0", "the primitive");
+  } else if (mesh.has_colors()) {
+    notes.push_back("ignored " + ptr +
+                    "/attributes/COLOR_0 as base colour: read and kept, the thickness only with "
+                    "extras.ltrender.thickness \"vertex\"");
+  }
+  check_uvs_for_material(mesh, mat, doc.path.string(), ptr, "the primitive");
+  transform_to_world(mesh, d.world);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    check_world_point(doc, d.node_ptr, mesh.positions[v],
+                      "vertex " + std::to_string(v) + " of " + ptr);
+  return mesh;
 }
 
 }  // namespace lt::gltf

@@ -3,27 +3,21 @@
 // (gltf_topology.h).
 #pragma once
 
-#include <string>
-#include <vector>
-
-#include "load/gltf/gltf_document.h"
-#include "load/gltf/gltf_textures.h"
-#include "scene/triangle_mesh.h"
+#include "load/gltf/gltf_description.h"
+#include "load/gltf/gltf_notes.h"
 
 namespace lt::gltf {
 
-struct PrimitiveMesh {
-  TriangleMesh mesh;               // object space of its node
-  std::vector<std::string> notes;  // what was read, what was computed, what was ignored
-};
-
-// Reads /meshes/{mesh}/primitives/{primitive}. Throws InputError naming the pointer for: a mode
-// that carries no surface (the importer skips points and lines before; this names any other), an
-// index or vertex count that does not fit the mode, a missing POSITION, NaN, Inf or |x| >
-// kMaxCoordinate positions, indices that are not unsigned integers or reach past the vertices,
-// attributes of different lengths, and any accessor error (gltf_accessor.h). The UVs are
+// The load stage of primitive `d`: its mesh decoded, checked against its material `mat` and
+// placed in world space, its notes appended to `notes`. Throws InputError naming the pointer for:
+// a mode that carries no surface (the importer skips points and lines before; this names any
+// other), an index or vertex count that does not fit the mode, a missing POSITION, NaN, Inf or
+// |x| > kMaxCoordinate positions, indices that are not unsigned integers or reach past the
+// vertices, attributes of different lengths, any accessor error (gltf_accessor.h), the scene's
+// `vertices` passing kMaxSceneVertices, a COLOR_0 or TEXCOORD_n the material reads and the
+// primitive lacks, and a vertex its node puts beyond the coordinate limit. The UVs are
 // TEXCOORD_<uv.set> (through uv.transform), those its material's albedo map reads.
-PrimitiveMesh read_primitive(const Document& doc, int mesh, int primitive,
-                             const TextureCoordinates& uv = {});
+TriangleMesh load_primitive(const Document& doc, const PrimitiveDescription& d, const Material& mat,
+                            const TextureCoordinates& uv, std::size_t& vertices, Notes& notes);
 
 }  // namespace lt::gltf

@@ -5,7 +5,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.h"
-#include "load/gltf/gltf_geometry.h"
 #include "load/gltf/gltf_lights.h"
 #include "load/gltf/gltf_materials.h"
 #include "load/gltf/gltf_notes.h"
@@ -52,24 +51,22 @@ int Importer::material(int index) {
   if (material_override >= 0) return material_override;
   auto it = material_of.find(index);
   if (it != material_of.end()) return it->second;
-  if (scene.materials.size() >= kMaxMaterials) {
-    doc.fail("/materials",
-             over_limit_message(scene.materials.size() + 1, "materials", kMaxMaterials));
-  }
+  const std::size_t m = out.first_material + out.materials.size();
+  if (m >= kMaxMaterials)
+    doc.fail("/materials", over_limit_message(m + 1, "materials", kMaxMaterials));
   if (index >= static_cast<int>(doc.model.materials.size())) {
     doc.fail("/materials/" + std::to_string(index), "no such material");
   }
-  TextureCoordinates uv;
-  Material mat = index < 0 ? default_material() : map_material(doc, index, scene.import_notes, &uv);
+  GltfMaterial mat =
+      index < 0 ? GltfMaterial{default_material(), {}, {}} : map_material(doc, index, out.notes);
+  if (mat.texture) mat.uv = mat.texture->coordinates;
   if (overrides) {
     // A scene's albedo map replaces the file's texture and reads TEXCOORD_0 as it is.
-    if (const MaterialOverride* o = override_for(index); o && o->material.albedo_map) uv = {};
-    apply_override(index, mat);
+    if (const MaterialOverride* o = override_for(index); o && o->material.albedo_map) mat.uv = {};
+    apply_override(index, mat.material);
   }
-  scene.materials.push_back(std::move(mat));
-  const int m = static_cast<int>(scene.materials.size() - 1);
-  uv_of[m] = uv;
-  return material_of[index] = m;
+  out.materials.push_back(std::move(mat));
+  return material_of[index] = static_cast<int>(m);
 }
 
 // The override that selects material `index` (-1: the default material): by its name, else
@@ -93,7 +90,7 @@ void Importer::apply_override(int index, Material& mat) {
   // An albedo map given here replaces the file's base colour texture; it reads TEXCOORD_0.
   if (o->material.albedo_map) mat.albedo_map = o->material.albedo_map;
   if (o->material.translucency) mat.translucency = o->material.translucency;
-  scene.import_notes.push_back(
+  out.notes.push_back(
       "mapped " + o->key + " -> " +
       (index < 0 ? std::string("the default material") : "/materials/" + std::to_string(index)) +
       (o->albedo_given ? ": albedo" : ":") +
@@ -107,10 +104,9 @@ void Importer::add_mesh(int mesh_index, const glm::dmat4& world, const std::stri
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const std::string ptr =
         "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(p);
-    if (scene.objects.size() >= kMaxObjects) {
-      doc.fail(ptr,
-               over_limit_message(scene.objects.size() + 1, "objects (primitives)", kMaxObjects));
-    }
+    const std::size_t n = objects + out.primitives.size();
+    if (n >= kMaxObjects)
+      doc.fail(ptr, over_limit_message(n + 1, "objects (primitives)", kMaxObjects));
     const int mode = mesh.primitives[p].mode;
     if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
       // No surface to shade (gltf_topology.h): skipped, said once per file (skip_warning).
@@ -119,46 +115,17 @@ void Importer::add_mesh(int mesh_index, const glm::dmat4& world, const std::stri
           ptr + " (mesh " +
           json(mesh.name.empty() ? "#" + std::to_string(mesh_index) : mesh.name).dump() + ", " +
           mode_name(mode) + ")");
-      scene.import_notes.push_back("ignored " + ptr + ": " + mode_name(mode) +
-                                   " carry no surface to shade");
+      out.notes.push_back("ignored " + ptr + ": " + mode_name(mode) + " carry no surface to shade");
       continue;
     }
-    SceneObject obj;
-    obj.mesh_path = doc.path;
-    obj.material = material(mesh.primitives[p].material);
-    // The UVs the material's albedo map reads (its texCoord set and texture transform); a
-    // scene's material override reads TEXCOORD_0 as it is.
-    const auto uv = uv_of.find(obj.material);
-    PrimitiveMesh prim = read_primitive(doc, mesh_index, static_cast<int>(p),
-                                        uv == uv_of.end() ? TextureCoordinates{} : uv->second);
-    vertices += prim.mesh.positions.size();
-    if (vertices > kMaxSceneVertices)
-      doc.fail(ptr, over_limit_message(vertices, "vertices", kMaxSceneVertices));
-    scene.import_notes.insert(scene.import_notes.end(), prim.notes.begin(), prim.notes.end());
-    const Material& mat = scene.materials[static_cast<std::size_t>(obj.material)];
-    if (mat.translucency && mat.translucency->thickness_source == ThicknessSource::Vertex) {
-      if (!prim.mesh.has_colors())
-        doc.fail(ptr, "material \"" + mat.name +
-                          "\" takes its thickness from COLOR_0, which this primitive lacks");
-      check_vertex_thickness(prim.mesh, doc.path.string(), ptr + "/attributes/COLOR_0",
-                             "the primitive");
-    } else if (prim.mesh.has_colors()) {
-      scene.import_notes.push_back("ignored " + ptr +
-                                   "/attributes/COLOR_0 as base colour: read and kept, the "
-                                   "thickness only with extras.ltrender.thickness \"vertex\"");
-    }
-    check_uvs_for_material(prim.mesh, mat, doc.path.string(), ptr, "the primitive");
-    transform_to_world(prim.mesh, world);
-    for (std::size_t v = 0; v < prim.mesh.positions.size(); ++v) {
-      check_world_point(doc, node_ptr, prim.mesh.positions[v],
-                        "vertex " + std::to_string(v) + " of " + ptr);
-    }
-    obj.mesh = std::move(prim.mesh);
-    scene.objects.push_back(std::move(obj));
+    // notes_at after the material's notes: a braced list is evaluated left to right.
+    out.primitives.push_back({mesh_index, static_cast<int>(p),
+                              material(mesh.primitives[p].material), world, node_ptr,
+                              out.notes.size()});
   }
   note_unmapped_keys(at_pointer(doc.json, "/meshes/" + std::to_string(mesh_index)),
                      "/meshes/" + std::to_string(mesh_index), {"primitives"},
-                     "not part of the term", scene.import_notes);
+                     "not part of the term", out.notes);
 }
 
 void Importer::visit(int node_index, const glm::dmat4& parent, int depth) {
@@ -175,26 +142,24 @@ void Importer::visit(int node_index, const glm::dmat4& parent, int depth) {
     doc.fail(ptr + "/camera", "no such camera");
   if (node.mesh >= 0) add_mesh(node.mesh, world, ptr);
   if (node.camera >= 0) {
-    cameras.push_back({node.camera, node_index, world});
+    out.cameras.push_back({node.camera, node_index, world});
     if (!import_lights)
-      scene.import_notes.push_back("ignored " + ptr +
-                                   "/camera: a JSON scene's object brings no camera");
+      out.notes.push_back("ignored " + ptr + "/camera: a JSON scene's object brings no camera");
   }
   const json& light = at_pointer(doc.json, ptr + "/extensions/KHR_lights_punctual/light");
   if (light.is_number_integer() && !import_lights) {
-    scene.import_notes.push_back(
-        "ignored " + ptr +
-        "/extensions/KHR_lights_punctual: a JSON scene's object brings no lights");
+    out.notes.push_back("ignored " + ptr +
+                        "/extensions/KHR_lights_punctual: a JSON scene's object brings no lights");
   } else if (light.is_number_integer()) {
-    if (scene.lights.size() >= kMaxLights)
-      doc.fail(ptr, over_limit_message(scene.lights.size() + 1, "lights", kMaxLights));
-    scene.lights.push_back(map_light(doc, light.get<int>(), world, scene.import_notes));
-    check_world_point(doc, ptr, scene.lights.back().position, "its light");
+    if (out.lights.size() >= kMaxLights)
+      doc.fail(ptr, over_limit_message(out.lights.size() + 1, "lights", kMaxLights));
+    out.lights.push_back(map_light(doc, light.get<int>(), world, out.notes));
+    check_world_point(doc, ptr, out.lights.back().position, "its light");
   }
   note_unmapped_keys(at_pointer(doc.json, ptr), ptr,
                      {"children", "matrix", "translation", "rotation", "scale", "mesh", "camera",
                       "KHR_lights_punctual"},
-                     "not part of the term (no skinning or animation)", scene.import_notes);
+                     "not part of the term (no skinning or animation)", out.notes);
   for (int child : node.children) visit(child, world, depth + 1);
 }
 

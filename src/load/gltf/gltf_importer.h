@@ -1,6 +1,7 @@
 // The walk over a glTF file's node hierarchy that both imports share (gltf_scene.h): a whole
-// .gltf/.glb scene and a JSON scene's glTF object. It maps each material once, reads each
-// primitive into a SceneObject in world space, and collects the cameras and lights it meets.
+// .gltf/.glb scene and a JSON scene's glTF object. The parse stage: it maps each material once,
+// describes each primitive as an object with its world matrix, maps the lights and collects the
+// cameras it meets, into a GltfDescription (gltf_description.h); nothing is decoded.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -8,9 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "load/gltf/gltf_document.h"
-#include "load/gltf/gltf_textures.h"
-#include "scene/scene.h"
+#include "load/gltf/gltf_description.h"
 #include "scene/scene_description.h"
 
 namespace lt::gltf {
@@ -29,21 +28,13 @@ void check_world_point(const Document& doc, const std::string& node_ptr, const g
 // material (an override's "#N": /materials/N) without a name. -1 when `text` is not an index.
 int hash_index(const std::string& text);
 
-// A camera on a node of the scene, with the node's world matrix.
-struct CameraInstance {
-  int camera, node;
-  glm::dmat4 world;
-};
-
 struct Importer {
   const Document& doc;
-  Scene& scene;
+  GltfDescription& out;
   std::map<int, int> material_of;  // glTF material (-1: default) -> Scene::materials index
-  std::vector<CameraInstance> cameras;
-  std::size_t vertices = 0;
-  bool import_lights = true;  // false for a JSON scene's object: the scene has its own
+  std::size_t objects = 0;         // the scene's before this import: its limit counts them
+  bool import_lights = true;       // false for a JSON scene's object: the scene has its own
   int material_override = -1;
-  std::map<int, TextureCoordinates> uv_of = {};  // Scene::materials index -> its albedo map's UVs
   const std::vector<MaterialOverride>* overrides = nullptr;  // a JSON scene's object's
   // Point and line primitives met, skipped: "/meshes/0/primitives/1 (mesh \"Wire\", LINES)".
   std::vector<std::string> skipped{};
@@ -51,13 +42,14 @@ struct Importer {
   std::string first_skipped_name{};  // and its mode's name
 
   // The Scene::materials index of glTF material `index` (-1: the default material): mapped and
-  // appended the first time, with the override that selects it (a JSON scene's object).
+  // appended to out.materials the first time, with the override that selects it (a JSON scene's
+  // object).
   int material(int index);
   // The override that selects material `index` (-1: the default material): by its name, else
   // by "#index", else "*".
   const MaterialOverride* override_for(int index) const;
   void apply_override(int index, Material& mat);
-  // The primitives of /meshes/{mesh_index}, placed by `world` (the node at `node_ptr`).
+  // The primitives of /meshes/{mesh_index}, placed by `world` (the node at `node_ptr`): described.
   void add_mesh(int mesh_index, const glm::dmat4& world, const std::string& node_ptr);
   // The node, its mesh, camera and light, then its children.
   void visit(int node_index, const glm::dmat4& parent, int depth);

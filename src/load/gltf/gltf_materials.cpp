@@ -68,11 +68,12 @@ Material default_material() {
   return m;
 }
 
-Material map_material(const Document& doc, int index, Notes& notes, TextureCoordinates* uv) {
+GltfMaterial map_material(const Document& doc, int index, Notes& notes) {
   const std::string file = doc.path.string();
   const std::string ptr = "/materials/" + std::to_string(index);
   const json& j = at_pointer(doc.json, ptr);
-  Material mat;
+  GltfMaterial out;
+  Material& mat = out.material;
   mat.name = j.value("name", std::string());
   if (mat.name.empty()) mat.name = ptr;
 
@@ -81,11 +82,8 @@ Material map_material(const Document& doc, int index, Notes& notes, TextureCoord
   // model.
   const json& pbr = j.contains("pbrMetallicRoughness") ? j["pbrMetallicRoughness"] : json::object();
   const std::string pbr_ptr = ptr + "/pbrMetallicRoughness";
-  if (pbr.contains("baseColorTexture")) {
-    BaseColourTexture t = read_base_colour_texture(doc, pbr_ptr + "/baseColorTexture", notes);
-    mat.albedo_map = std::move(t.map);
-    if (uv) *uv = t.coordinates;
-  }
+  if (pbr.contains("baseColorTexture"))
+    out.texture = describe_base_colour_texture(doc, pbr_ptr + "/baseColorTexture", notes);
   const auto base =
       bounded_numbers(pbr, "baseColorFactor", 4, {1, 1, 1, 1}, 0, kMaxColour, file, pbr_ptr);
   mat.albedo = vec3_of(base);
@@ -160,7 +158,7 @@ Material map_material(const Document& doc, int index, Notes& notes, TextureCoord
       j, ptr,
       {"pbrMetallicRoughness", "KHR_materials_volume", "KHR_materials_diffuse_transmission"},
       "not part of the term", notes);
-  return mat;
+  return out;
 }
 
 }  // namespace lt::gltf

@@ -2,7 +2,6 @@
 // the term's Material; docs/scenes-and-gltf.md's glTF table gives each row and its reason.
 #pragma once
 
-#include "load/gltf/gltf_document.h"
 #include "load/gltf/gltf_notes.h"
 #include "load/gltf/gltf_textures.h"
 #include "scene/scene.h"
@@ -13,12 +12,11 @@ namespace lt::gltf {
 inline constexpr double kDefaultPower = 8;
 inline constexpr double kDefaultDistortion = 0.2;
 
-// Maps /materials/{index}: a baseColorTexture becomes the albedo map (gltf_textures.h), and `uv`
-// (when given) the coordinates it reads. Throws InputError naming the pointer for a texture that
-// cannot be read (gltf_textures.h), a value out of the scene's bounds, and an unknown key in
+// Maps /materials/{index} but its baseColorTexture, described in `texture` (gltf_textures.h) to
+// become the albedo map when it is loaded. Throws InputError naming the pointer for a texture that
+// does not exist (gltf_textures.h), a value out of the scene's bounds, and an unknown key in
 // extras.ltrender (a typo must not silently render something else).
-Material map_material(const Document& doc, int index, Notes& notes,
-                      TextureCoordinates* uv = nullptr);
+GltfMaterial map_material(const Document& doc, int index, Notes& notes);
 
 // glTF 2.0 §3.9.6: a primitive without a material gets the default material, white and opaque:
 // plain diffuse with albedo 1 here.

@@ -4,20 +4,12 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "scene/object_reader.h"
 
 namespace lt::gltf {
 
 namespace {
 using json = nlohmann::json;
-
-std::string range_text(double lo, double hi) {
-  auto s = [](double v) {
-    return std::isinf(v) ? std::string(v > 0 ? "inf" : "-inf") : json(v).dump();
-  };
-  std::string r = "[";
-  r.append(s(lo)).append(", ").append(s(hi)).append("]");
-  return r;
-}
 
 double checked(const json& v, double lo, double hi, const std::string& file,
                const std::string& where) {

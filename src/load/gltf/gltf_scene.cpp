@@ -7,8 +7,10 @@
 #include "core/error.h"
 #include "load/gltf/gltf_cameras.h"
 #include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_geometry.h"
 #include "load/gltf/gltf_importer.h"
 #include "load/gltf/gltf_notes.h"
+#include "load/gltf/gltf_textures.h"
 
 namespace lt::gltf {
 
@@ -43,10 +45,16 @@ const std::vector<int>& scene_roots(const Document& doc, int& scene_index) {
   return doc.model.scenes[static_cast<std::size_t>(scene_index)].nodes;
 }
 
-// The one warning line of a file whose point or line primitives were skipped (empty: none), and
+// The one warning line of a file whose point or line primitives were skipped (empty: none), or
 // the refusal when nothing else was left to draw.
-std::string skip_warning(const Document& doc, const std::vector<std::string>& skipped) {
+std::string skip_warning(const Document& doc, const Importer& im) {
+  const std::vector<std::string>& skipped = im.skipped;
   if (skipped.empty()) return "";
+  if (im.out.primitives.empty())
+    doc.fail(im.first_skipped_mode, im.first_skipped_name +
+                                        " carry no surface (points and lines are not shaded), and "
+                                        "no triangles are left to draw (" +
+                                        std::to_string(skipped.size()) + " skipped)");
   std::string list;
   for (std::size_t i = 0; i < skipped.size() && i < 3; ++i) list += (i ? ", " : "") + skipped[i];
   if (skipped.size() > 3) list += " and " + std::to_string(skipped.size() - 3) + " more";
@@ -54,19 +62,49 @@ std::string skip_warning(const Document& doc, const std::vector<std::string>& sk
          (skipped.size() == 1 ? " primitive" : " primitives") +
          " without a surface (points and lines are not shaded): " + list;
 }
-[[noreturn]] void refuse_nothing_left(const Document& doc, const Importer& im) {
-  doc.fail(im.first_skipped_mode,
-           im.first_skipped_name +
-               " carry no surface (points and lines are not shaded), and no triangles are left "
-               "to draw (" +
-               std::to_string(im.skipped.size()) + " skipped)");
+
+// The load stage: appends the description's materials, objects and lights to `scene`, and its
+// notes with each decoded item's own in the walk's place. Decodes in the walk's order, a
+// material's texture before the first primitive that uses it, so errors come as the walk met them.
+void load_description(GltfDescription& d, Scene& scene) {
+  const Document& doc = *d.doc;
+  std::size_t vertices = 0, taken = 0;
+  for (const SceneObject& o : scene.objects) vertices += o.mesh.positions.size();
+  auto notes_to = [&](std::size_t at) {  // the description's notes up to `at`
+    for (; taken < at; ++taken) scene.import_notes.push_back(std::move(d.notes[taken]));
+  };
+  for (GltfMaterial& m : d.materials) scene.materials.push_back(m.material);
+  std::vector<bool> loaded(d.materials.size());
+  for (const PrimitiveDescription& p : d.primitives) {
+    const int m = p.material - static_cast<int>(d.first_material);  // < 0: the scene's already
+    if (m >= 0 && !loaded[static_cast<std::size_t>(m)] && d.materials[m].texture) {
+      notes_to(d.materials[m].texture->notes_at);
+      auto map = load_base_colour_texture(doc, *d.materials[m].texture, scene.import_notes);
+      // A scene's override that gives an albedo map replaces the file's texture.
+      auto& albedo_map = scene.materials[static_cast<std::size_t>(p.material)].albedo_map;
+      if (!albedo_map) albedo_map = std::move(map);
+    }
+    if (m >= 0) loaded[static_cast<std::size_t>(m)] = true;
+    notes_to(p.notes_at);
+    SceneObject obj;
+    obj.mesh_path = doc.path;
+    obj.material = p.material;
+    // A scene material, or one an earlier object of the file mapped (m < 0): TEXCOORD_0 as it is.
+    obj.mesh = load_primitive(doc, p, scene.materials[static_cast<std::size_t>(p.material)],
+                              m >= 0 ? d.materials[m].uv : TextureCoordinates{}, vertices,
+                              scene.import_notes);
+    scene.objects.push_back(std::move(obj));
+  }
+  notes_to(d.notes.size());
+  scene.lights.insert(scene.lights.end(), d.lights.begin(), d.lights.end());
+  scene.warnings.insert(scene.warnings.end(), d.warnings.begin(), d.warnings.end());
 }
 
 // A file the JSON scene imports, read once however many objects take it: its materials are
 // mapped once (two objects of one file share them; appended twice they would be two materials
 // of one name, listed twice by `info` and refused by gx's C names), and a note it gives once.
 struct ImportedFile {
-  Document doc;
+  std::shared_ptr<const Document> doc;
   // As Importer::material_of, kept between its objects, per set of overrides (overrides_json).
   std::map<std::string, std::map<int, int>> material_of;
   std::set<std::string> notes;
@@ -97,15 +135,14 @@ void check_override_selectors(const ObjectDescription& object, const Document& d
 
 void import_object(const ObjectDescription& object, ImportedFile& file,
                    const std::string& scene_file, Scene& scene) {
-  const Document& doc = file.doc;
-  const std::size_t first_note = scene.import_notes.size();
+  const Document& doc = *file.doc;
   check_override_selectors(object, doc, scene_file);
-  Importer im{doc, scene, file.material_of[object.overrides_json], {}, 0};
+  GltfDescription d;
+  d.doc = file.doc, d.first_material = scene.materials.size();
+  Importer im{doc, d, file.material_of[object.overrides_json], scene.objects.size()};
   im.overrides = &object.overrides;
-  for (const SceneObject& o : scene.objects) im.vertices += o.mesh.positions.size();
   im.import_lights = false;
   im.material_override = object.material;
-  const std::size_t first = scene.objects.size();
   if (object.node.empty()) {
     int scene_index = 0;
     for (int root : scene_roots(doc, scene_index)) im.visit(root, object.transform.matrix(), 0);
@@ -119,18 +156,17 @@ void import_object(const ObjectDescription& object, ImportedFile& file,
                        "no node named \"" + object.node + "\" in " + object.path.string());
     im.visit(found, object.transform.matrix() * ancestors_matrix(doc, found), 0);
   }
-  if (scene.objects.size() == first && !im.skipped.empty()) refuse_nothing_left(doc, im);
-  const std::string warning = skip_warning(doc, im.skipped);
-  if (!warning.empty() && file.notes.insert(warning).second) scene.warnings.push_back(warning);
-  if (scene.objects.size() == first)
+  const std::string warning = skip_warning(doc, im);
+  if (!warning.empty() && file.notes.insert(warning).second) d.warnings.push_back(warning);
+  if (d.primitives.empty())
     throw InputError(
         scene_file, object.key,
         "no mesh under " +
             (object.node.empty() ? std::string("the scene") : "node \"" + object.node + "\"") +
             " of " + object.path.string());
-  for (std::size_t i = first; i < scene.objects.size(); ++i)
-    scene.objects[i].transform = Transform{};
   file.material_of[object.overrides_json] = im.material_of;
+  const std::size_t first_note = scene.import_notes.size();
+  load_description(d, scene);
   // The file's notes once: a second object of the file repeats what the first one noted.
   auto kept = scene.import_notes.begin() + static_cast<std::ptrdiff_t>(first_note);
   for (auto it = kept; it != scene.import_notes.end(); ++it) {
@@ -148,13 +184,10 @@ void import_objects(const std::vector<ObjectDescription>& objects, const std::st
   std::map<fs::path, ImportedFile> files;
   for (const ObjectDescription& object : objects) {
     if (object.source != ObjectDescription::Source::Gltf) continue;
-    auto it = files.find(object.path.lexically_normal());
-    if (it == files.end()) {
-      it = files
-               .emplace(object.path.lexically_normal(),
-                        ImportedFile{read_document(object.path), {}, {}})
-               .first;
-      for (const std::string& w : it->second.doc.warnings) {
+    auto [it, first] = files.try_emplace(object.path.lexically_normal());
+    if (first) {
+      it->second.doc = std::make_shared<const Document>(read_document(object.path));
+      for (const std::string& w : it->second.doc->warnings) {
         if (it->second.notes.insert(w).second) scene.import_notes.push_back(w);
       }
     }
@@ -162,31 +195,36 @@ void import_objects(const std::vector<ObjectDescription>& objects, const std::st
   }
 }
 
-Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
-  const Document doc = read_document(path);
-  Scene scene;
-  scene.file = path;
-  scene.width = kDefaultWidth;
-  scene.height = kDefaultHeight;
-  Importer im{doc, scene, {}, {}, 0};
-  scene.import_notes.insert(scene.import_notes.end(), doc.warnings.begin(), doc.warnings.end());
-
+GltfDescription describe_gltf_scene(const fs::path& path) {
+  GltfDescription d;
+  d.doc = std::make_shared<const Document>(read_document(path));
+  const Document& doc = *d.doc;
+  d.notes = doc.warnings;
+  Importer im{doc, d, {}, 0};
   int scene_index = 0;
   for (int root : scene_roots(doc, scene_index)) im.visit(root, glm::dmat4(1.0), 0);
   for (std::size_t s = 0; s < doc.model.scenes.size(); ++s) {
     if (static_cast<int>(s) != scene_index)
-      scene.import_notes.push_back("ignored /scenes/" + std::to_string(s) +
-                                   ": not the scene to render");
+      d.notes.push_back("ignored /scenes/" + std::to_string(s) + ": not the scene to render");
   }
-  if (scene.objects.empty() && !im.skipped.empty()) refuse_nothing_left(doc, im);
-  if (scene.objects.empty())
+  const std::string warning = skip_warning(doc, im);
+  if (d.primitives.empty())
     doc.fail("/scenes/" + std::to_string(scene_index), "the scene has no mesh to render");
-  if (!im.skipped.empty()) scene.warnings.push_back(skip_warning(doc, im.skipped));
+  if (!warning.empty()) d.warnings.push_back(warning);
+  return d;
+}
 
+Scene load_gltf_scene(GltfDescription d, const std::string& camera) {
+  const Document& doc = *d.doc;
+  Scene scene;
+  scene.file = doc.path;
+  scene.width = kDefaultWidth;
+  scene.height = kDefaultHeight;
+  load_description(d, scene);
   if (!camera.empty()) {
-    camera_from(doc, chosen_camera(doc, im.cameras, camera), scene);
-  } else if (!im.cameras.empty()) {
-    camera_from(doc, im.cameras.front(), scene);
+    camera_from(doc, chosen_camera(doc, d.cameras, camera), scene);
+  } else if (!d.cameras.empty()) {
+    camera_from(doc, d.cameras.front(), scene);
   } else {
     framing_camera(scene);
   }
@@ -195,22 +233,15 @@ Scene load_gltf_scene(const fs::path& path, const std::string& camera) {
         "no KHR_lights_punctual light in the scene (`info`'s lights line says what lights it)");
 
   // Textures, images and samplers are read through a base colour texture (its own notes say
-  // which); without one they are listed as ignored.
+  // which); without one they are listed as ignored ("asset" again instead: mapped already).
   const bool sampled = std::any_of(scene.materials.begin(), scene.materials.end(),
                                    [](const Material& m) { return m.albedo_map != nullptr; });
-  if (sampled) {
-    note_unmapped_keys(doc.json, "",
-                       {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews",
-                        "buffers", "textures", "images", "samplers", "materials", "cameras",
-                        "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
-                       "not used by the term", scene.import_notes);
-  } else {
-    note_unmapped_keys(
-        doc.json, "",
-        {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
-         "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
-        "not used by the term", scene.import_notes);
-  }
+  note_unmapped_keys(
+      doc.json, "",
+      {"asset", "scene", "scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers",
+       sampled ? "textures" : "asset", sampled ? "images" : "asset", sampled ? "samplers" : "asset",
+       "materials", "cameras", "extensionsUsed", "extensionsRequired", "KHR_lights_punctual"},
+      "not used by the term", scene.import_notes);
   return scene;
 }
 

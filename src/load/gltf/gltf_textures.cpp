@@ -103,13 +103,14 @@ glm::dvec2 importer_uv(const TextureCoordinates& c, glm::dvec2 gltf_uv) {
   return {gltf_uv.x, 1 - gltf_uv.y};
 }
 
-BaseColourTexture read_base_colour_texture(const Document& doc, const std::string& pointer,
-                                           Notes& notes) {
+TextureDescription describe_base_colour_texture(const Document& doc, const std::string& pointer,
+                                                Notes& notes) {
   const std::string file = doc.path.string();
   const json& info = at_pointer(doc.json, pointer);
   if (!info.is_object() || !info.contains("index") || !info["index"].is_number_integer())
     doc.fail(pointer, "expected a textureInfo with an integer index");
-  BaseColourTexture out;
+  TextureDescription out;
+  out.pointer = pointer;
   const int index = info["index"].get<int>();
   out.coordinates.set =
       static_cast<int>(bounded_number(info, "texCoord", 0, 0, 255, file, pointer));
@@ -123,20 +124,17 @@ BaseColourTexture read_base_colour_texture(const Document& doc, const std::strin
                      (texture.contains("extensions") ? texture["extensions"].dump()
                                                      : std::string("none named")) +
                      ") is not decoded, only PNG and JPEG");
-  const int source = doc.model.textures[static_cast<size_t>(index)].source;
-  if (source < 0 || source >= static_cast<int>(doc.model.images.size()))
+  out.image = doc.model.textures[static_cast<size_t>(index)].source;
+  if (out.image < 0 || out.image >= static_cast<int>(doc.model.images.size()))
     doc.fail(tp + "/source", "no such image");
-  const std::string ip = "/images/" + std::to_string(source);
-
-  TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
   if (texture.contains("sampler")) {
     const int si = doc.model.textures[static_cast<size_t>(index)].sampler;
     if (si < 0 || si >= static_cast<int>(doc.model.samplers.size()))
       doc.fail(tp + "/sampler", "no such sampler");
     const std::string sp = "/samplers/" + std::to_string(si);
     const json& sampler = at_pointer(doc.json, sp);
-    wrap_s = wrap_of(doc, sampler, "wrapS", sp);
-    wrap_t = wrap_of(doc, sampler, "wrapT", sp);
+    out.wrap_s = wrap_of(doc, sampler, "wrapS", sp);
+    out.wrap_t = wrap_of(doc, sampler, "wrapT", sp);
     // magFilter NEAREST (9728) and the mipmapped minFilters (9984..9987): every path samples
     // level 0 with GL_LINEAR, as the thickness maps are sampled; said, not hidden.
     const int mag = sampler.value("magFilter", 9729), min = sampler.value("minFilter", 9729);
@@ -145,13 +143,21 @@ BaseColourTexture read_base_colour_texture(const Document& doc, const std::strin
                       std::to_string(min) +
                       ": sampled GL_LINEAR (9729) without mipmaps on every path");
   }
+  out.notes_at = notes.size();
+  return out;
+}
 
-  const tinygltf::Image& image = doc.model.images[static_cast<size_t>(source)];
+std::shared_ptr<const TextureMap> load_base_colour_texture(const Document& doc,
+                                                           const TextureDescription& texture,
+                                                           Notes& notes) {
+  const std::string file = doc.path.string();
+  const std::string ip = "/images/" + std::to_string(texture.image);
+  const tinygltf::Image& image = doc.model.images[static_cast<size_t>(texture.image)];
   const ImageFile temporary(doc, image, ip);
   // Errors name the image's pointer, not the temporary file.
   std::shared_ptr<TextureMap> map;
   try {
-    map = load_albedo_map(temporary.path(), file, ip, wrap_s, wrap_t);
+    map = load_albedo_map(temporary.path(), file, ip, texture.wrap_s, texture.wrap_t);
   } catch (const InputError& e) {
     std::string what = e.what_only();
     const std::string tmp = temporary.path().string();
@@ -162,15 +168,14 @@ BaseColourTexture read_base_colour_texture(const Document& doc, const std::strin
   map->file = image.uri.empty() || image.uri.rfind("data:", 0) == 0
                   ? std::filesystem::path(file + "#" + ip)
                   : doc.path.parent_path() / image.uri;
-  out.map = map;
-  notes.push_back("mapped " + pointer + " -> albedo map " + ip + " (" +
+  notes.push_back("mapped " + texture.pointer + " -> albedo map " + ip + " (" +
                   std::to_string(map->texture.width) + "x" + std::to_string(map->texture.height) +
-                  ", sRGB decoded, wrap " + model::wrap_name(wrap_s) + " x " +
-                  model::wrap_name(wrap_t) + ", TEXCOORD_" + std::to_string(out.coordinates.set) +
-                  ")");
-  note_unmapped_keys(info, pointer, {"index", "texCoord", "KHR_texture_transform"},
-                     "not part of the term", notes);
-  return out;
+                  ", sRGB decoded, wrap " + model::wrap_name(texture.wrap_s) + " x " +
+                  model::wrap_name(texture.wrap_t) + ", TEXCOORD_" +
+                  std::to_string(texture.coordinates.set) + ")");
+  note_unmapped_keys(at_pointer(doc.json, texture.pointer), texture.pointer,
+                     {"index", "texCoord", "KHR_texture_transform"}, "not part of the term", notes);
+  return map;
 }
 
 }  // namespace lt::gltf

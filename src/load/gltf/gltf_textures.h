@@ -5,37 +5,27 @@
 // interpolated coordinates, so the paths need no texture matrix).
 #pragma once
 
-#include <glm/glm.hpp>
 #include <memory>
-#include <optional>
 
-#include "load/gltf/gltf_document.h"
+#include "load/gltf/gltf_description.h"
 #include "load/gltf/gltf_notes.h"
-#include "load/thickness_map.h"
 
 namespace lt::gltf {
 
-// The UVs an albedo map reads: TEXCOORD_<set>, then `transform` (KHR_texture_transform's
-// T * R * S, in glTF's UV space where v grows downwards), before the importer's v flip.
-struct TextureCoordinates {
-  int set = 0;
-  std::optional<glm::dmat3> transform;
-};
-
-struct BaseColourTexture {
-  std::shared_ptr<const TextureMap> map;
-  TextureCoordinates coordinates;
-};
-
-// Reads the textureInfo at `pointer` (ending in /baseColorTexture): its texture, image and
-// sampler. The image is decoded from sRGB (its PNG or JPEG bytes, from a file, a data URI or a
-// GLB buffer view). Throws InputError naming the pointer for: a texture, image or sampler that
+// The parse stage: the textureInfo at `pointer` (ending in /baseColorTexture), its texture,
+// image and sampler. Throws InputError naming the pointer for: a texture, image or sampler that
 // does not exist, a texture without an image source (an extension image such as
-// KHR_texture_basisu or EXT_texture_webp), an image the reader refuses, a wrap mode glTF does not
-// define, and a KHR_texture_transform with a bad value. Filters other than LINEAR are noted:
-// every path samples GL_LINEAR without mipmaps.
-BaseColourTexture read_base_colour_texture(const Document& doc, const std::string& pointer,
-                                           Notes& notes);
+// KHR_texture_basisu or EXT_texture_webp), a wrap mode glTF does not define, and a
+// KHR_texture_transform with a bad value. Filters other than LINEAR are noted: every path samples
+// GL_LINEAR without mipmaps.
+TextureDescription describe_base_colour_texture(const Document& doc, const std::string& pointer,
+                                                Notes& notes);
+
+// The load stage: the image decoded from sRGB (its PNG or JPEG bytes, from a file, a data URI or
+// a GLB buffer view). Throws InputError naming the image's pointer for an image the reader refuses.
+std::shared_ptr<const TextureMap> load_base_colour_texture(const Document& doc,
+                                                           const TextureDescription& texture,
+                                                           Notes& notes);
 
 // TEXCOORD_n's UVs in glTF's space (v down) after `c.transform`, then flipped to OpenGL's
 // convention (v = 0 at the bottom row): what TriangleMesh::uvs holds.
