@@ -83,7 +83,7 @@ TEST(AlbedoMap, WrapModesTakeTheTapsGlTakes) {
   EXPECT_DOUBLE_EQ(at(1.375, W::MirroredRepeat), 2.0);
 }
 
-std::string quad_scene(const std::string& albedo_map, const std::string& mesh = "uv_quad.gltf") {
+std::string albedo_quad_scene(const std::string& albedo_map, const std::string& mesh = "uv_quad.gltf") {
   return R"({"image": {"width": 16, "height": 16},
   "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "projection": "orthographic", "height": 2},
   "materials": {"skin": {"albedo": [0.8, 0.6, 0.4], "albedo_map": ")" +
@@ -98,7 +98,7 @@ TEST(AlbedoMap, SceneKeyLoadsTheMapAndItsErrorsNameTheKey) {
   test::write_uv_quad(dir.path());
   test::write_uv_quad(dir.path(), false);
   test::write_test_image(dir / "a.png", 2, 2, 3, std::vector<float>(12, 0.5f));
-  test::write_file(dir / "ok.json", quad_scene("a.png"));
+  test::write_file(dir / "ok.json", albedo_quad_scene("a.png"));
   const Scene s = load_scene(dir / "ok.json");
   ASSERT_TRUE(s.materials[0].albedo_map);
   EXPECT_TRUE(scene_needs(s).any_albedo_map);
@@ -113,10 +113,10 @@ TEST(AlbedoMap, SceneKeyLoadsTheMapAndItsErrorsNameTheKey) {
     }
     return std::string("(no error)");
   };
-  const std::string missing = error_of(quad_scene("nope.png"));
+  const std::string missing = error_of(albedo_quad_scene("nope.png"));
   EXPECT_NE(missing.find("materials.skin.albedo_map: albedo map file not found"), std::string::npos)
       << missing;
-  const std::string no_uvs = error_of(quad_scene("a.png", "quad_without_uvs.gltf"));
+  const std::string no_uvs = error_of(albedo_quad_scene("a.png", "quad_without_uvs.gltf"));
   EXPECT_NE(no_uvs.find("samples the albedo map"), std::string::npos) << no_uvs;
   EXPECT_NE(no_uvs.find("has no texture coordinates"), std::string::npos) << no_uvs;
 }
@@ -127,7 +127,7 @@ TEST(AlbedoMap, ModelMultipliesTheWholeColourByTheTexel) {
   test::TempDir dir;
   test::write_uv_quad(dir.path());
   test::write_test_image(dir / "a.png", 2, 2, 3, std::vector<float>(12, 180 / 255.0f));
-  test::write_file(dir / "s.json", quad_scene("a.png"));
+  test::write_file(dir / "s.json", albedo_quad_scene("a.png"));
   Scene with = load_scene(dir / "s.json");
   with.ambient_light = glm::dvec3(0.1);
   Scene without = with;

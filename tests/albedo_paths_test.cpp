@@ -144,7 +144,7 @@ TEST(AlbedoPaths, EveryBudgetCountsTheMap) {
   }
 }
 
-std::string refusal(const Scene& scene, const char* path) {
+std::string render_refusal(const Scene& scene, const char* path) {
   try {
     render_scene(scene, path, "");
   } catch (const InputError& e) {
@@ -159,7 +159,7 @@ TEST(AlbedoPaths, ArbfpRefusesVertexThicknessWithAnAlbedoMap) {
   const auto s = write_scenes();
   Scene vertex = s->with;
   vertex.materials[0].translucency->thickness_source = ThicknessSource::Vertex;
-  const std::string why = refusal(vertex, "arbfp");
+  const std::string why = render_refusal(vertex, "arbfp");
   EXPECT_NE(why.find("materials.skin.albedo_map: arbfp"), std::string::npos) << why;
 }
 
@@ -189,7 +189,7 @@ TEST(AlbedoPaths, GxResamplesARepeatingMapToPowerOfTwoAndRefusesTexelsOverOne) {
   bright->texture.texels[0] = 1.5f;
   Scene over = s->with;
   over.materials[0].albedo_map = bright;
-  const std::string over_why = refusal(over, "gx");
+  const std::string over_why = render_refusal(over, "gx");
   EXPECT_NE(over_why.find("materials.skin.albedo_map: gx: the albedo map holds values up to 1.5"),
             std::string::npos)
       << over_why;

@@ -64,7 +64,7 @@ const char* const kPieces[] = {
     "[A0.x + 1]",
 };
 
-std::string mutate(std::string s, std::mt19937& rng) {
+std::string mutate_program(std::string s, std::mt19937& rng) {
   auto pick = [&rng](size_t n) {
     return n ? std::uniform_int_distribution<size_t>(0, n - 1)(rng) : 0;
   };
@@ -116,7 +116,7 @@ TEST(ArbTextFuzz, MutatedProgramsEndAsZeroOneOrTwo) {
   if (env_seed) rng.seed(static_cast<unsigned>(std::atoi(env_seed)));
   for (int i = 0; i < kCases; ++i) {
     const std::string text =
-        mutate(corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
+        mutate_program(corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
     const std::string file = (dir / ("case" + std::to_string(i) + ".arb")).string();
     test::write_file(file, text);
     try {
@@ -166,7 +166,7 @@ TEST(ArbTextFuzz, MutatedProgramsThroughTheCommandLine) {
   const test::TempDir dir;
   for (int i = 0; i < 12; ++i) {
     const std::string text =
-        mutate(corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
+        mutate_program(corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
     const std::string file = (dir / ("case" + std::to_string(i) + ".fp")).string();
     test::write_file(file, text);
     const test::RunResult r = test::run_ltrender("budget " + file);

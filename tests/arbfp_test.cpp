@@ -257,7 +257,7 @@ void PrintTo(const VariantCase& c, std::ostream* os) {
 // guarded, RSQ(0) is inf, a light at distance 0 divides by 0). The 8-bit framebuffer would hide a
 // NaN (it stores 0), so the programs draw into an RGBA32F target here, where NaN and Inf stay
 // visible (float colour buffers are not clamped), and every value is checked.
-std::vector<VariantCase> hard_cases() {
+std::vector<VariantCase> arbfp_hard_cases() {
   std::vector<VariantCase> out;
   for (const std::string& s : test::json_files("scenes/hard")) {
     for (const std::string& v : variant_names()) out.push_back({s, v});
@@ -315,7 +315,7 @@ TEST_P(ArbfpHard, NoNanOrInfEvenInAFloatTarget) {
   EXPECT_GT(lit, 0u) << "nothing drawn";
 }
 
-INSTANTIATE_TEST_SUITE_P(Hard, ArbfpHard, ::testing::ValuesIn(hard_cases()), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Hard, ArbfpHard, ::testing::ValuesIn(arbfp_hard_cases()), [](const auto& info) {
   return test::test_param_name(fs::path(info.param.scene).stem().string() + "__" +
                                info.param.variant);
 });

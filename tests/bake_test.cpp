@@ -41,7 +41,7 @@ Surface box(const glm::dvec3& half, int n) {
   return surface_of(meshgen::box(half, n));
 }
 
-BakeResult bake(const Surface& s, const BakeSettings& settings) {
+BakeResult bake_surface(const Surface& s, const BakeSettings& settings) {
   return bake_occlusion(s.positions, s.normals, s.triangles, settings);
 }
 
@@ -59,7 +59,7 @@ struct SphereCase {
 };
 
 // "R1_D0.5_cosine_stratified", readable in test names and failure messages.
-std::string name_of(const SphereCase& c) {
+std::string sphere_case_name(const SphereCase& c) {
   std::ostringstream out;
   out << "R" << c.radius << "_D" << c.d << "_"
       << (c.distribution == Distribution::Cosine ? "cosine" : "uniform") << "_"
@@ -67,7 +67,7 @@ std::string name_of(const SphereCase& c) {
   return out.str();
 }
 void PrintTo(const SphereCase& c, std::ostream* os) {
-  *os << name_of(c);
+  *os << sphere_case_name(c);
 }
 
 class AnalyticSphere : public ::testing::TestWithParam<SphereCase> {};
@@ -84,7 +84,7 @@ TEST_P(AnalyticSphere, OcclusionMatchesChordLength) {
   settings.distribution = c.distribution;
   settings.sampler = c.sampler;
   settings.seed = 7;
-  const BakeResult r = bake(s, settings);
+  const BakeResult r = bake_surface(s, settings);
 
   const Expected e = sphere_occlusion(c.radius, c.d, r.epsilon,
                                       sagitta(s, glm::dvec3(0.0), c.radius), c.distribution);
@@ -122,7 +122,7 @@ INSTANTIATE_TEST_SUITE_P(
                       SphereCase{3.0, 2.0, Distribution::Cosine, Sampler::Random},
                       SphereCase{1.0, 0.7, Distribution::Uniform, Sampler::Random}),
     [](const ::testing::TestParamInfo<SphereCase>& info) {
-      std::string name = name_of(info.param);
+      std::string name = sphere_case_name(info.param);
       std::replace(name.begin(), name.end(), '.', 'p');  // test names are identifiers
       return name;
     });
@@ -133,7 +133,7 @@ TEST(Bake, SphereWithMaxDistanceBeyondTheDiameterIsFullyOccluded) {
   BakeSettings settings;
   settings.rays = 64;
   settings.max_distance = 2.5;
-  const BakeResult r = bake(s, settings);
+  const BakeResult r = bake_surface(s, settings);
   EXPECT_EQ(*std::min_element(r.occlusion.begin(), r.occlusion.end()), 1.0);
 }
 
@@ -148,7 +148,7 @@ TEST(Bake, NoSelfHitsOnAFinelyTessellatedSphere) {
     settings.rays = 64;
     settings.max_distance = 1e-3;
     settings.distribution = dist;
-    const BakeResult r = bake(s, settings);
+    const BakeResult r = bake_surface(s, settings);
     EXPECT_EQ(*std::max_element(r.occlusion.begin(), r.occlusion.end()), 0.0);
   }
 }
@@ -163,7 +163,7 @@ TEST(Bake, SphereAnswerIsTheSameFarFromTheOriginAndAtTinyScale) {
   for (const auto& [radius, centre] :
        {std::pair{1.0, glm::dvec3(1e6, -1e6, 1e6)}, std::pair{1e-6, glm::dvec3(0.0)}}) {
     const Surface s = icosphere(radius, 5, centre);
-    const BakeResult r = bake(s, settings);
+    const BakeResult r = bake_surface(s, settings);
     // 5 sigma of a binomial over 10242 x 64 rays (the stratified sampler does far better).
     EXPECT_NEAR(mean(r.occlusion), expected, 2.5e-3) << "radius " << radius;
   }
@@ -179,7 +179,7 @@ TEST(Bake, DistanceEstimatorMatchesMeanChordOnASphere) {
   settings.rays = 64;
   settings.max_distance = d;
   settings.estimator = Estimator::Distance;
-  const BakeResult r = bake(s, settings);
+  const BakeResult r = bake_surface(s, settings);
   const double a = d / (2 * radius);
   const double analytic = a * a / 3.0;
 
@@ -214,8 +214,8 @@ TEST(Bake, ThinSlabIsMoreTranslucentThanAThickBlock) {
   settings.max_distance = 0.5;
   const Surface slab = box({1.0, 1.0, 0.05}, 8);
   const Surface block = box({1.0, 1.0, 1.0}, 8);
-  const BakeResult rs = bake(slab, settings);
-  const BakeResult rb = bake(block, settings);
+  const BakeResult rs = bake_surface(slab, settings);
+  const BakeResult rb = bake_surface(block, settings);
   // Centre of the top face: the opposite wall is 0.1 away on the slab (every ray with
   // cos(theta) > 0.2 hits: occlusion ~ 1 - 0.04), 2 away on the block (nothing within 0.5).
   auto top_centre = [](const Surface& s) {
@@ -245,7 +245,7 @@ TEST(Bake, CubeCornersAreMoreOccludedThanEdgesThanFaceCentres) {
   BakeSettings settings;
   settings.rays = 256;
   settings.max_distance = 1.0;
-  const BakeResult r = bake(cube, settings);
+  const BakeResult r = bake_surface(cube, settings);
   std::vector<double> corner, edge, face;
   for (std::size_t i = 0; i < cube.positions.size(); ++i) {
     const glm::dvec3 a = glm::abs(cube.positions[i]);
@@ -281,15 +281,15 @@ TEST(Bake, SameSeedGivesTheSameResultOnAnyThreadCount) {
     settings.sampler = sampler;
     settings.seed = 1234;
     settings.threads = 1;
-    const BakeResult one = bake(s, settings);
+    const BakeResult one = bake_surface(s, settings);
     settings.threads = 2;
-    const BakeResult two = bake(s, settings);
+    const BakeResult two = bake_surface(s, settings);
     settings.threads = 3;
-    const BakeResult three = bake(s, settings);
+    const BakeResult three = bake_surface(s, settings);
     EXPECT_EQ(one.occlusion, two.occlusion);
     EXPECT_EQ(one.occlusion, three.occlusion);
     settings.seed = 1235;
-    EXPECT_NE(bake(s, settings).occlusion, one.occlusion);
+    EXPECT_NE(bake_surface(s, settings).occlusion, one.occlusion);
   }
 }
 
@@ -298,13 +298,13 @@ TEST(Bake, ZeroNormalsFallBackToFaceNormals) {
   BakeSettings settings;
   settings.rays = 32;
   settings.max_distance = 1.0;
-  const BakeResult radial = bake(s, settings);
+  const BakeResult radial = bake_surface(s, settings);
   std::fill(s.normals.begin(), s.normals.end(), glm::dvec3(0.0));
   s.normals[0] = glm::dvec3(std::nan(""), 0.0, 0.0);
   // An isolated vertex with no normal: no rays, occlusion 0, counted.
   s.positions.push_back(glm::dvec3(0.0));
   s.normals.push_back(glm::dvec3(0.0));
-  const BakeResult fallback = bake(s, settings);
+  const BakeResult fallback = bake_surface(s, settings);
   EXPECT_EQ(fallback.vertices_without_normal, 1u);
   EXPECT_EQ(fallback.occlusion.back(), 0.0);
   EXPECT_EQ(fallback.rays_traced, (s.positions.size() - 1) * 32u);
@@ -334,7 +334,7 @@ TEST(Bake, DegenerateTrianglesAndOpenMeshesWork) {
   BakeSettings settings;
   settings.rays = 64;
   settings.max_distance = 1.0;
-  const BakeResult r = bake(s, settings);
+  const BakeResult r = bake_surface(s, settings);
   for (double o : r.occlusion) {
     EXPECT_GE(o, 0.0);
     EXPECT_LE(o, 1.0);
@@ -367,7 +367,7 @@ TEST(Bake, DegenerateSliversAreNeitherHolesNorNonManifoldAndBakeLikeTheSphere) {
   BakeSettings settings;
   settings.rays = 64;
   settings.max_distance = 1.0;
-  const BakeResult r = bake(s, settings);
+  const BakeResult r = bake_surface(s, settings);
   // (D/2R)^2 = 0.25; a subdivision-3 sphere has a sagitta of 3e-3 R, and each vertex is within
   // 2/64 of the sandwich (see AnalyticSphere).
   for (double o : r.occlusion) EXPECT_NEAR(o, 0.25, 0.05);
@@ -448,7 +448,7 @@ TEST(Bake, BakeMeshWritesTheMappedColoursAndNothingElse) {
   const ColorMap map{0.5, 1.0, {1.0, 0.2, 0.1}};
   const MeshBakeReport report = bake_mesh(m, settings, map, 0);
   EXPECT_EQ(report.edges.boundary_edges, 0u);
-  const BakeResult direct = bake(slab, settings);
+  const BakeResult direct = bake_surface(slab, settings);
   ASSERT_EQ(report.result.occlusion, direct.occlusion);
   for (auto vh : m.vertices()) {
     const std::size_t i = static_cast<std::size_t>(vh.idx());
@@ -484,15 +484,6 @@ std::string ply_text(const Surface& s, bool with_normals = true) {
   return out.str();
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-int count_lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
-}
-
 class BakeCommand : public ::testing::Test {
  protected:
   void SetUp() override { test::write_file(dir_ / "sphere.ply", ply_text(icosphere(1.0, 3))); }
@@ -503,7 +494,7 @@ class BakeCommand : public ::testing::Test {
     const test::RunResult r = test::run_ltrender("bake " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << args << "\n" << r.err;
-    EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
+    EXPECT_EQ(test::count_lines(r.err), 1) << args << "\n" << r.err;
     EXPECT_FALSE(fs::exists(out())) << args;
   }
   test::TempDir dir_;
@@ -537,7 +528,7 @@ TEST_F(BakeCommand, FloatColoursAreWrittenAsFloats) {
   const test::RunResult r =
       test::run_ltrender("bake " + in() + " -o " + out() + " --rays 16 --float-colors");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string text = slurp(out());
+  const std::string text = test::read_file(out());
   const std::string header = text.substr(0, text.find("end_header"));
   EXPECT_NE(header.find("float red"), std::string::npos) << header;
 }
@@ -549,7 +540,7 @@ TEST_F(BakeCommand, SameSeedOnOneAndTwoThreadsGivesIdenticalFiles) {
             0);
   ASSERT_EQ(test::run_ltrender("bake " + in() + " -o " + out2 + common + " --threads 2").exit_code,
             0);
-  const std::string a = slurp(out()), b = slurp(out2);
+  const std::string a = test::read_file(out()), b = test::read_file(out2);
   EXPECT_FALSE(a.empty());
   EXPECT_TRUE(a == b);
 }
@@ -588,11 +579,11 @@ TEST_F(BakeCommand, EmptyMeshIsRejected) {
 }
 
 TEST_F(BakeCommand, OutputEqualToTheInputIsRejectedAndTheInputKept) {
-  const std::string before = slurp(in());
+  const std::string before = test::read_file(in());
   const test::RunResult r = test::run_ltrender("bake " + in() + " -o " + in());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_EQ(slurp(in()), before);
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(test::read_file(in()), before);
 }
 
 // Blender writes "Created by Blender3D ..." without `comment`; common readers take it as a

@@ -521,10 +521,6 @@ std::string read_all(const fs::path& p) {
   return ss.str();
 }
 
-int count_lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
-}
-
 class CompareCli : public CompareFiles {
  protected:
   CliResult run(const std::string& args) {
@@ -623,7 +619,7 @@ TEST_F(CompareCli, OverThresholdExitsOne) {
   const CliResult r = run(q("off.png") + " " + q("ref.exr"));
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_EQ(r.err.rfind("ltrender: check failed: ", 0), 0u) << r.err;
 
   // 1 of 32 covered pixels = 3.125%: allowed at 3.125, not at 3.
@@ -651,7 +647,7 @@ TEST_F(CompareCli, SizeMismatchIsBadInput) {
   write_image(path("big.exr"), filled(8, 4, 0, 0, 0));
   const CliResult r = run(q("small.png") + " " + q("big.exr") + " --heatmap " + q("heat.png"));
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("4x4"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("8x4"), std::string::npos) << r.err;
@@ -667,7 +663,7 @@ TEST_F(CompareCli, MissingOrUnreadableFileIsBadInput) {
         q("junk.png") + " " + q("ref.exr")}) {
     const CliResult r = run(args);
     EXPECT_EQ(r.code, 2) << args;
-    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << r.err;
   }
 }
@@ -688,7 +684,7 @@ TEST_F(CompareCli, HeaderSizeIsCheckedBeforeAllocating) {
   const test::RunResult r = test::run_ltrender("compare " + q("huge.png") + " " + q("ref.exr"),
                                                test::RunLimits{60, 4096});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_EQ(r.err, "ltrender: error: " + path("huge.png") +
                        ": header claims 40000x40000 pixels, over the limit of 16777216 (4096^2) "
                        "pixels\n");
@@ -706,7 +702,7 @@ TEST_F(CompareCli, TruncatedPngIsOneLine) {
   std::ofstream(path("cut.png"), std::ios::binary) << png.substr(0, png.size() / 2);
   const CliResult r = run(q("cut.png") + " " + q("ref.exr"));
   EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_EQ(r.err.rfind("ltrender: error: " + path("cut.png") + ": cannot decode image: ", 0), 0u)
       << r.err;
   EXPECT_NE(r.err.find("IDAT"), std::string::npos) << r.err;  // libpng's words are kept
@@ -721,7 +717,7 @@ TEST_F(CompareCli, BadOptionValuesAreBadInput) {
            "--region outside", "--heatmap " + q("heat.exr")}) {
     const CliResult r = run(files + " " + opt);
     EXPECT_EQ(r.code, 2) << opt;
-    EXPECT_EQ(count_lines(r.err), 1) << opt << ": " << r.err;
+    EXPECT_EQ(test::count_lines(r.err), 1) << opt << ": " << r.err;
     EXPECT_EQ(r.err.rfind("ltrender: error: ", 0), 0u) << opt << ": " << r.err;
   }
   const CliResult r = run(files + " --fail-lsb -1");

@@ -255,14 +255,14 @@ TEST(DebianGltfModels, TheDemoScenesHoldARealAssetWithAnAlbedoMapAndTranslucency
                               << kModels << " and a translucency";
 }
 
-std::string test_name(const ::testing::TestParamInfo<Model>& info) {
+std::string model_test_name(const ::testing::TestParamInfo<Model>& info) {
   std::string name = info.param.file.substr(info.param.file.rfind('/') + 1);
   std::string out = std::to_string(info.index) + "_";
   for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
   return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Assimp, DebianGltfModel, ::testing::ValuesIn(models()), test_name);
+INSTANTIATE_TEST_SUITE_P(Assimp, DebianGltfModel, ::testing::ValuesIn(models()), model_test_name);
 
 }  // namespace
 }  // namespace lt

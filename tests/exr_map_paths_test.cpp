@@ -45,12 +45,12 @@ float nearest_half(float v) {
 }
 
 // The scene twice: `map.exr` (the float gradient) and `map8.png` (the same texels in 8 bits).
-struct Scenes {
+struct ExrScenes {
   test::TempDir dir;
   Scene exr, q8;
 };
-std::unique_ptr<Scenes> write_scenes() {
-  auto s = std::make_unique<Scenes>();
+std::unique_ptr<ExrScenes> write_exr_scenes() {
+  auto s = std::make_unique<ExrScenes>();
   test::write_test_image(s->dir / "map.exr", kMapWidth, kMapHeight, 1, gradient_texels());
   test::write_test_image(s->dir / "map8.png", kMapWidth, kMapHeight, 1,
                          rounded_to_8_bits(gradient_texels()));
@@ -84,7 +84,7 @@ size_t differing_bytes(const Image& a, const Image& b) {
 // What the GL paths' textures hold: read back from a real context. Fp16 (glsl, arbfp) holds
 // each texel's nearest half, 1 and 0 exactly; Unorm8 (combiners) the nearest 1/255.
 TEST(ExrMapPaths, GlTexturesHoldHalfOrTheNearest8BitStep) {
-  const auto s = write_scenes();
+  const auto s = write_exr_scenes();
   const TextureMap& map = *s->exr.materials[0].translucency->thickness_map;
   ASSERT_TRUE(map.source_float);
   const gl::Context ctx(8, 8);
@@ -122,7 +122,7 @@ TEST(ExrMapPaths, GlTexturesHoldHalfOrTheNearest8BitStep) {
 // noise, and a different, farther image when the map is rounded to 8 bits first (the rounding,
 // up to 0.5/255 of T, times the term: measured ~0.3 LSB here).
 TEST(ExrMapPaths, ReferenceUsesTheFloatTexels) {
-  const auto s = write_scenes();
+  const auto s = write_exr_scenes();
   const Image truth = test::quad_ground_truth(s->exr);
   const Comparison from_exr =
       compare_images(render_scene(s->exr, "reference", ""), truth, TestEncoding::kFloat);
@@ -158,7 +158,7 @@ TEST(ExrMapPaths, EveryPathIsWithinItsUploadsQuantisationOfTheReference) {
     bool eight_bit;      // the upload rounds to 1/255 (else to half)
     bool twin_is_exact;  // own_bound holds for the 8-bit twin too (the same sampler)
   };
-  const auto s = write_scenes();
+  const auto s = write_exr_scenes();
   const Image ref_exr = render_scene(s->exr, "reference", "");
   const Image ref_q8 = render_scene(s->q8, "reference", "");
   const double gain = lsb_per_unit_thickness(s->exr);

@@ -14,7 +14,7 @@ constexpr u8 kNever = 0, kLess = 1, kEqual = 2, kLEqual = 3, kGreater = 4, kNEqu
              kAlways = 7;
 constexpr u8 kAnd = 0, kOr = 1, kXor = 2, kXnor = 3;
 
-ColorS10 s10(int r, int g, int b, int a) {
+ColorS10 color_s10(int r, int g, int b, int a) {
   return {static_cast<s16>(r), static_cast<s16>(g), static_cast<s16>(b), static_cast<s16>(a)};
 }
 
@@ -28,9 +28,9 @@ BlendMode mode(u8 type, u8 src, u8 dst, u8 logic = 0) {
 }
 
 TEST(GxEfb, TevToEfbKeepsLow8Bits) {
-  EXPECT_EQ(tev_to_efb(s10(-1, 300, 128, 0)), (Color8{255, 44, 128, 0}));
-  EXPECT_EQ(tev_to_efb(s10(1023, -1024, 256, 255)), (Color8{255, 0, 0, 255}));
-  EXPECT_EQ(tev_to_efb(s10(-256, 511, -129, 7)), (Color8{0, 255, 127, 7}));
+  EXPECT_EQ(tev_to_efb(color_s10(-1, 300, 128, 0)), (Color8{255, 44, 128, 0}));
+  EXPECT_EQ(tev_to_efb(color_s10(1023, -1024, 256, 255)), (Color8{255, 0, 0, 255}));
+  EXPECT_EQ(tev_to_efb(color_s10(-256, 511, -129, 7)), (Color8{0, 255, 127, 7}));
 }
 
 TEST(GxEfb, AlphaTestComparisons) {

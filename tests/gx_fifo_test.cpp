@@ -20,11 +20,8 @@
 #include "paths/gx/vertex_stage.h"
 #include "test_util.h"
 
-namespace lt {
+namespace lt::gx::fifo {
 namespace {
-
-using namespace gx;
-using namespace gx::fifo;
 
 // ---- Register words worked by hand from libogc's gx.c (the line numbers are gx.c's).
 
@@ -359,7 +356,7 @@ TEST_P(GxFifoScene, FrameDrawsEveryPassWithItsStateTexturesAndVertices) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxFifoScene, ::testing::ValuesIn(demo_scenes()),
                          [](const auto& info) {
-                           return test::test_param_name(fs::path(info.param).stem().string());
+                           return test::scene_param_name(info.param);
                          });
 
 // The header snapshot is GX_Init's state: GxState{} read back, and GX_Init's own registers.

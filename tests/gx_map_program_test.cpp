@@ -19,7 +19,7 @@ namespace {
 
 // A quad filling the middle of a 64x48 image, seen head-on; with `uvs`, each vertex's UV is its
 // position mapped from [-1, 1] to [0, 1] (u right, v up).
-Scene quad_scene(const test::TempDir& dir, bool uvs) {
+Scene uv_quad_scene(const test::TempDir& dir, bool uvs) {
   test::write_file(dir / "quad.obj", test::quad_obj());
   const std::string text = R"({
     "image": { "width": 64, "height": 48 },
@@ -104,7 +104,7 @@ TEST(GxMapProgram, Rgba8MapInTexmap1ShowsItsTexelsTheRightWayUp) {
   }
   test::TempDir dir;
   test::write_file(dir / "map.c", map_program(tiles, "GX_TF_RGBA8"));
-  const Image img = render_scene(quad_scene(dir, true), "gx", "", 0, 0, {(dir / "map.c").string()});
+  const Image img = render_scene(uv_quad_scene(dir, true), "gx", "", 0, 0, {(dir / "map.c").string()});
   EXPECT_EQ(corners(img), kTexels);
 }
 
@@ -117,7 +117,7 @@ TEST(GxMapProgram, Rgb565AndI8MapsDecodeAsTheHardwareExpands) {
   rgb565[9] = 0x1F;  // tile texel 4 (x 0, y 1) at byte 8
   rgb565[10] = 0x84, rgb565[11] = 0x10;
   test::TempDir dir;
-  const Scene scene = quad_scene(dir, true);
+  const Scene scene = uv_quad_scene(dir, true);
   test::write_file(dir / "rgb565.c", map_program(rgb565, "GX_TF_RGB565"));
   const std::array<std::array<int, 3>, 4> expanded = {
       {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {132, 130, 132}}};
@@ -132,9 +132,9 @@ TEST(GxMapProgram, Rgb565AndI8MapsDecodeAsTheHardwareExpands) {
 }
 
 // What the stream cannot feed is refused with the file and the pass, exit 2, nothing written.
-void expect_refused(const std::string& program, bool uvs, const std::string& message) {
+void expect_program_refused(const std::string& program, bool uvs, const std::string& message) {
   test::TempDir dir;
-  const Scene scene = quad_scene(dir, uvs);
+  const Scene scene = uv_quad_scene(dir, uvs);
   test::write_file(dir / "p.c", program);
   try {
     render_scene(scene, "gx", "", 0, 0, {(dir / "p.c").string()});
@@ -147,7 +147,7 @@ void expect_refused(const std::string& program, bool uvs, const std::string& mes
 
 TEST(GxMapProgram, UvsOfAMeshWithoutThemAreRefused) {
   const std::string p = map_program(std::vector<gx::u8>(64, 0), "GX_TF_RGBA8");
-  expect_refused(p, false,
+  expect_program_refused(p, false,
                  "texgen GX_TEXCOORD0 reads the mesh's UVs (GX_VA_TEX0 as GX_TEX_ST), but a mesh "
                  "of this material has none");
 }
@@ -160,17 +160,17 @@ TEST(GxMapProgram, ATexCoordAboveAGapIsRefused) {
     to.back() = '1';
     for (size_t at; (at = p.find(from)) != std::string::npos;) p.replace(at, from.size(), to);
   }
-  expect_refused(p, true, "the vertex format has GX_VA_TEX1 but no GX_VA_TEX0");
+  expect_program_refused(p, true, "the vertex format has GX_VA_TEX1 but no GX_VA_TEX0");
 }
 
 TEST(GxMapProgram, AnUnloadedTexmap1AndAnUnmodelledFormatAreRefused) {
   std::string p = map_program(std::vector<gx::u8>(64, 0), "GX_TF_RGBA8");
   std::string unloaded = p;
   unloaded.replace(unloaded.find("GX_LoadTexObj(&tex, GX_TEXMAP1);"), 32, "");
-  expect_refused(unloaded, true, "TEV stage 0 fetches GX_TEXMAP1, which holds no texture");
+  expect_program_refused(unloaded, true, "TEV stage 0 fetches GX_TEXMAP1, which holds no texture");
   std::string cmpr = p;
   cmpr.replace(cmpr.find("GX_TF_RGBA8"), 11, "GX_TF_CMPR");
-  expect_refused(cmpr, true, "texture format not modelled");
+  expect_program_refused(cmpr, true, "texture format not modelled");
 }
 
 }  // namespace

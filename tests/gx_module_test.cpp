@@ -32,10 +32,8 @@
 #include "scene/scene.h"
 #include "test_util.h"
 
-namespace lt::gx {
+namespace lt::gx::test_module {
 namespace {
-
-using namespace test_module;
 
 constexpr int kFrames = kCameraPathFrames;  // render/camera_path.h: the path every frame is on
 constexpr int kSize = 96;
@@ -195,7 +193,7 @@ TEST(GxModuleExport, RefusesALightRangeThatIsNoDistance) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-std::vector<Case> cases() {
+std::vector<Case> module_cases() {
   std::vector<Case> out;
   for (const std::string& s : test::json_files("scenes")) out.push_back({s, "t=vertex"});
   out.push_back({"scenes/ortho/backlit_sphere_ortho.json", "t=vertex"});
@@ -216,9 +214,9 @@ std::vector<Case> cases() {
   return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GxModule, ::testing::ValuesIn(cases()), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Scenes, GxModule, ::testing::ValuesIn(module_cases()), [](const auto& info) {
   return test::test_param_name(info.param.scene + "_" + info.param.variant);
 });
 
 }  // namespace
-}  // namespace lt::gx
+}  // namespace lt::gx::test_module

@@ -25,7 +25,7 @@ namespace {
 
 // A quad filling the middle of a 64x48 image, seen head-on, with an optional uniform vertex
 // colour (PLY uchar red/green/blue).
-Scene quad_scene(const test::TempDir& dir, const std::string& material_json, int red = -1) {
+Scene colour_quad_scene(const test::TempDir& dir, const std::string& material_json, int red = -1) {
   if (red < 0) {
     test::write_file(dir / "quad.obj", test::quad_obj());
   } else {
@@ -72,7 +72,7 @@ const char* const kFlatProgram = gx::test_programs::kFlatColour;
 TEST(GxPath, FlatColouredQuadIsExactlyItsTevProduct) {
   test::TempDir dir;
   test::write_file(dir / "flat.c", kFlatProgram);
-  const Scene scene = quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
+  const Scene scene = colour_quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
   const Image img = render_scene(scene, "gx", "", 0, 0, {(dir / "flat.c").string()});
   expect_every_covered_pixel(img, {101, 30, 40});
 }
@@ -83,7 +83,7 @@ TEST(GxPath, FlatColouredQuadIsExactlyItsTevProduct) {
 // unit does [DSW Clipper.cpp CullTest] after libogc's swap [OGC gx.c L3931].
 TEST(GxPath, CullModesFollowTheSetupUnitFromGxInitsDefault) {
   test::TempDir dir;
-  const Scene scene = quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
+  const Scene scene = colour_quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
   const std::string program = kFlatProgram;
   const std::string without_cull = program.substr(program.find("GX_SetNumChans"));
   const std::vector<std::pair<std::string, bool>> cases = {
@@ -115,7 +115,7 @@ GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLOR0A0);
 GX_SetTevOp(GX_TEVSTAGE0, GX_PASSCLR);
 )");
   for (int red : {1, 127, 200, 255}) {
-    const Scene scene = quad_scene(dir, R"({ "albedo": [1, 1, 1] })", red);
+    const Scene scene = colour_quad_scene(dir, R"({ "albedo": [1, 1, 1] })", red);
     expect_every_covered_pixel(render_scene(scene, "gx", "", 0, 0, {(dir / "vtx.c").string()}),
                                {red, 77, 3});
   }
@@ -132,7 +132,7 @@ GX_SetTevKColor(GX_KCOLOR0, (GXColor){255, 0, 0, 255});
 GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_ZERO, GX_CC_ZERO, GX_CC_ZERO, GX_CC_KONST);
 GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_TRUE, GX_TEVPREV);
 )");
-  const Scene scene = quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
+  const Scene scene = colour_quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
   expect_every_covered_pixel(render_scene(scene, "gx", "", 0, 0, {(dir / "konst.c").string()}),
                              {64, 64, 64});
 }
@@ -149,7 +149,7 @@ GX_SetTevColor(GX_TEVREG1, (GXColor){100, 10, 0, 255});
 GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_C1, GX_CC_ZERO, GX_CC_ZERO, GX_CC_C0);
 GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_FALSE, GX_TEVPREV);
 )");
-  const Scene scene = quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
+  const Scene scene = colour_quad_scene(dir, R"({ "albedo": [1, 1, 1] })");
   expect_every_covered_pixel(render_scene(scene, "gx", "", 0, 0, {(dir / "wrap.c").string()}),
                              {44, 210, 200});
 }
@@ -178,7 +178,7 @@ TEST_P(GxDemoScene, ExportRoundTripIsBitExact) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_files("scenes")),
                          [](const auto& info) {
-                           return test::test_param_name(fs::path(info.param).stem().string());
+                           return test::scene_param_name(info.param);
                          });
 
 // One dim directional light and no ambient: no scale is needed, so only the truncations remain
@@ -240,7 +240,7 @@ TEST_P(GxHardScene, OrthographicTwinRendersThroughEveryVariant) {
 
 INSTANTIATE_TEST_SUITE_P(Hard, GxHardScene, ::testing::ValuesIn(test::json_files("scenes/hard")),
                          [](const auto& info) {
-                           return test::test_param_name(fs::path(info.param).stem().string());
+                           return test::scene_param_name(info.param);
                          });
 
 // The command line: refusals and bad programs are exit 2 with one line naming the file and

@@ -17,7 +17,7 @@ constexpr u8 kDfNone = 0, kDfSigned = 1, kDfClamp = 2;  // GX_DF_*
 constexpr u8 kAfSpec = 0, kAfSpot = 1, kAfNone = 2;     // GX_AF_*
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-Color8 gray(u8 v) {
+Color8 gray_color(u8 v) {
   return Color8{v, v, v, v};
 }
 
@@ -35,8 +35,8 @@ XfLightingState one_channel(u8 ambient, u8 material, u8 mask, u8 diffuse, u8 att
   c.attenuation_fn = attn;
   s.control[0] = c;
   s.control[2] = c;
-  s.ambient[0] = gray(ambient);
-  s.material[0] = gray(material);
+  s.ambient[0] = gray_color(ambient);
+  s.material[0] = gray_color(material);
   return s;
 }
 
@@ -62,7 +62,7 @@ TEST(XfLighting, DisabledPassesTheMaterialUnchanged) {
   XfLightingState s;
   s.num_channels = 2;
   // Lights are configured and bright, but lighting is off: they must not matter.
-  s.lights[0] = light_at({0, 0, 5}, gray(255));
+  s.lights[0] = light_at({0, 0, 5}, gray_color(255));
   for (ChannelControl& c : s.control) {
     c.lighting = false;
     c.light_mask = 1;
@@ -91,12 +91,12 @@ TEST(XfLighting, NoLightsMatchTheHardwareFormulaForAllPairs) {
   int mismatches = 0;
   for (int mat = 0; mat < 256; ++mat) {
     for (int amb = 0; amb < 256; ++amb) {
-      s.ambient[0] = s.ambient[1] = gray(static_cast<u8>(amb));
-      s.material[0] = gray(static_cast<u8>(mat));
-      const std::array<Color8, kMaxChannels> vtx{Color8{}, gray(static_cast<u8>(mat))};
+      s.ambient[0] = s.ambient[1] = gray_color(static_cast<u8>(amb));
+      s.material[0] = gray_color(static_cast<u8>(mat));
+      const std::array<Color8, kMaxChannels> vtx{Color8{}, gray_color(static_cast<u8>(mat))};
       const auto out = light_vertex(s, kOrigin, kUp, vtx);
       const u8 expected = static_cast<u8>((mat * (amb + (amb >> 7))) >> 8);
-      if (out[0] != gray(expected) || out[1] != gray(expected)) {
+      if (out[0] != gray_color(expected) || out[1] != gray_color(expected)) {
         if (++mismatches < 5) ADD_FAILURE() << "mat " << mat << " amb " << amb;
       }
     }
@@ -108,7 +108,7 @@ TEST(XfLighting, WhiteMaterialLosesOneLsbBelow128) {
   // (255 * (L + (L >> 7))) >> 8 = L - 1 for 1 <= L <= 127 and L for 128..255 (§2.4 gotcha 1).
   XfLightingState s = one_channel(0, 255, 0, kDfNone, kAfNone);
   for (int L = 0; L < 256; ++L) {
-    s.ambient[0] = gray(static_cast<u8>(L));
+    s.ambient[0] = gray_color(static_cast<u8>(L));
     const int expected = (L >= 1 && L <= 127) ? L - 1 : L;
     EXPECT_EQ(light0(s).r, expected) << L;
     EXPECT_EQ(light0(s).a, expected) << L;
@@ -135,7 +135,7 @@ TEST(XfLighting, SpotAngularTermUsesLDotDirection) {
   // a = (0, 1, 0): A = x / (k0 + k1 d + k2 d^2) with x = max(0, l . dir). l = (0, 0, 1),
   // dir = (0.5, 0, 0.5) -> x = 0.5; k = (1, 0, 0.25), d = 2 -> A = 0.25. L = 200 * 0.25 = 50.
   XfLightingState s = one_channel(0, 255, 1, kDfNone, kAfSpot);
-  s.lights[0] = light_at({0, 0, 2}, gray(200));
+  s.lights[0] = light_at({0, 0, 2}, gray_color(200));
   s.lights[0].a = {0, 1, 0};
   s.lights[0].k = {1, 0, 0.25f};
   s.lights[0].direction = glm::vec3(0.5f, 0, 0.5f);
@@ -156,7 +156,7 @@ TEST(XfLighting, SpotAngularTermUsesLDotDirection) {
 TEST(XfLighting, DiffuseFunctionsWithALightBehindTheSurface) {
   // Ambient 100, light colour 60 straight behind the surface: l . N = -1.
   XfLightingState s = one_channel(100, 255, 1, kDfClamp, kAfNone);
-  s.lights[0] = light_at({0, 0, -5}, gray(60));
+  s.lights[0] = light_at({0, 0, -5}, gray_color(60));
   EXPECT_EQ(light0(s).r, 99);  // CLAMP: D = 0, L = 100, (255 * 100) >> 8 = 99
   s.control[0].diffuse_fn = kDfSigned;
   EXPECT_EQ(light0(s).r, 39);  // SIGNED: L = 100 - 60 = 40, (255 * 40) >> 8 = 39
@@ -176,20 +176,20 @@ TEST(XfLighting, SumIsClampedBeforeTheMaterialMultiply) {
   // 100 + 255 = 355 -> 255, then (128 * (255 + 1)) >> 8 = 128. Clamping after the multiply
   // would give (128 * 357) >> 8 = 178.
   XfLightingState s = one_channel(100, 128, 1, kDfNone, kAfNone);
-  s.lights[0] = light_at({0, 0, 1}, gray(255));
-  EXPECT_EQ(light0(s), gray(128));
+  s.lights[0] = light_at({0, 0, 1}, gray_color(255));
+  EXPECT_EQ(light0(s), gray_color(128));
   // A = 1 / 0.5 = 2 > 1: 200 * 2 = 400 saturates; (100 * 256) >> 8 = 100.
   s = one_channel(0, 100, 1, kDfNone, kAfSpot);
-  s.lights[0] = light_at({0, 0, 1}, gray(200));
+  s.lights[0] = light_at({0, 0, 1}, gray_color(200));
   s.lights[0].k = {0.5f, 0, 0};
-  EXPECT_EQ(light0(s), gray(100));
+  EXPECT_EQ(light0(s), gray_color(100));
 }
 
 TEST(XfLighting, SpecularAttenuationCountsOnlyLitSide) {
   // GX_AF_SPEC: x = (N . l >= 0) ? max(0, N . dir) : 0, A = (a0 + a1 x + a2 x^2) / (k0 + k1 x
   // + k2 x^2). a = (0.25, 0, 1), k = (1, 0, 0), dir (half-angle) = (0, 0, 0.5) -> x = 0.5.
   XfLightingState s = one_channel(0, 255, 1, kDfNone, kAfSpec);
-  s.lights[0] = light_at({0, 0, 10}, gray(200));
+  s.lights[0] = light_at({0, 0, 10}, gray_color(200));
   s.lights[0].a = {0.25f, 0, 1};
   s.lights[0].k = {1, 0, 0};
   s.lights[0].direction = glm::vec3(0, 0, 0.5f);
@@ -218,7 +218,7 @@ TEST(XfLighting, RoundEachLightDiffersFromSumThenTruncate) {
   // 150.
   XfLightingState s = one_channel(128, 255, 0b11, kDfNone, kAfSpot);
   for (int n = 0; n < 2; ++n) {
-    s.lights[n] = light_at({0, 0, 3}, gray(53));
+    s.lights[n] = light_at({0, 0, 3}, gray_color(53));
     s.lights[n].k = {5, 0, 0};
   }
   EXPECT_EQ(light0(s, kUp, LightRounding::SumThenTruncate).r, 149);
@@ -232,16 +232,16 @@ TEST(XfLighting, RoundEachLightDiffersFromSumThenTruncate) {
 TEST(XfLighting, LightMaskSelectsLights) {
   // Lights 0 (colour 10), 3 (colour 40) and 7 (colour 80) exist; the mask picks 3 and 7.
   XfLightingState s = one_channel(128, 255, (1 << 3) | (1 << 7), kDfNone, kAfNone);
-  s.lights[0] = light_at({0, 0, 1}, gray(10));
-  s.lights[3] = light_at({0, 0, 1}, gray(40));
-  s.lights[7] = light_at({0, 0, 1}, gray(80));
+  s.lights[0] = light_at({0, 0, 1}, gray_color(10));
+  s.lights[3] = light_at({0, 0, 1}, gray_color(40));
+  s.lights[7] = light_at({0, 0, 1}, gray_color(80));
   EXPECT_EQ(light0(s).r, 128 + 40 + 80);
 }
 
 TEST(XfLighting, DegenerateInputsGiveDefinedValues) {
   // Zero normal: N = 0, so D = 0 for CLAMP and SIGNED. Ambient 50, white: (255 * 50) >> 8 = 49.
   XfLightingState s = one_channel(50, 255, 1, kDfClamp, kAfNone);
-  s.lights[0] = light_at({0, 0, 5}, gray(100));
+  s.lights[0] = light_at({0, 0, 5}, gray_color(100));
   EXPECT_EQ(light0(s, glm::vec3(0)).r, 49);
   s.control[0].diffuse_fn = kDfSigned;
   EXPECT_EQ(light0(s, glm::vec3(0)).r, 49);
@@ -257,7 +257,7 @@ TEST(XfLighting, DegenerateInputsGiveDefinedValues) {
 
   // Light exactly at the vertex: l = N, so CLAMP gives D = 1: L = 50 + 100 = 150.
   s = one_channel(50, 255, 1, kDfClamp, kAfNone);
-  s.lights[0] = light_at(kOrigin, gray(100));
+  s.lights[0] = light_at(kOrigin, gray_color(100));
   EXPECT_EQ(light0(s).r, 150);
   // ... and under SPOT, dist = 0: A = a0 / k0 = 1 / 2, L = 50 + 50 = 100 -> 99.
   s.control[0].attenuation_fn = kAfSpot;
@@ -271,7 +271,7 @@ TEST(XfLighting, DegenerateInputsGiveDefinedValues) {
 
   // A huge A (k0 = 1e-30): 100 * 1e30 saturates. Material 200: (200 * 256) >> 8 = 200.
   s = one_channel(50, 200, 1, kDfNone, kAfSpot);
-  s.lights[0] = light_at({0, 0, 1}, gray(100));
+  s.lights[0] = light_at({0, 0, 1}, gray_color(100));
   s.lights[0].k = {1e-30f, 0, 0};
   EXPECT_EQ(light0(s).r, 200);
   // A infinite (1 / 1e-45 overflows float): still saturates.
@@ -290,13 +290,13 @@ TEST(XfLighting, DegenerateInputsGiveDefinedValues) {
   EXPECT_EQ(light0(s).r, 200);
   // +inf and -inf contributions (SIGNED, one light in front, one behind) sum to NaN: 0.
   s = one_channel(50, 200, 0b11, kDfSigned, kAfSpot);
-  s.lights[0] = light_at({0, 0, 1}, gray(100));
-  s.lights[1] = light_at({0, 0, -1}, gray(100));
+  s.lights[0] = light_at({0, 0, 1}, gray_color(100));
+  s.lights[1] = light_at({0, 0, -1}, gray_color(100));
   s.lights[0].k = s.lights[1].k = {1e-45f, 0, 0};
   EXPECT_EQ(light0(s).r, 0);
   // A NaN light direction under SPOT: x = max(0, NaN) = 0, A = a0 / k0 = 1, L = 150 -> 150.
   s = one_channel(50, 255, 1, kDfNone, kAfSpot);
-  s.lights[0] = light_at({0, 0, 1}, gray(100));
+  s.lights[0] = light_at({0, 0, 1}, gray_color(100));
   s.lights[0].a = {1, 5, 5};
   s.lights[0].direction = glm::vec3(kNaN);
   EXPECT_EQ(light0(s).r, 150);
@@ -306,7 +306,7 @@ TEST(XfLighting, DegenerateInputsGiveDefinedValues) {
   // A light very far away (|v|^2 = 2^200 overflows float) still has its direction, l = (1, 0,
   // 0). Powers of two keep the normalisation exact, so D is exactly 1 or -1.
   s = one_channel(50, 255, 1, kDfClamp, kAfNone);
-  s.lights[0] = light_at({std::ldexp(1.0f, 100), 0, 0}, gray(100));
+  s.lights[0] = light_at({std::ldexp(1.0f, 100), 0, 0}, gray_color(100));
   EXPECT_EQ(light0(s, glm::vec3(1, 0, 0)).r, 150);
   EXPECT_EQ(light0(s, glm::vec3(-1, 0, 0)).r, 49);
   // A tiny normal (|N|^2 = 2^-200 underflows float) is still a direction.
@@ -353,18 +353,18 @@ TEST(XfLighting, ChannelsBeyondNumChannelsAreZero) {
   XfLightingState s = one_channel(50, 255, 0, kDfNone, kAfNone);
   s.control[1] = s.control[0];
   s.control[3] = s.control[0];
-  s.ambient[1] = gray(200);
+  s.ambient[1] = gray_color(200);
   // Non-zero vertex colours, so that "zero" cannot come from a pass-through.
-  const std::array<Color8, kMaxChannels> vtx{gray(11), gray(22)};
+  const std::array<Color8, kMaxChannels> vtx{gray_color(11), gray_color(22)};
   auto out = light_vertex(s, kOrigin, kUp, vtx);
-  EXPECT_EQ(out[0], gray(49));
+  EXPECT_EQ(out[0], gray_color(49));
   EXPECT_EQ(out[1], (Color8{0, 0, 0, 0}));
   s.num_channels = 0;
   out = light_vertex(s, kOrigin, kUp, vtx);
   EXPECT_EQ(out[0], (Color8{0, 0, 0, 0}));
   s.num_channels = 2;
   out = light_vertex(s, kOrigin, kUp, vtx);
-  EXPECT_EQ(out[1], gray(200));
+  EXPECT_EQ(out[1], gray_color(200));
 }
 
 // ---- texgen ----

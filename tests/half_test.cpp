@@ -44,7 +44,7 @@ void PrintTo(const HalfQuadCase& c, std::ostream* os) {
   *os << c.name << " " << c.variant;
 }
 
-std::string quad_scene(const HalfQuadCase& c) {
+std::string half_quad_scene(const HalfQuadCase& c) {
   char buf[2048];
   std::snprintf(buf, sizeof buf, R"({
     "image": {"width": 32, "height": 32},
@@ -108,7 +108,7 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
   const HalfQuadCase& c = GetParam();
   test::TempDir dir;
   test::write_file(dir / "quad.obj", test::quad_obj());
-  const Scene scene = load_scene(parse_scene(quad_scene(c), dir / "quad.json", dir.path()));
+  const Scene scene = load_scene(parse_scene(half_quad_scene(c), dir / "quad.json", dir.path()));
   const Rendered r = render_half(scene, c.variant);
   const bool marker = std::isnan(c.expected);
   EXPECT_EQ(r.stats.nonfinite_pixels.value(), marker ? 32.0 * 32.0 : 0.0);
@@ -135,13 +135,6 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
 INSTANTIATE_TEST_SUITE_P(Analytic, HalfQuad, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// Scene lists and parameter names come from test_util.h.
-std::vector<std::string> scene_files(const std::string& sub) {
-  return test::json_files(sub);
-}
-std::string test_name(const std::string& s) {
-  return test::test_param_name(fs::path(s).stem().string());
-}
 
 // Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
@@ -156,8 +149,8 @@ TEST_P(HalfHardScene, GuardedVariantsProduceNoNonFinitePixel) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Hard, HalfHardScene, ::testing::ValuesIn(scene_files("scenes/hard")),
-                         [](const auto& info) { return test_name(info.param); });
+INSTANTIATE_TEST_SUITE_P(Hard, HalfHardScene, ::testing::ValuesIn(test::json_files("scenes/hard")),
+                         [](const auto& info) { return test::scene_param_name(info.param); });
 
 size_t count_marker(const Image& img) {
   size_t n = 0;

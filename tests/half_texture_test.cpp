@@ -8,7 +8,7 @@
 namespace lt::fp16 {
 namespace {
 
-TextureH row(std::initializer_list<float> values) {
+TextureH texture_row(std::initializer_list<float> values) {
   TextureH t;
   t.width = static_cast<int>(values.size());
   t.height = 1;
@@ -19,7 +19,7 @@ TextureH row(std::initializer_list<float> values) {
 TEST(HalfTexture, WeightsAreRoundedToHalf) {
   // Texels 0 and 1: the result is the weight of texel 1 itself. u = (0.5 + 1/3) / 2 puts the
   // position a third of the way: fx = 1/3 in double, 0.333251953125 in half.
-  const TextureH t = row({0.0f, 1.0f});
+  const TextureH t = texture_row({0.0f, 1.0f});
   const Vec3h s = sample_half(t, {(0.5 + 1.0 / 3) / 2, 0.5});
   EXPECT_EQ(float(s.x), 0.333251953125f);
   EXPECT_NE(float(s.x), static_cast<float>(1.0 / 3));
@@ -33,7 +33,7 @@ TEST(HalfTexture, WeightsAreRoundedToHalf) {
 
 TEST(HalfTexture, TexelsAreHalvesAndTheBlendRoundsEachStep) {
   // 0.1 is 0.0999755859375 in half; at a texel centre the blend is 1 * texel + 0 * neighbour.
-  const TextureH t = row({0.1f, 0.7f});
+  const TextureH t = texture_row({0.1f, 0.7f});
   EXPECT_EQ(float(sample_half(t, {0.25, 0.5}).x), 0.0999755859375f);
   // Halfway: 0.5 * 0.0999755859375 = 0.04998779296875 (exact), 0.5 * half(0.7) = 0.5 *
   // 0.7001953125 = 0.35009765625 (exact); their sum 0.40008544921875 rounds to half's
@@ -42,7 +42,7 @@ TEST(HalfTexture, TexelsAreHalvesAndTheBlendRoundsEachStep) {
 }
 
 TEST(HalfTexture, ClampsLikeTheReference) {
-  const TextureH t = row({0.25f, 0.75f});
+  const TextureH t = texture_row({0.25f, 0.75f});
   EXPECT_EQ(float(sample_half(t, {-2.0, 0.5}).x), 0.25f);
   EXPECT_EQ(float(sample_half(t, {3.0, 7.0}).x), 0.75f);
 }

@@ -35,13 +35,6 @@ const fs::path kData = lt::build_paths::source_dir() / "tests" / "data" / "meshe
 
 using test::TempDir;  // a scratch directory per test, removed afterwards
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 void write_text(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary);
   out << text;
@@ -503,7 +496,7 @@ TEST(RoundTrip, AsciiPlyIsExactToo) {
   meshgen::translate(mesh, glm::dvec3(0.1, 1e6, -1e-7));
   write_mesh(dir / "s.ply", mesh,
              Options::VertexNormal | Options::VertexColor | Options::ColorFloat);
-  EXPECT_EQ(slurp(dir / "s.ply").substr(0, 21), "ply\nformat ascii 1.0\n");
+  EXPECT_EQ(test::read_file(dir / "s.ply").substr(0, 21), "ply\nformat ascii 1.0\n");
   const LoadedMesh back = read_mesh(dir / "s.ply");
   for (auto vh : mesh.vertices()) {
     EXPECT_EQ(back.mesh.point(vh), mesh.point(vh));
@@ -758,7 +751,7 @@ TEST(Meshgen, CommittedMeshesAreUpToDate) {
     const fs::path fresh = dir / fs::path(named.path).filename().string();
     write_mesh(fresh, named.mesh, meshgen::write_options(named));
     ASSERT_TRUE(fs::exists(committed / named.path)) << named.path;
-    EXPECT_TRUE(slurp(fresh) == slurp(committed / named.path))
+    EXPECT_TRUE(test::read_file(fresh) == test::read_file(committed / named.path))
         << named.path << " differs: run `build/ltrender meshgen meshes`";
   }
 }
@@ -775,7 +768,7 @@ RunResult run_ltrender(const std::string& args, const fs::path& stderr_file) {
   const std::string cmd = lt::build_paths::ltrender_binary().string() + " " + args +
                           " >/dev/null 2>" + stderr_file.string();
   const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(stderr_file)};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(stderr_file)};
 }
 
 TEST(MeshgenCli, OutputThatIsAFileIsOneLineExit2) {
@@ -814,8 +807,8 @@ TEST(MeshgenCli, SphereOptionWritesOneIcosphere) {
   const RunResult r =
       run_ltrender("meshgen " + (dir / "out").string() + " --sphere 3", dir / "err.txt");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(slurp(dir / "out" / "sphere_s3.ply") ==
-              slurp(lt::build_paths::source_dir() / "meshes" / "sphere_s3.ply"));
+  EXPECT_TRUE(test::read_file(dir / "out" / "sphere_s3.ply") ==
+              test::read_file(lt::build_paths::source_dir() / "meshes" / "sphere_s3.ply"));
   EXPECT_FALSE(fs::exists(dir / "out" / "cube.ply"));
   EXPECT_EQ(
       run_ltrender("meshgen " + (dir / "x").string() + " --sphere 9", dir / "err.txt").exit_code,

@@ -13,13 +13,6 @@
 namespace lt {
 namespace {
 
-// Scene lists and parameter names come from test_util.h.
-std::vector<std::string> scene_files(const std::string& sub) {
-  return test::json_files(sub);
-}
-std::string test_name(const std::string& s) {
-  return test::test_param_name(fs::path(s).stem().string());
-}
 
 // glsl against the reference. Both rasterise the same float G-buffer inputs (same transform,
 // same interpolation); glsl shades in float with exact pow. Measured: the float target is within
@@ -58,8 +51,8 @@ TEST_P(HardSceneGlsl, GlslMatchesReference) {
   expect_glsl_matches(scene, render_scene(scene, "reference", ""));
 }
 
-INSTANTIATE_TEST_SUITE_P(Hard, HardSceneGlsl, ::testing::ValuesIn(scene_files("scenes/hard")),
-                         [](const auto& info) { return test_name(info.param); });
+INSTANTIATE_TEST_SUITE_P(Hard, HardSceneGlsl, ::testing::ValuesIn(test::json_files("scenes/hard")),
+                         [](const auto& info) { return test::scene_param_name(info.param); });
 
 // Every hard case of model.md on every path and every variant: no NaN or Inf reaches an image,
 // and the case shows something. Accuracy is bounded per path where its error is explained
@@ -75,7 +68,7 @@ void PrintTo(const HardCase& c, std::ostream* os) {
 
 std::vector<HardCase> hard_cases() {
   std::vector<HardCase> out;
-  for (const auto& s : scene_files("scenes/hard")) {
+  for (const auto& s : test::json_files("scenes/hard")) {
     for (const PathInfo& p : all_paths()) {
       for (const VariantInfo& v : p.variants) out.push_back({s, p.name, v.name});
     }
@@ -101,7 +94,7 @@ INSTANTIATE_TEST_SUITE_P(Hard, HardScene, ::testing::ValuesIn(hard_cases()), [](
   for (char& c : v) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
-  return test_name(info.param.scene) + "__" + info.param.path + "__" + v;
+  return test::scene_param_name(info.param.scene) + "__" + info.param.path + "__" + v;
 });
 
 }  // namespace

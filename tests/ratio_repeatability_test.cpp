@@ -10,7 +10,7 @@
 namespace lt {
 namespace {
 
-nlohmann::json row(const std::string& path, const std::string& variant, double ratio) {
+nlohmann::json ratio_row(const std::string& path, const std::string& variant, double ratio) {
   return {{"scene", "s"},
           {"path", path},
           {"variant", variant},
@@ -30,8 +30,8 @@ TEST(RatioRepeatability, DefaultVariantsMedianAndWorstDeviation) {
     const fs::path d = dir / ("run" + std::to_string(run));
     fs::create_directories(d);
     const nlohmann::json report = {{"rows",
-                                    {row("flat", "constant", 1), row("gx", "t=vertex", gx[run]),
-                                     row("gx", "t=vertex:lut=16", lut16[run])}}};
+                                    {ratio_row("flat", "constant", 1), ratio_row("gx", "t=vertex", gx[run]),
+                                     ratio_row("gx", "t=vertex:lut=16", lut16[run])}}};
     test::write_file(d / "report.json", report.dump());
     args += " " + d.string();
   }

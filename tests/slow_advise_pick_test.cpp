@@ -29,7 +29,7 @@ constexpr int kWidth = 48;  // small: the test is about the choice, not the imag
 // One material of an advised scene: the single material of the demo scenes used below.
 constexpr size_t kMaterial = 0;
 
-fs::path demo(const std::string& name) {
+fs::path advised_demo(const std::string& name) {
   return lt::build_paths::source_dir() / "scenes" / (name + ".json");
 }
 
@@ -57,11 +57,11 @@ class AdvisePick : public ::testing::TestWithParam<std::pair<const char*, const 
 // pick's error, measured again here, is within the budget.
 TEST_P(AdvisePick, MatchesTheExhaustiveSearch) {
   const auto [scene_name, profile] = GetParam();
-  const Scene scene = load_scene(demo(scene_name));
+  const Scene scene = load_scene(advised_demo(scene_name));
   ASSERT_EQ(scene.materials.size(), 1u) << "the brute force below is for one material";
   const Target target = find_target(profile);
   AdviseOptions base;
-  base.scene_file = demo(scene_name);
+  base.scene_file = advised_demo(scene_name);
   base.profile = profile;
   base.width = kWidth;
   base.exhaustive = true;
@@ -139,7 +139,7 @@ INSTANTIATE_TEST_SUITE_P(DemoScenes, AdvisePick,
 // within 2 LSB max: the pick must be cheaper than the default on the work axis.
 TEST(Advise, BeatsTheDefaultWhereACheaperVariantFits) {
   AdviseOptions o;
-  o.scene_file = demo("baked_blob");
+  o.scene_file = advised_demo("baked_blob");
   o.profile = "ps_2_0";
   o.width = kWidth;
   o.max_lsb = 2;

@@ -50,6 +50,11 @@ inline std::string read_file(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// How many lines `s` holds (a one-line error message is 1).
+inline int count_lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
 inline void write_file(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary);
   out << text;
@@ -150,6 +155,11 @@ inline std::string test_param_name(const std::string& s) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
   return r;
+}
+
+// A scene file's gtest parameter name: its stem, anything but letters and digits as _.
+inline std::string scene_param_name(const std::string& file) {
+  return test_param_name(fs::path(file).stem().string());
 }
 
 // NaN or Inf values anywhere in an image (all four channels): model.md's "no NaN or Inf ever

@@ -1,4 +1,4 @@
-// The UV-space thickness bake (issue 13): the analytic sphere through its texels, agreement with
+// The UV-space thickness bake_uv_surface (issue 13): the analytic sphere through its texels, agreement with
 // the vertex bake at the vertices, the rasteriser's coverage and overlap counts, the margin, and
 // the command's contract (a mesh without UVs is refused, nothing is written).
 #include <gtest/gtest.h>
@@ -31,7 +31,7 @@ UvSurface uv_surface(const PolyMesh& mesh) {
   return s;
 }
 
-UvBakeResult bake(const UvSurface& s, const BakeSettings& settings, int w, int h, int margin = 0) {
+UvBakeResult bake_uv_surface(const UvSurface& s, const BakeSettings& settings, int w, int h, int margin = 0) {
   return bake_uv(s.surface.positions, s.surface.normals, s.uvs, s.surface.triangles, settings, w, h,
                  margin);
 }
@@ -61,7 +61,7 @@ TEST_P(UvSphere, TexelsMatchTheChordLength) {
   settings.rays = 64;
   settings.max_distance = d;
   settings.seed = 11;
-  const UvBakeResult r = bake(s, settings, 256, 128);
+  const UvBakeResult r = bake_uv_surface(s, settings, 256, 128);
   ASSERT_GT(r.covered, 256u * 128u * 9 / 10);  // the poles' fans leave a few texels out
   EXPECT_EQ(r.overlapping, 0u);
   const double sag = sagitta(s.surface, glm::dvec3(0.0), 1.0);
@@ -90,7 +90,7 @@ TEST(UvBake, AgreesWithTheVertexBakeAtTheVertices) {
   const BakeResult vertex =
       bake_occlusion(s.surface.positions, s.surface.normals, s.surface.triangles, settings);
   const int w = 512, h = 256;
-  const UvBakeResult texel = bake(s, settings, w, h);
+  const UvBakeResult texel = bake_uv_surface(s, settings, w, h);
   const double sag = sagitta(s.surface, glm::dvec3(0.0), 1.0);
   const Expected e = sphere_occlusion(1.0, 1.0, texel.epsilon, sag, Distribution::Cosine, sag);
   const double analytic = analytic_sphere_occlusion(1.0, 1.0, Distribution::Cosine);
@@ -116,9 +116,9 @@ TEST(UvBake, SameMapOnOneAndTwoThreads) {
   for (const Sampler sampler : {Sampler::Stratified, Sampler::Random}) {
     settings.sampler = sampler;
     settings.threads = 1;
-    const UvBakeResult one = bake(s, settings, 64, 32, 2);
+    const UvBakeResult one = bake_uv_surface(s, settings, 64, 32, 2);
     settings.threads = 2;
-    const UvBakeResult two = bake(s, settings, 64, 32, 2);
+    const UvBakeResult two = bake_uv_surface(s, settings, 64, 32, 2);
     EXPECT_EQ(one.threads, 1);
     EXPECT_EQ(two.threads, 2);
     EXPECT_EQ(one.occlusion, two.occlusion);

@@ -1,16 +1,16 @@
 #!/usr/bin/env python3
-"""The core and the command layer are unity builds (CMakeLists.txt): eight .cpp files compiled as
-one translation unit. There, two files' functions of one name with internal linkage (anonymous
+"""The core, the command layer and the test binaries are unity builds (CMakeLists.txt): eight .cpp
+files compiled as one translation unit. There, two files' functions of one name with internal linkage (anonymous
 namespace or `static`) are overloads of each other, and a call can resolve to the other file's
 without a word from the compiler -- the one way a unity build changes behaviour silently (two
 definitions of one signature, or of one type or variable, are compile errors instead). So no
-function name may have internal linkage in two files under src/, whatever their namespaces, and
-no `using namespace` may stand at file scope (it would reach the files after it).
+function name may have internal linkage in two files under the folder checked (src/, tests/),
+whatever their namespaces, and no `using namespace` may stand at file scope (it would reach the files after it).
 
 A guard, not a parser: it reads clang-formatted code, where a definition at namespace scope starts
 in column 0. `--self-test` shows it catches both faults in a tree made for the purpose.
 
-usage: unity_names_test.py SRC_DIR | --self-test
+usage: unity_names_test.py DIR | --self-test
 """
 import collections
 import pathlib
@@ -24,6 +24,9 @@ NOT_FUNCTION = re.compile(r'^(?:struct|class|enum|union|using|namespace|typedef|
                           r'^(?:static\s+)?(?:constexpr|const|static)\s[^=(;]*?\b\w+\s*'
                           r'(?:\[[^\]]*\])?\s*(?:=|\{|;)')
 KEYWORDS = {'if', 'for', 'while', 'switch', 'return', 'operator', 'sizeof', 'alignof'}
+# GoogleTest's printer hook: each test file overloads it for its own parameter type, which is
+# what it is for (two of one type would be a compile error, not a silent choice).
+OVERLOADS_BY_DESIGN = {'PrintTo'}
 
 
 def internal_functions(path):
@@ -41,7 +44,7 @@ def internal_functions(path):
         if line[0] in '/#}' or NOT_FUNCTION.match(line):
             continue
         m = FUNCTION.match(line)
-        if m and m.group(1) not in KEYWORDS:
+        if m and m.group(1) not in KEYWORDS | OVERLOADS_BY_DESIGN:
             found.append((m.group(1), number))
     return found
 
