@@ -83,7 +83,8 @@ TEST(AlbedoMap, WrapModesTakeTheTapsGlTakes) {
   EXPECT_DOUBLE_EQ(at(1.375, W::MirroredRepeat), 2.0);
 }
 
-std::string albedo_quad_scene(const std::string& albedo_map, const std::string& mesh = "uv_quad.gltf") {
+std::string albedo_quad_scene(const std::string& albedo_map,
+                              const std::string& mesh = "uv_quad.gltf") {
   return R"({"image": {"width": 16, "height": 16},
   "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "projection": "orthographic", "height": 2},
   "materials": {"skin": {"albedo": [0.8, 0.6, 0.4], "albedo_map": ")" +

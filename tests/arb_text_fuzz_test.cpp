@@ -115,8 +115,8 @@ TEST(ArbTextFuzz, MutatedProgramsEndAsZeroOneOrTwo) {
   const int kCases = env_cases ? std::atoi(env_cases) : 400;
   if (env_seed) rng.seed(static_cast<unsigned>(std::atoi(env_seed)));
   for (int i = 0; i < kCases; ++i) {
-    const std::string text =
-        mutate_program(corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
+    const std::string text = mutate_program(
+        corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
     const std::string file = (dir / ("case" + std::to_string(i) + ".arb")).string();
     test::write_file(file, text);
     try {
@@ -165,8 +165,8 @@ TEST(ArbTextFuzz, MutatedProgramsThroughTheCommandLine) {
   std::mt19937 rng(11);
   const test::TempDir dir;
   for (int i = 0; i < 12; ++i) {
-    const std::string text =
-        mutate_program(corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
+    const std::string text = mutate_program(
+        corpus[std::uniform_int_distribution<size_t>(0, corpus.size() - 1)(rng)], rng);
     const std::string file = (dir / ("case" + std::to_string(i) + ".fp")).string();
     test::write_file(file, text);
     const test::RunResult r = test::run_ltrender("budget " + file);

@@ -315,10 +315,11 @@ TEST_P(ArbfpHard, NoNanOrInfEvenInAFloatTarget) {
   EXPECT_GT(lit, 0u) << "nothing drawn";
 }
 
-INSTANTIATE_TEST_SUITE_P(Hard, ArbfpHard, ::testing::ValuesIn(arbfp_hard_cases()), [](const auto& info) {
-  return test::test_param_name(fs::path(info.param.scene).stem().string() + "__" +
-                               info.param.variant);
-});
+INSTANTIATE_TEST_SUITE_P(Hard, ArbfpHard, ::testing::ValuesIn(arbfp_hard_cases()),
+                         [](const auto& info) {
+                           return test::test_param_name(fs::path(info.param.scene).stem().string() +
+                                                        "__" + info.param.variant);
+                         });
 
 }  // namespace
 }  // namespace lt

@@ -77,9 +77,10 @@ BenchRow figure_row(const std::string& scene, const std::string& path, const std
 
 TEST(BenchContactSheet, TwoScenesOfOneFigureLandInOneRow) {
   // demo.sh's figures bench: --paths reference, and flat, which always runs.
-  const std::vector<BenchRow> rows = {
-      figure_row("fig15_scale_a_1", "reference", "exact"), figure_row("fig15_scale_a_1", "flat", "constant"),
-      figure_row("fig15_scale_b_5", "reference", "exact"), figure_row("fig15_scale_b_5", "flat", "constant")};
+  const std::vector<BenchRow> rows = {figure_row("fig15_scale_a_1", "reference", "exact"),
+                                      figure_row("fig15_scale_a_1", "flat", "constant"),
+                                      figure_row("fig15_scale_b_5", "reference", "exact"),
+                                      figure_row("fig15_scale_b_5", "flat", "constant")};
   const ContactSheet sheet = bench_contact_sheet("out", rows);
   ASSERT_EQ(sheet.row_labels, (std::vector<std::string>{"fig15 scale"}));
   // Left and right, the reference each (flat's constant colour tells nothing of a parameter).
@@ -97,10 +98,11 @@ TEST(BenchContactSheet, TwoScenesOfOneFigureLandInOneRow) {
 }
 
 TEST(BenchContactSheet, APortsRenderSitsBesideTheReferenceOnEachSide) {
-  const std::vector<BenchRow> rows = {
-      figure_row("fig16_power_a_4", "reference", "exact"), figure_row("fig16_power_a_4", "gx", "t=vertex"),
-      figure_row("fig16_power_a_4", "gx", "t=vertex:lut=16"),
-      figure_row("fig16_power_b_12", "reference", "exact"), figure_row("fig16_power_b_12", "gx", "t=vertex")};
+  const std::vector<BenchRow> rows = {figure_row("fig16_power_a_4", "reference", "exact"),
+                                      figure_row("fig16_power_a_4", "gx", "t=vertex"),
+                                      figure_row("fig16_power_a_4", "gx", "t=vertex:lut=16"),
+                                      figure_row("fig16_power_b_12", "reference", "exact"),
+                                      figure_row("fig16_power_b_12", "gx", "t=vertex")};
   const ContactSheet sheet = bench_contact_sheet("out", rows);
   ASSERT_EQ(sheet.column_labels,
             (std::vector<std::pair<std::string, std::string>>{{"left", "reference"},
@@ -115,10 +117,11 @@ TEST(BenchContactSheet, APortsRenderSitsBesideTheReferenceOnEachSide) {
 }
 
 TEST(BenchContactSheet, OtherScenesKeepARowEach) {
-  const std::vector<BenchRow> rows = {
-      figure_row("backlit_sphere", "glsl", "pow=exact"), figure_row("backlit_sphere", "glsl", "pow=exact:f32"),
-      figure_row("backlit_sphere", "flat", "constant"), figure_row("baked_blob", "glsl", "pow=exact"),
-      figure_row("baked_blob", "flat", "constant")};
+  const std::vector<BenchRow> rows = {figure_row("backlit_sphere", "glsl", "pow=exact"),
+                                      figure_row("backlit_sphere", "glsl", "pow=exact:f32"),
+                                      figure_row("backlit_sphere", "flat", "constant"),
+                                      figure_row("baked_blob", "glsl", "pow=exact"),
+                                      figure_row("baked_blob", "flat", "constant")};
   const ContactSheet sheet = bench_contact_sheet("out", rows);
   EXPECT_EQ(sheet.row_labels, (std::vector<std::string>{"backlit_sphere", "baked_blob"}));
   // The reference, then each path's default variant (flat included), no captions.

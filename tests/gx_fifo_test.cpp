@@ -355,9 +355,7 @@ TEST_P(GxFifoScene, FrameDrawsEveryPassWithItsStateTexturesAndVertices) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxFifoScene, ::testing::ValuesIn(demo_scenes()),
-                         [](const auto& info) {
-                           return test::scene_param_name(info.param);
-                         });
+                         [](const auto& info) { return test::scene_param_name(info.param); });
 
 // The header snapshot is GX_Init's state: GxState{} read back, and GX_Init's own registers.
 TEST(GxFifoLog, HeaderSnapshotIsGxInitsState) {
@@ -493,7 +491,7 @@ TEST(GxFifoCli, ExportWritesALogDolphinDumpsAndRefusesWhatTheConsoleCannotShow) 
 }
 
 }  // namespace
-}  // namespace lt
+}  // namespace lt::gx::fifo
 
 namespace lt::gx::fifo {
 namespace {

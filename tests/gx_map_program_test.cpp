@@ -104,7 +104,8 @@ TEST(GxMapProgram, Rgba8MapInTexmap1ShowsItsTexelsTheRightWayUp) {
   }
   test::TempDir dir;
   test::write_file(dir / "map.c", map_program(tiles, "GX_TF_RGBA8"));
-  const Image img = render_scene(uv_quad_scene(dir, true), "gx", "", 0, 0, {(dir / "map.c").string()});
+  const Image img =
+      render_scene(uv_quad_scene(dir, true), "gx", "", 0, 0, {(dir / "map.c").string()});
   EXPECT_EQ(corners(img), kTexels);
 }
 
@@ -147,9 +148,10 @@ void expect_program_refused(const std::string& program, bool uvs, const std::str
 
 TEST(GxMapProgram, UvsOfAMeshWithoutThemAreRefused) {
   const std::string p = map_program(std::vector<gx::u8>(64, 0), "GX_TF_RGBA8");
-  expect_program_refused(p, false,
-                 "texgen GX_TEXCOORD0 reads the mesh's UVs (GX_VA_TEX0 as GX_TEX_ST), but a mesh "
-                 "of this material has none");
+  expect_program_refused(
+      p, false,
+      "texgen GX_TEXCOORD0 reads the mesh's UVs (GX_VA_TEX0 as GX_TEX_ST), but a mesh "
+      "of this material has none");
 }
 
 TEST(GxMapProgram, ATexCoordAboveAGapIsRefused) {

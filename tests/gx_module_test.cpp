@@ -214,9 +214,11 @@ std::vector<Case> module_cases() {
   return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GxModule, ::testing::ValuesIn(module_cases()), [](const auto& info) {
-  return test::test_param_name(info.param.scene + "_" + info.param.variant);
-});
+INSTANTIATE_TEST_SUITE_P(Scenes, GxModule, ::testing::ValuesIn(module_cases()),
+                         [](const auto& info) {
+                           return test::test_param_name(info.param.scene + "_" +
+                                                        info.param.variant);
+                         });
 
 }  // namespace
 }  // namespace lt::gx::test_module

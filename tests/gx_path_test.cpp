@@ -177,9 +177,7 @@ TEST_P(GxDemoScene, ExportRoundTripIsBitExact) {
 // Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_files("scenes")),
-                         [](const auto& info) {
-                           return test::scene_param_name(info.param);
-                         });
+                         [](const auto& info) { return test::scene_param_name(info.param); });
 
 // One dim directional light and no ambient: no scale is needed, so only the truncations remain
 // (measured 2.2 max / 0.79 mean LSB).
@@ -239,9 +237,7 @@ TEST_P(GxHardScene, OrthographicTwinRendersThroughEveryVariant) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Hard, GxHardScene, ::testing::ValuesIn(test::json_files("scenes/hard")),
-                         [](const auto& info) {
-                           return test::scene_param_name(info.param);
-                         });
+                         [](const auto& info) { return test::scene_param_name(info.param); });
 
 // The command line: refusals and bad programs are exit 2 with one line naming the file and
 // line; the budget exits 0 fits / 1 over (naming the limit) / 2 not a program.

@@ -135,7 +135,6 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
 INSTANTIATE_TEST_SUITE_P(Analytic, HalfQuad, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
-
 // Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
 
 // Hard scenes: the guarded variants never produce a non-finite value (nothing to hide behind the

@@ -13,7 +13,6 @@
 namespace lt {
 namespace {
 
-
 // glsl against the reference. Both rasterise the same float G-buffer inputs (same transform,
 // same interpolation); glsl shades in float with exact pow. Measured: the float target is within
 // 5e-4 LSB of the reference on every scene (`ltrender bench scenes/*.json scenes/hard/*.json

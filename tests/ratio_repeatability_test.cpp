@@ -29,9 +29,10 @@ TEST(RatioRepeatability, DefaultVariantsMedianAndWorstDeviation) {
   for (int run = 0; run < 3; ++run) {
     const fs::path d = dir / ("run" + std::to_string(run));
     fs::create_directories(d);
-    const nlohmann::json report = {{"rows",
-                                    {ratio_row("flat", "constant", 1), ratio_row("gx", "t=vertex", gx[run]),
-                                     ratio_row("gx", "t=vertex:lut=16", lut16[run])}}};
+    const nlohmann::json report = {
+        {"rows",
+         {ratio_row("flat", "constant", 1), ratio_row("gx", "t=vertex", gx[run]),
+          ratio_row("gx", "t=vertex:lut=16", lut16[run])}}};
     test::write_file(d / "report.json", report.dump());
     args += " " + d.string();
   }

@@ -1,6 +1,6 @@
-// The UV-space thickness bake_uv_surface (issue 13): the analytic sphere through its texels, agreement with
-// the vertex bake at the vertices, the rasteriser's coverage and overlap counts, the margin, and
-// the command's contract (a mesh without UVs is refused, nothing is written).
+// The UV-space thickness bake_uv_surface (issue 13): the analytic sphere through its texels,
+// agreement with the vertex bake at the vertices, the rasteriser's coverage and overlap counts, the
+// margin, and the command's contract (a mesh without UVs is refused, nothing is written).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,7 +31,8 @@ UvSurface uv_surface(const PolyMesh& mesh) {
   return s;
 }
 
-UvBakeResult bake_uv_surface(const UvSurface& s, const BakeSettings& settings, int w, int h, int margin = 0) {
+UvBakeResult bake_uv_surface(const UvSurface& s, const BakeSettings& settings, int w, int h,
+                             int margin = 0) {
   return bake_uv(s.surface.positions, s.surface.normals, s.uvs, s.surface.triangles, settings, w, h,
                  margin);
 }
