@@ -218,33 +218,40 @@ TEST(AlbedoMap, GltfBaseColourTextureWithSamplerTexCoordAndTransform) {
 
 // A JSON scene importing the file twice (the second time by its node, moved): the second object
 // finds the material the first one mapped, and must read the same TEXCOORD_1 through the same
-// transform, as a first import would; not TEXCOORD_0 untransformed.
+// transform, as a first import would; not TEXCOORD_0 untransformed, and without TEXCOORD_0 it
+// must not be refused for lacking UVs.
 TEST(AlbedoMap, EveryObjectOfAGltfFileReadsItsMaterialsTexCoordAndTransform) {
   test::TempDir dir;
-  const TexturedQuad q(png_bytes(dir.path()));
-  q.w.write_glb(dir.path(), "q");
-  const json scene = {
-      {"image", {{"width", 32}, {"height", 24}}},
-      {"camera", {{"eye", {0, 0, 6}}, {"target", {0, 0, 0}}}},
-      {"materials", json::object()},
-      {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
-      {"objects",
-       {{{"gltf", "q.glb"}, {"transform", {{"translate", {-1.5, 0, 0}}}}},
-        {{"gltf", "q.glb"}, {"node", "Quad"}, {"transform", {{"translate", {1.5, 0, 0}}}}}}}};
-  test::write_file(dir / "twice.json", scene.dump());
-  const Scene s = load_scene(dir / "twice.json");
-  ASSERT_EQ(s.objects.size(), 2u);
-  ASSERT_EQ(s.materials.size(), 1u) << "the file's material, mapped once";
-  for (std::size_t o = 0; o < 2; ++o) {
-    EXPECT_EQ(s.objects[o].material, 0) << "object " << o;
-    const std::vector<glm::dvec2>& uv = s.objects[o].mesh.uvs;
-    ASSERT_EQ(uv.size(), 4u) << "object " << o;
-    for (std::size_t v = 0; v < 4; ++v) {
-      EXPECT_DOUBLE_EQ(uv[v].x, q.expected_uv(v).x) << "object " << o << ", vertex " << v;
-      EXPECT_DOUBLE_EQ(uv[v].y, q.expected_uv(v).y) << "object " << o << ", vertex " << v;
+  const std::string bytes = png_bytes(dir.path());
+  for (const bool with_texcoord_0 : {true, false}) {
+    SCOPED_TRACE(with_texcoord_0 ? "with TEXCOORD_0" : "without TEXCOORD_0");
+    TexturedQuad q(bytes);
+    if (!with_texcoord_0) q.w.doc["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+    q.w.write_glb(dir.path(), "q");
+    const json scene = {
+        {"image", {{"width", 32}, {"height", 24}}},
+        {"camera", {{"eye", {0, 0, 6}}, {"target", {0, 0, 0}}}},
+        {"materials", json::object()},
+        {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
+        {"objects",
+         {{{"gltf", "q.glb"}, {"transform", {{"translate", {-1.5, 0, 0}}}}},
+          {{"gltf", "q.glb"}, {"node", "Quad"}, {"transform", {{"translate", {1.5, 0, 0}}}}}}}};
+    test::write_file(dir / "twice.json", scene.dump());
+    Scene s;
+    ASSERT_NO_THROW(s = load_scene(dir / "twice.json"));
+    ASSERT_EQ(s.objects.size(), 2u);
+    ASSERT_EQ(s.materials.size(), 1u) << "the file's material, mapped once";
+    for (std::size_t o = 0; o < 2; ++o) {
+      EXPECT_EQ(s.objects[o].material, 0) << "object " << o;
+      const std::vector<glm::dvec2>& uv = s.objects[o].mesh.uvs;
+      ASSERT_EQ(uv.size(), 4u) << "object " << o;
+      for (std::size_t v = 0; v < 4; ++v) {
+        EXPECT_DOUBLE_EQ(uv[v].x, q.expected_uv(v).x) << "object " << o << ", vertex " << v;
+        EXPECT_DOUBLE_EQ(uv[v].y, q.expected_uv(v).y) << "object " << o << ", vertex " << v;
+      }
     }
+    EXPECT_NE(s.objects[0].mesh.positions[0], s.objects[1].mesh.positions[0]);
   }
-  EXPECT_NE(s.objects[0].mesh.positions[0], s.objects[1].mesh.positions[0]);
 }
 
 // Refusals name the pointer: a wrap glTF does not define, a transform key the extension lacks,
