@@ -148,10 +148,13 @@ TEST(AlbedoMap, ModelMultipliesTheWholeColourByTheTexel) {
 // and a KHR_texture_transform, reading TEXCOORD_1.
 struct TexturedQuad {
   test::GltfWriter w;
+  // TEXCOORD_1, (u, v) per vertex, and the transform's offset and scale the material gives it.
+  const std::vector<float> uv1_values = {0, 0, 0.5f, 0, 0.5f, 0.5f, 0, 0.5f};
+  const glm::dvec2 uv1_offset{0.25, 0.5}, uv1_scale{2, 4};
   TexturedQuad(const std::string& png_bytes) {
     w = test::volume_quad();
     const int uv0 = w.floats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2", 2);
-    const int uv1 = w.floats({0, 0, 0.5f, 0, 0.5f, 0.5f, 0, 0.5f}, "VEC2", 2);
+    const int uv1 = w.floats(uv1_values, "VEC2", 2);
     w.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = uv0;
     w.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = uv1;
     while (w.bin.size() % 4) w.bin.push_back('\0');
@@ -167,7 +170,15 @@ struct TexturedQuad {
     w.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {
         {"index", 0},
         {"texCoord", 1},
-        {"extensions", {{"KHR_texture_transform", {{"offset", {0.25, 0.5}}, {"scale", {2, 4}}}}}}};
+        {"extensions",
+         {{"KHR_texture_transform",
+           {{"offset", {uv1_offset.x, uv1_offset.y}}, {"scale", {uv1_scale.x, uv1_scale.y}}}}}}};
+  }
+  // Vertex v's UV as the importer must give it: TEXCOORD_1 through T * S (no rotation) in glTF's
+  // space, then v flipped (1 - v), written out here rather than taken from importer_uv.
+  glm::dvec2 expected_uv(std::size_t v) const {
+    const double u = uv1_values[2 * v], t = uv1_values[2 * v + 1];
+    return {uv1_scale.x * u + uv1_offset.x, 1 - (uv1_scale.y * t + uv1_offset.y)};
   }
 };
 
@@ -204,6 +215,44 @@ TEST(AlbedoMap, GltfBaseColourTextureWithSamplerTexCoordAndTransform) {
   bool noted = false;
   for (const std::string& n : s.import_notes) noted |= n.find("applied") == 0;
   EXPECT_TRUE(noted);
+}
+
+// A JSON scene importing the file twice (the second time by its node, moved): the second object
+// finds the material the first one mapped, and must read the same TEXCOORD_1 through the same
+// transform, as a first import would; not TEXCOORD_0 untransformed, and without TEXCOORD_0 it
+// must not be refused for lacking UVs.
+TEST(AlbedoMap, EveryObjectOfAGltfFileReadsItsMaterialsTexCoordAndTransform) {
+  test::TempDir dir;
+  const std::string bytes = png_bytes(dir.path());
+  for (const bool with_texcoord_0 : {true, false}) {
+    SCOPED_TRACE(with_texcoord_0 ? "with TEXCOORD_0" : "without TEXCOORD_0");
+    TexturedQuad q(bytes);
+    if (!with_texcoord_0) q.w.doc["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+    q.w.write_glb(dir.path(), "q");
+    const json scene = {
+        {"image", {{"width", 32}, {"height", 24}}},
+        {"camera", {{"eye", {0, 0, 6}}, {"target", {0, 0, 0}}}},
+        {"materials", json::object()},
+        {"lights", {{{"type", "directional"}, {"direction", {0, 0, -1}}}}},
+        {"objects",
+         {{{"gltf", "q.glb"}, {"transform", {{"translate", {-1.5, 0, 0}}}}},
+          {{"gltf", "q.glb"}, {"node", "Quad"}, {"transform", {{"translate", {1.5, 0, 0}}}}}}}};
+    test::write_file(dir / "twice.json", scene.dump());
+    Scene s;
+    ASSERT_NO_THROW(s = load_scene(dir / "twice.json"));
+    ASSERT_EQ(s.objects.size(), 2u);
+    ASSERT_EQ(s.materials.size(), 1u) << "the file's material, mapped once";
+    for (std::size_t o = 0; o < 2; ++o) {
+      EXPECT_EQ(s.objects[o].material, 0) << "object " << o;
+      const std::vector<glm::dvec2>& uv = s.objects[o].mesh.uvs;
+      ASSERT_EQ(uv.size(), 4u) << "object " << o;
+      for (std::size_t v = 0; v < 4; ++v) {
+        EXPECT_DOUBLE_EQ(uv[v].x, q.expected_uv(v).x) << "object " << o << ", vertex " << v;
+        EXPECT_DOUBLE_EQ(uv[v].y, q.expected_uv(v).y) << "object " << o << ", vertex " << v;
+      }
+    }
+    EXPECT_NE(s.objects[0].mesh.positions[0], s.objects[1].mesh.positions[0]);
+  }
 }
 
 // Refusals name the pointer: a wrap glTF does not define, a transform key the extension lacks,

@@ -35,17 +35,26 @@ struct TextureDescription {
 };
 
 // A material appended to the Scene's: `material.albedo_map` is empty until `texture` is loaded
-// (or set already by a scene's override, which wins and reads TEXCOORD_0 as it is: `uv`).
+// (or set already by a scene's override, which wins and reads TEXCOORD_0 as it is).
 struct GltfMaterial {
   Material material;
   std::optional<TextureDescription> texture;
-  TextureCoordinates uv;  // what its primitives read
+};
+
+// How a primitive of glTF material N is drawn: the Scene::materials index, and the UVs that
+// material's albedo map reads (its texture's texCoord and KHR_texture_transform; TEXCOORD_0 as
+// it is for a scene's material or a scene's albedo map). Decided once, when the material is
+// mapped, and kept together: an object that finds the material mapped already (a JSON scene's
+// second object of the file) reads what the first one read.
+struct MappedMaterial {
+  int index = 0;  // a Scene::materials index
+  TextureCoordinates uv;
 };
 
 // /meshes/{mesh}/primitives/{primitive} as one SceneObject, placed by its node's world matrix.
 struct PrimitiveDescription {
   int mesh = 0, primitive = 0;
-  int material = 0;  // a Scene::materials index
+  MappedMaterial material;
   glm::dmat4 world{1.0};
   std::string node_ptr;      // "/nodes/3", for errors
   std::size_t notes_at = 0;  // as TextureDescription's

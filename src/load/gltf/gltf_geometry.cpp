@@ -21,8 +21,8 @@ bool is_read_attribute(const std::string& name, const std::string& uv_name) {
 }  // namespace
 
 TriangleMesh load_primitive(const Document& doc, const PrimitiveDescription& d, const Material& mat,
-                            const TextureCoordinates& uv_source, std::size_t& vertices,
-                            Notes& notes) {
+                            std::size_t& vertices, Notes& notes) {
+  const TextureCoordinates& uv_source = d.material.uv;
   const std::string ptr =
       "/meshes/" + std::to_string(d.mesh) + "/primitives/" + std::to_string(d.primitive);
   const tinygltf::Primitive& prim = doc.model.meshes[static_cast<std::size_t>(d.mesh)]

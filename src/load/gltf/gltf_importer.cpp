@@ -47,8 +47,9 @@ int hash_index(const std::string& text) {
   return std::stoi(digits);
 }
 
-int Importer::material(int index) {
-  if (material_override >= 0) return material_override;
+MappedMaterial Importer::material(int index) {
+  // A scene's material: no texture of the file, its albedo map reads TEXCOORD_0 as it is.
+  if (material_override >= 0) return {material_override, {}};
   auto it = material_of.find(index);
   if (it != material_of.end()) return it->second;
   const std::size_t m = out.first_material + out.materials.size();
@@ -58,15 +59,17 @@ int Importer::material(int index) {
     doc.fail("/materials/" + std::to_string(index), "no such material");
   }
   GltfMaterial mat =
-      index < 0 ? GltfMaterial{default_material(), {}, {}} : map_material(doc, index, out.notes);
-  if (mat.texture) mat.uv = mat.texture->coordinates;
+      index < 0 ? GltfMaterial{default_material(), {}} : map_material(doc, index, out.notes);
+  MappedMaterial mapped{static_cast<int>(m), {}};
+  if (mat.texture) mapped.uv = mat.texture->coordinates;
   if (overrides) {
     // A scene's albedo map replaces the file's texture and reads TEXCOORD_0 as it is.
-    if (const MaterialOverride* o = override_for(index); o && o->material.albedo_map) mat.uv = {};
+    if (const MaterialOverride* o = override_for(index); o && o->material.albedo_map)
+      mapped.uv = {};
     apply_override(index, mat.material);
   }
   out.materials.push_back(std::move(mat));
-  return material_of[index] = static_cast<int>(m);
+  return material_of[index] = mapped;
 }
 
 // The override that selects material `index` (-1: the default material): by its name, else

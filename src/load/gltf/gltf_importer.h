@@ -31,9 +31,9 @@ int hash_index(const std::string& text);
 struct Importer {
   const Document& doc;
   GltfDescription& out;
-  std::map<int, int> material_of;  // glTF material (-1: default) -> Scene::materials index
-  std::size_t objects = 0;         // the scene's before this import: its limit counts them
-  bool import_lights = true;       // false for a JSON scene's object: the scene has its own
+  std::map<int, MappedMaterial> material_of;  // glTF material (-1: default) -> how it is drawn
+  std::size_t objects = 0;    // the scene's before this import: its limit counts them
+  bool import_lights = true;  // false for a JSON scene's object: the scene has its own
   int material_override = -1;
   const std::vector<MaterialOverride>* overrides = nullptr;  // a JSON scene's object's
   // Point and line primitives met, skipped: "/meshes/0/primitives/1 (mesh \"Wire\", LINES)".
@@ -41,10 +41,9 @@ struct Importer {
   std::string first_skipped_mode{};  // the pointer of the first one's mode
   std::string first_skipped_name{};  // and its mode's name
 
-  // The Scene::materials index of glTF material `index` (-1: the default material): mapped and
-  // appended to out.materials the first time, with the override that selects it (a JSON scene's
-  // object).
-  int material(int index);
+  // How glTF material `index` (-1: the default material) is drawn: mapped and appended to
+  // out.materials the first time, with the override that selects it (a JSON scene's object).
+  MappedMaterial material(int index);
   // The override that selects material `index` (-1: the default material): by its name, else
   // by "#index", else "*".
   const MaterialOverride* override_for(int index) const;

@@ -76,23 +76,22 @@ void load_description(GltfDescription& d, Scene& scene) {
   for (GltfMaterial& m : d.materials) scene.materials.push_back(m.material);
   std::vector<bool> loaded(d.materials.size());
   for (const PrimitiveDescription& p : d.primitives) {
-    const int m = p.material - static_cast<int>(d.first_material);  // < 0: the scene's already
+    // < 0: the scene's already (its own material, or one an earlier object of the file mapped).
+    const int m = p.material.index - static_cast<int>(d.first_material);
     if (m >= 0 && !loaded[static_cast<std::size_t>(m)] && d.materials[m].texture) {
       notes_to(d.materials[m].texture->notes_at);
       auto map = load_base_colour_texture(doc, *d.materials[m].texture, scene.import_notes);
       // A scene's override that gives an albedo map replaces the file's texture.
-      auto& albedo_map = scene.materials[static_cast<std::size_t>(p.material)].albedo_map;
+      auto& albedo_map = scene.materials[static_cast<std::size_t>(p.material.index)].albedo_map;
       if (!albedo_map) albedo_map = std::move(map);
     }
     if (m >= 0) loaded[static_cast<std::size_t>(m)] = true;
     notes_to(p.notes_at);
     SceneObject obj;
     obj.mesh_path = doc.path;
-    obj.material = p.material;
-    // A scene material, or one an earlier object of the file mapped (m < 0): TEXCOORD_0 as it is.
-    obj.mesh = load_primitive(doc, p, scene.materials[static_cast<std::size_t>(p.material)],
-                              m >= 0 ? d.materials[m].uv : TextureCoordinates{}, vertices,
-                              scene.import_notes);
+    obj.material = p.material.index;
+    obj.mesh = load_primitive(doc, p, scene.materials[static_cast<std::size_t>(p.material.index)],
+                              vertices, scene.import_notes);
     scene.objects.push_back(std::move(obj));
   }
   notes_to(d.notes.size());
@@ -105,8 +104,9 @@ void load_description(GltfDescription& d, Scene& scene) {
 // of one name, listed twice by `info` and refused by gx's C names), and a note it gives once.
 struct ImportedFile {
   std::shared_ptr<const Document> doc;
-  // As Importer::material_of, kept between its objects, per set of overrides (overrides_json).
-  std::map<std::string, std::map<int, int>> material_of;
+  // As Importer::material_of, kept between its objects, per set of overrides (overrides_json):
+  // a material found here brings the UVs it was mapped with (MappedMaterial).
+  std::map<std::string, std::map<int, MappedMaterial>> material_of;
   std::set<std::string> notes;
 };
 

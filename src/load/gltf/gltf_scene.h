@@ -34,7 +34,8 @@ Scene load_gltf_scene(GltfDescription description, const std::string& camera = "
 // Describes then loads into `scene`, for each glTF object (ObjectDescription::Source::Gltf; the
 // others are skipped), the meshes of the node (its subtree, in the node's world transform in the
 // file) or of the whole scene, with the file's materials (mapped as above, appended once per file
-// however many objects import it) unless one is given; each note once per file. The file's lights
+// however many objects import it, each object's primitives reading the UVs their material was
+// mapped with: MappedMaterial) unless one is given; each note once per file. The file's lights
 // and cameras are not imported (noted): the JSON scene has its own. `overrides` apply to the
 // materials they select: by name first, then "#N", then "*"; a name or index the file does not have
 // is an InputError naming `scene_file` and the override's key. The scene limits count these
