@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <new>
+#include <string>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -17,7 +19,9 @@ namespace {
 struct Token {
   enum class Kind { Identifier, Integer, Float, Punct, End };
   Kind kind = Kind::End;
-  std::string text;
+  // Into the program text, which outlives the parse: a texture's bytes are millions of tokens,
+  // and a view neither copies them nor makes a token larger than 32 bytes.
+  std::string_view text;
   SourcePos pos;
 };
 
@@ -29,6 +33,9 @@ class Lexer {
 
   std::vector<Token> run() {
     std::vector<Token> out;
+    // An upper bound for printed byte arrays ("255, " is two tokens in ~5 characters): one
+    // allocation, not a doubling that copies the tokens; the pages never written stay unused.
+    out.reserve(s_.size() / 2 + 1);
     bool line_start = true;
     while (i_ < s_.size()) {
       const char c = s_[i_];
@@ -63,15 +70,19 @@ class Lexer {
       Token t;
       t.pos = pos_;
       if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+        const size_t start = i_;
         while (i_ < s_.size() &&
                (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_'))
-          t.text += take();
+          advance();
+        t.text = text_from(start);
         t.kind = Token::Kind::Identifier;
       } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                  (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1))))) {
         t = number();
       } else if (std::string("(){}[],;&|=-+").find(c) != std::string::npos) {
-        t.text = std::string(1, take());
+        const size_t start = i_;
+        advance();
+        t.text = text_from(start);
         t.kind = Token::Kind::Punct;
       } else {
         fail(pos_, std::string("unexpected character '") + c + "'");
@@ -86,6 +97,9 @@ class Lexer {
 
  private:
   char peek(size_t k) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
+  std::string_view text_from(size_t start) const {
+    return std::string_view(s_).substr(start, i_ - start);
+  }
   void advance() { take(); }
   char take() {
     const char c = s_[i_++];
@@ -105,33 +119,35 @@ class Lexer {
   Token number() {
     Token t;
     t.pos = pos_;
+    const size_t start = i_;
     bool is_float = false;
     if (s_[i_] == '0' && (peek(1) == 'x' || peek(1) == 'X')) {
-      t.text += take();
-      t.text += take();
-      while (std::isxdigit(static_cast<unsigned char>(peek(0)))) t.text += take();
+      advance();
+      advance();
+      while (std::isxdigit(static_cast<unsigned char>(peek(0)))) advance();
     } else {
       while (i_ < s_.size()) {
         const char c = s_[i_];
         if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
           is_float |= c == '.';
-          t.text += take();
-        } else if ((c == 'e' || c == 'E') && !t.text.empty()) {
+          advance();
+        } else if ((c == 'e' || c == 'E') && i_ > start) {
           is_float = true;
-          t.text += take();
-          if (peek(0) == '-' || peek(0) == '+') t.text += take();
+          advance();
+          if (peek(0) == '-' || peek(0) == '+') advance();
         } else {
           break;
         }
       }
     }
+    t.text = text_from(start);  // without the suffixes below
     if (peek(0) == 'f' || peek(0) == 'F') {
       is_float = true;
       advance();
     }
     while (peek(0) == 'u' || peek(0) == 'U' || peek(0) == 'l' || peek(0) == 'L') advance();
     if (std::isalnum(static_cast<unsigned char>(peek(0))) || peek(0) == '_')
-      fail(pos_, "malformed number '" + t.text + peek(0) + "'");
+      fail(pos_, "malformed number '" + std::string(t.text) + peek(0) + "'");
     t.kind = is_float ? Token::Kind::Float : Token::Kind::Integer;
     return t;
   }
@@ -169,7 +185,8 @@ class Parser {
     throw InputError(file_, std::to_string(p.line) + ":" + std::to_string(p.column), what);
   }
   [[noreturn]] void expected(const std::string& what) const {
-    const std::string got = cur().kind == Token::Kind::End ? "end of file" : "'" + cur().text + "'";
+    const std::string got =
+        cur().kind == Token::Kind::End ? "end of file" : "'" + std::string(cur().text) + "'";
     fail(cur().pos, "expected " + what + ", found " + got);
   }
   void expect(const char* punct) {
@@ -178,7 +195,7 @@ class Parser {
   }
   std::string identifier(const std::string& what) {
     if (cur().kind != Token::Kind::Identifier) expected(what);
-    return take().text;
+    return std::string(take().text);
   }
 
   bool is_function_start() const {
@@ -221,7 +238,7 @@ class Parser {
   Declaration declaration() {
     Declaration d;
     d.pos = cur().pos;
-    const std::string type = take().text;
+    const std::string type(take().text);
     d.name = identifier("a variable name");
     if (type == "GXLightObj" || type == "GXTexObj") {
       d.type = type == "GXLightObj" ? Declaration::Type::LightObj : Declaration::Type::TexObj;
@@ -361,20 +378,21 @@ class Parser {
       a = Arg::literal(negative ? -v : v);
     } else if (cur().kind == Token::Kind::Float) {
       const Token t = take();
-      const double v = std::strtod(t.text.c_str(), nullptr);
-      if (!std::isfinite(v)) fail(t.pos, "number out of range: " + t.text);
+      const double v = std::strtod(std::string(t.text).c_str(), nullptr);
+      if (!std::isfinite(v)) fail(t.pos, "number out of range: " + std::string(t.text));
       a.kind = Arg::Kind::Number;
       a.number = negative ? -v : v;
-      a.text = (negative ? "-" : "") + t.text;
+      a.text = (negative ? "-" : "") + std::string(t.text);
     } else if (cur().kind == Token::Kind::Identifier) {
       const Token t = take();
       if (const GxName* n = find_gx_name(t.text)) {
         a = Arg::integer(n->name, negative ? -n->value : n->value);
       } else if (t.text.rfind("GX_", 0) == 0) {
-        fail(t.pos, "unknown name " + t.text + " (not a GX constant of libogc's gx.h)");
+        fail(t.pos,
+             "unknown name " + std::string(t.text) + " (not a GX constant of libogc's gx.h)");
       } else {
-        if (negative) fail(p, "a sign before " + t.text);
-        a = Arg::identifier(t.text);
+        if (negative) fail(p, "a sign before " + std::string(t.text));
+        a = Arg::identifier(std::string(t.text));
       }
     } else {
       expected("an argument");
@@ -397,10 +415,12 @@ class Parser {
     if (cur().kind != Token::Kind::Integer && cur().kind != Token::Kind::Float)
       expected("a number");
     const Token t = take();
-    const double v = t.kind == Token::Kind::Integer ? static_cast<double>(integer_literal(t))
-                                                    : std::strtod(t.text.c_str(), nullptr);
+    const double v = t.kind == Token::Kind::Integer
+                         ? static_cast<double>(integer_literal(t))
+                         : std::strtod(std::string(t.text).c_str(), nullptr);
     // Mtx entries are f32 in C: a value beyond float's range would be an Inf in XF.
-    if (!std::isfinite(static_cast<float>(v))) fail(t.pos, "number out of float range: " + t.text);
+    if (!std::isfinite(static_cast<float>(v)))
+      fail(t.pos, "number out of float range: " + std::string(t.text));
     return negative ? -v : v;
   }
 
@@ -409,7 +429,8 @@ class Parser {
     const bool hex = t.text.size() > 2 && (t.text[1] == 'x' || t.text[1] == 'X');
     const char* b = t.text.data() + (hex ? 2 : 0);
     const auto r = std::from_chars(b, t.text.data() + t.text.size(), v, hex ? 16 : 10);
-    if (r.ec != std::errc() || v > (1LL << 40)) fail(t.pos, "integer out of range: " + t.text);
+    if (r.ec != std::errc() || v > (1LL << 40))
+      fail(t.pos, "integer out of range: " + std::string(t.text));
     return v;
   }
 
