@@ -135,7 +135,8 @@ enum class PathRole { GroundTruth, Baseline, Port };
 // What a path is, takes and refuses, and what builds it: one class per path (its folder's
 // *_path.cpp), one instance in the registry. The description is data its constructor sets; the
 // behaviour is the virtual functions below. A path with variant axes derives TypedPathInfo (its
-// variant parsed once into a typed value), one with only listed names ListedPathInfo.
+// variant parsed once into a typed value), one with only listed names ListedPathInfo; one with a
+// single variant and nothing to type is a SingleVariantInfo.
 class PathInfo {
  public:
   virtual ~PathInfo() = default;
@@ -261,6 +262,22 @@ class ListedPathInfo : public TypedPathInfo<V> {
 
  private:
   std::vector<ListedVariant<V>> listed_;
+};
+
+// A path with one variant and nothing to type (flat, the reference): P built from the context.
+template <class P>
+class SingleVariantInfo final : public PathInfo {
+ public:
+  SingleVariantInfo(std::string path_name, std::string path_summary, VariantInfo variant,
+                    PathRole path_role) {
+    name = std::move(path_name);
+    summary = std::move(path_summary);
+    variants = {std::move(variant)};
+    role = path_role;
+  }
+  std::unique_ptr<Path> create(const PathContext& ctx, const std::string&) const override {
+    return std::make_unique<P>(ctx);
+  }
 };
 
 // Every path, in the order the report lists them.

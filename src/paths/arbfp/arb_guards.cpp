@@ -1,7 +1,6 @@
 #include "paths/arbfp/arb_guards.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "model/translucency.h"

@@ -1,6 +1,5 @@
 #include "paths/arbfp/arb_text_bindings.h"
 
-#include <algorithm>
 #include <initializer_list>
 
 namespace lt::arbfp::text {

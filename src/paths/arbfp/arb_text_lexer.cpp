@@ -93,8 +93,14 @@ class Lexer {
     return n;
   }
 
+  // The next n characters as one token.
+  Token take(TokenKind kind, size_t n) {
+    Token t{kind, s_.substr(i_, n), pos_};
+    advance(n);
+    return t;
+  }
+
   Token number() {
-    const Position start = pos_;
     size_t n = 0;
     while (digit(at(n))) ++n;
     bool is_float = false;
@@ -111,13 +117,9 @@ class Lexer {
     // The texture targets 1D, 2D and 3D start with a digit: one name token.
     if (!is_float && name_start(at(n))) {
       while (name_char(at(n))) ++n;
-      Token t{TokenKind::Name, s_.substr(i_, n), start};
-      advance(n);
-      return t;
+      return take(TokenKind::Name, n);
     }
-    Token t{is_float ? TokenKind::Float : TokenKind::Integer, s_.substr(i_, n), start};
-    advance(n);
-    return t;
+    return take(is_float ? TokenKind::Float : TokenKind::Integer, n);
   }
 
   Token next() {
@@ -126,19 +128,11 @@ class Lexer {
     if (name_start(c)) {
       size_t n = 1;
       while (name_char(at(n))) ++n;
-      Token t{TokenKind::Name, s_.substr(i_, n), start};
-      advance(n);
-      return t;
+      return take(TokenKind::Name, n);
     }
     if (digit(c) || (c == '.' && digit(at(1)))) return number();
-    if (c == '.' && at(1) == '.') {
-      advance(2);
-      return {TokenKind::Punct, "..", start};
-    }
-    if (std::string(";,.[]{}=+-").find(c) != std::string::npos) {
-      advance(1);
-      return {TokenKind::Punct, std::string(1, c), start};
-    }
+    if (c == '.' && at(1) == '.') return take(TokenKind::Punct, 2);
+    if (std::string(";,.[]{}=+-").find(c) != std::string::npos) return take(TokenKind::Punct, 1);
     const unsigned char u = static_cast<unsigned char>(c);
     const std::string shown = std::isprint(u) ? std::string("'").append(1, c).append("'")
                                               : "byte " + std::to_string(static_cast<int>(u));

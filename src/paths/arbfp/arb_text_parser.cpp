@@ -1,7 +1,6 @@
 #include "paths/arbfp/arb_text_parser.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <optional>

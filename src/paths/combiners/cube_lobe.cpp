@@ -1,7 +1,6 @@
 #include "paths/combiners/cube_lobe.h"
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "gl/map_texture.h"

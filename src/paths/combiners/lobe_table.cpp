@@ -1,7 +1,6 @@
 #include "paths/combiners/lobe_table.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "gl/map_texture.h"
 #include "image/image.h"

@@ -1,7 +1,5 @@
 #include "paths/combiners/texgen_matrix.h"
 
-#include <algorithm>
-
 #include "model/translucency.h"
 
 namespace lt {

@@ -42,24 +42,12 @@ class FlatPath final : public Path {
   PathContext ctx_;
 };
 
-// One variant, nothing to type.
-class FlatInfo final : public PathInfo {
- public:
-  FlatInfo() {
-    name = "flat";
-    summary = "timing baseline: same geometry in one constant colour (not an approximation)";
-    variants = {{"constant", "albedo as a constant colour"}};
-    role = PathRole::Baseline;
-  }
-  std::unique_ptr<Path> create(const PathContext& ctx, const std::string&) const override {
-    return std::make_unique<FlatPath>(ctx);
-  }
-};
-
 }  // namespace
 
 const PathInfo& flat_path_info() {
-  static const FlatInfo info;
+  static const SingleVariantInfo<FlatPath> info(
+      "flat", "timing baseline: same geometry in one constant colour (not an approximation)",
+      {"constant", "albedo as a constant colour"}, PathRole::Baseline);
   return info;
 }
 

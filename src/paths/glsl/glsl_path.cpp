@@ -19,7 +19,10 @@ std::string light_prefix(size_t i) {
   return "u_light" + std::to_string(i) + "_";
 }
 
-}  // namespace
+// The generated sources for one material.
+struct GlslSources {
+  std::string vertex, fragment;
+};
 
 GlslSources generate_glsl(const Scene& scene, const Material& material) {
   const bool translucent = material.translucency.has_value();
@@ -65,8 +68,6 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
       "translucency.frag");
   return s;
 }
-
-namespace {
 
 // The textures of the materials that have programs: the thickness map on unit 1 (its UVs are
 // texture coordinate set 1, gl/scene_geometry.h), the ramp on unit 0, the albedo map on unit 2

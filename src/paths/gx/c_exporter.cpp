@@ -1,6 +1,5 @@
 #include "paths/gx/c_exporter.h"
 
-#include <iomanip>
 #include <sstream>
 
 #include "core/error.h"

@@ -2,7 +2,6 @@
 
 #include <bitset>
 #include <set>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/find_named.h"
@@ -37,25 +36,24 @@ void count_konst(const TevStage& s, std::set<int>& konst) {
 }
 
 std::vector<budget::Resource> resources(const GxCounts& c, const GxCounts& lim) {
-  auto limit = [](int l) { return l >= 0 ? std::optional<int>(l) : std::nullopt; };
-  return {{"tev_stages", "TEV stages", c.tev_stages, limit(lim.tev_stages), "", {}},
-          {"texgens", "texgens", c.texgens, limit(lim.texgens), "", {}},
-          {"texture_maps", "texture maps", c.texture_maps, limit(lim.texture_maps), "", {}},
-          {"channels", "colour channels", c.channels, limit(lim.channels), "", {}},
-          {"lights_per_channel",
-           "lights per channel",
-           c.lights_per_channel,
-           limit(lim.lights_per_channel),
-           "",
-           {}},
-          {"konst_colors", "konst colours", c.konst_colors, limit(lim.konst_colors), "", {}},
-          {"tev_registers", "TEV registers", c.tev_registers, limit(lim.tev_registers), "", {}},
-          {"vertex_attributes",
-           "vertex attributes",
-           c.vertex_attributes,
-           limit(lim.vertex_attributes),
-           "",
-           {}}};
+  // A limit below 0 is none.
+  auto row = [&](const char* key, const char* label, int GxCounts::*n) {
+    return budget::Resource{
+        key, label, c.*n, lim.*n >= 0 ? std::optional<int>(lim.*n) : std::nullopt, "", {}};
+  };
+  return {row("tev_stages", "TEV stages", &GxCounts::tev_stages),
+          row("texgens", "texgens", &GxCounts::texgens),
+          row("texture_maps", "texture maps", &GxCounts::texture_maps),
+          row("channels", "colour channels", &GxCounts::channels),
+          row("lights_per_channel", "lights per channel", &GxCounts::lights_per_channel),
+          row("konst_colors", "konst colours", &GxCounts::konst_colors),
+          row("tev_registers", "TEV registers", &GxCounts::tev_registers),
+          row("vertex_attributes", "vertex attributes", &GxCounts::vertex_attributes)};
+}
+
+// Throws InputError("--profile", ...) naming the valid profiles.
+const GxProfile& find_gx_profile(const std::string& name) {
+  return find_named(gx_profiles(), name, "--profile", "gx profile");
 }
 
 budget::Report report_of(const std::vector<std::vector<PassProgram>>& by_material,
@@ -140,10 +138,6 @@ const std::vector<GxProfile>& gx_profiles() {
        "channels, 8 lights, 4 konst colours, PREV + 3 TEV registers",
        wii, "devkitPro/libogc gc/ogc/gx.h; docs/spec/gx-hardware.md section 4"}};
   return profiles;
-}
-
-const GxProfile& find_gx_profile(const std::string& name) {
-  return find_named(gx_profiles(), name, "--profile", "gx profile");
 }
 
 budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,

@@ -27,8 +27,6 @@ struct GxProfile {
 };
 // wii-tev (the Wii / GameCube GX).
 const std::vector<GxProfile>& gx_profiles();
-// Throws InputError("--profile", ...) naming the valid profiles.
-const GxProfile& find_gx_profile(const std::string& name);
 
 // One row (scope pass) per pass program, named "material M pass N (function)" where the
 // material is known, else by its function; one row (scope material) per material with its passes

@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <chrono>
-#include <cmath>
-#include <map>
 
 #include "core/error.h"
 #include "core/stopwatch.h"
@@ -311,9 +308,8 @@ class GxInfo final : public TypedPathInfo<gx::GxVariant> {
 };
 
 GxInfo::GxInfo() {
-  GxInfo& info = *this;
-  info.name = "gx";
-  info.summary =
+  name = "gx";
+  summary =
       "the Wii's GX pipeline emulated in its own integer arithmetic: XF lighting per vertex, "
       "8-bit channels, the power LUT as an I8 texture with 7-bit filtering, TEV stages, EFB "
       "blending; programs are libogc calls (`ltrender export gx`). Variants are a grammar: "
@@ -322,7 +318,7 @@ GxInfo::GxInfo() {
       "(a directional light's translucency base as a TEV konst colour, COLOR0 unlit); any with "
       ":colors=round, :lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of "
       "the EFB)";
-  info.variants = {
+  variants = {
       {"t=vertex",
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "
        "light, any camera)"},
@@ -354,12 +350,12 @@ GxInfo::GxInfo() {
        "lobe=xf-spec under any camera and lights: V and L (and a point light's attenuation) taken "
        "once per object at its centre, the lobe fitted for them"},
   };
-  info.takes_program_file = true;
-  info.writes_fifo_log = true;
-  for (const gx::GxProfile& p : gx::gx_profiles()) info.budget_profiles.push_back(p.name);
-  info.program_extensions = {".c", ".gx"};
-  info.export_target = "libogc C for the Wii / GameCube";
-  info.export_formats = gx::gx_export_formats();
+  takes_program_file = true;
+  writes_fifo_log = true;
+  for (const gx::GxProfile& p : gx::gx_profiles()) budget_profiles.push_back(p.name);
+  program_extensions = {".c", ".gx"};
+  export_target = "libogc C for the Wii / GameCube";
+  export_formats = gx::gx_export_formats();
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "paths/gx/gx_variant.h"
 
-#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -19,13 +19,18 @@ const char* kValid =
     ":lights=round-each, :map=rgb565, :base=tev (or :base=xf), :out=xfb (or :out=efb) and "
     ":light-range=D (D >= 0)";
 
+// Whether all of `text` reads as one number into `out`.
+template <class T>
+bool parses_whole(const std::string& text, T& out) {
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
+  return r.ec == std::errc() && r.ptr == text.data() + text.size();
+}
+
 }  // namespace
 
 GxVariant parse_gx_variant(const std::string& text) {
   GxVariant v;
-  bool seen_t = false, seen_lut = false, seen_lobe = false, seen_colors = false,
-       seen_lights = false, seen_map = false, seen_out = false, seen_view = false,
-       seen_base = false, seen_range = false;
+  std::set<std::string> seen;
   auto bad = [&](const std::string& why) {
     throw InputError("--variant", text, "gx: " + why + " (" + kValid + ")");
   };
@@ -34,8 +39,13 @@ GxVariant parse_gx_variant(const std::string& text) {
     const auto eq = part.find('=');
     if (eq == std::string::npos) bad("'" + part + "' is not key=value");
     const std::string key = part.substr(0, eq), value = part.substr(eq + 1);
-    if (key == "t" && !seen_t) {
-      seen_t = true;
+    const bool first = seen.insert(key).second;
+    // A two-valued axis: `value`, refused unless it is `a` or `b`.
+    auto either = [&](const char* a, const char* b) {
+      if (value != a && value != b) bad(key + "=" + value + " is not " + a + " or " + b);
+      return value;
+    };
+    if (key == "t" && first) {
       if (value == "vertex") {
         v.t = GxVariant::TexCoord::Vertex;
       } else if (value == "texgen") {
@@ -43,17 +53,14 @@ GxVariant parse_gx_variant(const std::string& text) {
       } else {
         bad("t=" + value + " is not a texture-coordinate source");
       }
-    } else if (key == "lut" && !seen_lut) {
-      seen_lut = true;
+    } else if (key == "lut" && first) {
       int n = 0;
-      const auto r = std::from_chars(value.data(), value.data() + value.size(), n);
       // 1024 is the hardware's largest texture side [OGC gx.h L4263]; the texel-centre remap
       // needs two texels.
-      if (r.ec != std::errc() || r.ptr != value.data() + value.size() || n < 2 || n > 1024)
+      if (!parses_whole(value, n) || n < 2 || n > 1024)
         bad("lut=" + value + " is not a LUT width of 2..1024 texels");
       v.lut_size = n;
-    } else if (key == "lobe" && !seen_lobe) {
-      seen_lobe = true;
+    } else if (key == "lobe" && first) {
       if (value == "xf-spec") {
         v.lobe = GxVariant::Lobe::XfSpec;
       } else if (value == "lut") {
@@ -61,44 +68,29 @@ GxVariant parse_gx_variant(const std::string& text) {
       } else {
         bad("lobe=" + value + " is not a lobe method");
       }
-    } else if (key == "colors" && !seen_colors) {
-      seen_colors = true;
-      if (value != "round" && value != "trunc") bad("colors=" + value + " is not round or trunc");
-      v.round_colors = value == "round";
-    } else if (key == "lights" && !seen_lights) {
-      seen_lights = true;
-      if (value != "round-each" && value != "sum")
-        bad("lights=" + value + " is not round-each or sum");
-      v.round_each_light = value == "round-each";
-    } else if (key == "map" && !seen_map) {
-      seen_map = true;
-      if (value != "rgb565" && value != "rgba8") bad("map=" + value + " is not rgba8 or rgb565");
-      v.map_rgb565 = value == "rgb565";
-    } else if (key == "out" && !seen_out) {
-      seen_out = true;
-      if (value != "efb" && value != "xfb") bad("out=" + value + " is not efb or xfb");
-      v.out = value == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
-    } else if (key == "base" && !seen_base) {
-      seen_base = true;
-      if (value != "tev" && value != "xf") bad("base=" + value + " is not tev or xf");
-      v.base_in_tev = value == "tev";
-    } else if (key == "light-range" && !seen_range) {
-      seen_range = true;
+    } else if (key == "colors" && first) {
+      v.round_colors = either("round", "trunc") == "round";
+    } else if (key == "lights" && first) {
+      v.round_each_light = either("round-each", "sum") == "round-each";
+    } else if (key == "map" && first) {
+      v.map_rgb565 = either("rgba8", "rgb565") == "rgb565";
+    } else if (key == "out" && first) {
+      v.out = either("efb", "xfb") == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
+    } else if (key == "base" && first) {
+      v.base_in_tev = either("tev", "xf") == "tev";
+    } else if (key == "light-range" && first) {
       double d = 0;
-      const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
-      if (r.ec != std::errc() || r.ptr != value.data() + value.size() || !std::isfinite(d) || d < 0)
+      if (!parses_whole(value, d) || !std::isfinite(d) || d < 0)
         bad("light-range=" + value + " is not a distance >= 0");
       v.light_range = d;
-    } else if (key == "view" && !seen_view) {
-      seen_view = true;
-      if (value != "object" && value != "exact") bad("view=" + value + " is not object or exact");
-      v.view_object = value == "object";
+    } else if (key == "view" && first) {
+      v.view_object = either("object", "exact") == "object";
     } else {
       bad("'" + key + "' is not a gx variant axis, or is given twice");
     }
   }
   if (text.empty()) bad("empty variant");
-  if (v.lobe == GxVariant::Lobe::XfSpec && (seen_t || seen_lut))
+  if (v.lobe == GxVariant::Lobe::XfSpec && (seen.count("t") || seen.count("lut")))
     bad("lobe=xf-spec uses no texture, so it takes no t= or lut=");
   // t=vertex computes V and L exactly per vertex on the CPU: a per-object view would only lose.
   // lobe=xf-spec has no LUT stage to fold the base into.

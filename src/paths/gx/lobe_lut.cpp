@@ -1,8 +1,5 @@
 #include "paths/gx/lobe_lut.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "image/image.h"
 #include "model/power_lut.h"
 #include "model/texture_sampling.h"

@@ -1,6 +1,5 @@
 #include "paths/gx/object_view.h"
 
-#include <algorithm>
 #include <limits>
 
 #include "model/translucency.h"

@@ -26,8 +26,6 @@ inline double max3(const glm::dvec3& v) {
   return std::max({v.r, v.g, v.b});
 }
 
-// The smallest of x1, x2, x4 that holds `magnitude`; 4 where even that is too small.
-int scale_for(double magnitude);
 // A colour as the 8-bit GXColor a call passes, alpha 255.
 Color8 rgb8(const glm::dvec3& c);
 // One stage's order and colour inputs, scaled x1, x2 or x4; the rest as pass_plan.h's defaults.

@@ -2,7 +2,6 @@
 // passes a material needs, which scales keep every 8-bit quantity in range, which attributes,
 // lights, texgens, textures and stages the scene needs; nothing here writes C or prose.
 #include <algorithm>
-#include <cmath>
 #include <optional>
 
 #include "core/error.h"
@@ -92,12 +91,6 @@ LightObjectPlan distance_light(const std::string& name, int slot, const glm::dve
   return o;
 }
 
-}  // namespace
-
-Color8 rgb8(const glm::dvec3& c) {
-  return {to_unorm8(c.r), to_unorm8(c.g), to_unorm8(c.b), 255};
-}
-
 // The smallest of x1, x2, x4 that holds `magnitude`; 4 where even that is too small (the
 // channel then saturates, and the pass says so).
 int scale_for(double magnitude) {
@@ -105,6 +98,12 @@ int scale_for(double magnitude) {
     if (magnitude <= s * (1 + 1e-9)) return s;
   }
   return static_cast<int>(kMaxScale);
+}
+
+}  // namespace
+
+Color8 rgb8(const glm::dvec3& c) {
+  return {to_unorm8(c.r), to_unorm8(c.g), to_unorm8(c.b), 255};
 }
 
 TevStagePlan tev_stage(int stage, GxConst<NameGroup::TexCoord> texcoord,

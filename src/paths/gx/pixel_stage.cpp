@@ -7,14 +7,21 @@
 
 namespace lt::gx {
 
+namespace {
+
+// The 8-bit value of an interpolated channel colour (0..255 as a float). Real hardware
+// interpolates in fixed point of unpublished precision (Dolphin PR#2075: "GC/Wii does
+// fixed-point interpolation"); Dolphin's software rasteriser truncates a float [DSW Rasterizer
+// Draw]. Truncating the float alone would turn float noise (a flat 200 interpolated as
+// 199.99998) into a lost LSB, so the interpolant is first rounded to 8 fractional bits, as a
+// fixed-point interpolator with 8 fractional bits would hold it, then truncated. `round`: the
+// shader backends' iround(col) instead [DHW tev_ras_table], the other side of gx-hardware.md §2.5.
 u8 interpolated_color(float v, bool round) {
   if (!(v > 0)) return 0;  // also NaN
   if (round) return static_cast<u8>(std::min(255.0, std::floor(static_cast<double>(v) + 0.5)));
   const double fixed = std::floor(static_cast<double>(v) * 256.0 + 0.5);
   return static_cast<u8>(std::min(255.0, std::floor(fixed / 256.0)));
 }
-
-namespace {
 
 // The texel stage `s` fetches at this pixel.
 Color8 stage_texel(const PixelProgram& p, const TevStage& stage, const AttributeRasteriser& raster,

@@ -18,15 +18,6 @@ struct PixelProgram {
   std::array<const TextureObject*, kMaxTexMaps> textures{};
 };
 
-// The 8-bit value of an interpolated channel colour (0..255 as a float). Real hardware
-// interpolates in fixed point of unpublished precision (Dolphin PR#2075: "GC/Wii does
-// fixed-point interpolation"); Dolphin's software rasteriser truncates a float [DSW Rasterizer
-// Draw]. Truncating the float alone would turn float noise (a flat 200 interpolated as
-// 199.99998) into a lost LSB, so the interpolant is first rounded to 8 fractional bits, as a
-// fixed-point interpolator with 8 fractional bits would hold it, then truncated. `round`: the
-// shader backends' iround(col) instead [DHW tev_ras_table], the other side of gx-hardware.md §2.5.
-u8 interpolated_color(float v, bool round = false);
-
 // Runs one pass over every covered pixel whose material has a program (by_material[m] null:
 // that material draws nothing in this pass) and blends the result into `efb` (row-major, bottom
 // row first, like the rasteriser's targets). Returns the TEV stage-pixels run.

@@ -1,7 +1,6 @@
 #include "paths/gx/thickness_texture.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/error.h"
 #include "image/image.h"

@@ -1,7 +1,5 @@
 #include "paths/gx/vertex_stage.h"
 
-#include <algorithm>
-
 #include "image/image.h"
 #include "model/translucency.h"
 

@@ -1,9 +1,6 @@
 #include "paths/half/half_path.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <thread>
 
 #include "paths/common/cpu_shaded_path.h"
 #include "paths/half/half_shading.h"

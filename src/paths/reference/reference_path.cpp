@@ -34,24 +34,12 @@ class ReferencePath final : public CpuShadedPath {
   Scene relative_scene_;
 };
 
-// One variant, nothing to type.
-class ReferenceInfo final : public PathInfo {
- public:
-  ReferenceInfo() {
-    name = "reference";
-    summary = "double precision on the CPU over a float G-buffer: the ground truth";
-    variants = {{"exact", "std::pow in double; the only variant"}};
-    role = PathRole::GroundTruth;
-  }
-  std::unique_ptr<Path> create(const PathContext& ctx, const std::string&) const override {
-    return std::make_unique<ReferencePath>(ctx);
-  }
-};
-
 }  // namespace
 
 const PathInfo& reference_path_info() {
-  static const ReferenceInfo info;
+  static const SingleVariantInfo<ReferencePath> info(
+      "reference", "double precision on the CPU over a float G-buffer: the ground truth",
+      {"exact", "std::pow in double; the only variant"}, PathRole::GroundTruth);
   return info;
 }
 

@@ -9,6 +9,16 @@ namespace {
 // [OGC gx.h].
 constexpr u32 kPosXyz = 1, kClrRgba = 1, kTexSt = 1, kF32 = 4, kRgba8 = 5;
 constexpr u32 kDirect = 1;  // GX_DIRECT
+
+// CP 0x30 / XF 0x1018: position-normal matrix index 0-5 (GX_PNMTX0 = 0), texcoord 0..3 matrix
+// index at 6, 12, 18, 24; CP 0x40 / XF 0x1019: texcoords 4..7 at 0, 6, 12, 18 [OGC gx.c
+// GX_SetTexCoordGen2 L2745-2775, GX_SetCurrentMtx L2931] [DHW CPMemory.h TMatrixIndexA/B].
+std::array<u32, 2> matrix_indices(const XfTexGenState& t) {
+  auto m = [&](int n) { return static_cast<u32>(t.texgens[static_cast<size_t>(n)].matrix); };
+  return {place(0, 0, 6) | place(m(0), 6, 6) | place(m(1), 12, 6) | place(m(2), 18, 6) |
+              place(m(3), 24, 6),
+          place(m(4), 0, 6) | place(m(5), 6, 6) | place(m(6), 12, 6) | place(m(7), 18, 6)};
+}
 }  // namespace
 
 VertexDescriptor sent_attributes(const GxState& s) {
@@ -61,13 +71,6 @@ std::array<u32, 3> vertex_attribute_formats(const TexCoordFormats& formats) {
   const u32 c = place(st(5), 5, 1) | place(kF32, 6, 3) | place(st(6), 14, 1) | place(kF32, 15, 3) |
                 place(st(7), 23, 1) | place(kF32, 24, 3);
   return {a, b, c};
-}
-
-std::array<u32, 2> matrix_indices(const XfTexGenState& t) {
-  auto m = [&](int n) { return static_cast<u32>(t.texgens[static_cast<size_t>(n)].matrix); };
-  return {place(0, 0, 6) | place(m(0), 6, 6) | place(m(1), 12, 6) | place(m(2), 18, 6) |
-              place(m(3), 24, 6),
-          place(m(4), 0, 6) | place(m(5), 6, 6) | place(m(6), 12, 6) | place(m(7), 18, 6)};
 }
 
 u32 vertex_specs(const VertexDescriptor& v) {

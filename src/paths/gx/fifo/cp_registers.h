@@ -34,10 +34,6 @@ u32 vcd_high(const VertexDescriptor& vertex);
 // RGBA8, texture coordinates F32 with S or ST [OGC gx.c __SETVCDFMT L2533-2620, GX_Init's
 // __GX_InitRevBits: VAT A bit 30 and VAT B bit 31 set] [DHW CPMemory.h UVAT_group0..2].
 std::array<u32, 3> vertex_attribute_formats(const TexCoordFormats& formats);
-// CP 0x30 / XF 0x1018: position-normal matrix index 0-5 (GX_PNMTX0 = 0), texcoord 0..3 matrix
-// index at 6, 12, 18, 24; CP 0x40 / XF 0x1019: texcoords 4..7 at 0, 6, 12, 18 [OGC gx.c
-// GX_SetTexCoordGen2 L2745-2775, GX_SetCurrentMtx L2931] [DHW CPMemory.h TMatrixIndexA/B].
-std::array<u32, 2> matrix_indices(const XfTexGenState& texgen);
 // XF 0x1008: colours 0-1, normals 2-3, texture coordinates 4-7, counted from the descriptor
 // [OGC gx.c __GX_XfVtxSpecs L751-776] [DHW XFMemory.h INVTXSPEC].
 u32 vertex_specs(const VertexDescriptor& vertex);

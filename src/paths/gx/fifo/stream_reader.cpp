@@ -4,6 +4,9 @@
 
 namespace lt::gx::fifo {
 
+namespace {
+// The bytes one vertex takes under the CP registers' descriptor and VAT 0 (direct attributes
+// only; POS/NRM F32 XYZ, CLRn RGBA8, TEXn F32 S or ST - what the stream uses).
 size_t stream_vertex_size(const RegisterFile& r) {
   const u32 lo = r.cp[0x50], hi = r.cp[0x60];
   const u32 vat_a = r.cp[0x70], vat_b = r.cp[0x80], vat_c = r.cp[0x90];
@@ -21,6 +24,7 @@ size_t stream_vertex_size(const RegisterFile& r) {
     if (field(hi, 2 * t, 2)) n += st[t] ? 8 : 4;
   return n;
 }
+}  // namespace
 
 StreamEvents read_stream(const std::vector<u8>& b, RegisterFile& r, const std::string& file,
                          const DrawCallback& on_draw) {

@@ -46,8 +46,4 @@ using DrawCallback = std::function<void(const RegisterFile&, const StreamDraw&)>
 StreamEvents read_stream(const std::vector<u8>& bytes, RegisterFile& regs, const std::string& file,
                          const DrawCallback& on_draw = {});
 
-// The bytes one vertex takes under the CP registers' descriptor and VAT 0 (direct attributes
-// only; POS/NRM F32 XYZ, CLRn RGBA8, TEXn F32 S or ST - what the stream uses).
-size_t stream_vertex_size(const RegisterFile& regs);
-
 }  // namespace lt::gx::fifo

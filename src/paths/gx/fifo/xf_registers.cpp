@@ -20,6 +20,23 @@ std::vector<float> rows(const TexMatrix& m, int count) {
     for (float v : m[static_cast<size_t>(r)]) out.push_back(v);
   return out;
 }
+
+// A GXColor as XF holds it: r << 24 | g << 16 | b << 8 | a [OGC gx.c GX_SetChanAmbColor].
+u32 color_word(const Color8& c) {
+  return place(c.r, 24, 8) | place(c.g, 16, 8) | place(c.b, 8, 8) | place(c.a, 0, 8);
+}
+
+// GX_LoadLightObj's 16 words [OGC gx.c L4587-4641]: 3 unused, colour, a0..a2, k0..k2,
+// position, direction [DHW XFMemory.h Light].
+std::array<u32, 16> light_words(const XfLight& l) {
+  const float v[12] = {l.a[0],       l.a[1],        l.a[2],        l.k[0],
+                       l.k[1],       l.k[2],        l.position.x,  l.position.y,
+                       l.position.z, l.direction.x, l.direction.y, l.direction.z};
+  std::array<u32, 16> w{};
+  w[3] = color_word(l.color);
+  for (int i = 0; i < 12; ++i) w[static_cast<size_t>(4 + i)] = float_bits(v[i]);
+  return w;
+}
 }  // namespace
 
 u32 channel_control(const ChannelControl& c) {
@@ -30,25 +47,11 @@ u32 channel_control(const ChannelControl& c) {
          place(static_cast<u32>(c.light_mask) >> 4, 11, 4);
 }
 
-u32 color_word(const Color8& c) {
-  return place(c.r, 24, 8) | place(c.g, 16, 8) | place(c.b, 8, 8) | place(c.a, 0, 8);
-}
-
 u32 texgen_word(const TexGen& t) {
   constexpr u8 kMtx3x4 = 0, kSourcePosition = 0, kSourceNormal = 1;  // GX_TG_* [OGC gx.h]
   const bool row_xyz = t.source == kSourcePosition || t.source == kSourceNormal;
   const u32 row = t.source == kSourcePosition ? 0u : t.source == kSourceNormal ? 1u : t.source + 1u;
   return place(t.type == kMtx3x4, 1, 1) | place(row_xyz, 2, 1) | place(row, 7, 5);
-}
-
-std::array<u32, 16> light_words(const XfLight& l) {
-  const float v[12] = {l.a[0],       l.a[1],        l.a[2],        l.k[0],
-                       l.k[1],       l.k[2],        l.position.x,  l.position.y,
-                       l.position.z, l.direction.x, l.direction.y, l.direction.z};
-  std::array<u32, 16> w{};
-  w[3] = color_word(l.color);
-  for (int i = 0; i < 12; ++i) w[static_cast<size_t>(4 + i)] = float_bits(v[i]);
-  return w;
 }
 
 std::array<u32, 7> projection_words(const Camera& cam, FrameSize size) {

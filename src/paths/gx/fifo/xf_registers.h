@@ -33,15 +33,10 @@ inline constexpr u32 kPostIdentity = 61;
 // attenuation select 10 (attn_fn != GX_AF_SPEC), lights 4..7 at 11-14
 // [DHW XFMemory.h LitChannel].
 u32 channel_control(const ChannelControl& control);
-// A GXColor as XF holds it: r << 24 | g << 16 | b << 8 | a [OGC gx.c GX_SetChanAmbColor].
-u32 color_word(const Color8& c);
 // GX_SetTexCoordGen(n, type, source, matrix) [OGC gx.c L2658-2744]: projection 1 (1 = STQ for
 // GX_TG_MTX3x4), input form 2 (1 = ABC1 for the position and normal rows), source row 7-11
 // (0 position, 1 normal, 5 + n GX_TG_TEXn) [DHW XFMemory.h TexMtxInfo].
 u32 texgen_word(const TexGen& texgen);
-// GX_LoadLightObj's 16 words [OGC gx.c L4587-4641]: 3 unused, colour, a0..a2, k0..k2,
-// position, direction [DHW XFMemory.h Light].
-std::array<u32, 16> light_words(const XfLight& light);
 
 // The projection the emulator's rasteriser uses (gl/scene_geometry.cpp: the scene camera at the
 // frame's aspect), in GX_LoadProjectionMtx's seven words [OGC gx.c L1797-1830]: perspective

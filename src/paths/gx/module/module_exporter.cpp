@@ -320,14 +320,15 @@ std::string without_line(std::string text, const std::string& line) {
   return text;
 }
 
-}  // namespace
-
+// The runtime the module embeds: the maths header and source (plain C99) and the libogc draw.
 std::string module_runtime_source(const std::string& file) {
   const auto& table = embedded::sources();
   const auto it = table.find(kRuntimeDir + file);
   LT_CHECK(it != table.end(), "no embedded module runtime " + file);
   return it->second;
 }
+
+}  // namespace
 
 std::string export_module(const Scene& scene, const GxVariant& variant,
                           const std::string& scene_argument) {

@@ -18,7 +18,4 @@ namespace lt::gx {
 std::string export_module(const Scene& scene, const GxVariant& variant,
                           const std::string& scene_argument);
 
-// The runtime the module embeds: the maths header and source (plain C99) and the libogc draw.
-std::string module_runtime_source(const std::string& file);
-
 }  // namespace lt::gx

@@ -9,9 +9,15 @@ TevStage& stage(Machine& m, size_t k) {
   return m.state.tev.stages[m.u(k)];
 }
 
+// GX_SetTevColorIn / GX_SetTevAlphaIn: the combiner's inputs a, b, c, d.
+void set_inputs(TevCombiner& c, Machine& m) {
+  c.a = m.u(1), c.b = m.u(2), c.c = m.u(3), c.d = m.u(4);
+}
+
 // GX_SetTevColorOp / GX_SetTevAlphaOp: a compare op (8..15) writes bias 3, scale bits
 // (op >> 1) & 3 and op bit op & 1; bias and scale arguments are then ignored [OGC gx.c L3893].
 void set_op(TevCombiner& c, Machine& m) {
+  if (m.i(1) > 1 && m.i(1) < 8) m.fail_arg(1, "not a TEV operation");
   const long long op = m.i(1);
   if (op >= 8) {
     c.bias = 3;
@@ -71,6 +77,13 @@ void add_tev_calls(CallTable& table) {
   using K = ParamKind;
   using G = NameGroup;
   const Param stage_p = integer(G::TevStage, 0, 15);
+  const Param color_in = integer(G::ColorArg, 0, 15), alpha_in = integer(G::AlphaArg, 0, 7);
+  const std::vector<Param> op_params = {stage_p,
+                                        integer(G::TevOp, 0, 15),
+                                        integer(G::TevBias, 0, 3),
+                                        integer(G::TevScale, 0, 3),
+                                        integer(G::Bool, 0, 1),
+                                        integer(G::TevReg, 0, 3)};
   table.insert({
       // --- TEV [OGC gx.h L2559-3227] ---
       {"GX_SetNumTevStages",
@@ -94,33 +107,13 @@ void add_tev_calls(CallTable& table) {
           s.channel = ch == 6 || ch == 0xff ? static_cast<u8>(ch) : channel_index(ch) ? 5 : 4;
         }}},
       {"GX_SetTevColorIn",
-       {{stage_p, integer(G::ColorArg, 0, 15), integer(G::ColorArg, 0, 15),
-         integer(G::ColorArg, 0, 15), integer(G::ColorArg, 0, 15)},
-        [](Machine& m) {
-          TevCombiner& c = stage(m, 0).color;
-          c.a = m.u(1), c.b = m.u(2), c.c = m.u(3), c.d = m.u(4);
-        }}},
+       {{stage_p, color_in, color_in, color_in, color_in},
+        [](Machine& m) { set_inputs(stage(m, 0).color, m); }}},
       {"GX_SetTevAlphaIn",
-       {{stage_p, integer(G::AlphaArg, 0, 7), integer(G::AlphaArg, 0, 7),
-         integer(G::AlphaArg, 0, 7), integer(G::AlphaArg, 0, 7)},
-        [](Machine& m) {
-          TevCombiner& c = stage(m, 0).alpha;
-          c.a = m.u(1), c.b = m.u(2), c.c = m.u(3), c.d = m.u(4);
-        }}},
-      {"GX_SetTevColorOp",
-       {{stage_p, integer(G::TevOp, 0, 15), integer(G::TevBias, 0, 3), integer(G::TevScale, 0, 3),
-         integer(G::Bool, 0, 1), integer(G::TevReg, 0, 3)},
-        [](Machine& m) {
-          if (m.i(1) > 1 && m.i(1) < 8) m.fail_arg(1, "not a TEV operation");
-          set_op(stage(m, 0).color, m);
-        }}},
-      {"GX_SetTevAlphaOp",
-       {{stage_p, integer(G::TevOp, 0, 15), integer(G::TevBias, 0, 3), integer(G::TevScale, 0, 3),
-         integer(G::Bool, 0, 1), integer(G::TevReg, 0, 3)},
-        [](Machine& m) {
-          if (m.i(1) > 1 && m.i(1) < 8) m.fail_arg(1, "not a TEV operation");
-          set_op(stage(m, 0).alpha, m);
-        }}},
+       {{stage_p, alpha_in, alpha_in, alpha_in, alpha_in},
+        [](Machine& m) { set_inputs(stage(m, 0).alpha, m); }}},
+      {"GX_SetTevColorOp", {op_params, [](Machine& m) { set_op(stage(m, 0).color, m); }}},
+      {"GX_SetTevAlphaOp", {op_params, [](Machine& m) { set_op(stage(m, 0).alpha, m); }}},
       // GX_SetTevColor writes 0..255 into the 11-bit register fields [OGC gx.c L3775-3788].
       {"GX_SetTevColor",
        {{integer(G::TevReg, 0, 3), of(K::Color)},

@@ -9,7 +9,10 @@ namespace {
 
 // GX_SetChanAmbColor / GX_SetChanMatColor: GX_COLORn writes rgb, GX_ALPHAn alpha, GX_COLORnAn
 // all four [OGC gx.c GX_SetChanAmbColor].
-void set_channel_color(Color8& reg, long long channel, const Color8& c) {
+void set_channel_color(std::array<Color8, kMaxChannels>& regs, Machine& m) {
+  const long long channel = m.i(0);
+  const Color8 c = m.color(1);
+  Color8& reg = regs[static_cast<size_t>(channel_index(channel))];
   if (channel != 2 && channel != 3) reg.r = c.r, reg.g = c.g, reg.b = c.b;
   if (channel >= 2) reg.a = c.a;
 }
@@ -105,16 +108,10 @@ void add_xf_calls(CallTable& table) {
         }}},
       {"GX_SetChanAmbColor",
        {{channel_p, of(K::Color)},
-        [](Machine& m) {
-          set_channel_color(m.state.lighting.ambient[static_cast<size_t>(channel_index(m.i(0)))],
-                            m.i(0), m.color(1));
-        }}},
+        [](Machine& m) { set_channel_color(m.state.lighting.ambient, m); }}},
       {"GX_SetChanMatColor",
        {{channel_p, of(K::Color)},
-        [](Machine& m) {
-          set_channel_color(m.state.lighting.material[static_cast<size_t>(channel_index(m.i(0)))],
-                            m.i(0), m.color(1));
-        }}},
+        [](Machine& m) { set_channel_color(m.state.lighting.material, m); }}},
       {"GX_InitLightPos",
        {{light_p, f32(), f32(), f32()},
         [](Machine& m) {

@@ -294,22 +294,22 @@ class Parser {
   // ATTRIBUTE_ALIGN(32) (libogc's macro), ATTRIBUTE_ALIGNED(32) (what exports before the fix
   // wrote; libogc never defined it) or __attribute__((aligned(32))).
   void alignment() {
-    if (is("ATTRIBUTE_ALIGN") || is("ATTRIBUTE_ALIGNED")) {
-      take();
+    auto parenthesised_integer = [&] {
       expect("(");
       if (cur().kind != Token::Kind::Integer) expected("an alignment");
       take();
       expect(")");
+    };
+    if (is("ATTRIBUTE_ALIGN") || is("ATTRIBUTE_ALIGNED")) {
+      take();
+      parenthesised_integer();
     } else if (is("__attribute__")) {
       take();
       expect("(");
       expect("(");
       if (!is("aligned")) expected("'aligned'");
       take();
-      expect("(");
-      if (cur().kind != Token::Kind::Integer) expected("an alignment");
-      take();
-      expect(")");
+      parenthesised_integer();
       expect(")");
       expect(")");
     }

@@ -17,8 +17,6 @@ std::string where(const SourcePos& p) {
   return std::to_string(p.line) + ":" + std::to_string(p.column);
 }
 
-}  // namespace
-
 std::string c_identifier(const std::string& name) {
   std::string s = name;
   for (char& c : s) {
@@ -26,6 +24,8 @@ std::string c_identifier(const std::string& name) {
   }
   return s;
 }
+
+}  // namespace
 
 std::vector<std::string> material_c_names(const Scene& scene) {
   std::vector<std::string> out;

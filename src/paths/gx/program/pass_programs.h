@@ -38,6 +38,5 @@ std::vector<std::vector<PassProgram>> scene_programs(const ProgramFile& file, co
 std::vector<std::string> material_c_names(const Scene& scene);
 // `ltrender_<c_name>_pass<N>`.
 std::string pass_function_name(const std::string& c_name, int pass);
-std::string c_identifier(const std::string& name);
 
 }  // namespace lt::gx
