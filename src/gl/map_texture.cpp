@@ -1,7 +1,5 @@
 #include "gl/map_texture.h"
 
-#include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "image/image.h"

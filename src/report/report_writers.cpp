@@ -2,7 +2,6 @@
 // index.html): writers only, from the rows run_bench measured (bench.cpp).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
