@@ -6,7 +6,6 @@
 #include <map>
 #include <memory>
 #include <numeric>
-#include <sstream>
 
 #include "advise/hard_cases.h"
 #include "advise/material_error.h"

@@ -1,7 +1,6 @@
 #include "advise/advise_output.h"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 
 #include "core/file_name.h"

@@ -19,9 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <glm/glm.hpp>
-#include <optional>
 #include <string>
 #include <vector>
 

@@ -1,7 +1,5 @@
 #include "bake/uv_baker.h"
 
-#include <cmath>
-
 #include "bake/occlusion_tracer.h"
 #include "bake/thickness_baker.h"
 #include "bake/uv_raster.h"

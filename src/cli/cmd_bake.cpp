@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -20,6 +19,7 @@
 #include "bake/uv_baker.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/file_name.h"
 #include "core/fs.h"
 #include "core/stopwatch.h"
 #include "image/image.h"
@@ -101,6 +101,15 @@ glm::dvec3 parse_tint(const std::string& text) {
   return rgb;
 }
 
+// The value of an option that names one of two choices: `value_a` for `a`, `value_b` for `b`.
+template <class T>
+T one_of(const std::string& text, const char* option, const char* a, T value_a, const char* b,
+         T value_b) {
+  if (text == a) return value_a;
+  if (text == b) return value_b;
+  throw InputError(option, "", std::string("must be ") + a + " or " + b + ", got '" + text + "'");
+}
+
 bake::BakeSettings settings_from(const BakeOptions& o) {
   bake::BakeSettings s;
   s.rays = o.rays;
@@ -109,28 +118,12 @@ bake::BakeSettings settings_from(const BakeOptions& o) {
   }
   s.max_distance = o.max_distance;
   if (o.max_distance_relative) s.max_distance_relative = *o.max_distance_relative;
-  if (o.distribution == "cosine") {
-    s.distribution = bake::Distribution::Cosine;
-  } else if (o.distribution == "uniform") {
-    s.distribution = bake::Distribution::Uniform;
-  } else {
-    throw InputError("--distribution", "",
-                     "must be cosine or uniform, got '" + o.distribution + "'");
-  }
-  if (o.estimator == "occlusion") {
-    s.estimator = bake::Estimator::Occlusion;
-  } else if (o.estimator == "distance") {
-    s.estimator = bake::Estimator::Distance;
-  } else {
-    throw InputError("--estimator", "", "must be occlusion or distance, got '" + o.estimator + "'");
-  }
-  if (o.sampler == "stratified") {
-    s.sampler = bake::Sampler::Stratified;
-  } else if (o.sampler == "random") {
-    s.sampler = bake::Sampler::Random;
-  } else {
-    throw InputError("--sampler", "", "must be stratified or random, got '" + o.sampler + "'");
-  }
+  s.distribution = one_of(o.distribution, "--distribution", "cosine", bake::Distribution::Cosine,
+                          "uniform", bake::Distribution::Uniform);
+  s.estimator = one_of(o.estimator, "--estimator", "occlusion", bake::Estimator::Occlusion,
+                       "distance", bake::Estimator::Distance);
+  s.sampler = one_of(o.sampler, "--sampler", "stratified", bake::Sampler::Stratified, "random",
+                     bake::Sampler::Random);
   s.seed = o.seed;
   s.threads = o.threads;
   bake::validate(s);
@@ -168,13 +161,6 @@ void warn(const std::string& file, const std::string& what) {
   std::fprintf(stderr, "ltrender: warning: %s: %s\n", file.c_str(), what.c_str());
 }
 
-bool has_ply_extension(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".ply";
-}
-
 void warn_about_edges(const std::string& mesh, const bake::EdgeReport& edges) {
   if (edges.boundary_edges > 0 || edges.non_manifold_edges > 0) {
     warn(mesh, "not a closed manifold: " + std::to_string(edges.boundary_edges) +
@@ -190,7 +176,7 @@ double mrays_per_second(std::uint64_t rays, double seconds) {
 
 int run_vertex_bake(const BakeOptions& o, const bake::BakeSettings& settings,
                     const bake::ColorMap& map) {
-  if (!has_ply_extension(o.out)) {
+  if (lower_extension(o.out) != ".ply") {
     throw InputError(o.out, "", "bake writes PLY (vertex colours): the output must end in .ply");
   }
   ensure_not_an_input(o.out, {o.mesh});

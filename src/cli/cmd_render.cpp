@@ -3,11 +3,11 @@
 #include "cli/commands.h"
 #include "cli/lights_option.h"
 #include "core/error.h"
+#include "core/file_name.h"
 #include "core/fs.h"
 #include "image/image.h"
 #include "judge/dolphin_player.h"
 #include "load/load_scene.h"
-#include "mesh/reader_support.h"
 #include "render/session.h"
 
 namespace lt::cli {
@@ -24,9 +24,9 @@ struct RenderArgs {
 // --via dolphin, what can be checked before the scene is read: Dolphin's frame is 8-bit, the
 // log kept is a .dff, and the path encodes a FIFO log.
 void check_via_dolphin(const RenderArgs& a, const PathInfo& info) {
-  if (meshio::lower_extension(a.output) != ".png")
+  if (lower_extension(a.output) != ".png")
     throw InputError(a.output, "", "--via dolphin writes Dolphin's 8-bit frame: use a .png");
-  if (!a.keep_fifo_log.empty() && meshio::lower_extension(a.keep_fifo_log) != ".dff")
+  if (!a.keep_fifo_log.empty() && lower_extension(a.keep_fifo_log) != ".dff")
     throw InputError(a.keep_fifo_log, "", "--keep-fifo-log writes a Dolphin FIFO log: use a .dff");
   if (info.writes_fifo_log) return;
   std::string with;

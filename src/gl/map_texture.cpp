@@ -1,7 +1,5 @@
 #include "gl/map_texture.h"
 
-#include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "image/image.h"
@@ -15,6 +13,9 @@ void set_linear_clamp_to_edge(GLenum target) {
   glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);  // a 1D texture ignores it
 }
 
+namespace {
+
+// GL_CLAMP_TO_EDGE, GL_REPEAT or GL_MIRRORED_REPEAT (GL 1.4 core).
 GLint gl_wrap(model::Wrap wrap) {
   switch (wrap) {
     case model::Wrap::Repeat:
@@ -26,6 +27,8 @@ GLint gl_wrap(model::Wrap wrap) {
   }
   return GL_CLAMP_TO_EDGE;
 }
+
+}  // namespace
 
 MapTexture::MapTexture(const Context& gl, const TextureMap& map, MapTexelClass texel_class) {
   const model::Texture& t = map.texture;

@@ -32,9 +32,6 @@ enum class MapTexelClass {
 // read the end texels, which saturates a table's t.
 void set_linear_clamp_to_edge(GLenum target);
 
-// GL_CLAMP_TO_EDGE, GL_REPEAT or GL_MIRRORED_REPEAT (GL 1.4 core).
-GLint gl_wrap(model::Wrap wrap);
-
 class MapTexture {
  public:
   // Needs a current context. An 8-bit file is GL_RGB8 from its bytes (v / 255 is what the file

@@ -1,24 +1,16 @@
 #include "image/image.h"
 
 #include <algorithm>
-#include <cctype>
 #include <memory>
 #include <new>
 
 #include "core/error.h"
+#include "core/file_name.h"
 #include "core/fs.h"
 #include "core/stderr_capture.h"
 #include "image/image_codec.h"
 
 namespace lt {
-
-namespace {
-std::string lower_extension(const std::filesystem::path& p) {
-  std::string e = p.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e;
-}
-}  // namespace
 
 void check_output_extension(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);

@@ -1,7 +1,5 @@
 #include "image/text.h"
 
-#include <vector>
-
 #include "image/image_codec.h"
 
 namespace lt {

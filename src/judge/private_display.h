@@ -4,7 +4,6 @@
 // through -displayfd, so two plays at once never race for one.
 #pragma once
 
-#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>

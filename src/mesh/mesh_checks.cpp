@@ -123,23 +123,16 @@ void finish_loaded_mesh(LoadedMesh& loaded, const std::string& file, FileFacts& 
         "no vertex normals in the file: computed from the faces (area-weighted)");
   }
   const std::size_t without = recompute_normals(mesh, keep);
-  if (zero)
-    loaded.warnings.push_back(plural(zero, "zero-length normal", "zero-length normals") +
-                              " recomputed from the faces");
-  if (nonfinite)
-    loaded.warnings.push_back(plural(nonfinite, "non-finite normal", "non-finite normals") +
-                              " recomputed from the faces");
-  if (missing)
-    loaded.warnings.push_back(plural(missing, "vertex", "vertices") +
-                              " without a normal in the file: computed from the faces");
-  if (nonunit)
-    loaded.warnings.push_back(plural(nonunit, "non-unit normal", "non-unit normals") +
-                              " normalised");
-  if (without) {
-    loaded.warnings.push_back(
-        plural(without, "vertex has", "vertices have") +
-        " no normal (isolated, or only degenerate faces around it): left zero");
-  }
+  // One warning a kind of fix, with its count.
+  auto warn = [&](std::size_t n, const char* one, const char* many, const char* what) {
+    if (n) loaded.warnings.push_back(plural(n, one, many) + what);
+  };
+  warn(zero, "zero-length normal", "zero-length normals", " recomputed from the faces");
+  warn(nonfinite, "non-finite normal", "non-finite normals", " recomputed from the faces");
+  warn(missing, "vertex", "vertices", " without a normal in the file: computed from the faces");
+  warn(nonunit, "non-unit normal", "non-unit normals", " normalised");
+  warn(without, "vertex has", "vertices have",
+       " no normal (isolated, or only degenerate faces around it): left zero");
 }
 
 }  // namespace lt::meshio

@@ -13,6 +13,7 @@
 #include <new>
 
 #include "core/error.h"
+#include "core/file_name.h"
 #include "core/fs.h"
 #include "mesh/formats/obj_check.h"
 #include "mesh/formats/off_check.h"
@@ -151,7 +152,7 @@ TriangleMesh load_triangle_mesh(const fs::path& path) {
 
 void write_mesh(const fs::path& path, const PolyMesh& mesh, Options options,
                 const std::vector<ExtraVertexProperty>& extras) {
-  const std::string ext = meshio::lower_extension(path);
+  const std::string ext = lower_extension(path);
   if (ext == ".ply") {
     write_atomically(
         path, [&](const fs::path& tmp) { meshio::write_ply(tmp, path, mesh, options, extras); });

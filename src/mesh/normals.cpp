@@ -22,6 +22,8 @@ glm::dvec3 safe_normalize(glm::dvec3 v) {
   return v / glm::length(v);
 }
 
+namespace {
+
 // Twice the area times the unit normal: Newell's sum as a fan of cross products relative to the
 // first corner, so that coordinates near 1e6 do not cancel away the face's own size.
 glm::dvec3 face_area_vector(const PolyMesh& mesh, OpenMesh::FaceHandle fh) {
@@ -39,6 +41,8 @@ glm::dvec3 face_area_vector(const PolyMesh& mesh, OpenMesh::FaceHandle fh) {
   }
   return sum;
 }
+
+}  // namespace
 
 std::size_t recompute_normals(PolyMesh& mesh, const std::vector<char>& keep) {
   std::vector<glm::dvec3> area(mesh.n_faces());

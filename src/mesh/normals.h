@@ -23,9 +23,6 @@ bool is_finite(const glm::dvec2& v);
 // returns zero for zero and non-finite input.
 glm::dvec3 safe_normalize(glm::dvec3 v);
 
-// Twice the area times the unit normal of a face.
-glm::dvec3 face_area_vector(const PolyMesh& mesh, OpenMesh::FaceHandle fh);
-
 // Recomputes the vertex normals where `keep` is 0 (all when `keep` is empty) and every face
 // normal; returns how many recomputed vertices are left without a normal.
 std::size_t recompute_normals(PolyMesh& mesh, const std::vector<char>& keep);

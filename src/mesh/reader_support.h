@@ -3,15 +3,11 @@
 #pragma once
 
 #include <cstddef>
-#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace lt::meshio {
-
-// The extension in lower case (".PLY" is a PLY file).
-std::string lower_extension(const std::filesystem::path& path);
 
 // "1 vertex", "3 vertices".
 std::string plural(std::size_t n, const std::string& one, const std::string& many);

@@ -10,7 +10,6 @@
 // ends are off by half a texel, which for large p is most of the lobe.
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <vector>
 

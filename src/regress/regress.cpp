@@ -1,6 +1,5 @@
 #include "regress/regress.h"
 
-#include <chrono>
 #include <cstdio>
 #include <map>
 

@@ -77,6 +77,11 @@ std::string legend_html() {
   return s.str();
 }
 
+// Whether a verdict counts as failing (sorted first, shown by the "failing" filter).
+bool is_failing_verdict(const std::string& verdict) {
+  return verdict == "fail" || verdict == "missing";
+}
+
 std::string card_html(const PageCard& c, size_t order) {
   std::ostringstream s;
   const bool failing = is_failing_verdict(c.verdict);
@@ -140,12 +145,6 @@ std::string sections_html(const std::vector<PageCard>& cards) {
   return out;
 }
 
-}  // namespace
-
-bool is_failing_verdict(const std::string& verdict) {
-  return verdict == "fail" || verdict == "missing";
-}
-
 std::string page_html(const ReportPage& page) {
   return fill(
       template_file("page.html"),
@@ -158,6 +157,8 @@ std::string page_html(const ReportPage& page) {
         page.chart_svg.empty() ? "" : "<figure class=\"chart\">" + page.chart_svg + "</figure>"},
        {"sections", sections_html(page.cards)}});
 }
+
+}  // namespace
 
 void write_report_page(const fs::path& dir, const ReportPage& page) {
   write_text_file(dir / "index.html", page_html(page));

@@ -34,11 +34,6 @@ struct ReportPage {
   std::string chart_svg;        // inline speed-against-error chart; empty: none
 };
 
-// Whether a verdict counts as failing (sorted first, shown by the "failing" filter).
-bool is_failing_verdict(const std::string& verdict);
-
-std::string page_html(const ReportPage& page);
-
 // dir/index.html, atomically.
 void write_report_page(const std::filesystem::path& dir, const ReportPage& page);
 

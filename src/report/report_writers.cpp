@@ -2,13 +2,12 @@
 // index.html): writers only, from the rows run_bench measured (bench.cpp).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
-#include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/fixed.h"
 #include "core/fs.h"
 #include "core/markup.h"
 #include "render/session.h"
@@ -24,9 +23,7 @@ namespace {
 
 std::string fmt(double v, int prec = 2) {
   if (!std::isfinite(v)) return v > 0 ? "inf" : "nan";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(prec) << v;
-  return s.str();
+  return fixed(v, prec);
 }
 
 std::string error_cell(const BenchRow& r, bool max) {

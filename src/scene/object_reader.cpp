@@ -19,13 +19,16 @@ const ObjectReader::json& ObjectReader::get(const std::string& key) {
   return j_.at(key);
 }
 
+bool ObjectReader::absent(const std::string& key, bool has_default) {
+  if (has(key)) return false;
+  if (!has_default) fail(key_path(key), "missing required key");
+  used_.insert(key);
+  return true;
+}
+
 double ObjectReader::number(const std::string& key, std::optional<double> def, double lo,
                             double hi) {
-  if (!has(key)) {
-    if (!def) fail(key_path(key), "missing required key");
-    used_.insert(key);
-    return *def;
-  }
+  if (absent(key, def.has_value())) return *def;
   const json& v = get(key);
   if (!v.is_number()) fail(key_path(key), "expected a number");
   const double d = v.get<double>();
@@ -37,10 +40,7 @@ double ObjectReader::number(const std::string& key, std::optional<double> def, d
 }
 
 int ObjectReader::integer(const std::string& key, int def, int lo, int hi) {
-  if (!has(key)) {
-    used_.insert(key);
-    return def;
-  }
+  if (absent(key, true)) return def;
   const json& v = get(key);
   if (!v.is_number_integer()) fail(key_path(key), "expected an integer");
   const auto i = v.get<long long>();
@@ -52,11 +52,7 @@ int ObjectReader::integer(const std::string& key, int def, int lo, int hi) {
 
 glm::dvec3 ObjectReader::vec3(const std::string& key, std::optional<glm::dvec3> def, double lo,
                               double hi) {
-  if (!has(key)) {
-    if (!def) fail(key_path(key), "missing required key");
-    used_.insert(key);
-    return *def;
-  }
+  if (absent(key, def.has_value())) return *def;
   return vec3_value(get(key), key_path(key), lo, hi);
 }
 
@@ -76,21 +72,14 @@ glm::dvec3 ObjectReader::vec3_value(const json& v, const std::string& kp, double
 }
 
 std::string ObjectReader::string(const std::string& key, std::optional<std::string> def) {
-  if (!has(key)) {
-    if (!def) fail(key_path(key), "missing required key");
-    used_.insert(key);
-    return *def;
-  }
+  if (absent(key, def.has_value())) return *def;
   const json& v = get(key);
   if (!v.is_string()) fail(key_path(key), "expected a string");
   return v.get<std::string>();
 }
 
 bool ObjectReader::boolean(const std::string& key, bool def) {
-  if (!has(key)) {
-    used_.insert(key);
-    return def;
-  }
+  if (absent(key, true)) return def;
   const json& v = get(key);
   if (!v.is_boolean()) fail(key_path(key), "expected true or false");
   return v.get<bool>();

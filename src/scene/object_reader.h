@@ -43,6 +43,10 @@ class ObjectReader {
   void finish() const;
 
  private:
+  // True when the object lacks `key`, which is then taken (its default stands in); no default:
+  // a missing required key.
+  bool absent(const std::string& key, bool has_default);
+
   const json& j_;
   std::string path_;
   const std::string& file_;

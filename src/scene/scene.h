@@ -96,16 +96,21 @@ struct RegressBlock {
   std::map<std::string, ToleranceOverride> per_path;
 };
 
-struct Scene {
+// What a scene file states and loading keeps unchanged: both SceneDescription (the file parsed,
+// scene_description.h) and Scene hold it.
+struct SceneSettings {
   std::filesystem::path file;
   int width = 640, height = 480;
   glm::dvec3 background{0, 0, 0};
   Camera camera;
   glm::dvec3 ambient_light{0, 0, 0};
-  std::vector<Material> materials;
   std::vector<Light> lights;
-  std::vector<SceneObject> objects;
   RegressBlock regress;
+};
+
+struct Scene : SceneSettings {
+  std::vector<Material> materials;
+  std::vector<SceneObject> objects;
   // A glTF scene's import: one line per property mapped, defaulted or ignored (`ltrender info`).
   std::vector<std::string> import_notes;
   // What the user should know although the scene loads (a skipped primitive, the default

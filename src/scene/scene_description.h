@@ -54,16 +54,9 @@ struct ObjectDescription {
   const char* file_key() const { return source == Source::Gltf ? "gltf" : "mesh"; }
 };
 
-struct SceneDescription {
-  std::filesystem::path file;
-  int width = 640, height = 480;
-  glm::dvec3 background{0, 0, 0};
-  Camera camera;
-  glm::dvec3 ambient_light{0, 0, 0};
+struct SceneDescription : SceneSettings {
   std::vector<MaterialDescription> materials;
-  std::vector<Light> lights;
   std::vector<ObjectDescription> objects;  // in the file's order
-  RegressBlock regress;
 };
 
 }  // namespace lt

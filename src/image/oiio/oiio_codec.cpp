@@ -5,7 +5,6 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 
 #include "image/image_codec.h"
 

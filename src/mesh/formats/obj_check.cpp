@@ -105,17 +105,23 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
             start = i + 1;
           }
         }
-        long long v = 0;
-        if (parts[0].empty() || !parse_int(parts[0], v) || v == 0) {
-          fail(file, line_no,
-               "face corner '" + std::string(corner) + "' has no valid vertex index");
-        }
-        const long long vertex = zero_based(v, seen_v);
-        if (vertex < 0 || vertex >= static_cast<long long>(total_v)) {
-          fail(file, line_no,
-               "face vertex index " + std::to_string(v) + " is out of range (the file has " +
-                   plural(total_v, "vertex", "vertices") + ")");
-        }
+        // One of the corner's indices, 0-based; `invalid` says what a token that is no index
+        // lacks, `name` and `names` what it indexes (`seen` so far, `total` in the file).
+        auto index = [&](std::string_view token, const char* invalid, const char* name,
+                         const char* names, std::size_t seen, std::size_t total) {
+          long long i = 0;
+          if (!parse_int(token, i) || i == 0)
+            fail(file, line_no, "face corner '" + std::string(corner) + "' " + invalid);
+          const long long r = zero_based(i, seen);
+          if (r < 0 || r >= static_cast<long long>(total)) {
+            fail(file, line_no,
+                 "face " + std::string(name) + " index " + std::to_string(i) +
+                     " is out of range (the file has " + plural(total, name, names) + ")");
+          }
+          return r;
+        };
+        const long long vertex =
+            index(parts[0], "has no valid vertex index", "vertex", "vertices", seen_v, total_v);
         corners.push_back(vertex);
         const int has_vt = parts[1].empty() ? 0 : 1;
         if (faces_have_vt < 0) faces_have_vt = has_vt;
@@ -126,32 +132,11 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
                            : "has no texture coordinate where earlier corners had one"));
         }
         if (has_vt) {
-          long long vt = 0;
-          if (!parse_int(parts[1], vt) || vt == 0) {
-            fail(file, line_no,
-                 "face corner '" + std::string(corner) +
-                     "' has an invalid texture coordinate index");
-          }
-          const long long texcoord = zero_based(vt, seen_vt);
-          if (texcoord < 0 || texcoord >= static_cast<long long>(total_vt)) {
-            fail(file, line_no,
-                 "face texture coordinate index " + std::to_string(vt) +
-                     " is out of range (the file has " +
-                     plural(total_vt, "texture coordinate", "texture coordinates") + ")");
-          }
+          index(parts[1], "has an invalid texture coordinate index", "texture coordinate",
+                "texture coordinates", seen_vt, total_vt);
         }
         if (!parts[2].empty()) {
-          long long n = 0;
-          if (!parse_int(parts[2], n) || n == 0) {
-            fail(file, line_no,
-                 "face corner '" + std::string(corner) + "' has an invalid normal index");
-          }
-          const long long normal = zero_based(n, seen_vn);
-          if (normal < 0 || normal >= static_cast<long long>(total_vn)) {
-            fail(file, line_no,
-                 "face normal index " + std::to_string(n) + " is out of range (the file has " +
-                     plural(total_vn, "normal", "normals") + ")");
-          }
+          index(parts[2], "has an invalid normal index", "normal", "normals", seen_vn, total_vn);
           facts.normal_given[static_cast<std::size_t>(vertex)] = 1;
         }
       }
