@@ -94,16 +94,9 @@ Scene load_scene(SceneDescription description) {
   }
 
   Scene scene;
-  scene.file = description.file;
-  scene.width = description.width;
-  scene.height = description.height;
-  scene.background = description.background;
-  scene.camera = description.camera;
-  scene.ambient_light = description.ambient_light;
+  static_cast<SceneSettings&>(scene) = std::move(static_cast<SceneSettings&>(description));
   for (MaterialDescription& m : description.materials)
     scene.materials.push_back(std::move(m.material));
-  scene.lights = std::move(description.lights);
-  scene.regress = std::move(description.regress);
 
   // The mesh objects first, then the glTF objects' meshes after them (load/gltf/gltf_scene.h).
   std::size_t scene_vertices = 0;

@@ -1,12 +1,11 @@
 #include "load/gltf/gltf_document.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <set>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/file_name.h"
 #include "core/fs.h"
 
 namespace lt::gltf {
@@ -143,9 +142,7 @@ void Document::fail(const std::string& pointer, const std::string& what) const {
 }
 
 bool is_gltf_path(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   return ext == ".gltf" || ext == ".glb";
 }
 
