@@ -30,6 +30,12 @@ fs::path write_bad(const std::string& name, const fs::path& dir) {
     test::write_file(dir / "bad.glb", bytes.substr(0, bytes.size() - 10));
     return dir / "bad.glb";
   }
+  if (name == "json_syntax_error") {
+    // The JSON breaks on line 3: the message names that line, as a scene file's does.
+    test::write_file(dir / "bad.gltf",
+                     "{\n  \"asset\": {\"version\": \"2.0\"},\n  \"meshes\": [,\n}\n");
+    return dir / "bad.gltf";
+  }
   if (name == "accessor_beyond_view") {
     w.doc["accessors"][0]["count"] = 5;  // 5 x 12 bytes in a 48-byte view
   } else if (name == "view_beyond_buffer") {
@@ -77,6 +83,7 @@ INSTANTIATE_TEST_SUITE_P(
     Gltf, GltfBadFile,
     ::testing::Values(
         BadFile{"truncated_glb", "(GLB header)", "truncated"},
+        BadFile{"json_syntax_error", "3", "invalid JSON: parse error at line 3"},
         BadFile{"accessor_beyond_view", "/accessors/0", "buffer view 0 has 48"},
         BadFile{"view_beyond_buffer", "/bufferViews/0", "beyond buffer 0"},
         BadFile{"nan_position", "/accessors/0", "not finite"},

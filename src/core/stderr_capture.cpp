@@ -78,12 +78,6 @@ std::vector<std::string> StderrCapture::lines() {
   return out;
 }
 
-std::string StderrCapture::take() {
-  std::string out;
-  for (const auto& line : lines()) out += (out.empty() ? "" : "; ") + line;
-  return out;
-}
-
 std::string StderrCapture::fold_into(const std::string& message) {
   std::string extra;
   for (const auto& line : lines()) {

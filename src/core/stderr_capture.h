@@ -16,14 +16,10 @@ class StderrCapture {
   // Starts capturing. Captures are serialised process-wide (descriptor 2 is shared); if the
   // redirection cannot be set up, nothing is captured and stderr works as before.
   StderrCapture();
-  // Stops capturing; text not taken with take() is written to stderr as it was.
+  // Stops capturing; text not taken with fold_into() is written to stderr as it was.
   ~StderrCapture();
   StderrCapture(const StderrCapture&) = delete;
   StderrCapture& operator=(const StderrCapture&) = delete;
-
-  // Stops capturing and returns what was written, on one line: lines trimmed and joined by
-  // "; ", empty lines dropped.
-  std::string take();
 
   // `message` with the captured text appended in brackets unless the message already says it
   // (OpenImageIO usually repeats libpng's text): "cannot decode image: ... [libpng error: ...]".

@@ -4,6 +4,35 @@
 
 namespace lt {
 
+namespace {
+
+// JSON syntax errors carry a byte offset; users want a line.
+int line_of_offset(const std::string& text, size_t offset) {
+  int line = 1;
+  for (size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
+  return line;
+}
+
+}  // namespace
+
+nlohmann::json parse_json_input(const std::string& text, const std::string& file) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::string msg = e.what();
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    const auto pos = msg.find("parse error");
+    throw InputError(file, std::to_string(line_of_offset(text, e.byte)),
+                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos)));
+  } catch (const nlohmann::json::exception& e) {
+    // e.g. "[json.exception.out_of_range.406] number overflow parsing '1e400'": no position.
+    std::string msg = e.what();
+    const auto pos = msg.find("] ");
+    throw InputError(file, "",
+                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos + 2)));
+  }
+}
+
 ObjectReader::ObjectReader(const json& j, std::string path, const std::string& file)
     : j_(j), path_(std::move(path)), file_(file) {
   if (!j_.is_object()) fail(path_, "expected an object");

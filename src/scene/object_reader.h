@@ -53,6 +53,10 @@ class ObjectReader {
   std::set<std::string> used_;
 };
 
+// `text` as JSON, or an InputError naming `file`, the line of a syntax error and nlohmann's
+// reason without its "[json.exception...]" prefix. For every JSON input: scenes and glTF alike.
+nlohmann::json parse_json_input(const std::string& text, const std::string& file);
+
 // "[lo, hi]" as the range errors write it ("inf" for an infinite bound).
 std::string range_text(double lo, double hi);
 

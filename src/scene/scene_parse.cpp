@@ -14,31 +14,6 @@ namespace {
 
 using json = nlohmann::json;
 
-// JSON syntax errors carry a byte offset; users want a line.
-int line_of_offset(const std::string& text, size_t offset) {
-  int line = 1;
-  for (size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
-  return line;
-}
-
-json parse_json(const std::string& text, const std::string& file) {
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string msg = e.what();
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: ..."
-    const auto pos = msg.find("parse error");
-    throw InputError(file, std::to_string(line_of_offset(text, e.byte)),
-                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos)));
-  } catch (const json::exception& e) {
-    // e.g. "[json.exception.out_of_range.406] number overflow parsing '1e400'": no position.
-    std::string msg = e.what();
-    const auto pos = msg.find("] ");
-    throw InputError(file, "",
-                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos + 2)));
-  }
-}
-
 // One tolerance of the "regress" block: idiff's thresholds, in LSB (255 is the largest error
 // there is) and percent of pixels.
 ToleranceOverride read_tolerance_override(ObjectReader& r) {
@@ -296,7 +271,7 @@ void read_regress(ObjectReader& top, SceneDescription& scene) {
 SceneDescription parse_scene(const std::string& text, const fs::path& file_for_errors,
                              const fs::path& base_dir) {
   const std::string file = file_for_errors.string();
-  const json root = parse_json(text, file);
+  const json root = parse_json_input(text, file);
   SceneDescription scene;
   scene.file = file_for_errors;
   ObjectReader top(root, "", file);

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/file_name.h"
 #include "core/fs.h"
+#include "scene/object_reader.h"
 
 namespace lt::gltf {
 
@@ -154,14 +155,7 @@ Document read_document(const fs::path& path) {
   // A .glb is recognised by its magic, not its name (glTF 2.0 §4.4.2).
   const bool binary = bytes.compare(0, 4, "glTF") == 0;
   const std::string json_text = binary ? glb_json_chunk(path, bytes) : bytes;
-  try {
-    doc.json = json::parse(json_text);
-  } catch (const json::exception& e) {
-    std::string msg = e.what();
-    const auto pos = msg.find("] ");
-    throw InputError(file, "",
-                     "invalid JSON: " + (pos == std::string::npos ? msg : msg.substr(pos + 2)));
-  }
+  doc.json = parse_json_input(json_text, file);
   if (!doc.json.is_object()) throw InputError(file, "", "the glTF JSON is not an object");
 
   if (doc.json.contains("extensionsRequired") && doc.json["extensionsRequired"].is_array()) {

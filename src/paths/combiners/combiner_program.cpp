@@ -472,8 +472,4 @@ void reset_texture_state(int units) {
   glDisable(GL_COLOR_SUM);
 }
 
-const char* to_string(Function f) {
-  return info(f).name;
-}
-
 }  // namespace lt::combiners

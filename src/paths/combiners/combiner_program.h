@@ -89,6 +89,4 @@ void reset_texture_state(int units);
 // The smallest of 1, 2, 4 that brings `max_channel` into [0, 1] (4 when nothing does).
 int fit_scale(double max_channel);
 
-const char* to_string(Function f);
-
 }  // namespace lt::combiners

@@ -46,11 +46,6 @@ LobeTable build(const Translucency& tr, TexelOf texel_of) {
 
 }  // namespace
 
-glm::dvec3 LobeTable::texel(int i) const {
-  const float* t = &texels[static_cast<size_t>(i * channels)];
-  return channels == 1 ? glm::dvec3(t[0]) : glm::dvec3(t[0], t[1], t[2]);
-}
-
 double lobe_gain(const Translucency& tr) {
   if (!tr.ramp) return 1;
   const std::vector<float>& t = tr.ramp->texture.texels;

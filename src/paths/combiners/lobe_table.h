@@ -31,8 +31,6 @@ struct LobeTable {
   double scale = 1, offset = 0;  // u = t * scale + offset
 
   double coordinate(double t) const { return t * scale + offset; }
-  // Texel i as rgb (a luminance texel in all three).
-  glm::dvec3 texel(int i) const;
 };
 
 // 1 for t^p; a ramp's largest texel value when it is above 1 (a float ramp), else 1.
