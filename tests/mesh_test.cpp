@@ -173,7 +173,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"nan_ascii.ply", "vertex 1 has a non-finite coordinate (nan", "11"},
         BadCase{"inf_ascii.ply", "vertex 2 has a non-finite coordinate (0, -inf", "12"},
         BadCase{"nan_binary.ply", "vertex 2 has a non-finite coordinate", ""},
-        BadCase{"bad_token.ply", "'x' in vertex 1 is not a number", "11"},
+        BadCase{"bad_token.ply",
+                "'x' in vertex 1 is not a number of the declared type (property z)", "11"},
+        BadCase{"list_in_vertex.ply",
+                "'1.5' in vertex 0 is not a number of the declared type (property list "
+                "vertex_indices)",
+                "10"},
         BadCase{"out_of_range_ascii.ply",
                 "face 0: vertex index 7 is out of range (the file has 3 vertices)", "13"},
         BadCase{"out_of_range_binary.ply", "vertex index 99999999 is out of range", ""},

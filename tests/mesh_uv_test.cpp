@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -147,8 +148,77 @@ TEST(MeshUvs, BadUvsNameFileAndLine) {
   expect_input_error(kUv / "vt_out_of_range.obj", "6",
                      "face texture coordinate index 3 is out of range (the file has 2 texture "
                      "coordinates)");
-  expect_input_error(kUv / "mixed_vt.obj", "9", "has no texture coordinate where earlier");
   expect_input_error(kUv / "inf_st.off", "5", "vertex 2 has a non-finite texture coordinate");
+}
+
+// Faces that mix corners with and without vt: read, as assimp, tinyobjloader and Blender read
+// them, without UVs (OpenMesh leaves the corners without vt undefined), and the warning names
+// the first face line that breaks ranks.
+void expect_read_without_uvs(const fs::path& path, std::size_t faces, const std::string& line) {
+  const LoadedMesh loaded = read_mesh(path);
+  EXPECT_FALSE(loaded.read_options.vertex_has_texcoord());
+  EXPECT_EQ(loaded.mesh.n_faces(), faces);
+  const std::string expected =
+      "its faces mix corners with and without texture coordinates (vt), first at line " + line +
+      ": the mesh is read without UVs";
+  EXPECT_EQ(std::count(loaded.warnings.begin(), loaded.warnings.end(), expected), 1)
+      << ::testing::PrintToString(loaded.warnings);
+  const TriangleMesh m = to_triangle_mesh(loaded);
+  EXPECT_TRUE(m.uvs.empty());
+}
+
+TEST(MeshUvs, FacesMixingCornersWithAndWithoutVtAreReadWithoutUvs) {
+  expect_read_without_uvs(kUv / "mixed_vt.obj", 2, "9");
+}
+
+TEST(MeshUvs, DebianAssimpRegressionObjMixingVtIsReadWithoutUvs) {
+  // assimp-testmodels' regr01.obj: 2,042 faces without vt, then 668 with (first at line 2661).
+  const fs::path regr01 = "/usr/share/assimp/models/OBJ/regr01.obj";
+  if (!fs::exists(regr01)) GTEST_SKIP() << regr01 << " is absent (assimp-testmodels)";
+  expect_read_without_uvs(regr01, 2710, "2661");
+}
+
+// Through the binary: a render says what the reader dropped; a material that needs the UVs
+// then fails with one error line that says why the mesh has none.
+TEST(MeshUvs, ARenderWarnsThatMixedVtDroppedTheUvsAndAMapMaterialsErrorSaysWhy) {
+  test::TempDir dir;
+  const std::string mesh = (kUv / "mixed_vt.obj").string();
+  auto scene = [&](const std::string& thickness) {
+    const fs::path p = dir.path() / ("s" + std::to_string(thickness.size()) + ".json");
+    test::write_file(p, R"({ "image": { "width": 16, "height": 12 },
+  "camera": { "eye": [0.5, 0.5, 3], "target": [0.5, 0.5, 0] },
+  "materials": { "m": { "albedo": [0.8, 0.8, 0.8],
+                        "translucency": { "power": 4, "thickness": )" +
+                            thickness + R"( } } },
+  "lights": [ { "type": "directional", "direction": [0, 0, -1], "color": [1, 1, 1] } ],
+  "objects": [ { "mesh": ")" +
+                            mesh + R"(", "material": "m" } ] })");
+    return p.string();
+  };
+  const std::string why =
+      "its faces mix corners with and without texture coordinates (vt), first at line 9";
+  const std::string warning =
+      "ltrender: warning: " + mesh + ": " + why + ": the mesh is read without UVs\n";
+  const auto drawn = test::run_ltrender("render " + scene("0.5") + " --path reference -o " +
+                                        (dir.path() / "a.png").string());
+  EXPECT_EQ(drawn.exit_code, 0) << drawn.err;
+  EXPECT_NE(drawn.err.find(warning), std::string::npos) << drawn.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "a.png"));
+
+  const std::string map =
+      (lt::build_paths::source_dir() / "meshes" / "teapot_thickness.png").string();
+  const std::string scene_file = scene(R"({ "texture": ")" + map + R"(" })");
+  const auto refused = test::run_ltrender("render " + scene_file + " --path reference -o " +
+                                          (dir.path() / "b.png").string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  // One error line, which says why the mesh has no UVs (warnings are printed once the scene is
+  // loaded, so the error does not follow them).
+  EXPECT_EQ(refused.err, "ltrender: error: " + scene_file +
+                             ":objects[0].mesh: material \"m\" "
+                             "samples the thickness map " +
+                             map + " but " + mesh + " has no texture coordinates (UVs): " + why +
+                             "\n");
+  EXPECT_FALSE(fs::exists(dir.path() / "b.png"));
 }
 
 }  // namespace

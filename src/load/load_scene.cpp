@@ -58,10 +58,14 @@ void load_maps(Material& material, const std::vector<MapReference>& maps,
 // space in double: what the reference shades and what the GL paths upload (camera-relative) as
 // float.
 TriangleMesh load_object_mesh(const ObjectDescription& object, const Material& mat,
-                              const std::string& scene_file, std::size_t& scene_vertices) {
+                              const std::string& scene_file, std::size_t& scene_vertices,
+                              std::vector<std::string>& warnings) {
   const std::string key = object.key + ".mesh";
   const std::string name = object.path.string();
-  TriangleMesh mesh = load_triangle_mesh(object.path);
+  const LoadedMesh loaded = read_mesh(object.path);
+  // What the reader accepted or dropped is said on a render too, not only by `bake`.
+  for (const std::string& w : loaded.warnings) warnings.push_back(name + ": " + w);
+  TriangleMesh mesh = to_triangle_mesh(loaded);
   scene_vertices += mesh.positions.size();
   if (scene_vertices > kMaxSceneVertices) {
     throw InputError(scene_file, key,
@@ -77,7 +81,7 @@ TriangleMesh load_object_mesh(const ObjectDescription& object, const Material& m
     }
     check_vertex_thickness(mesh, scene_file, key, name);
   }
-  check_uvs_for_material(mesh, mat, scene_file, key, name);
+  check_uvs_for_material(mesh, mat, scene_file, key, name, loaded.uvs_dropped);
   transform_to_world(mesh, object.transform.matrix());
   return mesh;
 }
@@ -107,7 +111,7 @@ Scene load_scene(SceneDescription description) {
     obj.material = o.material;
     obj.transform = o.transform;
     obj.mesh = load_object_mesh(o, scene.materials[static_cast<std::size_t>(o.material)], file,
-                                scene_vertices);
+                                scene_vertices, scene.warnings);
     scene.objects.push_back(std::move(obj));
   }
   gltf::import_objects(description.objects, file, scene);

@@ -57,6 +57,8 @@ struct LoadedMesh {
   OpenMesh::IO::Options read_options;  // what the file had (normals, colours, VertexTexCoord)
   std::vector<ExtraVertexProperty> extra_vertex_properties;  // PLY only
   std::vector<std::string> warnings;  // e.g. "3 zero-length normals recomputed"
+  std::string
+      uvs_dropped;  // why the file's UVs were not kept, for a map's error ("": kept or none)
 };
 
 inline glm::dvec3 to_glm(const OpenMesh::Vec3d& v) {

@@ -21,6 +21,10 @@ struct FileFacts {
   bool has_colors = false;         // `colors` is valid for every vertex
   bool partial_colors = false;     // some vertices had colours and others not: dropped
   bool colors_checked = false;     // our pass decides about colours, not OpenMesh's options
+  // OBJ: the first face line whose corners name `vt` where earlier corners did not, or the
+  // reverse (0: none). Such a file's UVs are dropped with a warning, not refused: assimp,
+  // tinyobjloader and Blender read it (a corner without `vt` has no UV).
+  std::size_t uv_mix_line = 0;
 
   // A text check's colours, one per vertex record (zero where the record had none), `colored`
   // of them from the file: kept when every vertex has one, dropped (with a warning later) when

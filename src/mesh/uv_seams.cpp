@@ -11,7 +11,12 @@ std::size_t split_uv_seams(LoadedMesh& loaded, FileFacts& facts) {
   PolyMesh& mesh = loaded.mesh;
   const bool corner_uvs = loaded.read_options.face_has_texcoord();
   loaded.read_options -= Options::FaceTexCoord;
-  if (!corner_uvs || !mesh.has_halfedge_texcoords2D()) {
+  if (facts.uv_mix_line) {
+    loaded.uvs_dropped = "its faces mix corners with and without texture coordinates (vt), " +
+                         std::string("first at line ") + std::to_string(facts.uv_mix_line);
+    loaded.warnings.push_back(loaded.uvs_dropped + ": the mesh is read without UVs");
+  }
+  if (!corner_uvs || !mesh.has_halfedge_texcoords2D() || facts.uv_mix_line) {
     loaded.read_options -= Options::VertexTexCoord;
     return 0;
   }

@@ -14,7 +14,8 @@ namespace lt::meshio {
 // Makes the halfedge texture coordinates OpenMesh read (Options::FaceTexCoord) per vertex,
 // splitting every vertex whose corners disagree; the first UV met in face order stays with the
 // original vertex, copies are appended. `facts` (normals given, parsed colours) follows the
-// copies. Without halfedge texture coordinates it does nothing. Returns the copies added.
+// copies. Without halfedge texture coordinates, or with a file whose faces mix corners with and
+// without them (facts.uv_mix_line, warned), it drops the UVs. Returns the copies added.
 std::size_t split_uv_seams(LoadedMesh& loaded, FileFacts& facts);
 
 }  // namespace lt::meshio

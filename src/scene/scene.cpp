@@ -45,7 +45,7 @@ bool samples_uvs(const Material& material) {
 
 void check_uvs_for_material(const TriangleMesh& mesh, const Material& material,
                             const std::string& file, const std::string& where,
-                            const std::string& mesh_name) {
+                            const std::string& mesh_name, const std::string& why_no_uvs) {
   if (!samples_uvs(material) || !mesh.uvs.empty()) return;
   const bool thickness = material.translucency && material.translucency->thickness_map;
   throw InputError(
@@ -53,7 +53,8 @@ void check_uvs_for_material(const TriangleMesh& mesh, const Material& material,
       "material \"" + material.name + "\" samples the " +
           (thickness ? "thickness map " + material.translucency->thickness_map->file.string()
                      : "albedo map " + material.albedo_map->file.string()) +
-          " but " + mesh_name + " has no texture coordinates (UVs)");
+          " but " + mesh_name + " has no texture coordinates (UVs)" +
+          (why_no_uvs.empty() ? "" : ": " + why_no_uvs));
 }
 
 glm::dmat4 Transform::matrix() const {

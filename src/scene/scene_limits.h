@@ -46,10 +46,11 @@ void check_vertex_thickness(const TriangleMesh& mesh, const std::string& file,
                             const std::string& where, const std::string& mesh_name);
 
 // A material with a thickness map needs the mesh's UVs: InputError(file, where, naming the
-// material, the map and `mesh_name`) when the mesh has none. Nothing for other materials.
+// material, the map, `mesh_name` and `why_no_uvs` when the reader dropped them) when the mesh
+// has none. Nothing for other materials.
 struct Material;
 void check_uvs_for_material(const TriangleMesh& mesh, const Material& material,
                             const std::string& file, const std::string& where,
-                            const std::string& mesh_name);
+                            const std::string& mesh_name, const std::string& why_no_uvs = "");
 
 }  // namespace lt

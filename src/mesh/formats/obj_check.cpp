@@ -34,8 +34,8 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
   }
   std::vector<glm::vec3> colors;
   std::size_t colored = 0, seen_v = 0, seen_vn = 0, seen_vt = 0;
-  // Whether the first face's corners name texture coordinates: every face must agree, since a
-  // face without them would leave its corners' UVs undefined.
+  // Whether the first face's corners name texture coordinates. A corner that disagrees leaves
+  // its UV undefined in OpenMesh (nothing writes it), so the file's UVs are then dropped.
   int faces_have_vt = -1;
   facts.normal_given.assign(total_v, 0);
   for (std::size_t li = 0; li < lines.size(); ++li) {
@@ -125,12 +125,7 @@ FileFacts check_obj(const std::string& text, const std::string& file) {
         corners.push_back(vertex);
         const int has_vt = parts[1].empty() ? 0 : 1;
         if (faces_have_vt < 0) faces_have_vt = has_vt;
-        if (has_vt != faces_have_vt) {
-          fail(file, line_no,
-               "face corner '" + std::string(corner) + "' " +
-                   (has_vt ? "has a texture coordinate where earlier corners had none"
-                           : "has no texture coordinate where earlier corners had one"));
-        }
+        if (has_vt != faces_have_vt && facts.uv_mix_line == 0) facts.uv_mix_line = line_no;
         if (has_vt) {
           index(parts[1], "has an invalid texture coordinate index", "texture coordinate",
                 "texture coordinates", seen_vt, total_vt);

@@ -373,8 +373,10 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
       out.face_indices.reserve(3 * e.count);
     }
     for (std::uint64_t i = 0; i < e.count; ++i) {
+      const PlyProperty* reading = nullptr;  // for the message of a token that is no number
       try {
         for (auto& p : e.properties) {
+          reading = &p;
           if (p.is_list) {
             double count = body.read(p.count_type);
             if (count < 0)
@@ -430,7 +432,8 @@ RawMesh parse_ply(const std::string& data, const std::string& file) {
       } catch (const PlyBody::BadToken& bad) {
         fail(file, body.line(),
              "'" + bad.token + "' in " + e.name + " " + std::to_string(i) +
-                 " is not a number of the declared type");
+                 " is not a number of the declared type (property " +
+                 (reading->is_list ? "list " : "") + reading->name + ")");
       }
       if (is_vertex && !is_finite(out.positions[i])) {
         std::ostringstream what;
