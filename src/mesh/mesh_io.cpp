@@ -11,10 +11,12 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
 #include <new>
+#include <optional>
 
 #include "core/error.h"
 #include "core/file_name.h"
 #include "core/fs.h"
+#include "core/temp_file.h"
 #include "mesh/formats/obj_check.h"
 #include "mesh/formats/off_check.h"
 #include "mesh/formats/om_reader.h"
@@ -50,8 +52,12 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
   LoadedMesh loaded;
   FileFacts facts;
   if (ext == ".ply") {
-    const RawMesh ply = parse_ply(read_input_file(path, InputKind::Mesh), file);
+    std::string data = read_input_file(path, InputKind::Mesh);
+    refuse_utf16(data, file);
+    const std::string bom = skip_utf8_bom(data);
+    const RawMesh ply = parse_ply(data, file);
     loaded.warnings = ply.warnings;
+    if (!bom.empty()) loaded.warnings.insert(loaded.warnings.begin(), bom);
     OpenMeshLogCapture capture;  // the importer reports through omerr
     build_mesh(ply, loaded, facts);
   } else if (ext == ".om") {
@@ -60,7 +66,10 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     // the connectivity add_face makes.
     build_mesh(read_om_in_child(path, file, capture), loaded, facts);
   } else {
-    const std::string data = read_input_file(path, InputKind::Mesh);
+    std::string data = read_input_file(path, InputKind::Mesh);
+    // Not in a binary STL, whose 80-byte header is free-form: only before an ASCII one's "solid".
+    if (!stl) refuse_utf16(data, file);
+    const std::string bom = stl && data.rfind("\xEF\xBB\xBFsolid", 0) != 0 ? "" : skip_utf8_bom(data);
     if (ext == ".obj") facts = check_obj(data, file);
     if (ext == ".off") facts = check_off(data, file);
     if (stl) check_stl(data, file);
@@ -71,7 +80,16 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     mesh.request_vertex_status();
     mesh.request_halfedge_texcoords2D();
     Options options = requested_options();
-    read_with_openmesh(mesh, file, options, capture);
+    // OpenMesh reads by name: it opens a copy without the mark.
+    std::optional<TempFile> without_bom;
+    if (!bom.empty()) {
+      loaded.warnings.push_back(bom);
+      without_bom.emplace("mesh", ext, data.data(), data.size());
+      if (!without_bom->written())
+        throw InputError(file, "", "could not write a copy without its byte-order mark");
+    }
+    read_with_openmesh(mesh, file, options, capture,
+                       without_bom ? without_bom->path().string() : "");
     // STL has neither vertex normals nor colours, but its reader hands the request back as if
     // the file had them (and leaves them uninitialised).
     if (stl) {

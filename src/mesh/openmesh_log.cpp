@@ -60,10 +60,10 @@ Options requested_options() {
 }
 
 void read_with_openmesh(PolyMesh& mesh, const std::string& file, Options& options,
-                        OpenMeshLogCapture& capture) {
+                        OpenMeshLogCapture& capture, const std::string& opened) {
   bool ok = false;
   try {
-    ok = OpenMesh::IO::read_mesh(mesh, file, options);
+    ok = OpenMesh::IO::read_mesh(mesh, opened.empty() ? file : opened, options);
   } catch (const std::exception& e) {
     // e.g. std::bad_alloc from a reserve() sized by a corrupt count.
     throw InputError(file, "", std::string("OpenMesh could not read it: ") + e.what());

@@ -44,9 +44,9 @@ class OpenMeshLogCapture {
 // integer colours.
 OpenMesh::IO::Options requested_options();
 
-// OpenMesh::IO::read_mesh, with its failure (false or an exception) as an InputError naming the
-// file and OpenMesh's last log line.
+// OpenMesh::IO::read_mesh of `file` (or of `opened`, a copy of it, when given), with its failure
+// (false or an exception) as an InputError naming `file` and OpenMesh's last log line.
 void read_with_openmesh(PolyMesh& mesh, const std::string& file, OpenMesh::IO::Options& options,
-                        OpenMeshLogCapture& capture);
+                        OpenMeshLogCapture& capture, const std::string& opened = "");
 
 }  // namespace lt::meshio

@@ -75,6 +75,17 @@ std::string quoted(std::string_view token) {
   return s;
 }
 
+std::string skip_utf8_bom(std::string& text) {
+  if (text.rfind("\xEF\xBB\xBF", 0) != 0) return "";
+  text.erase(0, 3);
+  return "a UTF-8 byte-order mark starts the file: skipped";
+}
+
+void refuse_utf16(const std::string& text, const std::string& file) {
+  if (text.rfind("\xFE\xFF", 0) == 0 || text.rfind("\xFF\xFE", 0) == 0)
+    fail(file, 1, "UTF-16 text (it starts with a byte-order mark): save it as UTF-8 or ASCII");
+}
+
 [[noreturn]] void fail(const std::string& file, std::size_t line, const std::string& what) {
   throw InputError(file, line ? std::to_string(line) : "", what);
 }

@@ -1,12 +1,9 @@
 #include "load/gltf/gltf_textures.h"
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cmath>
-#include <fstream>
 
 #include "core/error.h"
+#include "core/temp_file.h"
 #include "load/albedo_map.h"
 #include "model/texture_sampling.h"
 
@@ -28,40 +25,6 @@ TextureWrap wrap_of(const Document& doc, const json& sampler, const char* key,
       pointer + "/" + key,
       "must be 33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 (REPEAT), not " + v.dump());
 }
-
-// The encoded image as a file the image reader opens: the image's own file when its URI names
-// one, else its bytes (a data URI, a GLB buffer view) in a private temporary file, removed when
-// this goes out of scope.
-class ImageFile {
- public:
-  ImageFile(const Document& doc, const tinygltf::Image& image, const std::string& pointer) {
-    // PNG and JPEG are the image formats glTF core allows [glTF 2.0 spec 3.8.3 Images]; the
-    // signature decides the extension the reader goes by.
-    const auto& b = image.image;
-    const bool png = b.size() >= 8 && b[0] == 0x89 && b[1] == 'P' && b[2] == 'N' && b[3] == 'G';
-    const bool jpeg = b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF;
-    if (!png && !jpeg)
-      doc.fail(pointer, "is neither PNG nor JPEG (the image formats glTF 2.0 allows)");
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("ltrender-gltf-image." + std::to_string(getpid()) + "." + std::to_string(counter++) +
-             (png ? ".png" : ".jpg"));
-    std::ofstream out(path_, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
-    out.close();
-    if (!out) doc.fail(pointer, "could not be written to a temporary file for decoding");
-  }
-  ~ImageFile() {
-    std::error_code ec;
-    std::filesystem::remove(path_, ec);
-  }
-  ImageFile(const ImageFile&) = delete;
-  ImageFile& operator=(const ImageFile&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // KHR_texture_transform: T * R * S with rotation counter-clockwise in UV space
 // [KHR_texture_transform README, "Overview"]. Its own texCoord overrides the textureInfo's.
@@ -153,7 +116,14 @@ std::shared_ptr<const TextureMap> load_base_colour_texture(const Document& doc,
   const std::string file = doc.path.string();
   const std::string ip = "/images/" + std::to_string(texture.image);
   const tinygltf::Image& image = doc.model.images[static_cast<size_t>(texture.image)];
-  const ImageFile temporary(doc, image, ip);
+  // PNG and JPEG are the image formats glTF core allows [glTF 2.0 spec 3.8.3 Images]; the
+  // signature decides the extension the image reader goes by.
+  const auto& b = image.image;
+  const bool png = b.size() >= 8 && b[0] == 0x89 && b[1] == 'P' && b[2] == 'N' && b[3] == 'G';
+  const bool jpeg = b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF;
+  if (!png && !jpeg) doc.fail(ip, "is neither PNG nor JPEG (the image formats glTF 2.0 allows)");
+  const TempFile temporary("gltf-image", png ? ".png" : ".jpg", b.data(), b.size());
+  if (!temporary.written()) doc.fail(ip, "could not be written to a temporary file for decoding");
   // Errors name the image's pointer, not the temporary file.
   std::shared_ptr<TextureMap> map;
   try {
