@@ -310,7 +310,9 @@ TEST(ReadMesh, MissingNormalsAreComputedOutward) {
   // quads.obj: the corner of a box, a 2 x 2 square at z = 0 facing +z and a 2 x 1 one at
   // y = -1 facing -y.
   const LoadedMesh m = read_mesh(kData / "odd" / "quads.obj");
-  EXPECT_TRUE(has_warning(m, "no vertex normals in the file")) << all_warnings(m);
+  EXPECT_EQ(m.notes, std::vector<std::string>{
+                         "no vertex normals in the file: computed from the faces (area-weighted)"});
+  EXPECT_FALSE(has_warning(m, "no vertex normals in the file")) << all_warnings(m);
   const TriangleMesh t = to_triangle_mesh(m);
   EXPECT_NEAR(t.normals[2].z, 1.0, 1e-12);  // only in the first quad
   EXPECT_NEAR(t.normals[3].z, 1.0, 1e-12);

@@ -182,7 +182,8 @@ int run_vertex_bake(const BakeOptions& o, const bake::BakeSettings& settings,
   ensure_not_an_input(o.out, {o.mesh});
 
   LoadedMesh loaded = read_mesh(o.mesh);
-  for (const auto& w : loaded.warnings) warn(o.mesh, w);
+  for (const auto* list : {&loaded.notes, &loaded.warnings})
+    for (const auto& w : *list) warn(o.mesh, w);
 
   ProgressBar bar;
   const auto start = SteadyClock::now();
@@ -238,7 +239,8 @@ int run_texture_bake(const BakeOptions& o, const bake::BakeSettings& settings,
   ensure_not_an_input(o.out, {o.mesh});
 
   const LoadedMesh loaded = read_mesh(o.mesh);
-  for (const auto& w : loaded.warnings) warn(o.mesh, w);
+  for (const auto* list : {&loaded.notes, &loaded.warnings})
+    for (const auto& w : *list) warn(o.mesh, w);
   const TriangleMesh mesh = to_triangle_mesh(loaded);
   if (mesh.uvs.empty()) {
     throw InputError(o.mesh, "",

@@ -119,7 +119,7 @@ void finish_loaded_mesh(LoadedMesh& loaded, const std::string& file, FileFacts& 
       }
     }
   } else {
-    loaded.warnings.push_back(
+    loaded.notes.push_back(
         "no vertex normals in the file: computed from the faces (area-weighted)");
   }
   const std::size_t without = recompute_normals(mesh, keep);

@@ -57,6 +57,9 @@ struct LoadedMesh {
   OpenMesh::IO::Options read_options;  // what the file had (normals, colours, VertexTexCoord)
   std::vector<ExtraVertexProperty> extra_vertex_properties;  // PLY only
   std::vector<std::string> warnings;  // e.g. "3 zero-length normals recomputed"
+  // What any reader does unasked (normals computed for a file that has none): `bake`, which
+  // writes them, says so; a render does not, on every frame of a user's CI.
+  std::vector<std::string> notes;
   std::string
       uvs_dropped;  // why the file's UVs were not kept, for a map's error ("": kept or none)
 };
