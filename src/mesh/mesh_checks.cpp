@@ -69,6 +69,10 @@ void finish_loaded_mesh(LoadedMesh& loaded, const std::string& file, FileFacts& 
       }
     }
   }
+  if (facts.face_colours_dropped > 0) {
+    loaded.warnings.push_back(plural(facts.face_colours_dropped, "face colour", "face colours") +
+                              " ignored (the paths shade with vertex colours only)");
+  }
   if (facts.repeated_faces > 0) {
     loaded.warnings.push_back(plural(facts.repeated_faces, "face", "faces") +
                               " naming a vertex twice dropped (a halfedge mesh cannot hold them)");

@@ -69,7 +69,8 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     std::string data = read_input_file(path, InputKind::Mesh);
     // Not in a binary STL, whose 80-byte header is free-form: only before an ASCII one's "solid".
     if (!stl) refuse_utf16(data, file);
-    const std::string bom = stl && data.rfind("\xEF\xBB\xBFsolid", 0) != 0 ? "" : skip_utf8_bom(data);
+    const std::string bom =
+        stl && data.rfind("\xEF\xBB\xBFsolid", 0) != 0 ? "" : skip_utf8_bom(data);
     if (ext == ".obj") facts = check_obj(data, file);
     if (ext == ".off") facts = check_off(data, file);
     if (stl) check_stl(data, file);
@@ -80,16 +81,16 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     mesh.request_vertex_status();
     mesh.request_halfedge_texcoords2D();
     Options options = requested_options();
-    // OpenMesh reads by name: it opens a copy without the mark.
-    std::optional<TempFile> without_bom;
-    if (!bom.empty()) {
-      loaded.warnings.push_back(bom);
-      without_bom.emplace("mesh", ext, data.data(), data.size());
-      if (!without_bom->written())
-        throw InputError(file, "", "could not write a copy without its byte-order mark");
+    if (!bom.empty()) loaded.warnings.push_back(bom);
+    // OpenMesh reads by name: a file it would misread (a byte-order mark, an OFF's comments) is
+    // handed to it as a copy in the form it reads.
+    const std::string& text = facts.rewritten.empty() ? data : facts.rewritten;
+    std::optional<TempFile> copy;
+    if (!bom.empty() || !facts.rewritten.empty()) {
+      copy.emplace("mesh", ext, text.data(), text.size());
+      if (!copy->written()) throw InputError(file, "", "could not write the copy OpenMesh reads");
     }
-    read_with_openmesh(mesh, file, options, capture,
-                       without_bom ? without_bom->path().string() : "");
+    read_with_openmesh(mesh, file, options, capture, copy ? copy->path().string() : "");
     // STL has neither vertex normals nor colours, but its reader hands the request back as if
     // the file had them (and leaves them uninitialised).
     if (stl) {

@@ -25,6 +25,10 @@ struct FileFacts {
   // reverse (0: none). Such a file's UVs are dropped with a warning, not refused: assimp,
   // tinyobjloader and Blender read it (a corner without `vt` has no UV).
   std::size_t uv_mix_line = 0;
+  // OFF: faces whose colours (values after the indices) were dropped, and the text OpenMesh
+  // reads instead of the file ("": the file as it is), both from check_off.
+  std::size_t face_colours_dropped = 0;
+  std::string rewritten;
 
   // A text check's colours, one per vertex record (zero where the record had none), `colored`
   // of them from the file: kept when every vertex has one, dropped (with a warning later) when

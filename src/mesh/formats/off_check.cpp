@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <string_view>
+#include <vector>
 
 #include "mesh/normals.h"
 #include "mesh/reader_support.h"
@@ -18,9 +19,16 @@ struct OffHeader {
   bool texcoords = false, colors = false, normals = false, binary = false;
 };
 
-OffHeader parse_off_keyword(std::string_view first_line, const std::string& file) {
+// A line without its comment: '#' to the end of the line, as Geomview's OFF allows.
+std::string_view without_comment(std::string_view line) {
+  return trim(line.substr(0, line.find('#')));
+}
+
+// `counts` receives the counts when the keyword line holds them ("OFF 8 6 0").
+OffHeader parse_off_keyword(std::string_view first_line, const std::string& file,
+                            std::vector<std::string_view>& counts) {
   OffHeader h;
-  auto tokens = split_whitespace(first_line);
+  auto tokens = split_whitespace(without_comment(first_line));
   if (tokens.empty()) fail(file, 1, "not an OFF file (empty first line)");
   std::string_view k = tokens[0];
   if (k.substr(0, 2) == "ST") {
@@ -42,9 +50,10 @@ OffHeader parse_off_keyword(std::string_view first_line, const std::string& file
     fail(file, 1, "not an OFF file (first line is '" + std::string(trim(first_line)) + "')");
   if (tokens.size() == 2 && tokens[1] == "BINARY") {
     h.binary = true;
+  } else if (tokens.size() == 4) {
+    counts.assign(tokens.begin() + 1, tokens.end());
   } else if (tokens.size() > 1) {
-    // OpenMesh discards the rest of the first line: counts written there would be lost.
-    fail(file, 1, "the counts must be on the line after '" + std::string(tokens[0]) + "'");
+    fail(file, 1, "expected the keyword alone, 'BINARY' or the three counts after it");
   }
   return h;
 }
@@ -132,29 +141,40 @@ FileFacts check_off_binary(const std::string& data, const OffHeader& h, const st
 FileFacts check_off(const std::string& data, const std::string& file) {
   const auto lines = split_lines(data);
   if (lines.empty()) fail(file, 0, "file is empty");
-  const OffHeader h = parse_off_keyword(lines[0], file);
+  std::vector<std::string_view> counts;
+  const OffHeader h = parse_off_keyword(lines[0], file, counts);
   if (h.binary) return check_off_binary(data, h, file);
 
   FileFacts facts;
+  // The file as OpenMesh can read it, built as the check goes: one value per token, single
+  // spaces, no comments, the counts on their own line, a face's indices only. Handed on
+  // (facts.rewritten) when the file differs from it in a way OpenMesh would misread.
+  std::string copy = std::string(split_whitespace(lines[0])[0]) + "\n";
+  bool rewrite = !counts.empty();
+  auto put = [&](const std::vector<std::string_view>& tokens, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) copy.append(tokens[k]).append(k + 1 < n ? " " : "\n");
+  };
   std::size_t li = 1;
   auto next_content_line = [&](std::string_view& line) {
     while (li < lines.size()) {
-      line = trim(lines[li++]);
-      if (line.empty()) continue;
-      if (line[0] == '#')
-        fail(file, li, "comment lines are not supported by OpenMesh's OFF reader");
-      return true;
+      const std::string_view raw = lines[li++];
+      line = without_comment(raw);
+      rewrite = rewrite || raw.find('#') != std::string_view::npos;
+      if (!line.empty()) return true;
     }
     return false;
   };
   std::string_view line;
-  if (!next_content_line(line)) fail(file, 0, "file ends before the vertex and face counts");
-  auto counts = split_whitespace(line);
+  if (counts.empty()) {
+    if (!next_content_line(line)) fail(file, 0, "file ends before the vertex and face counts");
+    counts = split_whitespace(line);
+  }
   long long nv = 0, nf = 0, ne = 0;
   if (counts.size() != 3 || !parse_int(counts[0], nv) || !parse_int(counts[1], nf) ||
       !parse_int(counts[2], ne) || nv < 0 || nf < 0 || ne < 0) {
     fail(file, li, "expected '<vertices> <faces> <edges>'");
   }
+  put(counts, 3);
   if (nv > std::numeric_limits<std::int32_t>::max() ||
       nf > std::numeric_limits<std::int32_t>::max() ||
       static_cast<std::size_t>(nv + nf) > lines.size()) {
@@ -172,6 +192,7 @@ FileFacts check_off(const std::string& data, const std::string& file) {
                " vertices (truncated?)");
     }
     auto t = split_whitespace(line);
+    put(t, t.size());
     if (t.size() < fixed)
       fail(file, li,
            "vertex " + std::to_string(i) + " needs " + std::to_string(fixed) + " numbers");
@@ -210,9 +231,7 @@ FileFacts check_off(const std::string& data, const std::string& file) {
         rest = rest.substr(0, static_cast<std::size_t>(t[t.size() - 2].data() - rest.data()));
       rest = trim(rest);
       std::size_t spaces = static_cast<std::size_t>(std::count(rest.begin(), rest.end(), ' '));
-      if (spaces + 1 != items || rest.find('\t') != std::string_view::npos) {
-        fail(file, li, "colour values must be separated by single spaces (OpenMesh counts spaces)");
-      }
+      rewrite = rewrite || spaces + 1 != items || rest.find('\t') != std::string_view::npos;
       const bool is_float = t[fixed].find('.') != std::string_view::npos;
       for (std::size_t k = 0; k < 3; ++k) {
         const auto tok = t[fixed + k];
@@ -257,10 +276,12 @@ FileFacts check_off(const std::string& data, const std::string& file) {
     if (t.size() < static_cast<std::size_t>(n) + 1)
       fail(file, li,
            "face " + std::to_string(i) + " lists fewer than " + std::to_string(n) + " vertices");
-    // A plain OFF face is read token by token: extra values would be taken as the next face.
-    if (!h.colors && t.size() > static_cast<std::size_t>(n) + 1) {
-      fail(file, li,
-           "face " + std::to_string(i) + " has values after its " + std::to_string(n) + " indices");
+    // A face's colour (Geomview's OFF allows one after the indices): OpenMesh would read a plain
+    // OFF's as the next face, so the copy it reads ends at the indices.
+    put(t, static_cast<std::size_t>(n) + 1);
+    if (t.size() > static_cast<std::size_t>(n) + 1) {
+      ++facts.face_colours_dropped;
+      rewrite = true;
     }
     std::vector<long long> idx;
     for (long long k = 1; k <= n; ++k) {
@@ -280,6 +301,7 @@ FileFacts check_off(const std::string& data, const std::string& file) {
   }
   facts.vertices = static_cast<std::size_t>(nv);
   facts.take_parsed_colors(std::move(colors), colored);
+  if (rewrite) facts.rewritten = std::move(copy);
   return facts;
 }
 

@@ -1,7 +1,10 @@
 // OFF: OpenMesh reads the counts and the values token by token, colours from the rest of each
-// vertex line, has no comments, and reads `n` indices for a face whatever the line holds; a
-// short file leaves it repeating stale values. Checked here line by line: one vertex or face per
-// line, counts that match, indices in range, colours OpenMesh will understand.
+// vertex line counted by single spaces, has no comments, ignores counts on the keyword line, and
+// reads `n` indices for a face whatever the line holds; a short file leaves it repeating stale
+// values. Checked here line by line: one vertex or face per line, counts that match, indices in
+// range. What Geomview's OFF allows and OpenMesh misreads (comments, counts on the keyword line,
+// a face's colour, colours spaced otherwise) is accepted: the check hands on a copy in the form
+// OpenMesh reads (FileFacts::rewritten).
 #pragma once
 
 #include <string>
