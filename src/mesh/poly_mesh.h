@@ -60,8 +60,8 @@ struct LoadedMesh {
   // What any reader does unasked (normals computed for a file that has none): `bake`, which
   // writes them, says so; a render does not, on every frame of a user's CI.
   std::vector<std::string> notes;
-  std::string
-      uvs_dropped;  // why the file's UVs were not kept, for a map's error ("": kept or none)
+  // Why the file's UVs were not kept, for a map material's error ("": kept, or the file had none).
+  std::string uvs_dropped;
 };
 
 inline glm::dvec3 to_glm(const OpenMesh::Vec3d& v) {
