@@ -87,6 +87,9 @@ inline const Invalid kInvalid[] = {
     {"missing ';'", "!!ARBfp1.0\nTEMP a;\nMOV a, fragment.color\nMOV result.color, a;\nEND\n",
      "MOV result", "expected ';', found 'MOV'"},
     {"no header", "MOV result.color, fragment.color;\nEND\n", "MOV", "expected the header"},
+    // A Windows editor's mark: Mesa reads a byte >= 0x80 as the end of the text.
+    {"byte-order mark", "\xEF\xBB\xBF!!ARBfp1.0\nMOV result.color, fragment.color;\nEND\n",
+     "\xEF\xBB\xBF", "a UTF-8 byte-order mark stands before the header"},
     {"undeclared name", "!!ARBfp1.0\nMOV result.color, b;\nEND\n", "b;",
      "expected a declared name, found 'b'"},
     {"declared twice", "!!ARBfp1.0\nTEMP a;\nTEMP a;\nMOV result.color, a;\nEND\n", "a;\nMOV",

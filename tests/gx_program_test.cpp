@@ -150,7 +150,9 @@ const BadCase kBad[] = {
     {"undeclared_light", "GX_InitLightPos(&nolight, 0, 0, 0);\n", "1:17",
      "&name of a declared GXLightObj"},
     {"float_for_a_name", "GX_SetNumTevStages(1.5);\n", "1:20", "expected a number"},
-    {"bad_character", "GX_SetNumChans(1); @\n", "1:20", "unexpected character"},
+    {"bad_character", "GX_SetNumChans(1); @\n", "1:20", "unexpected character '@'"},
+    // Not printed raw: one byte of a UTF-8 character would garble the message.
+    {"non_ascii_byte", "GX_SetNumChans(1); \xC3\xA9\n", "1:20", "unexpected character 0xC3"},
     {"unterminated_comment", "/* no end\nGX_SetNumChans(1);\n", "1:1", "unterminated comment"},
     {"badly_named_function", "void setup(void) {\n  GX_SetNumChans(1);\n}\n", "1:1",
      "ltrender_<material>_pass<N>"},
@@ -205,6 +207,26 @@ TEST(GxProgram, PrintedProgramsParseBackToTheSameState) {
       EXPECT_TRUE(a[i].state.texgen == b[i].state.texgen) << s << " " << a[i].name;
       EXPECT_TRUE(a[i].state.textures == b[i].state.textures) << s << " " << a[i].name;
     }
+  }
+}
+
+// A UTF-8 byte-order mark before the program (a Windows editor's) is skipped, as GCC skips it:
+// the same state, and positions count from the character after it.
+TEST(GxProgram, AByteOrderMarkIsSkippedAsGccSkipsIt) {
+  const Scene scene = load_scene(test::source_dir() / "scenes/backlit_sphere.json");
+  const std::string text = print_program(generate_programs(scene, GxVariant{}).file);
+  const auto a = file_programs(parse_program(text, "plain.c"));
+  const auto b = file_programs(parse_program("\xEF\xBB\xBF" + text, "marked.c"));
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_TRUE(a[i].state.tev == b[i].state.tev) << a[i].name;
+    EXPECT_TRUE(a[i].state.lighting == b[i].state.lighting) << a[i].name;
+  }
+  try {
+    parse_program("\xEF\xBB\xBF@", "marked.c");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "1:1") << e.what();
   }
 }
 

@@ -460,6 +460,13 @@ class Parser {
 }  // namespace
 
 ir::Program parse(const std::string& source, const Limits& limits) {
+  // Refused as Mesa refuses it (a byte >= 0x80 ends its text, so it finds no header), but named:
+  // a Windows editor's mark is invisible, and "found the end of the program" would not say why.
+  if (source.rfind("\xEF\xBB\xBF", 0) == 0) {
+    throw SyntaxError({1, 1},
+                      "a UTF-8 byte-order mark stands before the header: Mesa reads it as the end "
+                      "of the text and refuses the program (save the file without it)");
+  }
   return Parser(source, limits).run();
 }
 

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <new>
 #include <string>
@@ -36,6 +37,9 @@ class Lexer {
     // An upper bound for printed byte arrays ("255, " is two tokens in ~5 characters): one
     // allocation, not a doubling that copies the tokens; the pages never written stay unused.
     out.reserve(s_.size() / 2 + 1);
+    // A UTF-8 byte-order mark (a Windows editor's) is skipped, as GCC skips it; positions count
+    // from the character after it.
+    if (s_.rfind("\xEF\xBB\xBF", 0) == 0) i_ = 3;
     bool line_start = true;
     while (i_ < s_.size()) {
       const char c = s_[i_];
@@ -85,7 +89,12 @@ class Lexer {
         t.text = text_from(start);
         t.kind = Token::Kind::Punct;
       } else {
-        fail(pos_, std::string("unexpected character '") + c + "'");
+        // A byte that is no printable ASCII as its code: printed raw it would be half a character.
+        char shown[8];
+        std::snprintf(shown, sizeof shown,
+                      std::isprint(static_cast<unsigned char>(c)) ? "'%c'" : "0x%02X",
+                      static_cast<unsigned char>(c));
+        fail(pos_, std::string("unexpected character ") + shown);
       }
       out.push_back(std::move(t));
     }
