@@ -97,6 +97,18 @@ TEST(CombinerFormat, EveryFunctionSourceAndOperandParses) {
   EXPECT_EQ(p.stages[2].rgb.args[1].operand, Operand::Color);
 }
 
+// A program saved by a Windows editor, with a UTF-8 byte-order mark first, is the same program.
+TEST(CombinerFormat, AByteOrderMarkBeforeTheProgramIsSkipped) {
+  const std::string text = "stage 0\n  rgb MODULATE primary previous\n";
+  const CombinerProgram plain = combiners::parse_combiner_program(text, "plain.comb");
+  const CombinerProgram marked =
+      combiners::parse_combiner_program("\xEF\xBB\xBF" + text, "marked.comb");
+  ASSERT_EQ(marked.stages.size(), 1u);
+  EXPECT_EQ(marked.stages[0].rgb.function, plain.stages[0].rgb.function);
+  EXPECT_EQ(marked.stages[0].rgb.args[0].source, plain.stages[0].rgb.args[0].source);
+  EXPECT_EQ(marked.stages[0].rgb.args[1].source, plain.stages[0].rgb.args[1].source);
+}
+
 struct BadProgram {
   const char* label;
   std::string text;

@@ -49,7 +49,8 @@ class Parser {
     CombinerProgram prog;
     prog.file = file_;
     prog.name = file_;
-    std::istringstream in(text_);
+    // A UTF-8 byte-order mark (a Windows editor's) is no part of the program.
+    std::istringstream in(text_.rfind("\xEF\xBB\xBF", 0) == 0 ? text_.substr(3) : text_);
     std::string raw;
     Stage* stage = nullptr;
     std::set<std::string> seen;  // directives already given in the current stage
