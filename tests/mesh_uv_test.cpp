@@ -151,8 +151,8 @@ TEST(MeshUvs, BadUvsNameFileAndLine) {
   expect_input_error(kUv / "inf_st.off", "5", "vertex 2 has a non-finite texture coordinate");
 }
 
-// Faces that mix corners with and without vt: read, as assimp, tinyobjloader and Blender read
-// them, without UVs (OpenMesh leaves the corners without vt undefined), and the warning names
+// Faces that mix corners with and without vt: read, as assimp and tinyobjloader read them,
+// without UVs (OpenMesh leaves the corners without vt undefined), and the warning names
 // the first face line that breaks ranks.
 void expect_read_without_uvs(const fs::path& path, std::size_t faces, const std::string& line) {
   const LoadedMesh loaded = read_mesh(path);

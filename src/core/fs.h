@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lt {
@@ -71,5 +72,12 @@ std::string read_input_file(const fs::path& path, InputKind kind);
 
 // read_input_file(path, InputKind::Program): a text input other than a scene.
 std::string read_text_file(const fs::path& path);
+
+// The UTF-8 byte-order mark a Windows editor writes before text. Each text reader decides what
+// it means as its model does: GCC and JSON readers skip it, Mesa's ARB parser ends its text there.
+inline constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+inline bool starts_with_utf8_bom(std::string_view text) {
+  return text.substr(0, kUtf8Bom.size()) == kUtf8Bom;
+}
 
 }  // namespace lt

@@ -69,8 +69,8 @@ LoadedMesh read_mesh_unguarded(const fs::path& path) {
     std::string data = read_input_file(path, InputKind::Mesh);
     // Not in a binary STL, whose 80-byte header is free-form: only before an ASCII one's "solid".
     if (!stl) refuse_utf16(data, file);
-    const std::string bom =
-        stl && data.rfind("\xEF\xBB\xBFsolid", 0) != 0 ? "" : skip_utf8_bom(data);
+    const bool binary_stl = stl && data.rfind(std::string(kUtf8Bom) + "solid", 0) != 0;
+    const std::string bom = binary_stl ? "" : skip_utf8_bom(data);
     if (ext == ".obj") facts = check_obj(data, file);
     if (ext == ".off") facts = check_off(data, file);
     if (stl) check_stl(data, file);

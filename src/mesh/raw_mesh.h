@@ -22,8 +22,8 @@ struct FileFacts {
   bool partial_colors = false;     // some vertices had colours and others not: dropped
   bool colors_checked = false;     // our pass decides about colours, not OpenMesh's options
   // OBJ: the first face line whose corners name `vt` where earlier corners did not, or the
-  // reverse (0: none). Such a file's UVs are dropped with a warning, not refused: assimp,
-  // tinyobjloader and Blender read it (a corner without `vt` has no UV).
+  // reverse (0: none). Such a file's UVs are dropped with a warning, not refused: assimp and
+  // tinyobjloader read it (tinyobjloader gives such a corner texcoord_index -1).
   std::size_t uv_mix_line = 0;
   // OFF: faces whose colours (values after the indices) were dropped, and the text OpenMesh
   // reads instead of the file ("": the file as it is), both from check_off.

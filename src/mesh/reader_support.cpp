@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/fs.h"
 
 namespace lt::meshio {
 
@@ -76,8 +77,8 @@ std::string quoted(std::string_view token) {
 }
 
 std::string skip_utf8_bom(std::string& text) {
-  if (text.rfind("\xEF\xBB\xBF", 0) != 0) return "";
-  text.erase(0, 3);
+  if (!starts_with_utf8_bom(text)) return "";
+  text.erase(0, kUtf8Bom.size());
   return "a UTF-8 byte-order mark starts the file: skipped";
 }
 

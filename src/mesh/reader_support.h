@@ -32,10 +32,10 @@ std::string_view trim(std::string_view s);
 // 105329) on "'" + std::string(token) + "'" once inlined.
 std::string quoted(std::string_view token);
 
-// A UTF-8 byte-order mark, as Windows editors write one, is no part of a text format: assimp and
-// tinyobjloader skip it, while OpenMesh would read it into the first line (an OBJ's first vertex
-// silently lost, every index after it shifted). Removes it from `text` when it starts `text` and
-// returns the warning that says so ("" when there was none).
+// A UTF-8 byte-order mark, as Windows editors write one, is no part of a text format: assimp skips
+// it (BaseImporter::ConvertToUTF8), while OpenMesh would read it into the first line (an OBJ's
+// first vertex silently lost, every index after it shifted). Removes it from `text` when it starts
+// `text` and returns the warning that says so ("" when there was none).
 std::string skip_utf8_bom(std::string& text);
 // UTF-16 text (a byte-order mark FE FF or FF FE first) is refused by name: read as bytes it has
 // no vertex at all, and "mesh is empty" would not say why.

@@ -149,8 +149,8 @@ FileFacts check_off(const std::string& data, const std::string& file) {
   // The file as OpenMesh can read it, built as the check goes: one value per token, single
   // spaces, no comments, the counts on their own line, a face's indices only. Handed on
   // (facts.rewritten) when the file differs from it in a way OpenMesh would misread.
-  std::string copy = std::string(split_whitespace(lines[0])[0]) + "\n";
-  bool rewrite = !counts.empty();
+  std::string copy = std::string(split_whitespace(without_comment(lines[0]))[0]) + "\n";
+  bool rewrite = !counts.empty() || lines[0].find('#') != std::string_view::npos;
   auto put = [&](const std::vector<std::string_view>& tokens, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k) copy.append(tokens[k]).append(k + 1 < n ? " " : "\n");
   };

@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "core/fs.h"
 #include "paths/arbfp/arb_text_bindings.h"
 #include "paths/arbfp/arb_text_cursor.h"
 #include "paths/arbfp/arb_text_grammar.h"
@@ -462,7 +463,7 @@ class Parser {
 ir::Program parse(const std::string& source, const Limits& limits) {
   // Refused as Mesa refuses it (a byte >= 0x80 ends its text, so it finds no header), but named:
   // a Windows editor's mark is invisible, and "found the end of the program" would not say why.
-  if (source.rfind("\xEF\xBB\xBF", 0) == 0) {
+  if (starts_with_utf8_bom(source)) {
     throw SyntaxError({1, 1},
                       "a UTF-8 byte-order mark stands before the header: Mesa reads it as the end "
                       "of the text and refuses the program (save the file without it)");

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/fs.h"
 #include "gl/context.h"
 #include "gl/program.h"
 
@@ -50,7 +51,7 @@ class Parser {
     prog.file = file_;
     prog.name = file_;
     // A UTF-8 byte-order mark (a Windows editor's) is no part of the program.
-    std::istringstream in(text_.rfind("\xEF\xBB\xBF", 0) == 0 ? text_.substr(3) : text_);
+    std::istringstream in(starts_with_utf8_bom(text_) ? text_.substr(kUtf8Bom.size()) : text_);
     std::string raw;
     Stage* stage = nullptr;
     std::set<std::string> seen;  // directives already given in the current stage

@@ -39,7 +39,7 @@ class Lexer {
     out.reserve(s_.size() / 2 + 1);
     // A UTF-8 byte-order mark (a Windows editor's) is skipped, as GCC skips it; positions count
     // from the character after it.
-    if (s_.rfind("\xEF\xBB\xBF", 0) == 0) i_ = 3;
+    if (starts_with_utf8_bom(s_)) i_ = kUtf8Bom.size();
     bool line_start = true;
     while (i_ < s_.size()) {
       const char c = s_[i_];
