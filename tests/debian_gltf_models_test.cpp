@@ -132,11 +132,11 @@ const std::vector<Model>& models() {
 // Covered pixels (alpha > 0) and how many of them are lit (a channel above 0). A scene that
 // renders black for want of light has none lit; "lit" asks for more than half, since faces
 // turned from both of the rig's lights may be dark where the lobe does not reach.
-struct Coverage {
+struct LitCoverage {
   std::size_t covered = 0, lit = 0;
 };
-Coverage coverage(const Image& img) {
-  Coverage c;
+LitCoverage coverage(const Image& img) {
+  LitCoverage c;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
       const float* p = img.at(x, y);
@@ -172,7 +172,7 @@ TEST_P(DebianGltfModel, RendersLitOrIsRefusedForItsReason) {
     ASSERT_TRUE(scene) << m.file << ": " << error;
     row += "lit |";
     for (const char* path : {"reference", "gx"}) {
-      const Coverage c = coverage(render_scene(*scene, path, "", 64, 64));
+      const LitCoverage c = coverage(render_scene(*scene, path, "", 64, 64));
       EXPECT_GT(c.covered, 0u) << m.file << " " << path;
       EXPECT_GT(c.lit * 2, c.covered)
           << m.file << " " << path << ": " << c.lit << " of " << c.covered << " covered pixels lit";
@@ -210,7 +210,7 @@ TEST(DebianGltfModels, TheJadeEngineExampleGivesEveryMaterialTranslucency) {
     EXPECT_EQ(m.albedo, named ? m.albedo : glm::dvec3(0.55, 0.8, 0.6)) << m.name;
   }
   EXPECT_GT(by_name, 1u) << "every glTF material of the name is selected";
-  const Coverage c = coverage(render_scene(scene, "reference", "", 64, 64));
+  const LitCoverage c = coverage(render_scene(scene, "reference", "", 64, 64));
   EXPECT_GT(c.covered, 64u * 64 / 10);
   EXPECT_GT(c.lit * 2, c.covered);
 }

@@ -43,15 +43,20 @@ TEST(GxBaseTev, KonstIsTheBaseRoundedOnceAndColour0IsUnlit) {
   EXPECT_EQ(p.stages[0].konst_color->name(), std::string("GX_TEV_KCSEL_K0"));
 }
 
-// The XF's truncations of the base are what base=tev removes; measured 3.64 -> 2.60 LSB mean
-// on baked_blob at 128x96 (`ltrender render ... --variant t=vertex[:base=tev]`, `compare`).
+// The XF's truncations of the base are what base=tev removes; measured 3.63 -> 2.59 LSB mean, p99
+// 8.20 -> 7.86, on baked_blob at 320x240 (`ltrender render ... --variant t=vertex[:base=tev]`,
+// `compare` of the two EXRs). At 128x96 the mean drops as much, but the few pixels where faces
+// meet and the console's rasteriser sees the other face are over 1% of the image there and
+// decide the p99 (9.25 -> 10.73).
 TEST(GxBaseTev, LowersTheMeanErrorOnBakedBlob) {
   const Scene scene = load_scene(test::source_dir() / "scenes/baked_blob.json");
-  const Image ref = render_scene(scene, "reference", "", 128, 96);
+  const Image ref = render_scene(scene, "reference", "", 320, 240);
   const Comparison xf =
-      compare_images(render_scene(scene, "gx", "t=vertex", 128, 96), ref, TestEncoding::kUnorm8);
-  const Comparison tev = compare_images(render_scene(scene, "gx", "t=vertex:base=tev", 128, 96),
-                                        ref, TestEncoding::kUnorm8);
+      compare_images(render_scene(scene, "gx", "t=vertex", 320, 240), ref, TestEncoding::kUnorm8,
+                     TestEncoding::kFloat, Coverage::kBoth);
+  const Comparison tev =
+      compare_images(render_scene(scene, "gx", "t=vertex:base=tev", 320, 240), ref,
+                     TestEncoding::kUnorm8, TestEncoding::kFloat, Coverage::kBoth);
   std::printf("baked_blob mean: base=xf %.3f, base=tev %.3f LSB\n", xf.covered.mean_lsb,
               tev.covered.mean_lsb);
   EXPECT_LT(tev.covered.mean_lsb, xf.covered.mean_lsb - 0.75);

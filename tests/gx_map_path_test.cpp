@@ -191,9 +191,11 @@ TEST(GxMapPath, ColourMapIsWithinItsFormatsQuantisationOfTheModel) {
   const Scene scene = load_scene(write_map_scene(dir, true));
   const Image truth = test::quad_ground_truth(scene);
   const Comparison rgba8 =
-      compare_images(render_scene(scene, "gx", ""), truth, TestEncoding::kUnorm8);
-  const Comparison rgb565 = compare_images(render_scene(scene, "gx", "t=vertex:map=rgb565"), truth,
-                                           TestEncoding::kUnorm8);
+      compare_images(render_scene(scene, "gx", ""), truth, TestEncoding::kUnorm8,
+                     TestEncoding::kFloat, Coverage::kBoth);
+  const Comparison rgb565 =
+      compare_images(render_scene(scene, "gx", "t=vertex:map=rgb565"), truth, TestEncoding::kUnorm8,
+                     TestEncoding::kFloat, Coverage::kBoth);
   std::printf("gx colour map quad: RGBA8 max %.2f mean %.3f, RGB565 max %.2f mean %.3f LSB\n",
               rgba8.covered.max_lsb, rgba8.covered.mean_lsb, rgb565.covered.max_lsb,
               rgb565.covered.mean_lsb);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "paths/gx/rasteriser.h"
 #include "paths/gx/texture_unit.h"
 #include "paths/gx/thickness_texture.h"
 
@@ -177,7 +178,7 @@ TEST(GxMapTexture, GreyMapIsI8AndExactForEightBitTexels) {
   EXPECT_EQ(texel_at(tt.texture, 1, 1).r, 250);
   // Bottom row first: GX's t = 0 is memory row 0 = the map's v = 0, so the identity texgen's
   // t = v = 0.25 (row 0's centre, 64 in s17.7 at H = 2) reads row 0.
-  EXPECT_EQ(to_fixed_texcoord(0.25f, 2), 64);
+  EXPECT_EQ(raster_texcoord(0.25f * 2), 64);
   EXPECT_EQ(sample_texture(tt.texture, 192, 64), (Color8{200, 200, 200, 200}));
   // The I8 sample of gx_texture_test, through the map's texture: 62.
   EXPECT_EQ(sample_texture(tt.texture, kU, kV).r, 62);

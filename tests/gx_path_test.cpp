@@ -180,15 +180,19 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_fil
                          [](const auto& info) { return test::scene_param_name(info.param); });
 
 // One dim directional light and no ambient: no scale is needed, so only the truncations remain
-// (measured 2.2 max / 0.79 mean LSB).
+// (measured 0.79 mean, p99 1.97 LSB). The max is not theirs: at a few silhouette pixels the
+// console's rasteriser (1/16-pixel snapping, samples at 9/16) sees a back face where GL's sees
+// the front one (measured 12.64 LSB there; tests/bounds.json holds the max).
 TEST(GxPath, OneDimLightIsWithinTruncationOfTheReference) {
   Scene scene = load_scene(test::source_dir() / "scenes/backlit_sphere.json");
   scene.lights.resize(1);
   scene.lights[0].color = glm::dvec3(0.8, 0.76, 0.72);
-  const Comparison c = compare_images(render_scene(scene, "gx", ""),
-                                      render_scene(scene, "reference", ""), TestEncoding::kUnorm8);
-  std::printf("one dim light: max %.2f mean %.3f LSB\n", c.covered.max_lsb, c.covered.mean_lsb);
-  EXPECT_LE(c.covered.max_lsb, 3.0);
+  const Comparison c =
+      compare_images(render_scene(scene, "gx", ""), render_scene(scene, "reference", ""),
+                     TestEncoding::kUnorm8, TestEncoding::kFloat, Coverage::kBoth);
+  std::printf("one dim light: max %.2f mean %.3f p99 %.2f LSB\n", c.covered.max_lsb,
+              c.covered.mean_lsb, c.covered.p99_lsb);
+  EXPECT_LE(c.covered.p99_lsb, 3.0);
   EXPECT_LE(c.covered.mean_lsb, 1.0);
 }
 
@@ -197,8 +201,9 @@ TEST(GxPath, OneDimLightIsWithinTruncationOfTheReference) {
 // fraction flips (measured: 1 LSB at a few pixels on backlit_sphere_ortho).
 TEST(GxPath, TexgenMatchesVertexTWhereItApplies) {
   const Scene scene = load_scene(test::source_dir() / "scenes/ortho/backlit_sphere_ortho.json");
-  const Comparison c = compare_images(render_scene(scene, "gx", "t=texgen"),
-                                      render_scene(scene, "gx", "t=vertex"), TestEncoding::kUnorm8);
+  const Comparison c =
+      compare_images(render_scene(scene, "gx", "t=texgen"), render_scene(scene, "gx", "t=vertex"),
+                     TestEncoding::kUnorm8, TestEncoding::kFloat, Coverage::kBoth);
   // 1.01: the figure of an 8-bit image against another is 1 LSB plus float noise of /255.
   EXPECT_LE(c.covered.max_lsb, 1.01);
   EXPECT_LE(c.covered.percent_over_1_lsb, 0.01);

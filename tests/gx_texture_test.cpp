@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "paths/gx/rasteriser.h"
 #include "paths/gx/texture_unit.h"
 
 namespace lt::gx {
@@ -109,24 +110,27 @@ TEST(GxTexture, IA8TileLayoutStoresAlphaFirst) {
 
 // ---- fixed point ----
 
-TEST(GxTexture, FixedTexcoordTruncatesTowardZeroAndSaturates) {
-  EXPECT_EQ(to_fixed_texcoord(0.3f, 4), 153);    // 153.6
-  EXPECT_EQ(to_fixed_texcoord(-0.3f, 4), -153);  // -153.6: toward zero, not floor (-154)
-  EXPECT_EQ(to_fixed_texcoord(0.5f, 1), 64);
-  EXPECT_EQ(to_fixed_texcoord(1.0f, 1024), 131072);
-  EXPECT_EQ(to_fixed_texcoord(0.0001f, 8), 0);   // 0.1024
-  EXPECT_EQ(to_fixed_texcoord(-0.0001f, 8), 0);  // -0.1024
-  EXPECT_EQ(to_fixed_texcoord(-0.001f, 8), -1);  // -1.024
-  // The signed 24-bit field: 2^23 - 1 = 8388607 and -2^23 = -8388608.
-  EXPECT_EQ(to_fixed_texcoord(65535.9921875f, 1), 8388607);    // exactly 2^23 - 1
-  EXPECT_EQ(to_fixed_texcoord(65536.0f, 1), 8388607);          // 2^23 saturates
-  EXPECT_EQ(to_fixed_texcoord(-65536.0f, 1), -8388608);        // exactly -2^23
-  EXPECT_EQ(to_fixed_texcoord(-65536.0078125f, 1), -8388608);  // -2^23 - 1 saturates
-  EXPECT_EQ(to_fixed_texcoord(1e6f, 1024), 8388607);
-  EXPECT_EQ(to_fixed_texcoord(-1e6f, 1024), -8388608);
-  EXPECT_EQ(to_fixed_texcoord(std::numeric_limits<float>::infinity(), 4), 8388607);
-  EXPECT_EQ(to_fixed_texcoord(-std::numeric_limits<float>::infinity(), 4), -8388608);
-  EXPECT_EQ(to_fixed_texcoord(std::numeric_limits<float>::quiet_NaN(), 4), 0);
+TEST(GxTexture, FixedTexcoordTruncatesTowardZeroAndWrapsInItsField) {
+  // The rasteriser's s17.7 coordinate of s * size (the XF scales by the size per vertex).
+  EXPECT_EQ(raster_texcoord(0.3f * 4), 153);    // 153.6
+  EXPECT_EQ(raster_texcoord(-0.3f * 4), -153);  // -153.6: toward zero, not floor (-154)
+  EXPECT_EQ(raster_texcoord(0.5f), 64);
+  EXPECT_EQ(raster_texcoord(1024.0f), 131072);
+  EXPECT_EQ(raster_texcoord(0.0001f * 8), 0);   // 0.1024
+  EXPECT_EQ(raster_texcoord(-0.0001f * 8), 0);  // -0.1024
+  EXPECT_EQ(raster_texcoord(-0.001f * 8), -1);  // -1.024
+  // The signed 24-bit field [DSW Tev.h `signed s : 24`]: 2^23 - 1 = 8388607 and -2^23; past
+  // them the value wraps, as the bit-field store does.
+  EXPECT_EQ(raster_texcoord(65535.9921875f), 8388607);   // exactly 2^23 - 1
+  EXPECT_EQ(raster_texcoord(65536.0f), -8388608);        // 2^23 wraps to -2^23
+  EXPECT_EQ(raster_texcoord(-65536.0f), -8388608);       // exactly -2^23
+  EXPECT_EQ(raster_texcoord(-65536.0078125f), 8388607);  // -2^23 - 1 wraps to 2^23 - 1
+  // Out of the 32-bit range, infinite or NaN: x86's INT_MIN, whose low 24 bits are 0.
+  EXPECT_EQ(raster_texcoord(1e6f * 1024), 0);
+  EXPECT_EQ(raster_texcoord(-1e6f * 1024), 0);
+  EXPECT_EQ(raster_texcoord(std::numeric_limits<float>::infinity()), 0);
+  EXPECT_EQ(raster_texcoord(-std::numeric_limits<float>::infinity()), 0);
+  EXPECT_EQ(raster_texcoord(std::numeric_limits<float>::quiet_NaN()), 0);
 }
 
 // ---- filtering ----
@@ -135,11 +139,11 @@ TEST(GxTexture, WorkedVectorOfTheSpec) {
   // §3.3: W = 4, T = {0, 100, 200, 255}, s = 0.3 -> u = 153, i0 = 0, f = 89 ->
   // (0 * 39 + 100 * 89) >> 7 = 8900 >> 7 = 69.
   const TextureObject t = i8_texture(4, 1, {0, 100, 200, 255});
-  const s32 u = to_fixed_texcoord(0.3f, 4);
+  const s32 u = raster_texcoord(0.3f * 4);
   EXPECT_EQ(u, 153);
   EXPECT_EQ(sample_texture(t, u, 0), gray(69));
   // s = 0: u - 64 = -64 -> i0 = -1, i1 = 0, both clamp to texel 0.
-  EXPECT_EQ(sample_texture(t, to_fixed_texcoord(0.0f, 4), 0), gray(0));
+  EXPECT_EQ(sample_texture(t, raster_texcoord(0.0f), 0), gray(0));
   // The same with a non-zero first texel, so the clamp is visible: 50.
   EXPECT_EQ(sample_texture(i8_texture(4, 1, {50, 100, 200, 255}), 0, 0), gray(50));
 }

@@ -124,8 +124,8 @@ inline constexpr double kCoarseQuadLobeWeight = 0.8 * (1.5 + 0.3);
 inline void expect_coarse_quad_within(const Scene& scene, const Image& reference,
                                       const std::string& path, const std::string& variant,
                                       double bound) {
-  const Comparison c =
-      compare_images(render_scene(scene, path, variant), reference, TestEncoding::kUnorm8);
+  const Comparison c = compare_images(render_scene(scene, path, variant), reference,
+                                      TestEncoding::kUnorm8, TestEncoding::kFloat, Coverage::kBoth);
   std::printf("%s %s, 8-texel ramp on the quad: %.3f max / %.3f mean LSB\n", path.c_str(),
               variant.c_str(), c.covered.max_lsb, c.covered.mean_lsb);
   EXPECT_EQ(c.covered.pixels, reference.pixel_count()) << variant;

@@ -109,7 +109,8 @@ TEST_P(AdvisePick, MatchesTheExhaustiveSearch) {
       // The pick measured again, on its own.
       const Image img =
           render_scene(scene, target.path->name, pick, kWidth, height, target.options);
-      const Comparison c = compare_images(img, reference, TestEncoding::kUnorm8);
+      const Comparison c = compare_images(img, reference, TestEncoding::kUnorm8,
+                                          TestEncoding::kFloat, Coverage::kBoth);
       EXPECT_EQ(c.test_non_finite_pixels, 0u);
       EXPECT_LE(stat_of(c.covered, stat), budget) << pick;
       // Fewer candidates rendered than the exhaustive search, and the default always.

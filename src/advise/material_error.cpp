@@ -14,7 +14,9 @@ Comparison compare_material(const Image& test, const Image& reference, TestEncod
   for (size_t i = 0; i < material_of_pixel.size(); ++i) {
     if (material_of_pixel[i] != material) masked.rgba[i * 4 + 3] = 0;
   }
-  return compare_images(test, masked, encoding);
+  // Both coverages: the covered region is this material's pixels the test covers too (the
+  // mismatch counts, over other materials' pixels, mean nothing here and are not judged).
+  return compare_images(test, masked, encoding, TestEncoding::kFloat, Coverage::kBoth);
 }
 
 size_t non_finite_pixels(const Comparison& c) {

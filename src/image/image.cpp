@@ -165,6 +165,11 @@ bool image_file_is_8bit(const std::filesystem::path& path) {
   return in.spec().is_8bit;
 }
 
+bool image_file_has_alpha(const std::filesystem::path& path) {
+  CheckedInput in(path);
+  return in.spec().alpha_channel >= 0 && in.spec().alpha_channel < in.spec().channels;
+}
+
 void flip_vertically(Image& image) {
   const size_t row = static_cast<size_t>(image.width) * 4;
   for (int y = 0; y < image.height / 2; ++y) {

@@ -69,6 +69,8 @@ Image read_image(const std::filesystem::path& path, ImageFileFormat& format);
 // Whether the file stores 8-bit samples (PNG) rather than float or half (EXR); the same checks
 // and errors as read_image.
 bool image_file_is_8bit(const std::filesystem::path& path);
+// Whether the file has an alpha channel (an EXR from `ltrender render`: its coverage).
+bool image_file_has_alpha(const std::filesystem::path& path);
 
 // Flip rows: GL reads bottom row first.
 void flip_vertically(Image& image);

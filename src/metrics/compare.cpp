@@ -147,8 +147,14 @@ double channel_error_lsb(float test, float reference, TestEncoding encoding,
   return std::abs(clamp01(test) - r) * 255.0;
 }
 
+double CoverageMismatch::percent() const {
+  if (reference_covered == 0) return reference_only + test_only > 0 ? 100.0 : 0.0;
+  return 100.0 * static_cast<double>(reference_only + test_only) /
+         static_cast<double>(reference_covered);
+}
+
 Comparison compare_images(const Image& test, const Image& reference, TestEncoding encoding,
-                          TestEncoding reference_encoding) {
+                          TestEncoding reference_encoding, Coverage coverage) {
   LT_CHECK(test.width == reference.width && test.height == reference.height,
            "test " + size_string(test) + " vs reference " + size_string(reference));
   LT_CHECK(test.rgba.size() == test.pixel_count() * 4 &&
@@ -158,6 +164,7 @@ Comparison compare_images(const Image& test, const Image& reference, TestEncodin
   out.width = test.width;
   out.height = test.height;
   out.encoding = encoding;
+  out.coverage = coverage;
   out.pixel_error_lsb.assign(test.pixel_count(), 0.0);
   out.covered_mask.assign(test.pixel_count(), false);
 
@@ -169,7 +176,16 @@ Comparison compare_images(const Image& test, const Image& reference, TestEncodin
       const float* r = reference.at(x, y);
       LT_CHECK(pixel_is_finite(r),
                "non-finite reference value at " + std::to_string(x) + "," + std::to_string(y));
-      out.covered_mask[i] = is_covered(r[3]);
+      const bool by_reference = is_covered(r[3]);
+      out.covered_mask[i] = by_reference;
+      if (coverage == Coverage::kBoth) {
+        // A NaN alpha is no coverage; the pixel is counted non-finite below anyway.
+        const bool by_test = is_covered(o[3]);
+        out.mismatch.reference_covered += by_reference;
+        out.mismatch.reference_only += by_reference && !by_test;
+        out.mismatch.test_only += by_test && !by_reference;
+        out.covered_mask[i] = by_reference && by_test;
+      }
       if (!pixel_is_finite(o)) {
         for (int c = 0; c < 4; ++c) out.test_non_finite += std::isfinite(o[c]) ? 0 : 1;
         ++out.test_non_finite_pixels;
@@ -227,6 +243,15 @@ Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance
                         " LSB (max " + lsb_string(stats.max_lsb) + " LSB at " +
                         location_string(stats) + ")");
   }
+  if (comparison.coverage == Coverage::kBoth &&
+      comparison.mismatch.percent() > tolerance.max_mismatch_percent) {
+    const CoverageMismatch& m = comparison.mismatch;
+    v.reasons.push_back("coverage differs on " + format("%g", m.percent()) +
+                        "% of the reference's covered pixels (" + std::to_string(m.reference_only) +
+                        " covered only by the reference, " + std::to_string(m.test_only) +
+                        " only by the test), allowed " +
+                        format("%g", tolerance.max_mismatch_percent) + "%");
+  }
   v.pass = v.reasons.empty();
   return v;
 }
@@ -265,7 +290,9 @@ Comparison compare_files(const std::filesystem::path& test,
       }
     }
   }
-  return compare_images(test_image, reference_image, encoding, reference_encoding);
+  const bool both = image_file_has_alpha(test) && image_file_has_alpha(reference);
+  return compare_images(test_image, reference_image, encoding, reference_encoding,
+                        both ? Coverage::kBoth : Coverage::kReference);
 }
 
 nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& tolerance,
@@ -277,12 +304,19 @@ nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& to
       {"covered", stats_to_json(comparison.covered)},
       {"image", stats_to_json(comparison.image)},
       {"test_non_finite", comparison.test_non_finite},
+      {"coverage_mismatch",
+       comparison.coverage == Coverage::kBoth
+           ? nlohmann::ordered_json{{"reference_only", comparison.mismatch.reference_only},
+                                    {"test_only", comparison.mismatch.test_only},
+                                    {"percent", comparison.mismatch.percent()}}
+           : nlohmann::ordered_json()},
       {"thresholds",
        {
            {"fail_lsb", tolerance.fail_lsb},
            {"fail_percent", tolerance.fail_percent},
            {"hard_fail_lsb", number_or_null(tolerance.hard_fail_lsb)},
            {"region", to_string(tolerance.region)},
+           {"max_mismatch_percent", tolerance.max_mismatch_percent},
        }},
       {"failing_pixels", verdict.failing_pixels},
       {"failing_percent", verdict.failing_percent},
@@ -305,7 +339,7 @@ std::string to_table(const Comparison& comparison, const Tolerance& tolerance,
   out += std::to_string(comparison.width) + "x" + std::to_string(comparison.height) + ", test " +
          (comparison.encoding == TestEncoding::kUnorm8 ? "8-bit" : "float (unquantised)") +
          ", error in LSB of 8 bits\n";
-  row("", "covered", "image");
+  row("", comparison.coverage == Coverage::kBoth ? "both cover" : "covered", "image");
   row("pixels", std::to_string(c.pixels), std::to_string(a.pixels));
   row("max", lsb_string(c.max_lsb), lsb_string(a.max_lsb));
   row("  at x,y ch", location_string(c), location_string(a));
@@ -316,6 +350,12 @@ std::string to_table(const Comparison& comparison, const Tolerance& tolerance,
   row("% > 1 LSB", fixed(c.percent_over_1_lsb, 3), fixed(a.percent_over_1_lsb, 3));
   row("% > 4 LSB", fixed(c.percent_over_4_lsb, 3), fixed(a.percent_over_4_lsb, 3));
   out += "non-finite test values: " + std::to_string(comparison.test_non_finite) + "\n";
+  if (comparison.coverage == Coverage::kBoth) {
+    const CoverageMismatch& m = comparison.mismatch;
+    out += "coverage: " + std::to_string(m.reference_only) + " pixels only the reference covers, " +
+           std::to_string(m.test_only) + " only the test (" + fixed(m.percent(), 3) +
+           "% of the reference's; allowed " + format("%g", tolerance.max_mismatch_percent) + "%)\n";
+  }
   out += std::string("thresholds (") + to_string(tolerance.region) + " pixels): fail if > " +
          format("%g", tolerance.fail_percent) + "% have error > " +
          format("%g", tolerance.fail_lsb) + " LSB" +

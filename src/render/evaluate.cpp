@@ -21,7 +21,8 @@ TestEncoding test_encoding(const Path& path) {
 }
 
 Comparison compare_with_reference(Path& path, const Image& reference) {
-  return compare_images(path.result(), reference, test_encoding(path));
+  return compare_images(path.result(), reference, test_encoding(path), TestEncoding::kFloat,
+                        Coverage::kBoth);
 }
 
 Comparison compare_with_golden(const Image& render, Image golden) {

@@ -329,7 +329,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         row.height = img.height;
         write_image(o.out_dir / row.image, img);
         if (p->name != flat.name) {
-          const Comparison cmp = compare_images(img, ref_image, test_encoding(*path));
+          const Comparison cmp = compare_images(img, ref_image, test_encoding(*path),
+                                                TestEncoding::kFloat, Coverage::kBoth);
           row.error = cmp.covered;
           row.heatmap = "images/" + base + "__heatmap.png";
           write_image(o.out_dir / row.heatmap, error_heatmap(cmp));

@@ -9,23 +9,24 @@ namespace lt::gx {
 
 namespace {
 
-// GX_NEVER .. GX_ALWAYS (0..7) [OGC gx.h L409-416]; the field is 3 bits [OGC gx.c L4042].
-bool alpha_compare(u8 comp, u8 alpha, u8 ref) {
+// GX_NEVER .. GX_ALWAYS (0..7) [OGC gx.h L409-416]: the alpha test's and the z compare's eight
+// relations of a value to its reference (3-bit fields [OGC gx.c L4042, GX_SetZMode]).
+bool compare_values(u8 comp, u32 value, u32 reference) {
   switch (comp & 7) {
     case 0:
       return false;
     case 1:
-      return alpha < ref;
+      return value < reference;
     case 2:
-      return alpha == ref;
+      return value == reference;
     case 3:
-      return alpha <= ref;
+      return value <= reference;
     case 4:
-      return alpha > ref;
+      return value > reference;
     case 5:
-      return alpha != ref;
+      return value != reference;
     case 6:
-      return alpha >= ref;
+      return value >= reference;
     default:
       return true;
   }
@@ -134,6 +135,19 @@ u8 logic_op(u8 op, u8 s, u8 d) {
 
 }  // namespace
 
+void Efb::clear(int w, int h, const Color8& clear_color, u32 clear_z) {
+  width = w;
+  height = h;
+  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  color.assign(n, clear_color);
+  depth.assign(n, clear_z & 0xffffff);
+  covered.assign(n, 0);
+}
+
+bool z_compare(u8 func, u32 z, u32 depth) {
+  return compare_values(func, z, depth);  // on 32-bit unsigned values [DSW ZCompare]
+}
+
 Color8 tev_to_efb(const ColorS10& tev) {
   Color8 out;
   for (int i = 0; i < 4; ++i) out[i] = static_cast<u8>(tev[i] & 255);
@@ -142,8 +156,8 @@ Color8 tev_to_efb(const ColorS10& tev) {
 
 bool alpha_test(const AlphaCompare& compare, u8 alpha) {
   // [DSW Tev.cpp TevAlphaTest]; op AND, OR, XOR, XNOR [OGC gx.h L682-685], 2 bits [OGC gx.c L4042].
-  const bool c0 = alpha_compare(compare.comp0, alpha, compare.ref0);
-  const bool c1 = alpha_compare(compare.comp1, alpha, compare.ref1);
+  const bool c0 = compare_values(compare.comp0, alpha, compare.ref0);
+  const bool c1 = compare_values(compare.comp1, alpha, compare.ref1);
   switch (compare.op & 3) {
     case 0:
       return c0 && c1;

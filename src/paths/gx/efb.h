@@ -2,9 +2,31 @@
 // what earlier passes left, and the store of the TEV's output (gx-hardware.md §1.5).
 #pragma once
 
+#include <vector>
+
 #include "paths/gx/gx_types.h"
 
 namespace lt::gx {
+
+// The EFB of one frame as Dolphin's software renderer keeps it for RGB8_Z24 [DSW EfbInterface.cpp
+// GetColorOffset, GetDepthOffset, SetPixelDepth]: per pixel 24 bits of colour (alpha reads 255,
+// `GetPixelColor`) and 24 bits of depth, rows top first as GX numbers them; and, for the image's
+// alpha, which pixels some triangle covered (passed the edge and scissor tests, whatever z and
+// the alpha test then did).
+struct Efb {
+  int width = 0, height = 0;
+  std::vector<Color8> color;
+  std::vector<u32> depth;
+  std::vector<u8> covered;
+  // The frame's clearing copy: every pixel the clear colour and z (GX_SetCopyClear [OGC gx.c
+  // L1891-1903]), nothing covered.
+  void clear(int w, int h, const Color8& clear_color, u32 clear_z);
+};
+
+// GX_SetZMode's compare GX_NEVER .. GX_ALWAYS (0..7) of the incoming z against the stored
+// depth [DSW EfbInterface.cpp ZCompare]; both are 24-bit (an incoming z of Dolphin's INT_MIN,
+// from a NaN, is 0x80000000 and compares as that).
+bool z_compare(u8 func, u32 z, u32 depth);
 
 // GX_SetAlphaCompare(comp0, ref0, op, comp1, ref1) [OGC gx.h L3106]. GX_Init: ALWAYS/AND/ALWAYS.
 struct AlphaCompare {

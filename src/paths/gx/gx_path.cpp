@@ -6,7 +6,6 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "image/image.h"
-#include "paths/gx/attribute_rasteriser.h"
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
@@ -16,6 +15,8 @@
 #include "paths/gx/program/parser.h"
 #include "paths/gx/program/printer.h"
 #include "paths/gx/program_check.h"
+#include "paths/gx/setup_unit.h"
+#include "paths/gx/transform_unit.h"
 #include "paths/gx/vertex_stage.h"
 #include "paths/gx/xfb_copy.h"
 
@@ -25,6 +26,20 @@ int ScenePrograms::passes() const {
   size_t n = 0;
   for (const auto& m : by_material) n = std::max(n, m.size());
   return static_cast<int>(n);
+}
+
+std::vector<MaterialDraw> ScenePrograms::draws(const Scene& scene) const {
+  std::vector<MaterialDraw> out;
+  for (int pass = 0; pass < passes(); ++pass) {
+    for (size_t m = 0; m < by_material.size(); ++m) {
+      if (static_cast<size_t>(pass) >= by_material[m].size()) continue;
+      MaterialDraw d{pass, m, {}};
+      for (size_t i = 0; i < scene.objects.size(); ++i)
+        if (static_cast<size_t>(scene.objects[i].material) == m) d.objects.push_back(i);
+      if (!d.objects.empty()) out.push_back(std::move(d));
+    }
+  }
+  return out;
 }
 
 ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
@@ -71,26 +86,37 @@ std::string pass_source(const ProgramFile& file, const std::string& function) {
   return print_program(one);
 }
 
+// Triangles set up at a time before their pixels are drawn: bounds the memory of a large mesh
+// (a Triangle is ~450 bytes) while keeping the threads' share of each batch large.
+constexpr size_t kTriangleBatch = 4096;
+
 class GxPath final : public Path {
  public:
   GxPath(const PathContext& ctx, const GxVariant& variant)
       : ctx_(ctx),
         variant_(variant),
         programs_(scene_programs_for(ctx.scene, variant_, ctx.options.program_file)),
-        view_(SceneView::of(ctx.scene)) {
+        view_(SceneView::of(ctx.scene)),
+        draws_(programs_.draws(ctx.scene)) {
     const Scene& s = ctx.scene;
     if (variant_.out == GxVariant::Output::Xfb) {
       const std::string why = xfb_size_refusal(ctx.width, ctx.height);
       if (!why.empty()) throw InputError("--variant", to_string(variant_), "gx: " + why);
     }
-    int texgens = 0;
-    for (const auto& passes : programs_.by_material) {
-      for (const PassProgram& p : passes) texgens = std::max(texgens, p.state.texgen.num_texgens);
-    }
-    rasteriser_ = std::make_unique<AttributeRasteriser>(ctx, texgens);
     for (const Material& m : s.materials)
       luts_.push_back(lobe_lut(m, variant_.lut_size));  // GX_TEXMAP0's fallback (gx.md §1)
-    for (const SceneObject& o : s.objects) streams_.push_back(make_vertex_stream(s, o, view_));
+    // The camera as the FIFO log loads it (fifo/xf_registers.h write_view_xf), so every vertex
+    // starts from the clip-space position Dolphin computes.
+    const ViewTransform view =
+        view_transform(glm::mat3(view_.view), s.camera, {ctx.width, ctx.height});
+    viewport_ = view.viewport;
+    scissor_ = {0, 0, ctx.width, ctx.height};
+    for (const SceneObject& o : s.objects) {
+      streams_.push_back(make_vertex_stream(s, o, view_));
+      std::vector<glm::vec4> clip;
+      for (const glm::vec3& p : streams_.back().position) clip.push_back(clip_position(view, p));
+      clip_.push_back(std::move(clip));
+    }
     // Per pass and material, the state and its textures (resolved once: the scene is static).
     pixel_programs_.resize(static_cast<size_t>(programs_.passes()));
     for (size_t pass = 0; pass < pixel_programs_.size(); ++pass) {
@@ -112,56 +138,60 @@ class GxPath final : public Path {
 
   void frame() override {
     const Scene& s = ctx_.scene;
-    efb_.assign(static_cast<size_t>(ctx_.width) * ctx_.height, background_);
+    // The frame's clearing copy: the background and the far z (GX_SetCopyClear's 0xffffff).
+    efb_.clear(ctx_.width, ctx_.height, background_, 0xffffff);
     vertex_seconds_ = pixel_seconds_ = 0;
     stage_pixels_ = 0;
     light_vertices_ = 0;
-    std::vector<VertexOutputs> outputs(s.objects.size());
-    std::vector<const VertexOutputs*> drawn(s.objects.size());
-    // An object its material does not draw in this pass still gives depth, as the EFB keeps it
-    // from the material's last pass: under that pass's cull mode.
-    std::vector<u8> cull(s.objects.size(), kCullNone);
-    for (size_t pass = 0; pass < pixel_programs_.size(); ++pass) {
-      auto t0 = SteadyClock::now();
-      for (size_t i = 0; i < s.objects.size(); ++i) {
-        const PixelProgram& pp = pixel_programs_[pass][static_cast<size_t>(s.objects[i].material)];
-        drawn[i] = nullptr;
-        const auto& passes = programs_.by_material[static_cast<size_t>(s.objects[i].material)];
-        if (!passes.empty()) cull[i] = passes[std::min(pass, passes.size() - 1)].state.cull_mode;
-        if (!pp.state) continue;
+    triangle_counts_ = {};
+    VertexOutputs outputs;
+    std::vector<RasterVertex> vertices;
+    std::vector<Triangle> triangles;
+    for (const MaterialDraw& d : draws_) {
+      const PixelProgram& pp = pixel_programs_[static_cast<size_t>(d.pass)][d.material];
+      const GxState& state = *pp.state;
+      const auto scales = texcoord_scales(state, pp.textures);
+      for (size_t i : d.objects) {
+        auto t0 = SteadyClock::now();
         // GX_VA_TEX0 carries the t of light `pass` (a plain one-pass program gets light 0's).
-        run_vertex_stage(*pp.state, streams_[i], pass,
+        run_vertex_stage(state, streams_[i], static_cast<size_t>(d.pass),
                          variant_.round_each_light ? LightRounding::RoundEachLight
                                                    : LightRounding::SumThenTruncate,
-                         outputs[i]);
-        drawn[i] = &outputs[i];
-        light_vertices_ += streams_[i].position.size() * lights_in(*pp.state);
+                         outputs);
+        light_vertices_ += streams_[i].position.size() * lights_in(state);
+        make_raster_vertices(clip_[i], outputs, scales, vertices);
+        const auto& mesh_triangles = s.objects[i].mesh.triangles;
+        vertex_seconds_ += seconds_since(t0);
+        for (size_t first = 0; first < mesh_triangles.size(); first += kTriangleBatch) {
+          t0 = SteadyClock::now();
+          triangles.clear();
+          setup_triangles(vertices, mesh_triangles, first,
+                          std::min(mesh_triangles.size(), first + kTriangleBatch), state, viewport_,
+                          scissor_, triangles, triangle_counts_);
+          vertex_seconds_ += seconds_since(t0);
+          t0 = SteadyClock::now();
+          const PixelCounts counts = draw_triangles(triangles, pp, variant_.round_colors, efb_);
+          stage_pixels_ += counts.stage_pixels;
+          pixel_seconds_ += seconds_since(t0);
+        }
       }
-      vertex_seconds_ += seconds_since(t0);
-      rasteriser_->rasterise(drawn, cull);
-      t0 = SteadyClock::now();
-      stage_pixels_ += shade_pass(*rasteriser_, pixel_programs_[pass], efb_, variant_.round_colors);
-      pixel_seconds_ += seconds_since(t0);
     }
-    // No material draws anything: still rasterise once, for the coverage of result().
-    if (pixel_programs_.empty()) rasteriser_->rasterise(drawn, cull);
   }
 
   // The EFB (RGB8), or with out=xfb what the TV shows of it (xfb_copy.h); alpha = coverage (the
-  // copy leaves it alone). Top row first, as the image and GX number rows; efb_ is bottom-up.
+  // copy leaves it alone). Top row first, as the image and GX number rows.
   Image result() override {
     const int w = ctx_.width, h = ctx_.height;
-    std::vector<Color8> shown(efb_.size());
-    for (int y = 0; y < h; ++y)
-      std::copy_n(&efb_[static_cast<size_t>(h - 1 - y) * w], w, &shown[static_cast<size_t>(y) * w]);
+    std::vector<Color8> shown = efb_.color;
     if (variant_.out == GxVariant::Output::Xfb) shown = efb_as_displayed(shown, w, h, copy_);
     Image img(w, h);
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
-        const Color8& c = shown[static_cast<size_t>(y) * w + x];
+        const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+        const Color8& c = shown[i];
         float* out = img.at(x, y);
         for (int ch = 0; ch < 3; ++ch) out[ch] = c[ch] / 255.0f;
-        out[3] = rasteriser_->covered(rasteriser_->index(x, h - 1 - y)) ? 1.0f : 0.0f;
+        out[3] = efb_.covered[i] ? 1.0f : 0.0f;
       }
     }
     return img;
@@ -198,13 +228,14 @@ class GxPath final : public Path {
       }
     }
     out.push_back(
-        {"XF lighting and texgen per vertex on the CPU (float), streamed each pass", "cpu", ""});
-    out.push_back({rasteriser_->texgens() == 0
-                       ? "rasteriser: OSMesa, 3 x RGBA32F (channel colours, coverage)"
-                       : "rasteriser: OSMesa, " + std::to_string(3 + rasteriser_->texgens()) +
-                             " x RGBA32F (channel colours, coverage, texcoords)",
-                   "glsl-vertex", rasteriser_->program().vertex_source()});
-    out.push_back({"texture unit, TEV and EFB per pixel on the CPU (integer)", "cpu", ""});
+        {"XF lighting, texgen and position transform per vertex on the CPU (float), each pass",
+         "cpu", ""});
+    out.push_back(
+        {"setup unit and rasteriser on the CPU: clipping, culling, 1/16-pixel edges and "
+         "float attribute planes, as Dolphin's software renderer",
+         "cpu", ""});
+    out.push_back(
+        {"depth test, texture unit, TEV and EFB per pixel on the CPU (integer)", "cpu", ""});
     return out;
   }
 
@@ -249,11 +280,15 @@ class GxPath final : public Path {
   GxVariant variant_;
   ScenePrograms programs_;
   SceneView view_;
-  std::unique_ptr<AttributeRasteriser> rasteriser_;
+  std::vector<MaterialDraw> draws_;
+  Viewport viewport_;
+  Scissor scissor_;
   std::vector<TextureObject> luts_;
   std::vector<VertexStream> streams_;
+  std::vector<std::vector<glm::vec4>> clip_;               // per object, per vertex
   std::vector<std::vector<PixelProgram>> pixel_programs_;  // [pass][material]
-  std::vector<Color8> efb_;
+  Efb efb_;
+  TriangleCounts triangle_counts_;
   // The copy to the XFB: GX_Init's, which the exported program never changes.
   EfbCopyState copy_;
   Color8 background_;

@@ -1,8 +1,10 @@
-// The gx path: the Wii's fixed-function pipeline in its own integer arithmetic (gx.md). Per pass:
-// the XF lights and texgens every vertex on the CPU (vertex_stage), OSMesa interpolates its
-// outputs (attribute_rasteriser), and every covered pixel runs the texture unit, the TEV and the
-// EFB blend on the CPU (pixel_stage). The programs are libogc calls: generated per material and
-// pass (generator), or read from a file with `--program` (program/).
+// The gx path: the Wii's fixed-function pipeline in its own arithmetic (gx.md), all on the CPU,
+// as Dolphin's software renderer models it. Per draw, in the console's order: the XF lights and
+// texgens every vertex (vertex_stage) and transforms its position (transform_unit), the setup
+// unit rejects, culls and clips each triangle (setup_unit, clipper) and sets it up
+// (rasteriser), and every pixel it covers runs the depth test, the texture unit, the TEV and the
+// EFB blend (pixel_stage, efb). The programs are libogc calls: generated per material and pass
+// (generator), or read from a file with `--program` (program/).
 #pragma once
 
 #include <map>
@@ -17,6 +19,13 @@ namespace lt::gx {
 
 // The programs a scene draws with: generated for `variant`, or read from `program_file` when it
 // is not empty; checked against what the emulator models (program_check.h).
+// One draw of a frame: the objects of one material in one pass, with that pass's program.
+struct MaterialDraw {
+  int pass = 0;
+  size_t material = 0;
+  std::vector<size_t> objects;  // in scene order
+};
+
 struct ScenePrograms {
   ProgramFile file;
   std::map<std::string, std::string> notes;  // generated programs: per pass function
@@ -27,6 +36,11 @@ struct ScenePrograms {
   std::vector<std::pair<std::string, std::string>> material_names;
 
   int passes() const;  // the most any used material needs
+  // The frame's draws in the order the console receives them: pass by pass, every material that
+  // has that pass and draws some object, its objects in scene order. The FIFO log encodes this
+  // order (fifo/frame_recording.h) and the emulator draws it: the EFB's depth and blend make the
+  // order part of the image.
+  std::vector<MaterialDraw> draws(const Scene& scene) const;
 };
 ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
                                  const std::string& program_file);

@@ -22,4 +22,18 @@ GxState::GxState() {
   // GX_AF_NONE) for both channels: ChannelControl's defaults.
 }
 
+std::array<TexCoordScale, kMaxTexGens> texcoord_scales(
+    const GxState& state, const std::array<const TextureObject*, kMaxTexMaps>& textures) {
+  std::array<TexCoordScale, kMaxTexGens> out{};
+  for (int st = 0; st < state.tev.num_stages; ++st) {
+    const TevStage& stage = state.tev.stages[static_cast<size_t>(st)];
+    if (stage.texmap == kTexMapNull) continue;
+    const u8 coord = stage.texcoord == kTexCoordNull ? 0 : stage.texcoord;
+    const TextureObject* t = textures[stage.texmap & 7];
+    if (coord >= kMaxTexGens || !t) continue;
+    out[coord] = {static_cast<u32>(t->width), static_cast<u32>(t->height), t->wrap_s, t->wrap_t};
+  }
+  return out;
+}
+
 }  // namespace lt::gx

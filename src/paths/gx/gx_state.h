@@ -80,4 +80,19 @@ struct GxState {
   GxState();  // GX_Init's state
 };
 
+// The setup unit's size of each texture coordinate (SU_SSIZE / SU_TSIZE, BP 0x30 + 2n): s and t
+// are multiplied by it per vertex, before rasterisation [DSW TransformUnit.cpp
+// TransformTexCoord, "*= (scale_minus_1 + 1)"]. libogc writes it at the next draw from the
+// texture each TEV stage fetches with that coordinate, stage by stage, so the last stage wins
+// [OGC gx.c __GX_SetSUTexRegs L869-921]. A stage with GX_TEXCOORDNULL and a map reads texture
+// coordinate 0 (GX_SetTevOrder programs 0 [OGC gx.c GX_SetTevOrder]) and sets its size. A
+// coordinate no stage fetches with keeps scale 0 here (its register is not written; nothing
+// samples with it). `textures[m]` is what map m holds this pass.
+struct TexCoordScale {
+  u32 s = 0, t = 0;           // texture width and height; 0: not written this pass
+  u8 wrap_s = 0, wrap_t = 0;  // the same texture's wrap modes (the register's bit 16)
+};
+std::array<TexCoordScale, kMaxTexGens> texcoord_scales(
+    const GxState& state, const std::array<const TextureObject*, kMaxTexMaps>& textures);
+
 }  // namespace lt::gx

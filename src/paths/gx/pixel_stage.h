@@ -1,13 +1,16 @@
-// The per-pixel half of the GX pipeline, on the CPU: the rasterised channel colours truncated to
-// 8 bits, each stage's texture fetch (fixed-point coordinates, 7-bit bilinear), the TEV, the
-// alpha test and the EFB blend (gx-hardware.md §5.3 steps 2-5).
+// The per-pixel half of the GX pipeline, on the CPU, for the triangles of one draw in the order
+// the console draws them (gx-hardware.md §5.3): for every pixel a triangle covers, the early
+// depth test, the texture fetches, the TEV, the alpha test and the EFB blend, in the order of
+// Dolphin's software renderer [DSW Rasterizer.cpp Draw, Tev.cpp Tev::Draw, EfbInterface.cpp
+// BlendTev].
 #pragma once
 
 #include <array>
 #include <vector>
 
-#include "paths/gx/attribute_rasteriser.h"
+#include "paths/gx/efb.h"
 #include "paths/gx/gx_state.h"
+#include "paths/gx/rasteriser.h"
 
 namespace lt::gx {
 
@@ -18,10 +21,21 @@ struct PixelProgram {
   std::array<const TextureObject*, kMaxTexMaps> textures{};
 };
 
-// Runs one pass over every covered pixel whose material has a program (by_material[m] null:
-// that material draws nothing in this pass) and blends the result into `efb` (row-major, bottom
-// row first, like the rasteriser's targets). Returns the TEV stage-pixels run.
-size_t shade_pass(const AttributeRasteriser& raster, const std::vector<PixelProgram>& by_material,
-                  std::vector<Color8>& efb, bool round_colors);
+// What the pixels of a draw did, for the frame's figures and its warnings.
+struct PixelCounts {
+  size_t covered = 0;       // pixels the triangles covered
+  size_t z_failed = 0;      // of those, failed the depth test
+  size_t alpha_failed = 0;  // passed it, failed the alpha test
+  size_t written = 0;       // reached the EFB
+  size_t stage_pixels = 0;  // TEV stages run
+  void add(const PixelCounts& o);
+};
+
+// Draws `triangles` (one draw's, in order) with `program` into `efb`. Rows are shared out over
+// worker threads in bands; each band draws every triangle that reaches it, in order, so each
+// pixel sees the triangles in the console's order whatever the threads do.
+// `round_colors`: the :colors=round variant (rasteriser.h).
+PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelProgram& program,
+                           bool round_colors, Efb& efb);
 
 }  // namespace lt::gx

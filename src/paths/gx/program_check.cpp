@@ -1,7 +1,6 @@
 #include "paths/gx/program_check.h"
 
 #include "core/error.h"
-#include "paths/gx/attribute_rasteriser.h"
 
 namespace lt::gx {
 
@@ -22,10 +21,6 @@ void check_renderable(const PassProgram& p, const std::string& file, bool has_lu
     fail(std::to_string(st.lighting.num_channels) + " colour channels: the hardware has 2");
   if (st.texgen.num_texgens > kMaxTexGens)
     fail(std::to_string(st.texgen.num_texgens) + " texgens: the hardware has 8");
-  if (st.texgen.num_texgens > kRasterisedTexGens)
-    fail("GX_SetNumTexGens(" + std::to_string(st.texgen.num_texgens) +
-         "): the emulator rasterises at most " + std::to_string(kRasterisedTexGens) +
-         " texture coordinates");
   // The XF is told only how many texture coordinates a vertex brings (libogc's __GX_XfVtxSpecs
   // writes their count to XF 0x1008 [OGC gx.c]), not which: a GX_VA_TEXn above a gap would
   // arrive as a lower one. Rather than guess the console's reading, a gap is refused.

@@ -212,25 +212,6 @@ std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u
   return row_major;
 }
 
-s32 to_fixed_texcoord(float s, int size) {
-  // Float, as both Dolphin paths: the XF output is scaled by the texture size in float [DSW
-  // TransformUnit.cpp TransformTexCoord, `*= scale_minus_1 + 1`] and the rasteriser converts
-  // with (s32)(uv * 128) [DSW Rasterizer.cpp Draw, "TEV stores UVs as s17.7"]; the shader path
-  // computes int(uv * (size * 128)) [DHW PixelShaderGen `fixpoint_uv`, PR#2075]. The * 128 is
-  // exact in float, so both equal trunc(fl(s * size) * 128).
-  const float scaled = s * static_cast<float>(size) * 128.0f;
-  // The field is 24-bit signed [DSW Tev.h TextureCoordinateType `s : 24`]. Dolphin wraps an
-  // out-of-range value (bit-field store; its shader says "TODO: S24 overflows here?"); no
-  // hardware test says what the console does. Saturation is this path's choice: it keeps huge
-  // coordinates on the texture's edge texel under CLAMP and makes float-to-int defined. NaN has
-  // no coordinate: 0.
-  constexpr float kMax = 8388607.0f, kMin = -8388608.0f;  // 2^23 - 1 and -2^23, exact in float
-  if (std::isnan(scaled)) return 0;
-  if (scaled >= kMax) return 8388607;
-  if (scaled <= kMin) return -8388608;
-  return static_cast<s32>(scaled);  // truncation toward zero, as (s32) in DSW
-}
-
 Color8 texel_at(const TextureObject& texture, int x, int y) {
   LT_CHECK(x >= 0 && x < texture.width && y >= 0 && y < texture.height, "texel out of range");
   LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),

@@ -40,12 +40,7 @@ size_t tiled_size(u8 format, int width, int height);
 std::vector<u8> to_tiles(u8 format, int width, int height, const std::vector<u8>& row_major);
 std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u8>& tiles);
 
-// s (a float texture coordinate, 0..1 across the texture) to the rasteriser's fixed point:
-// trunc(s * size * 128), saturated to the signed 24-bit field (s17.7) [DSW Rasterizer.cpp Draw;
-// Tev.h TextureCoordinateType].
-s32 to_fixed_texcoord(float s, int size);
-
-// The filtered texel at fixed-point (u, v): bilinear with 7-bit weights and truncation, or
+// The filtered texel at fixed-point (u, v) (s17.7, the rasteriser's: rasteriser.h raster_texcoord): bilinear with 7-bit weights and truncation, or
 // nearest (u >> 7), with each tap's index wrapped [DSW TextureSampler.cpp SampleMip, WrapCoord].
 // I8: (i, i, i, i); IA8: (i, i, i, a); RGB565: (r, g, b, 255) expanded to 8 bits by bit
 // replication; RGBA8: (r, g, b, a). Every component is filtered on its own.

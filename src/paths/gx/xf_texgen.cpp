@@ -2,6 +2,7 @@
 // [DSW TransformUnit.cpp TransformTexCoordRegular, MultiplyVec3Mat24/34, MultiplyVec2Mat24/34].
 #include "paths/gx/xf_texgen.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -66,10 +67,14 @@ glm::vec3 generate_texcoord(const XfTexGenState& state, int index, const TexGenI
   const float s = row_dot(m[0], src);
   const float t = row_dot(m[1], src);
   // MTX2x4: q = 1. MTX3x4: q is the third row; the divide by q happens after interpolation, in
-  // the rasteriser [DSW Rasterizer.cpp], so it is not done here. DSW's special case for q == 0
-  // at the vertex (s, t halved and clamped to [-1, 1]) is not modelled: it is a Dolphin
-  // observation ("appears to have a special case") outside this unit's contract.
+  // the rasteriser [DSW Rasterizer.cpp BuildBlock]. GX_Init's post-transform is the identity
+  // (GX_DTTIDENTITY), which leaves finite values as they are.
   const float q = gen.type == kMtx2x4 ? 1.0f : row_dot(m[2], src);
+  // "When q is 0, the GameCube appears to have a special case" [DSW TransformTexCoordRegular]:
+  // s and t are halved and clamped to [-1, 1] at the vertex (devkitPro's neheGX Lesson08 shows
+  // it, Dolphin's comment says).
+  if (q == 0.0f)
+    return glm::vec3(std::clamp(s / 2.0f, -1.0f, 1.0f), std::clamp(t / 2.0f, -1.0f, 1.0f), q);
   return glm::vec3(s, t, q);
 }
 

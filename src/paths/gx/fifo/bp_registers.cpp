@@ -1,5 +1,6 @@
 #include "paths/gx/fifo/bp_registers.h"
 
+#include "paths/gx/clipper.h"
 #include "paths/gx/fifo/display_copy.h"
 
 namespace lt::gx::fifo {
@@ -51,11 +52,10 @@ constexpr u32 kTmemOdd[kMaxTexMaps] = {0x80000, 0x10000, 0xA0000, 0x30000,
 // cm2hw = {0, 2, 1, 3}, GX_SetNumIndStages bits 16-18 = 0, GX_SetCoPlanar bit 19 = 0,
 // GX_SetPixelFmt bit 9 multisampling = 0 for RGB8_Z24] [DHW BPMemory.h GenMode].
 u32 gen_mode(const GxState& s) {
-  static constexpr u8 kCullToHardware[4] = {0, 2, 1, 3};
   return place(static_cast<u32>(s.texgen.num_texgens), 0, 4) |
          place(static_cast<u32>(s.lighting.num_channels), 4, 3) |
          place(static_cast<u32>(s.tev.num_stages - 1), 10, 4) |
-         place(kCullToHardware[s.cull_mode & 3], 14, 2);
+         place(hardware_cull_mode(s.cull_mode), 14, 2);
 }
 
 u32 tev_order(const TevState& tev, int pair) {
@@ -180,7 +180,9 @@ void write_pass_bp(CommandStream& out, const GxState& s,
   // Texture maps: GX_LoadTexObj's six registers for every map that holds a texture, then the
   // setup unit's sizes of each texcoord an enabled stage fetches a map with (libogc's
   // __SetSURegs from __GX_SetSUTexRegs at the next draw: size - 1 in bits 0-15, the wrap's low
-  // bit in 16 [OGC gx.c L848-867, L869-921]), then GX_InvalidateTexAll [OGC gx.c L3605-3611].
+  // bit in 16 [OGC gx.c L848-867, L869-921]; gx_state.h texcoord_scales), then
+  // GX_InvalidateTexAll [OGC gx.c L3605-3611].
+  const auto scales = texcoord_scales(s, textures);
   for (int m = 0; m < kMaxTexMaps; ++m) {
     const TextureObject* t = textures[static_cast<size_t>(m)];
     if (!t) continue;
@@ -192,15 +194,13 @@ void write_pass_bp(CommandStream& out, const GxState& s,
     out.load_bp(bp::texture_register(bp::kTexImage2, m), r.image2);
     out.load_bp(bp::texture_register(bp::kTexImage3, m), r.image3);
   }
-  for (int st = 0; st < tev.num_stages; ++st) {
-    const TevStage& stage = tev.stages[static_cast<size_t>(st)];
-    if (stage.texmap == kTexMapNull || stage.texcoord >= kMaxTexGens) continue;
-    const TextureObject* t = textures[stage.texmap & 7];
-    if (!t) continue;
-    out.load_bp(static_cast<u8>(bp::kTexCoordSize0 + 2 * stage.texcoord),
-                place(static_cast<u32>(t->width - 1), 0, 16) | place(t->wrap_s & 1, 16, 1));
-    out.load_bp(static_cast<u8>(bp::kTexCoordSize0 + 2 * stage.texcoord + 1),
-                place(static_cast<u32>(t->height - 1), 0, 16) | place(t->wrap_t & 1, 16, 1));
+  for (u32 coord = 0; coord < kMaxTexGens; ++coord) {
+    const TexCoordScale& scale = scales[coord];
+    if (scale.s == 0) continue;
+    out.load_bp(static_cast<u8>(bp::kTexCoordSize0 + 2 * coord),
+                place(scale.s - 1, 0, 16) | place(scale.wrap_s & 1, 16, 1));
+    out.load_bp(static_cast<u8>(bp::kTexCoordSize0 + 2 * coord + 1),
+                place(scale.t - 1, 0, 16) | place(scale.wrap_t & 1, 16, 1));
   }
   out.load_bp(bp::kTextureInvalidate, 0x001000, false);
   out.load_bp(bp::kTextureInvalidate, 0x001100, false);

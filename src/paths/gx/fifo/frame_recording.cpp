@@ -147,34 +147,25 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     write_view_xf(out, glm::mat3(view.view), scene.camera, size);
     write_copy_clear(out, background);
     write_clearing_texture_copy(out, size, kClearCopyAddress);
-    for (int pass = 0; pass < programs.passes(); ++pass) {
-      for (size_t m = 0; m < scene.materials.size(); ++m) {
-        const auto& passes = programs.by_material[m];
-        if (static_cast<size_t>(pass) >= passes.size()) continue;
-        bool drawn = false;
-        for (const SceneObject& o : scene.objects) drawn |= static_cast<size_t>(o.material) == m;
-        if (!drawn) continue;
-        const GxState& state = passes[static_cast<size_t>(pass)].state;
-        std::array<const TextureObject*, kMaxTexMaps> textures{};
-        std::array<u32, kMaxTexMaps> addresses{};
-        for (size_t map = 0; map < kMaxTexMaps; ++map) {
-          const auto& t = state.textures[map];
-          textures[map] = t ? &*t : (map == 0 ? &luts[m] : nullptr);
-          if (!textures[map]) continue;
-          const auto [address, is_new] = memory.place_texture(*textures[map]);
-          addresses[map] = address;
-          if (is_new)
-            frame.updates.push_back({static_cast<u32>(out.position()), address,
-                                     kMemoryUpdateTexture, textures[map]->data});
-        }
-        write_pass_cp(out, state);
-        write_pass_xf(out, state);
-        write_pass_bp(out, state, textures, addresses);
-        for (size_t i = 0; i < scene.objects.size(); ++i) {
-          if (static_cast<size_t>(scene.objects[i].material) != m) continue;
-          draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(pass));
-        }
+    for (const MaterialDraw& d : programs.draws(scene)) {
+      const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
+      std::array<const TextureObject*, kMaxTexMaps> textures{};
+      std::array<u32, kMaxTexMaps> addresses{};
+      for (size_t map = 0; map < kMaxTexMaps; ++map) {
+        const auto& t = state.textures[map];
+        textures[map] = t ? &*t : (map == 0 ? &luts[d.material] : nullptr);
+        if (!textures[map]) continue;
+        const auto [address, is_new] = memory.place_texture(*textures[map]);
+        addresses[map] = address;
+        if (is_new)
+          frame.updates.push_back({static_cast<u32>(out.position()), address, kMemoryUpdateTexture,
+                                   textures[map]->data});
       }
+      write_pass_cp(out, state);
+      write_pass_xf(out, state);
+      write_pass_bp(out, state, textures, addresses);
+      for (size_t i : d.objects)
+        draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(d.pass));
     }
     write_display_copy(out, size, kXfbAddress);
     frame.fifo = out.bytes();

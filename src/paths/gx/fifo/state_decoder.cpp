@@ -1,5 +1,6 @@
 #include "paths/gx/fifo/state_decoder.h"
 
+#include "paths/gx/clipper.h"
 #include "paths/gx/fifo/cp_registers.h"
 
 namespace lt::gx::fifo {
@@ -50,8 +51,8 @@ DecodedPass decode_pass(const RegisterFile& r) {
   s.texgen.num_texgens = static_cast<int>(field(gen, 0, 4));
   s.lighting.num_channels = static_cast<int>(field(gen, 4, 3));
   s.tev.num_stages = static_cast<int>(field(gen, 10, 4)) + 1;
-  static constexpr u8 kHardwareToCull[4] = {kCullNone, kCullBack, kCullFront, kCullAll};
-  s.cull_mode = kHardwareToCull[field(gen, 14, 2)];
+  // libogc's swap of front and back is its own inverse.
+  s.cull_mode = hardware_cull_mode(static_cast<u8>(field(gen, 14, 2)));
   // TEV stages: orders 0x28.., combiners 0xC0 / 0xC1 + 2n, konst selects and swaps 0xF6..
   for (int st = 0; st < kMaxTevStages; ++st) {
     TevStage& stage = s.tev.stages[static_cast<size_t>(st)];

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <vector>
 
+#include "paths/gx/transform_unit.h"
+
 namespace lt::gx::fifo {
 
 namespace {
-constexpr float kZMax = 16777215.0f;  // 2^24 - 1 [OGC gx.c GX_SetViewportJitter Zfactor]
-
 void load_floats(CommandStream& out, u32 address, const std::vector<float>& values) {
   std::vector<u32> words;
   for (float v : values) words.push_back(float_bits(v));
@@ -55,40 +55,17 @@ u32 texgen_word(const TexGen& t) {
 }
 
 std::array<u32, 7> projection_words(const Camera& cam, FrameSize size) {
-  // The same double-precision matrix gl::SceneGeometry loads with glLoadMatrixf, then float.
-  const double aspect = static_cast<double>(size.width) / size.height;
-  const double n = cam.near, f = cam.far;
-  std::array<float, 6> p{};
-  u32 type = 0;  // GX_PERSPECTIVE 0, GX_ORTHOGRAPHIC 1 [OGC gx.h]
-  if (cam.projection == Camera::Projection::Perspective) {
-    const double t = std::tan(glm::radians(cam.fov_y_deg) / 2);
-    p = {static_cast<float>(1 / (aspect * t)),
-         0.0f,
-         static_cast<float>(1 / t),
-         0.0f,
-         static_cast<float>(-n / (f - n)),
-         static_cast<float>(-f * n / (f - n))};
-  } else {
-    const double h = cam.height / 2, w = h * aspect;
-    p = {static_cast<float>(1 / w),        0.0f,
-         static_cast<float>(1 / h),        0.0f,
-         static_cast<float>(-1 / (f - n)), static_cast<float>(-f / (f - n))};
-    type = 1;
-  }
+  const ViewTransform t = view_transform(glm::mat3(1.0f), cam, size);
   std::array<u32, 7> out{};
-  for (int i = 0; i < 6; ++i) out[static_cast<size_t>(i)] = float_bits(p[static_cast<size_t>(i)]);
-  out[6] = type;
+  for (size_t i = 0; i < 6; ++i) out[i] = float_bits(t.projection[i]);
+  out[6] = t.orthographic ? 1 : 0;  // GX_PERSPECTIVE 0, GX_ORTHOGRAPHIC 1 [OGC gx.h]
   return out;
 }
 
 std::array<u32, 6> viewport_words(FrameSize size) {
-  const float w = static_cast<float>(size.width), h = static_cast<float>(size.height);
-  return {float_bits(w * 0.5f),
-          float_bits(-h * 0.5f),
-          float_bits(kZMax),
-          float_bits(w * 0.5f + static_cast<float>(kScreenOffset)),
-          float_bits(h * 0.5f + static_cast<float>(kScreenOffset)),
-          float_bits(kZMax)};
+  const Viewport v = view_transform(glm::mat3(1.0f), Camera{}, size).viewport;
+  return {float_bits(v.wd),     float_bits(v.ht),     float_bits(v.z_range),
+          float_bits(v.x_orig), float_bits(v.y_orig), float_bits(v.far_z)};
 }
 
 void write_pass_xf(CommandStream& out, const GxState& s) {
@@ -117,21 +94,16 @@ void write_pass_xf(CommandStream& out, const GxState& s) {
 }
 
 void write_view_xf(CommandStream& out, const glm::mat3& r, const Camera& camera, FrameSize size) {
-  // glm is column-major: row i of the rotation is (r[0][i], r[1][i], r[2][i]).
-  std::vector<float> position, normal;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      position.push_back(r[j][i]);
-      normal.push_back(r[j][i]);
-    }
-    position.push_back(0.0f);
-  }
+  // The position and normal matrices are the same rotation: GX_LoadPosMtxImm's 3x4 rows and
+  // GX_LoadNrmMtxImm's 3x3 [OGC gx.c GX_LoadPosMtxImm, GX_LoadNrmMtxImm].
+  const ViewTransform t = view_transform(r, camera, size);
+  std::vector<float> position(t.position.begin(), t.position.end()), normal;
+  for (size_t i = 0; i < 3; ++i)
+    for (size_t j = 0; j < 3; ++j) normal.push_back(t.position[4 * i + j]);
   load_floats(out, xf::kPositionMatrices, position);
   load_floats(out, xf::kNormalMatrices, normal);
-  const auto vp = viewport_words(size);
-  out.load_xf(xf::kViewport, vp);
-  const auto pr = projection_words(camera, size);
-  out.load_xf(xf::kProjection, pr);
+  out.load_xf(xf::kViewport, viewport_words(size));
+  out.load_xf(xf::kProjection, projection_words(camera, size));
 }
 
 void write_gx_init_xf(CommandStream& out) {

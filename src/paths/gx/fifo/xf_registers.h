@@ -38,15 +38,12 @@ u32 channel_control(const ChannelControl& control);
 // (0 position, 1 normal, 5 + n GX_TG_TEXn) [DHW XFMemory.h TexMtxInfo].
 u32 texgen_word(const TexGen& texgen);
 
-// The projection the emulator's rasteriser uses (gl/scene_geometry.cpp: the scene camera at the
-// frame's aspect), in GX_LoadProjectionMtx's seven words [OGC gx.c L1797-1830]: perspective
-// (p0 = m00, p1 = m02, p2 = m11, p3 = m12, p4, p5, 0) or orthographic (.. m03 .. m13 .., 1).
-// GX clips z to [-w, 0] where GL clips to [-w, w], so the z row is GL's mapped by
-// z_gx = (z_gl - w) / 2: perspective p4 = -n / (f - n), p5 = -f n / (f - n); orthographic
-// p4 = -1 / (f - n), p5 = -f / (f - n) (what libogc's guPerspective / guOrtho build).
+// The projection of transform_unit.h's view_transform in GX_LoadProjectionMtx's seven words
+// [OGC gx.c L1797-1830]: perspective (p0 = m00, p1 = m02, p2 = m11, p3 = m12, p4, p5, 0) or
+// orthographic (.. m03 .. m13 .., 1).
 std::array<u32, 7> projection_words(const Camera& camera, FrameSize size);
 // GX_SetViewport(0, 0, w, h, 0, 1): w/2, -h/2, 2^24 - 1, w/2 + 342, h/2 + 342, 2^24 - 1
-// [OGC gx.c GX_SetViewportJitter L1767-1791, field 1: no half-line shift].
+// [OGC gx.c GX_SetViewportJitter L1767-1791, field 1: no half-line shift] (view_transform's).
 std::array<u32, 6> viewport_words(FrameSize size);
 
 // Every XF register GxState models for one pass: colour channels (count, ambient, material,
