@@ -24,24 +24,31 @@
 namespace lt::advise {
 namespace {
 
-// The pixels a material shows, the error figures of those pixels only.
+// The pixels a material shows, the error figures of those pixels only. A path's render carries
+// its own coverage as alpha, so the figures are over the pixels both images cover
+// (Coverage::kBoth): a pixel of the material the test leaves uncovered is a coverage mismatch,
+// not shading error.
 TEST(AdviseMaterialError, OnlyTheMaterialsPixelsCount) {
-  Image ref(3, 1), test(3, 1);
-  for (int x = 0; x < 3; ++x) {
+  Image ref(4, 1), test(4, 1);
+  for (int x = 0; x < 4; ++x) {
     for (int c = 0; c < 3; ++c) ref.at(x, 0)[c] = test.at(x, 0)[c] = 0.5f;
-    ref.at(x, 0)[3] = 1;  // covered
+    ref.at(x, 0)[3] = test.at(x, 0)[3] = 1;  // covered in both
   }
   test.at(1, 0)[0] = 0.5f + 10.0f / 255.0f;  // 10 LSB off, on material 1's pixel
   test.at(2, 0)[1] = std::nanf("");          // non-finite, on material 0's second pixel
-  const std::vector<int> material = {0, 1, 0};
+  test.at(3, 0)[3] = 0;                      // material 0's third pixel: the test misses it ...
+  test.at(3, 0)[0] = 1.0f;                   // ... so its 127 LSB are not shading error
+  const std::vector<int> material = {0, 1, 0, 0};
   const Comparison m0 = compare_material(test, ref, TestEncoding::kFloat, material, 0);
   const Comparison m1 = compare_material(test, ref, TestEncoding::kFloat, material, 1);
   EXPECT_EQ(m0.covered.pixels, 1u);      // the non-finite pixel is left out of the figures ...
   EXPECT_EQ(non_finite_pixels(m0), 1u);  // ... and counted for the material
   EXPECT_NEAR(m0.covered.max_lsb, 0.0, 1e-4);
+  EXPECT_EQ(m0.mismatch.reference_only, 1u);  // the missed pixel, counted apart
   EXPECT_EQ(m1.covered.pixels, 1u);
   EXPECT_EQ(non_finite_pixels(m1), 0u);
   EXPECT_NEAR(m1.covered.max_lsb, 10.0, 1e-3);
+  EXPECT_EQ(m1.mismatch.reference_only, 0u);
 }
 
 fs::path demo(const std::string& name) {

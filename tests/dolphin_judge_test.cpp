@@ -31,22 +31,6 @@ namespace {
 
 constexpr int kWidth = test::kDolphinWidth, kHeight = test::kDolphinHeight;
 
-// The variants of the gx path each scene is judged through.
-std::vector<std::string> judged_variants(const std::string& file) {
-  const Scene scene = load_scene(test::source_dir() / file);
-  const PathInfo& gx = find_path("gx");
-  std::vector<std::string> out;
-  for (const VariantInfo& v : gx.variants) {
-    if (v.name.find("out=") != std::string::npos || v.name.find("round") != std::string::npos)
-      continue;
-    if (gx.refusal(scene, v.name).empty()) out.push_back(v.name);
-  }
-  // :base=tev (not a listed variant: advise's search picks it) asks the hardware for something
-  // the listed ones do not: an unlit COLOR0 and a konst colour in the LUT stage.
-  if (gx.refusal(scene, "t=vertex:base=tev").empty()) out.push_back("t=vertex:base=tev");
-  return out;
-}
-
 std::vector<std::string> judged_scenes() {
   std::vector<std::string> scenes;
   for (const char* folder : {"scenes", "scenes/ortho", "scenes/maps"}) {
@@ -60,27 +44,14 @@ class DolphinJudge : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DolphinJudge, DolphinsFramesAreLtrendersXfbPictures) {
   const Scene scene = load_scene(test::source_dir() / GetParam());
-  const std::vector<std::string> variants = judged_variants(GetParam());
-  ASSERT_FALSE(variants.empty());
-  std::vector<gx::ScenePrograms> programs;
-  for (const std::string& v : variants)
-    programs.push_back(gx::scene_programs_for(scene, gx::parse_gx_variant(v), ""));
-  std::vector<gx::fifo::FrameInput> frames;
-  for (size_t k = 0; k < variants.size(); ++k)
-    frames.push_back({gx::parse_gx_variant(variants[k]), &programs[k], nullptr});
-  const std::vector<Image> dolphin = test::dolphin_pictures(scene, frames);
-  ASSERT_EQ(dolphin.size(), variants.size());
-  for (size_t k = 0; k < variants.size(); ++k) {
-    const Image ours = render_scene(scene, "gx", variants[k] + ":out=xfb", kWidth, kHeight);
-    ASSERT_GT(test::covered_pixels(ours), static_cast<size_t>(kWidth * kHeight / 50))
-        << variants[k] << ": the scene covers almost nothing";
-    const test::PictureDifference d = test::picture_difference(ours, dolphin[k]);
-    // One table row per case (docs/dolphin-judge.md is made from these lines).
-    std::printf("| %s | %s | %zu | %d |\n", GetParam().c_str(), variants[k].c_str(), d.differ,
-                d.max);
-    EXPECT_EQ(d.differ, 0u) << variants[k] << ": first at " << d.first_x << "," << d.first_y
-                            << ", max " << d.max << " LSB";
-  }
+  std::vector<test::JudgedFrame> frames;
+  for (const std::string& v : test::judged_variants(scene)) frames.push_back({v, ""});
+  ASSERT_FALSE(frames.empty());
+  const std::vector<test::JudgedRow> rows =
+      test::expect_dolphins_pictures(scene, frames, GetParam());
+  for (size_t k = 0; k < rows.size(); ++k)
+    EXPECT_GT(rows[k].covered, static_cast<size_t>(kWidth * kHeight / 50))
+        << frames[k].variant << ": the scene covers almost nothing";
 }
 
 // The module's animation (issue 26) as one FIFO log: the exported module compiled on the host

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -10,6 +11,11 @@
 #include "image/image.h"
 #include "judge/dolphin_player.h"
 #include "paths/gx/fifo/frame_recording.h"
+#include "paths/gx/gx_path.h"
+#include "paths/path.h"
+#include "render/session.h"
+#include "scene/scene.h"
+#include "test_util.h"
 
 namespace lt::test {
 
@@ -33,6 +39,23 @@ inline std::vector<Image> dolphin_pictures(const Scene& scene,
     return {};
   }
   return std::vector<Image>(dumps.end() - 2 - K, dumps.end() - 2);
+}
+
+// The gx variants a scene is judged through: every listed variant the path renders it with,
+// less :out=xfb (what the others are compared through) and :colors=round / :lights=round-each,
+// which model Dolphin's shader backends, not its software renderer (docs/dolphin-judge.md).
+// Plus :base=tev (not a listed variant: advise's search picks it), which asks the hardware for
+// something the listed ones do not: an unlit COLOR0 and a konst colour in the LUT stage.
+inline std::vector<std::string> judged_variants(const Scene& scene) {
+  const PathInfo& gx = find_path("gx");
+  std::vector<std::string> out;
+  for (const VariantInfo& v : gx.variants) {
+    if (v.name.find("out=") != std::string::npos || v.name.find("round") != std::string::npos)
+      continue;
+    if (gx.refusal(scene, v.name).empty()) out.push_back(v.name);
+  }
+  if (gx.refusal(scene, "t=vertex:base=tev").empty()) out.push_back("t=vertex:base=tev");
+  return out;
 }
 
 // Pixels whose 8-bit RGB differ between two pictures of one size, and the largest difference.
@@ -62,6 +85,55 @@ inline PictureDifference picture_difference(const Image& a, const Image& b) {
     d.max = std::max(d.max, m);
   }
   return d;
+}
+
+// One frame to judge: a gx variant, and the program file it reads ("" for the generated ones).
+struct JudgedFrame {
+  std::string variant, program_file;
+};
+
+// What one judged frame gave: ltrender's covered pixels, and how it differs from Dolphin's.
+struct JudgedRow {
+  size_t covered = 0;
+  PictureDifference difference;
+};
+
+// Plays `frames` of `scene` in one Dolphin start (one FIFO log) and holds each dump to ltrender's
+// `:out=xfb` picture of the same frame: zero pixels may differ. Prints one table row a frame
+// (`| label | variant | covered | differing | max |`: docs/dolphin-judge.md is made from them).
+inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
+                                                       const std::vector<JudgedFrame>& frames,
+                                                       const std::string& label) {
+  std::vector<gx::ScenePrograms> programs;
+  for (const JudgedFrame& f : frames)
+    programs.push_back(
+        gx::scene_programs_for(scene, gx::parse_gx_variant(f.variant), f.program_file));
+  std::vector<gx::fifo::FrameInput> inputs;
+  for (size_t k = 0; k < frames.size(); ++k)
+    inputs.push_back({gx::parse_gx_variant(frames[k].variant), &programs[k], nullptr});
+  const std::vector<Image> dolphin = dolphin_pictures(scene, inputs);
+  std::vector<JudgedRow> rows;
+  if (dolphin.size() != frames.size()) {
+    ADD_FAILURE() << "Dolphin gave " << dolphin.size() << " pictures for " << frames.size()
+                  << " frames";
+    return rows;
+  }
+  for (size_t k = 0; k < frames.size(); ++k) {
+    PathOptions options;
+    options.program_file = frames[k].program_file;
+    const Image ours = render_scene(scene, "gx", frames[k].variant + ":out=xfb", kDolphinWidth,
+                                    kDolphinHeight, options);
+    const std::string name =
+        frames[k].variant + (frames[k].program_file.empty() ? "" : " --program (edited)");
+    const JudgedRow row{covered_pixels(ours), picture_difference(ours, dolphin[k])};
+    std::printf("| %s | %s | %zu | %zu | %d |\n", label.c_str(), name.c_str(), row.covered,
+                row.difference.differ, row.difference.max);
+    EXPECT_EQ(row.difference.differ, 0u)
+        << label << ", " << name << ": first at " << row.difference.first_x << ","
+        << row.difference.first_y << ", max " << row.difference.max << " LSB";
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 }  // namespace lt::test
