@@ -147,6 +147,7 @@ TEST(DolphinRasterEdges, TrianglesCrossingTheNearPlaneAreClippedAsDolphinClips) 
 struct SeededScene {
   std::string json;
   bool perspective = true;
+  std::string summary;  // what was drawn, for the table row: "3x3 objects, 2 materials (...), ..."
 };
 
 // One random scene: a k x k grid of objects (k in 1..3), each a mesh that suits its material,
@@ -169,6 +170,8 @@ SeededScene seeded_scene(unsigned seed) {
 
   // Material kinds and the meshes each can draw (vertex thickness needs a baked mesh, a map UVs).
   enum Kind { kConstant, kRgb, kVertex, kThicknessMap, kAlbedoMap, kDiffuse, kKinds };
+  const char* const kind_names[kKinds] = {"constant", "rgb",        "vertex",
+                                          "map",      "albedo map", "diffuse"};
   const std::vector<std::vector<std::string>> meshes_of = {
       {mesh("cube.ply"), mesh("sphere_s2.ply"), mesh("sphere_s4.ply"), mesh("torus.ply"),
        mesh("blob.ply"), mesh("quad.ply")},
@@ -201,6 +204,7 @@ SeededScene seeded_scene(unsigned seed) {
   for (int m = 0; m < materials; ++m) {
     const Kind kind = static_cast<Kind>(pick(kKinds));
     kinds.push_back(kind);
+    out.summary += std::string(m ? ", " : "") + kind_names[kind];
     j << (m ? ",\n" : "\n") << "    \"m" << m << R"(": { "albedo": )" << vec(0.3, 1);
     if (kind == kAlbedoMap)
       j << R"(, "albedo_map": ")" << (maps / "albedo_checker.png").string() << "\"";
@@ -225,10 +229,12 @@ SeededScene seeded_scene(unsigned seed) {
   j << "\n  },\n";
 
   const int lights = 1 + pick(4);
+  int point_lights = 0;
   j << R"(  "lights": [)";
   for (int l = 0; l < lights; ++l) {
     j << (l ? ",\n" : "\n");
     const bool point = pick(2) != 0;
+    point_lights += point;
     j << R"(    { "type": ")" << (point ? "point" : "directional") << "\", ";
     if (point) {
       j << R"("position": )" << vec(-4, 4) << R"(, "attenuation": { "constant": 1, "linear": )"
@@ -242,6 +248,10 @@ SeededScene seeded_scene(unsigned seed) {
   j << "\n  ],\n";
 
   const int k = 1 + pick(3);
+  out.summary = std::to_string(k) + "x" + std::to_string(k) + " objects; " +
+                std::to_string(materials) + " materials (" + out.summary + "); " +
+                std::to_string(point_lights) + " point, " + std::to_string(lights - point_lights) +
+                " directional lights; " + (out.perspective ? "perspective" : "orthographic");
   const double spacing = 2.4 / k;
   j << R"(  "objects": [)";
   for (int n = 0; n < k * k; ++n) {
@@ -322,13 +332,12 @@ TEST_P(DolphinSeeded, EveryFrameIsDolphinsPicture) {
       render_scene(scene, "gx", "t=vertex", test::kDolphinWidth, test::kDolphinHeight),
       render_scene(scene, "gx", "t=vertex", test::kDolphinWidth, test::kDolphinHeight, edited));
   EXPECT_GT(change.differ, 0u) << "the edited program draws what the generated one draws";
-  test::expect_dolphins_pictures(
-      scene, frames,
-      "seed " + std::to_string(seed) + (seeded.perspective ? " (perspective)" : " (orthographic)"));
+  test::expect_dolphins_pictures(scene, frames,
+                                 "seed " + std::to_string(seed) + ": " + seeded.summary);
   if (HasFailure()) std::printf("the scene:\n%s\n", seeded.json.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Seeds, DolphinSeeded, ::testing::Range(1u, 9u));
+INSTANTIATE_TEST_SUITE_P(Seeds, DolphinSeeded, ::testing::Range(1u, 13u));
 
 }  // namespace
 }  // namespace lt
