@@ -270,6 +270,54 @@ TEST(GxClipper, TrianglesOutsideOnePlaneAreRejectedAndCrossingOnesClipped) {
   EXPECT_TRUE(found);
 }
 
+// Bad geometry keeps the contract: a NaN, infinite or huge vertex, a triangle behind the eye,
+// one with no area: nothing is drawn and nothing crashes (Dolphin's s32 edge arithmetic would
+// overflow past kMaxSnapped, rasteriser.cpp; a NaN position snaps to INT_MIN there).
+TEST(GxClipper, NonFiniteHugeAndDegenerateTrianglesDrawNothing) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const RasterVertex a = clip_vertex(-0.5f, -0.5f), b = clip_vertex(0.5f, -0.5f),
+                     c = clip_vertex(0.0f, 0.5f);
+  for (const RasterVertex& bad :
+       {clip_vertex(nan, 0.5f), clip_vertex(0.0f, 0.5f, nan), clip_vertex(0.0f, 0.5f, -0.5f, nan),
+        clip_vertex(inf, 0.5f), clip_vertex(0.0f, -inf)}) {
+    ClippedTriangles out;
+    const TriangleFate fate = clip_triangle(a, b, bad, kCullNone, kViewport, out);
+    // Whatever the clipper decides, no triangle it hands on sets up with a non-finite or
+    // out-of-range position: every such one is refused by setup_triangle.
+    if (fate != TriangleFate::Drawn) continue;
+    for (int k = 0; k < out.count; ++k) {
+      const auto& tri = out.triangles[static_cast<size_t>(k)];
+      Triangle t;
+      const RasterVertex& v0 = out.vertices[tri[0]];
+      const RasterVertex& v1 = out.vertices[tri[1]];
+      const RasterVertex& v2 = out.vertices[tri[2]];
+      const bool finite = std::isfinite(v0.screen.x) && std::isfinite(v0.screen.y) &&
+                          std::isfinite(v1.screen.x) && std::isfinite(v1.screen.y) &&
+                          std::isfinite(v2.screen.x) && std::isfinite(v2.screen.y);
+      if (!finite) {
+        EXPECT_FALSE(setup_triangle(v0, v1, v2, 1, 0, kScissor, t));
+      }
+    }
+  }
+  // Behind the eye: w = -1 and z + w < 0 at all three, outside the near plane: rejected.
+  ClippedTriangles out;
+  EXPECT_EQ(
+      clip_triangle(clip_vertex(-0.5f, -0.5f, 0.5f, -1.0f), clip_vertex(0.5f, -0.5f, 0.5f, -1.0f),
+                    clip_vertex(0, 0.5f, 0.5f, -1.0f), kCullNone, kViewport, out),
+      TriangleFate::Rejected);
+  // Screen positions past what Dolphin's integers hold, and NaN ones, set up nothing.
+  Triangle t;
+  RasterVertex huge = snapped(0, 0);
+  huge.screen.x = 1e30f;
+  EXPECT_FALSE(setup_triangle(snapped(0, 0), snapped(64, 0), huge, 1, 0, kScissor, t));
+  RasterVertex not_a_number = snapped(0, 0);
+  not_a_number.screen.y = nan;
+  EXPECT_FALSE(setup_triangle(snapped(0, 0), snapped(64, 0), not_a_number, 1, 0, kScissor, t));
+  // Three points on a line cover no pixel: every sample point fails one edge test.
+  EXPECT_TRUE(covered(snapped(0, 0), snapped(64, 64), snapped(128, 128)).empty());
+}
+
 // ---- depth and the EFB ----
 
 // A program whose TEV writes the rasterised colour 0 (RASC, RASA): no texture, one channel.

@@ -104,7 +104,7 @@ enum class Region {
 // error > `fail_lsb`, or if any pixel of the region has error > `hard_fail_lsb`.
 // With Coverage::kBoth, the coverage mismatch fails past `max_mismatch_percent` of the
 // reference's covered pixels: a sample point a fraction of a pixel off moves a thin line of
-// silhouette pixels (the gx path: at most 0.15% on the demo scenes, docs/testing.md);
+// silhouette pixels (the gx path: at most 0.142% on the demo scenes, docs/testing.md);
 // more than that is geometry missing or extra, which the covered region alone would not see.
 struct Tolerance {
   double fail_lsb = 1.0;
