@@ -32,3 +32,29 @@ foreach(lt_test IN LISTS ltrender_tests_TESTS)
       ENVIRONMENT "LT_TEST_REFERENCE_CACHE=@CMAKE_BINARY_DIR@/test-cache/references")
   endif()
 endforeach()
+
+# The long poles, started first: with no cost data (a fresh clone) ctest runs the tests in the
+# order it reads them, and a minute-long test read last runs alone on one core after everything
+# else has finished. COST is the order `ctest -j` starts them in (highest first); the figures
+# are seconds measured in one `./test.sh` on the 2-core machine, under load.
+set(lt_long_poles
+  "^GxPlan\\.EveryDemoSceneAndVariantProgramSetsWhatThePlanSays$" 61
+  "^ArbIr\\.EveryGeneratedProgramParsesBackToTheSameCounts$" 60
+  "^Bench\\.PinsToOneCoreAndSaysSo$" 20
+  "^MapVsVertex\\.ErrorFallsAsTheTessellationRises$" 18
+  "^BenchJobs\\.TwoJobsMakeTheReportOneProcessMakes$" 17
+  "^ArbGuards\\.ElidedProgramsRenderTheSameAsGuardedOnes$" 13
+)
+list(LENGTH lt_long_poles lt_pole_items)
+math(EXPR lt_pole_last "${lt_pole_items} - 1")
+foreach(lt_test IN LISTS ltrender_tests_TESTS)
+  foreach(lt_index RANGE 0 ${lt_pole_last} 2)
+    list(GET lt_long_poles ${lt_index} lt_pattern)
+    if(lt_test MATCHES "${lt_pattern}")
+      math(EXPR lt_cost_index "${lt_index} + 1")
+      list(GET lt_long_poles ${lt_cost_index} lt_cost)
+      set_tests_properties("${lt_test}" PROPERTIES COST ${lt_cost})
+      break()
+    endif()
+  endforeach()
+endforeach()
