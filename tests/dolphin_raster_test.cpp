@@ -9,7 +9,8 @@
 //   transforms, one to three materials of every thickness source and the maps, one to four mixed
 //   lights, a perspective or orthographic camera from a random side), through every gx variant
 //   that renders them, plus the scene's exported program edited at random (cull mode, TEV scale
-//   and bias, register colours, depth compare) and read back as `--program` reads it.
+//   and bias, register colours, blend mode, depth compare, the EFB's pixel format and dither)
+//   and read back as `--program` reads it.
 // Every frame must be Dolphin's to the pixel: ltrender's `:out=xfb` picture of it and Dolphin's
 // dump of the FIFO log differ in zero pixels.
 #include <gtest/gtest.h>
@@ -270,7 +271,7 @@ SeededScene seeded_scene(unsigned seed) {
 
 // The exported program of `scene`'s default variant, edited as a porter might edit it: each
 // choice below is one the emulator models and Dolphin plays.
-std::string edited_program(const Scene& scene, unsigned seed) {
+std::string edited_program(const Scene& scene, unsigned seed, std::string& format_chosen) {
   std::mt19937 rng(seed * 7919u + 1u);
   auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
   gx::ExportFigures figures;
@@ -295,6 +296,22 @@ std::string edited_program(const Scene& scene, unsigned seed) {
                 "GX_SetCullMode(GX_CULL_FRONT)"});
   replace_each("GX_CS_SCALE_1", {"GX_CS_SCALE_1", "GX_CS_SCALE_2", "GX_CS_DIVIDE_2"});
   replace_each("GX_TB_ZERO", {"GX_TB_ZERO", "GX_TB_ADDHALF", "GX_TB_SUBHALF"});
+  // The blend of the passes after the first: other factors (the destination's alpha among them,
+  // which only RGBA6_Z24 stores), subtraction, a logic op.
+  replace_each("GX_SetBlendMode(GX_BM_BLEND, GX_BL_ONE, GX_BL_ONE, GX_LO_CLEAR)",
+               {"GX_SetBlendMode(GX_BM_BLEND, GX_BL_ONE, GX_BL_ONE, GX_LO_CLEAR)",
+                "GX_SetBlendMode(GX_BM_BLEND, GX_BL_DSTALPHA, GX_BL_INVSRCALPHA, GX_LO_CLEAR)",
+                "GX_SetBlendMode(GX_BM_BLEND, GX_BL_DSTCLR, GX_BL_INVDSTALPHA, GX_LO_CLEAR)",
+                "GX_SetBlendMode(GX_BM_SUBTRACT, GX_BL_ONE, GX_BL_ONE, GX_LO_CLEAR)",
+                "GX_SetBlendMode(GX_BM_LOGIC, GX_BL_ONE, GX_BL_ONE, GX_LO_XOR)"});
+  // The EFB's pixel format, one for the whole frame (as a game sets it), each pass with the
+  // dither on (GX_Init's) or off: RGBA6_Z24 keeps 6 bits and alpha, and dithers.
+  const char* const formats[] = {"GX_PF_RGB8_Z24", "GX_PF_RGBA6_Z24", "GX_PF_RGB565_Z16"};
+  const std::string format = formats[pick(3)];
+  format_chosen = format;
+  const std::string set_format = "GX_SetPixelFmt(" + format + ", GX_ZC_LINEAR);\n  ";
+  replace_each("GX_SetCullMode(", {set_format + "GX_SetDither(GX_TRUE);\n  GX_SetCullMode(",
+                                   set_format + "GX_SetDither(GX_FALSE);\n  GX_SetCullMode("});
   replace_each(
       "GX_SetZMode(GX_TRUE, GX_LEQUAL, GX_TRUE)",
       {"GX_SetZMode(GX_TRUE, GX_LEQUAL, GX_TRUE)", "GX_SetZMode(GX_TRUE, GX_LESS, GX_TRUE)",
@@ -323,7 +340,9 @@ TEST_P(DolphinSeeded, EveryFrameIsDolphinsPicture) {
   const Scene scene = load_scene(dir / "scene.json");
   std::vector<JudgedFrame> frames = every_variant(scene);
   const fs::path program = dir / "edited.c";
-  test::write_file(program, edited_program(scene, seed));
+  std::string format;
+  test::write_file(program, edited_program(scene, seed, format));
+  std::printf("seed %u: the edited program draws in %s\n", seed, format.c_str());
   frames.push_back({"t=vertex", program.string()});
   // The edits must change the picture, or the edited frame would judge nothing new.
   PathOptions edited;

@@ -88,13 +88,18 @@ TEST(GxFifoBits, KonstAndRegisterWordsAreLibogcs) {
 // GX_SetAlphaCompare(GX_GREATER 4, 10, GX_AOP_OR 1, GX_LESS 1, 200) (L4039): 1 << 22 | 1 << 19 |
 // 4 << 16 | 200 << 8 | 10. GX_SetZMode(GX_TRUE, GX_LEQUAL 3, GX_FALSE) (L2948): 1 | 3 << 1.
 // GX_SetBlendMode(GX_BM_BLEND, GX_BL_ONE, GX_BL_ONE, GX_LO_CLEAR) with GX_Init's dither and
-// updates (L3735, L4377-4415): 1 | 4 | 8 | 0x10 | 1 << 5 | 1 << 8; GX_Init's own blend
-// (GX_BM_NONE, SRCALPHA 4, INVSRCALPHA 5): 0x1C | 5 << 5 | 4 << 8.
+// updates (L3735, L4377-4415): 1 | 4 | 8 | 0x10 | 1 << 5 | 1 << 8, and without the dither
+// (GX_SetDither(GX_FALSE), bit 2): 0x139; GX_Init's own blend (GX_BM_NONE, SRCALPHA 4,
+// INVSRCALPHA 5): 0x1C | 5 << 5 | 4 << 8. GX_SetPixelFmt(GX_PF_RGBA6_Z24, GX_ZC_MID) with
+// GX_SetZCompLoc(GX_TRUE): 1 | 2 << 3 | 1 << 6.
 TEST(GxFifoBits, PixelEngineWordsAreLibogcs) {
   EXPECT_EQ(alpha_compare(AlphaCompare{4, 10, 1, 1, 200}), 0x4CC80Au);
   EXPECT_EQ(z_mode(ZMode{true, 3, false}), 7u);
-  EXPECT_EQ(blend_mode(BlendMode{1, 1, 1, 0}), 0x13Du);
-  EXPECT_EQ(blend_mode(BlendMode{}), 0x4BCu);
+  EXPECT_EQ(blend_mode(BlendMode{1, 1, 1, 0}, true), 0x13Du);
+  EXPECT_EQ(blend_mode(BlendMode{1, 1, 1, 0}, false), 0x139u);
+  EXPECT_EQ(blend_mode(BlendMode{}, true), 0x4BCu);
+  EXPECT_EQ(pixel_control(PixelFormat{kPixelRgba6Z24, 2}), 0x51u);
+  EXPECT_EQ(pixel_control(PixelFormat{}), 0x40u);
 }
 
 // GX_Init's konst selections and swap table 0 (L686-694): BP 0xF6 = r 0 | g 1 << 2 | KCSEL_1_4

@@ -270,6 +270,29 @@ TEST(GxCli, BadProgramNamesFileLineAndColumn) {
   EXPECT_FALSE(fs::exists(dir / "o.png"));
 }
 
+// One EFB pixel format a frame: a pass that draws in another format than the first pass would
+// read what the others stored as its own format's bits, which is not modelled (efb.h).
+TEST(GxCli, APassInAnotherPixelFormatIsRefusedNamingIt) {
+  test::TempDir dir;
+  const std::string scene = (test::source_dir() / "scenes/backlit_sphere.json").string();
+  ASSERT_EQ(test::run_ltrender("export gx " + scene + " -o " + (dir / "p.c").string()).exit_code,
+            0);
+  std::string text = test::read_file(dir / "p.c");
+  const std::string cull = "GX_SetCullMode(GX_CULL_NONE);";
+  const size_t second = text.find(cull, text.find(cull) + 1);  // the second pass's
+  ASSERT_NE(second, std::string::npos);
+  text.insert(second, "GX_SetPixelFmt(GX_PF_RGBA6_Z24, GX_ZC_LINEAR);\n  ");
+  test::write_file(dir / "mixed.c", text);
+  const test::RunResult r =
+      test::run_ltrender("render " + scene + " --path gx --program " + (dir / "mixed.c").string() +
+                         " -o " + (dir / "o.png").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("pass1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("one EFB format a frame"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "o.png"));
+}
+
 TEST(GxCli, ProgramFileOnlyForGx) {
   test::TempDir dir;
   test::write_file(dir / "p.c", kFlatProgram);

@@ -159,6 +159,9 @@ const BadCase kBad[] = {
     {"matrix_beyond_float", "Mtx m = {{1e39, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};\n", "1:11",
      "out of float range"},
     {"too_many_bytes", "u8 a[2] = {1, 2, 3};\n", "1:1", "declares 2 bytes but lists 3"},
+    // The YUV and depth-only formats keep no RGB colour for the TEV's output.
+    {"unmodelled_pixel_format", "GX_SetPixelFmt(GX_PF_Y8, GX_ZC_LINEAR);\n", "1:16",
+     "pixel format not modelled"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, GxBadProgram, ::testing::ValuesIn(kBad),

@@ -32,11 +32,10 @@ bool compare_values(u8 comp, u32 value, u32 reference) {
   }
 }
 
-// The EFB is RGB8_Z24, libogc's default [OGC gx.c L715]: it stores no alpha, and Dolphin reads
-// such a pixel back with alpha 0xff (`GetPixelColor`: `0xff | (src & 0x00ffffff) << 8`). So
-// GX_BL_DSTALPHA is 255 and GX_BL_INVDSTALPHA 0; libogc documents the destination-alpha factors
-// as usable only with RGBA6_Z24 [OGC gx.h L2862].
-constexpr u8 kDstAlpha = 255;
+// Dolphin's Convert6To8 [VideoCommon LookUpTables.h]: the 6 bits repeated into the low 2.
+u8 convert_6_to_8(u8 v) {
+  return static_cast<u8>((v << 2) | (v >> 4));
+}
 
 // One blend factor, 0..255, for channel i. Factors 2/3 are the *other* operand's colour: as a
 // source factor GX_BL_SRCCLR is the destination colour (libogc even defines GX_BL_DSTCLR as
@@ -58,9 +57,12 @@ int factor(u8 f, bool is_source, int i, const Color8& src, const Color8& dst) {
     case 5:
       return 255 - src.a;  // GX_BL_INVSRCALPHA
     case 6:
-      return kDstAlpha;  // GX_BL_DSTALPHA
+      // GX_BL_DSTALPHA: the EFB's alpha as it reads back, 255 in RGB8_Z24 (no alpha stored);
+      // libogc documents the destination-alpha factors as usable only with RGBA6_Z24 [OGC
+      // gx.h L2862].
+      return dst.a;
     default:
-      return 255 - kDstAlpha;  // GX_BL_INVDSTALPHA
+      return 255 - dst.a;  // GX_BL_INVDSTALPHA
   }
 }
 
@@ -135,11 +137,31 @@ u8 logic_op(u8 op, u8 s, u8 d) {
 
 }  // namespace
 
-void Efb::clear(int w, int h, const Color8& clear_color, u32 clear_z) {
+Color8 efb_stored(u8 pixel_format, const Color8& c) {
+  if (pixel_format == kPixelRgba6Z24) {
+    Color8 out;
+    for (int i = 0; i < 4; ++i) out[i] = convert_6_to_8(static_cast<u8>(c[i] >> 2));
+    return out;
+  }
+  return {c.r, c.g, c.b, 255};
+}
+
+Color8 efb_written(u8 pixel_format, bool dither, int x, int y, const Color8& c) {
+  if (!dither || pixel_format != kPixelRgba6Z24) return efb_stored(pixel_format, c);
+  // "Flipper uses a standard 2x2 Bayer Matrix for 6 bit dithering" [DSW Dither].
+  static constexpr u8 kBayer[2][2] = {{0, 2}, {3, 1}};
+  const int d = kBayer[y & 1][x & 1];
+  Color8 out = c;
+  for (int i = 0; i < 3; ++i) out[i] = static_cast<u8>(((c[i] - (c[i] >> 6)) + d) & 0xfc);
+  return efb_stored(pixel_format, out);
+}
+
+void Efb::clear(int w, int h, const Color8& clear_color, u32 clear_z, u8 format) {
   width = w;
   height = h;
+  pixel_format = format;
   const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
-  color.assign(n, clear_color);
+  color.assign(n, efb_stored(format, clear_color));
   depth.assign(n, clear_z & 0xffffff);
   covered.assign(n, 0);
 }
@@ -173,20 +195,19 @@ bool alpha_test(const AlphaCompare& compare, u8 alpha) {
 Color8 blend(const BlendMode& mode, const Color8& src, const Color8& dst) {
   // libogc turns the type into PE bits: BLEND and SUBTRACT set the blend enable, SUBTRACT also
   // the subtract bit, LOGIC the logic-op enable; any other type sets none [OGC gx.c L3735-3749].
-  // Dolphin tests blend enable first, then logic op [DSW `BlendTev`].
-  // The result keeps the source alpha: RGB8_Z24 stores no alpha, so whatever the blend unit
-  // computes for alpha is discarded (Dolphin `SetPixelAlphaColor` for RGB8 writes rgb only).
+  // Dolphin tests blend enable first, then logic op [DSW `BlendTev`], and blends all four
+  // channels; RGB8_Z24 then stores no alpha (efb_stored).
   Color8 out = src;
   switch (mode.type) {
     case 1:  // GX_BM_BLEND: min((src*sf' + dst*df') >> 8, 255) [DSW `BlendColor`]
-      for (int i = 0; i < 3; ++i) out[i] = blend_channel(mode, i, src, dst);
+      for (int i = 0; i < 4; ++i) out[i] = blend_channel(mode, i, src, dst);
       break;
     case 2:  // GX_BM_LOGIC
-      for (int i = 0; i < 3; ++i) out[i] = logic_op(mode.logic, src[i], dst[i]);
+      for (int i = 0; i < 4; ++i) out[i] = logic_op(mode.logic, src[i], dst[i]);
       break;
     case 3:  // GX_BM_SUBTRACT: dst - src clamped at 0, factors unused [DSW `SubtractBlend`;
              // OGC gx.h L2866-2870]
-      for (int i = 0; i < 3; ++i) out[i] = static_cast<u8>(std::max(dst[i] - src[i], 0));
+      for (int i = 0; i < 4; ++i) out[i] = static_cast<u8>(std::max(dst[i] - src[i], 0));
       break;
     default:  // GX_BM_NONE
       break;

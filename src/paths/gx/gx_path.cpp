@@ -42,6 +42,12 @@ std::vector<MaterialDraw> ScenePrograms::draws(const Scene& scene) const {
   return out;
 }
 
+PixelFormat ScenePrograms::pixel_format(const Scene& scene) const {
+  const std::vector<MaterialDraw> d = draws(scene);
+  if (d.empty()) return {};
+  return by_material[d.front().material][static_cast<size_t>(d.front().pass)].state.pixel_format;
+}
+
 ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
                                  const std::string& program_file) {
   ScenePrograms out;
@@ -70,6 +76,19 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
     }
     for (const PassProgram& p : out.by_material[m])
       check_renderable(p, out.file.file, true, has_uvs);
+  }
+  // One EFB pixel format a frame: a draw in another format would read the bits the others
+  // stored as that format's (Dolphin reinterprets them [DSW SWEfbInterface.cpp GetPixelColor]),
+  // which the emulator does not model; a game sets its format once.
+  const u8 format = out.pixel_format(scene).pixel;
+  for (const MaterialDraw& d : out.draws(scene)) {
+    const PassProgram& p = out.by_material[d.material][static_cast<size_t>(d.pass)];
+    if (p.state.pixel_format.pixel != format)
+      throw InputError(out.file.file, p.name,
+                       "GX_SetPixelFmt: pixel format " +
+                           std::to_string(p.state.pixel_format.pixel) +
+                           " where the frame's first pass draws in " + std::to_string(format) +
+                           " (one EFB format a frame is modelled)");
   }
   return out;
 }
@@ -134,12 +153,13 @@ class GxPath final : public Path {
     }
     const glm::dvec3 bg = s.background;
     background_ = {to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
+    pixel_format_ = programs_.pixel_format(s).pixel;
   }
 
   void frame() override {
     const Scene& s = ctx_.scene;
     // The frame's clearing copy: the background and the far z (GX_SetCopyClear's 0xffffff).
-    efb_.clear(ctx_.width, ctx_.height, background_, 0xffffff);
+    efb_.clear(ctx_.width, ctx_.height, background_, 0xffffff, pixel_format_);
     vertex_seconds_ = pixel_seconds_ = 0;
     stage_pixels_ = 0;
     light_vertices_ = 0;
@@ -292,6 +312,7 @@ class GxPath final : public Path {
   // The copy to the XFB: GX_Init's, which the exported program never changes.
   EfbCopyState copy_;
   Color8 background_;
+  u8 pixel_format_ = kPixelRgb8Z24;  // the frame's (ScenePrograms::pixel_format)
   double vertex_seconds_ = 0, pixel_seconds_ = 0;
   size_t stage_pixels_ = 0, light_vertices_ = 0;
 };

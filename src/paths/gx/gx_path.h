@@ -41,6 +41,9 @@ struct ScenePrograms {
   // order (fifo/frame_recording.h) and the emulator draws it: the EFB's depth and blend make the
   // order part of the image.
   std::vector<MaterialDraw> draws(const Scene& scene) const;
+  // The EFB pixel format the frame draws in: its first draw's (GX_Init's when nothing is drawn).
+  // scene_programs_for refuses programs whose draws set different formats.
+  PixelFormat pixel_format(const Scene& scene) const;
 };
 ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
                                  const std::string& program_file);

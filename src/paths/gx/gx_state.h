@@ -64,6 +64,18 @@ struct ZMode {
 // the ones GL calls back: a mesh wound for GL drawn under GX_Init's mode shows its inside.
 inline constexpr u8 kCullNone = 0, kCullFront = 1, kCullBack = 2, kCullAll = 3;
 
+// GX_SetPixelFmt(pix_fmt, z_fmt) [OGC gx.c GX_SetPixelFmt]: how the EFB stores a pixel (kPixel*,
+// gx_types.h). GX_Init: GX_PF_RGB8_Z24, GX_ZC_LINEAR [OGC gx.c __GX_InitGX]. The colour formats are
+// modelled as Dolphin's software renderer keeps them (efb.h); the z format only matters for a
+// 16-bit depth buffer, which Dolphin's software renderer does not have (it keeps 24 bits in
+// every format [DSW SWEfbInterface.cpp SetPixelDepth, "RGB565_Z16 is not supported correctly
+// yet"]), so it is kept for the FIFO log and changes no pixel.
+struct PixelFormat {
+  u8 pixel = kPixelRgb8Z24;
+  u8 z = 0;  // GX_ZC_LINEAR
+  bool operator==(const PixelFormat&) const = default;
+};
+
 struct GxState {
   XfLightingState lighting;
   XfTexGenState texgen;
@@ -76,6 +88,10 @@ struct GxState {
   VertexDescriptor vertex;
   TexCoordFormats texcoord_formats;
   u8 cull_mode = kCullBack;
+  PixelFormat pixel_format;
+  // GX_SetDither(enable): GX_Init enables it [OGC gx.c __GX_InitGX]; it acts on RGBA6_Z24 only
+  // (efb.h).
+  bool dither = true;
 
   GxState();  // GX_Init's state
 };

@@ -17,6 +17,10 @@ using s32 = std::int32_t;
 
 // GXColor: 8 bits per component, the format of vertex colours, channel registers, light colours,
 // konst colours and the EFB (RGB8_Z24, libogc's default pixel format [OGC gx.c L715]).
+// The EFB's colour formats, GX_PF_* [OGC gx.h "pixel format"]: the ones a program may set
+// (gx_state.h PixelFormat, efb.h).
+inline constexpr u8 kPixelRgb8Z24 = 0, kPixelRgba6Z24 = 1, kPixelRgb565Z16 = 2;
+
 struct Color8 {
   u8 r = 0, g = 0, b = 0, a = 0;
   u8& operator[](int i) { return i == 0 ? r : i == 1 ? g : i == 2 ? b : a; }

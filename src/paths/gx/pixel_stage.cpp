@@ -28,7 +28,7 @@ Color8 stage_texel(const PixelProgram& p, const TevStage& stage, const RasterPix
 }
 
 // One covered pixel, as [DSW Draw] then [DSW Tev::Draw] take it.
-void shade_pixel(const PixelProgram& p, const RasterPixel& px, size_t index, Efb& efb,
+void shade_pixel(const PixelProgram& p, const RasterPixel& px, s32 x, s32 y, size_t index, Efb& efb,
                  PixelCounts& counts) {
   const GxState& st = *p.state;
   ++counts.covered;
@@ -56,8 +56,10 @@ void shade_pixel(const PixelProgram& p, const RasterPixel& px, size_t index, Efb
     ++counts.alpha_failed;
     return;
   }
+  // [DSW BlendTev]: the EFB's colour as it reads back, blended, dithered and stored in the
+  // frame's pixel format (GX_Init's colour and alpha updates on, destination alpha off).
   Color8& dst = efb.color[index];
-  dst = blend(st.blend, src, dst);
+  dst = efb_written(efb.pixel_format, st.dither, x, y, blend(st.blend, src, dst));
   ++counts.written;
 }
 
@@ -89,7 +91,7 @@ PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelPr
               static_cast<size_t>(y) * static_cast<size_t>(efb.width) + static_cast<size_t>(x);
           efb.covered[index] = 1;
           raster_pixel(t, x, y, round_colors, px);
-          shade_pixel(program, px, index, efb, counts);
+          shade_pixel(program, px, x, y, index, efb, counts);
         }
       }
     }

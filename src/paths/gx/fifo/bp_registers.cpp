@@ -50,12 +50,20 @@ constexpr u32 kTmemOdd[kMaxTexMaps] = {0x80000, 0x10000, 0xA0000, 0x30000,
 // genmode [OGC gx.c GX_SetNumTexGens L2937 bits 0-3, GX_SetNumChans L3982 bits 4-6,
 // GX_SetNumTevStages L4033 bits 10-13 (count - 1), GX_SetCullMode L3929 bits 14-15 through
 // cm2hw = {0, 2, 1, 3}, GX_SetNumIndStages bits 16-18 = 0, GX_SetCoPlanar bit 19 = 0,
-// GX_SetPixelFmt bit 9 multisampling = 0 for RGB8_Z24] [DHW BPMemory.h GenMode].
+// GX_SetPixelFmt bit 9 multisampling, set for GX_PF_RGB565_Z16 only] [DHW BPMemory.h GenMode].
 u32 gen_mode(const GxState& s) {
   return place(static_cast<u32>(s.texgen.num_texgens), 0, 4) |
          place(static_cast<u32>(s.lighting.num_channels), 4, 3) |
+         place(s.pixel_format.pixel == kPixelRgb565Z16, 9, 1) |
          place(static_cast<u32>(s.tev.num_stages - 1), 10, 4) |
          place(hardware_cull_mode(s.cull_mode), 14, 2);
+}
+
+// PE control: pixel format 0-2 (libogc's realfmt table maps GX_PF_RGB8_Z24..GX_PF_Z24 to
+// themselves), z format 3-5, GX_SetZCompLoc(GX_TRUE) bit 6 [OGC gx.c GX_SetPixelFmt,
+// GX_SetZCompLoc] [DHW BPMemory.h PEControl].
+u32 pixel_control(const PixelFormat& f) {
+  return place(f.pixel, 0, 3) | place(f.z, 3, 3) | place(1, 6, 1);
 }
 
 u32 tev_order(const TevState& tev, int pair) {
@@ -119,10 +127,10 @@ u32 alpha_compare(const AlphaCompare& a) {
 // GX_SetBlendMode L3735-3751, GX_SetDither L4415, GX_SetColorUpdate / GX_SetAlphaUpdate
 // L4377-4387] [DHW BPMemory.h BlendMode]. GX_Init enables dither and both updates; dithering
 // only acts on the 6-bit pixel formats, not RGB8_Z24 [DHW BPMemory.h BlendMode::dither].
-u32 blend_mode(const BlendMode& b) {
+u32 blend_mode(const BlendMode& b, bool dither) {
   constexpr u8 kBlend = 1, kLogic = 2, kSubtract = 3;  // GX_BM_* [OGC gx.h]
   return place(b.type == kBlend || b.type == kSubtract, 0, 1) | place(b.type == kLogic, 1, 1) |
-         place(1, 2, 1) | place(1, 3, 1) | place(1, 4, 1) | place(b.dst, 5, 3) |
+         place(dither, 2, 1) | place(1, 3, 1) | place(1, 4, 1) | place(b.dst, 5, 3) |
          place(b.src, 8, 3) | place(b.type == kSubtract, 11, 1) | place(b.logic, 12, 4);
 }
 
@@ -176,7 +184,8 @@ void write_pass_bp(CommandStream& out, const GxState& s,
     out.load_bp(static_cast<u8>(bp::kTevKonstSelect0 + i), tev_konst_select(tev, i));
   out.load_bp(bp::kAlphaCompare, alpha_compare(s.alpha_compare));
   out.load_bp(bp::kZMode, z_mode(s.z));
-  out.load_bp(bp::kBlendMode, blend_mode(s.blend));
+  out.load_bp(bp::kBlendMode, blend_mode(s.blend, s.dither));
+  out.load_bp(bp::kPixelControl, pixel_control(s.pixel_format));
   // Texture maps: GX_LoadTexObj's six registers for every map that holds a texture, then the
   // setup unit's sizes of each texcoord an enabled stage fetches a map with (libogc's
   // __SetSURegs from __GX_SetSUTexRegs at the next draw: size - 1 in bits 0-15, the wrap's low
@@ -223,12 +232,12 @@ void write_gx_init_bp(CommandStream& out, FrameSize size) {
   // clears only what the colour update and z update bits let through [DHW BPStructs.cpp
   // BPMEM_TRIGGER_EFB_COPY, ClearScreen] - starts from them, as after GX_Init.
   out.load_bp(bp::kZMode, z_mode(ZMode{}));
-  out.load_bp(bp::kBlendMode, blend_mode(BlendMode{}));
+  out.load_bp(bp::kBlendMode, blend_mode(BlendMode{}, GxState{}.dither));
   // GX_SetDstAlpha(GX_DISABLE, 0): constant alpha off [OGC gx.c GX_SetDstAlpha].
   out.load_bp(bp::kConstantAlpha, 0);
-  // GX_SetPixelFmt(GX_PF_RGB8_Z24, GX_ZC_LINEAR): format 0-2 = 0, z format 3-5 = 0;
-  // GX_SetZCompLoc(GX_TRUE): bit 6 [OGC gx.c L4389-4413] [DHW BPMemory.h PEControl].
-  out.load_bp(bp::kPixelControl, place(1, 6, 1));
+  // GX_SetPixelFmt(GX_PF_RGB8_Z24, GX_ZC_LINEAR), GX_SetZCompLoc(GX_TRUE) [OGC gx.c
+  // L4389-4413].
+  out.load_bp(bp::kPixelControl, pixel_control(PixelFormat{}));
   // GX_SetFieldMask(GX_ENABLE, GX_ENABLE): odd 0, even 1; GX_SetFieldMode(GX_FALSE, 0) for a
   // progressive mode [OGC gx.c L4428-4440, __GX_InitGX].
   out.load_bp(bp::kFieldMask, 3);

@@ -51,7 +51,8 @@ std::array<u32, 2> tev_register(const ColorS10& value);
 std::array<u32, 2> tev_konst(const Color8& value);
 u32 tev_konst_select(const TevState& tev, int index);  // BP 0xF6 + index, index 0..7
 u32 alpha_compare(const AlphaCompare& compare);
-u32 blend_mode(const BlendMode& blend);  // with GX_Init's dither and colour/alpha update
+u32 blend_mode(const BlendMode& blend, bool dither);  // with GX_Init's colour/alpha update
+u32 pixel_control(const PixelFormat& format);
 u32 z_mode(const ZMode& z);
 
 // A texture map's registers as GX_InitTexObj + GX_LoadTexObj write them, the image at the

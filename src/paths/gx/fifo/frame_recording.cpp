@@ -145,6 +145,11 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     TextureMemory memory(scene.file.string());
     write_gx_init(out, size);
     write_view_xf(out, glm::mat3(view.view), scene.camera, size);
+    // The frame's pixel format before its clearing copy, as a game sets it once at start-up:
+    // the clear then stores the background in the format the draws read it in (gx_path.h
+    // ScenePrograms::pixel_format; efb.h).
+    const PixelFormat format = programs.pixel_format(scene);
+    if (!(format == PixelFormat{})) out.load_bp(bp::kPixelControl, pixel_control(format));
     write_copy_clear(out, background);
     write_clearing_texture_copy(out, size, kClearCopyAddress);
     for (const MaterialDraw& d : programs.draws(scene)) {

@@ -96,6 +96,10 @@ DecodedPass decode_pass(const RegisterFile& r) {
   s.blend.src = static_cast<u8>(field(bm, 8, 3));
   s.blend.dst = static_cast<u8>(field(bm, 5, 3));
   s.blend.logic = static_cast<u8>(field(bm, 12, 4));
+  s.dither = field(bm, 2, 1) != 0;
+  // PE control 0x43: pixel format 0-2, z format 3-5.
+  const u32 pe = r.bp[0x43];
+  s.pixel_format = {static_cast<u8>(field(pe, 0, 3)), static_cast<u8>(field(pe, 3, 3))};
   // Texture maps whose image was (re)loaded.
   for (int m = 0; m < kMaxTexMaps; ++m) {
     const int offset = m < 4 ? m : 0x20 + m - 4;

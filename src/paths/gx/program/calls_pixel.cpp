@@ -21,6 +21,18 @@ void add_pixel_calls(CallTable& table) {
         [](Machine& m) {
           m.state.blend = {m.u(0), m.u(1), m.u(2), m.u(3)};
         }}},
+      // The colour formats Dolphin's software renderer stores (efb.h); the others keep no colour
+      // (Z24) or are the YUV copies' formats, which the emulator does not model.
+      {"GX_SetPixelFmt",
+       {{integer(G::PixelFormat, 0, 7), integer(G::ZFormat, 0, 3)},
+        [](Machine& m) {
+          if (m.u(0) > kPixelRgb565Z16)
+            m.fail_arg(0,
+                       "pixel format not modelled (GX_PF_RGB8_Z24, GX_PF_RGBA6_Z24 and "
+                       "GX_PF_RGB565_Z16 are)");
+          m.state.pixel_format = {m.u(0), m.u(1)};
+        }}},
+      {"GX_SetDither", {{integer(G::Bool, 0, 1)}, [](Machine& m) { m.state.dither = m.b(0); }}},
       // Every mode is modelled: the rasteriser culls as the setup unit does (gx_state.h).
       {"GX_SetCullMode",
        {{integer(G::CullMode, 0, 3)}, [](Machine& m) { m.state.cull_mode = m.u(0); }}},

@@ -48,6 +48,8 @@ enum class NameGroup {
   TexFilter,
   PosMtx,
   CullMode,
+  PixelFormat,
+  ZFormat,
 };
 
 struct GxName {

@@ -22,6 +22,10 @@ std::string describe(NameGroup group) {
       return "a position matrix (GX_PNMTX0..9)";
     case NameGroup::CullMode:
       return "a cull mode (GX_CULL_*)";
+    case NameGroup::PixelFormat:
+      return "an EFB pixel format (GX_PF_*)";
+    case NameGroup::ZFormat:
+      return "a depth compression (GX_ZC_*)";
     case NameGroup::Number:
       return "a number";
     case NameGroup::Bool:
