@@ -73,7 +73,7 @@ TEST(D3d9Asm, Ps20SplitsAluFromTexAndCountsDependentLevels) {
   EXPECT_EQ(c.temporaries, 6);
   EXPECT_EQ(c.constants, 3);
   EXPECT_EQ(c.samplers, 2);
-  EXPECT_EQ(c.inputs, 1);
+  EXPECT_EQ(c.inputs, 1);  // t0
 }
 
 TEST(D3d9Asm, Model3AndFlowControl) {

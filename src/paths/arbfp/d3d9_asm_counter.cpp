@@ -48,9 +48,12 @@ class DependentReads {
 Counts count(const Program& program) {
   Counts c;
   std::set<int> samplers;
-  std::set<std::string> inputs;
+  std::set<int> inputs;
   DependentReads dependent;
   const bool pixel = is_pixel(program.version);
+  // The inputs a profile limits: a 2_0/2_x pixel shader's texture coordinates (its two colour
+  // registers v0, v1 are fixed), else the input registers v#.
+  const std::string inputs_type = pixel && !is_model3(program.version) ? "t" : "v";
   for (const Instruction& ins : program.instructions) {
     const int n = slots(*ins.info, program.version, ins.compared);
     switch (ins.info->kind) {
@@ -66,9 +69,7 @@ Counts count(const Program& program) {
         c.relative_constants = c.relative_constants || r.relative;
       }
       if (r.type == "s") samplers.insert(r.index);
-      if (r.type == "v" || (pixel && r.type == "t")) {
-        inputs.insert(r.type + std::to_string(r.index));
-      }
+      if (r.type == inputs_type) inputs.insert(r.index);
     };
     for (const Operand& o : ins.destinations) use(o.reg);
     for (const Operand& o : ins.sources) use(o.reg);

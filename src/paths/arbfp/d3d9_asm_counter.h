@@ -16,7 +16,7 @@ struct Counts {
   int constants = 0;         // c#: the highest index read or defined + 1 (relative: its base)
   bool relative_constants = false;  // some c# is relatively addressed: its range is unknown
   int samplers = 0;          // distinct s# declared or sampled
-  int inputs = 0;            // distinct t# and v# (pixel) or v# (vertex) declared or read
+  int inputs = 0;            // distinct t# (ps_2_0, ps_2_x) or v# (others) declared or read
   // Pixel shaders: the longest chain of texture reads whose coordinates come from a register
   // the shader computed; ps_2_0 allows 4 ("ps_2_0 ... dependent texture reads: 4 levels").
   int dependent_reads = 0;

@@ -12,8 +12,10 @@ namespace lt::d3d9 {
 namespace {
 
 // The rows of one program: fxc's figures as the cross-checks of the slots it states.
-std::vector<budget::Resource> d3d9_figures(const Counts& c, bool pixel, const budget::Profile& p,
-                                      const std::optional<FxcCount>& fxc) {
+std::vector<budget::Resource> d3d9_figures(const Counts& c, Version version,
+                                           const budget::Profile& p,
+                                           const std::optional<FxcCount>& fxc) {
+  const bool pixel = is_pixel(version), model3 = is_model3(version);
   using budget::CrossCheck;
   auto check = [](std::optional<int> theirs, int ours) {
     return theirs ? std::optional<CrossCheck>(CrossCheck{*theirs, *theirs == ours}) : std::nullopt;
@@ -43,7 +45,8 @@ std::vector<budget::Resource> d3d9_figures(const Counts& c, bool pixel, const bu
                  std::string("c0..cN read or defined: N + 1") +
                      (c.relative_constants ? " (relatively addressed: from the base index)" : ""),
                  {}});
-  out.push_back({"attributes", pixel ? "inputs (t#, v#)" : "inputs (v#)", c.inputs,
+  out.push_back({"attributes", pixel && !model3 ? "texture coordinates (t#)" : "inputs (v#)",
+                 c.inputs,
                  limit_of(p.attributes), "distinct input registers declared or read", {}});
   out.push_back({"samplers", "samplers", c.samplers, {}, "distinct s# declared or sampled", {}});
   if (pixel) {
@@ -66,7 +69,6 @@ budget::Report budget_d3d9_file(const std::string& file, const std::string& prof
     throw InputError(file, std::to_string(e.at().line) + ":" + std::to_string(e.at().column),
                      e.message());
   }
-  const bool pixel = is_pixel(program.version);
   const budget::Profile& checked =
       budget::profile_for(kind_of(program.version), profile, default_profile(program.version));
   const Counts counts = count(program);
@@ -90,7 +92,7 @@ budget::Report budget_d3d9_file(const std::string& file, const std::string& prof
   item.name = kind + " program";
   item.program = file;
   item.profile = checked.name;
-  item.resources = d3d9_figures(counts, pixel, checked, fxc);
+  item.resources = d3d9_figures(counts, program.version, checked, fxc);
   for (const budget::Resource& f : item.resources) {
     if (f.check && !f.check->agrees) {
       r.notes.push_back("DIFFERS from fxc: " + f.label + " " + std::to_string(f.used) + ", fxc " +
