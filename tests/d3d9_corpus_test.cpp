@@ -1,6 +1,7 @@
-// Direct3D 9 programs from public repositories, each fxc's own output with fxc's count in its
-// header comment ("; N ALU, M TEX", kept by Unity 3/4 in the d3d9 subprograms of compiled
-// shaders): tests/data/d3d9, every file's repository, path and commit in SOURCES.tsv. The
+// Direct3D 9 programs from public repositories, each fxc's own output with fxc's count in a
+// comment ("; N ALU, M TEX", kept by Unity 3/4 in the d3d9 subprograms of compiled shaders, or
+// an fxc listing's "// approximately N instruction slots used"): tests/data/d3d9, every file's
+// repository, path and commit in SOURCES.tsv. The
 // expectation is fxc's figure, read here from the comment; the counter never sees it.
 #include <gtest/gtest.h>
 
@@ -54,13 +55,24 @@ TEST(D3d9Corpus, EveryProgramNamesWhereItCameFrom) {
 // Our ALU and TEX slots against fxc's on every program, tallied per version (the table of
 // docs/budget.md): all must agree.
 TEST(D3d9Corpus, SlotsEqualFxcsCommentOnEveryProgram) {
-  const std::regex fxc(R"(\n; (\d+) ALU(, (\d+) TEX)?\n)");
+  // Unity's header comment, or the last line of an fxc listing (a vertex shader's without the
+  // parenthesis: every slot arithmetic).
+  const std::regex unity(R"(\n; (\d+) ALU(, (\d+) TEX)?\n)");
+  const std::regex listing(
+      R"(// approximately (\d+) instruction slots used( \((\d+) texture, (\d+) arithmetic\))?)");
   std::map<std::string, std::pair<int, int>> agree;  // version -> (agreeing, programs)
   for (const fs::path& p : corpus_programs()) {
     const std::string text = test::read_file(p);
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(text, m, fxc)) << p << " has no fxc count";
-    const int alu = std::stoi(m[1]), tex = m[3].matched ? std::stoi(m[3]) : 0;
+    int alu = 0, tex = 0;
+    if (std::regex_search(text, m, unity)) {
+      alu = std::stoi(m[1]);
+      tex = m[3].matched ? std::stoi(m[3]) : 0;
+    } else {
+      ASSERT_TRUE(std::regex_search(text, m, listing)) << p << " has no fxc count";
+      tex = m[2].matched ? std::stoi(m[3]) : 0;
+      alu = m[2].matched ? std::stoi(m[4]) : std::stoi(m[1]);
+    }
     const d3d9::Program program = d3d9::parse(text);
     const d3d9::Counts c = d3d9::count(program);
     const bool same = c.arithmetic == alu && c.texture == tex;
@@ -74,7 +86,7 @@ TEST(D3d9Corpus, SlotsEqualFxcsCommentOnEveryProgram) {
     std::cout << "D3D9 corpus: " << version << " " << a.first << "/" << a.second
               << " equal fxc's count\n";
   }
-  EXPECT_EQ(agree.size(), 4u) << "vs_2_0, vs_3_0, ps_2_0 and ps_3_0 programs";
+  EXPECT_EQ(agree.size(), 5u) << "vs_1_1, vs_2_0, vs_3_0, ps_2_0 and ps_3_0 programs";
 }
 
 }  // namespace
