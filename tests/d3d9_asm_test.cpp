@@ -139,6 +139,7 @@ TEST(D3d9Asm, RefusalsNameLineAndColumn) {
       {"mov r0, c0\n", 1, 1, "expected a version token, found 'mov'"},
       {"ps_2_0\nmad r0, r1, ", 2, 13, "expected a register, found the end of the line"},
       {"ps_2_0\nmad r0, r1\n", 2, 11, "expected ',' and a source operand, found the end of the line"},
+      {"ps_2_0\nmad r0, r1, c", 2, 13, "expected an index after 'c' (c0 to c31)"},
       {"ps_2_0\nmov r0, c0, c1\n", 2, 11, "expected the end of the instruction, found ','"},
       {"vs_2_0\ndef c0, 1, 2, x, 4\n", 2, 15, "expected a number, found 'x'"},
       {"// nothing here\n", 2, 1, "expected a version token"},

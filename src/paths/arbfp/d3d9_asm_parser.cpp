@@ -115,6 +115,12 @@ std::string lower(std::string s) {
   return s;
 }
 
+// The registers written without an index: the named outputs and inputs, the loop counter.
+bool single_register(const std::string& type) {
+  return type == "opos" || type == "ofog" || type == "opts" || type == "odepth" ||
+         type == "vpos" || type == "vface" || type == "al";
+}
+
 bool is_comparison(const std::string& s) {
   return s == "gt" || s == "lt" || s == "ge" || s == "le" || s == "eq" || s == "ne";
 }
@@ -311,7 +317,14 @@ class Parser {
       if (text.size() - digits > 5) line.fail_at(at, "register index of '" + text + "' too large");
       op.reg.index = std::stoi(text.substr(digits));
     }
-    if (line.accept('[')) relative(line, op);
+    const bool indexed = digits < text.size();
+    if (line.accept('[')) {
+      relative(line, op);
+    } else if (!indexed && !single_register(op.reg.type)) {
+      // "c" alone is no register: a cut line ("mad r0, r1, c") must not read as c0.
+      line.fail_at(at, "expected an index after '" + text + "' (" + text + "0 to " + text +
+                           std::to_string(count - 1) + ")");
+    }
     if (op.reg.index >= count) {
       line.fail_at(at, text + " is past " + to_string(version_) + "'s " + std::to_string(count) +
                            " " + register_name(op.reg.type) + " registers (" +
