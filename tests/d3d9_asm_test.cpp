@@ -59,21 +59,34 @@ TEST(D3d9Asm, Ps20SplitsAluFromTexAndCountsDependentLevels) {
       "dcl t0.xy\n"
       "dcl_2d s0\n"
       "dcl_2d s1\n"
-      "texld r0, t0, s0\n"        // TEX 1, not dependent
-      "texld r1, r0, s1\n"        // TEX 1, level 1
-      "mad r2, r1, c0, c1\n"      // ALU 1, r2 at level 1
-      "texld_pp r3, r2, s0\n"     // TEX 1, level 2
+      "texld r0, t0, s0\n"        // TEX 1, not dependent (order 0)
+      "texld r1, r0, s1\n"        // TEX 1, first order: src0 is an r#
+      "mad r2, r1, c0, c1\n"      // ALU 1, r2 depends on a first-order read
+      "texld_pp r3, r2, s0\n"     // TEX 1, second order
       "lrp r4, r3, r1, r0\n"      // ALU 2
       "pow r5.x, r4.x, c2.x\n"    // ALU 3
       "texkill r5\n"              // TEX 1
       "mov_sat oC0, r4 // done\n");  // ALU 1
   EXPECT_EQ(c.arithmetic, 7);
   EXPECT_EQ(c.texture, 4);
-  EXPECT_EQ(c.dependent_reads, 2);
+  EXPECT_EQ(c.dependent_levels, 3);  // orders 0, 1, 2
   EXPECT_EQ(c.temporaries, 6);
   EXPECT_EQ(c.constants, 3);
   EXPECT_EQ(c.samplers, 2);
   EXPECT_EQ(c.inputs, 1);  // t0
+}
+
+// "texld - ps_2_0 and up": rewriting a destination makes a read first-order dependent too, and
+// writing into a register that holds a first-order result makes it second order.
+TEST(D3d9Asm, ARewrittenDestinationIsADependentRead) {
+  EXPECT_EQ(counted("ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n")
+                .dependent_levels,
+            1);
+  EXPECT_EQ(counted("ps_2_0\ndcl t0\ndcl t1\ndcl_2d s0\ntexld r0, t0, s0\n"
+                    "texld r0, t1, s0\ntexld r0, t1, s0\nmov oC0, r0\n")
+                .dependent_levels,
+            3);
+  EXPECT_EQ(counted("ps_2_0\nmov oC0, c0\n").dependent_levels, 0);
 }
 
 TEST(D3d9Asm, Model3AndFlowControl) {

@@ -12,11 +12,12 @@ const std::vector<Profile>& all_profiles() {
       // ARB counts the first, non-dependent, node as an indirection too, so 4 dependent levels
       // are 5 texture indirections.
       {"ps_2_0", ProgramKind::Fragment, "vs_2_0", 64, 32, -1, 12, 32, 8, 5,
-       "D3D9 ps_2_0: 64 ALU, 32 TEX, 12 temps, 32 constants, 8 texcoords, 4 dependent-read levels"},
+       "D3D9 ps_2_0: 64 ALU, 32 TEX, 12 temps, 32 constants, 8 texcoords, 4 dependent-read levels",
+       4},
       // ps_2_x guarantees at least 96 instruction slots (ALU and TEX together); the other minimums
       // are those of ps_2_0.
       {"ps_2_x", ProgramKind::Fragment, "vs_2_0", -1, -1, 96, 12, 32, 8, 5,
-       "D3D9 ps_2_x minimum: 96 instruction slots, otherwise as ps_2_0"},
+       "D3D9 ps_2_x minimum: 96 instruction slots, otherwise as ps_2_0", 4},
       // ARB_fragment_program's minimum maximums (MAX_PROGRAM_NATIVE_*): what every implementation
       // must accept.
       {"arbfp1-min", ProgramKind::Fragment, "arbvp1-min", 48, 24, 72, 16, 24, 10, 4,
@@ -37,7 +38,8 @@ const std::vector<Profile>& all_profiles() {
       // 32 texture instructions and 4 dependent-read levels, as ps_2_0.
       {"ps_2_b", ProgramKind::Fragment, "vs_2_0", -1, 32, 512, 32, 32, 8, 5,
        "fxc ps_2_b: 512 instruction slots (32 TEX), 32 temps, 32 constants, 8 texcoords, "
-       "4 dependent-read levels"},
+       "4 dependent-read levels",
+       4},
       // ps_3_0: 512 slots at least, 32 temporaries, 224 constants, 10 inputs (v#), no
       // dependent-read limit ("Registers - ps_3_0", "Pixel Shader Differences").
       {"ps_3_0", ProgramKind::Fragment, "vs_3_0", -1, -1, 512, 32, 224, 10, -1,

@@ -20,6 +20,9 @@ struct Profile {
   int temporaries = -1, parameters = -1, attributes = -1;
   int indirections = -1;
   std::string source;  // where the numbers come from
+  // D3D9 assembly: levels of texture reads, the first plus each dependent order ("texld - ps_2_0
+  // and up": without NODEPENDENTREADLIMIT a read may be dependent to third order, 4 levels).
+  int dependent_levels = -1;
 };
 
 const std::vector<Profile>& all_profiles();

@@ -8,39 +8,43 @@ namespace lt::d3d9 {
 
 namespace {
 
-// Dependent-read depth: an input (t#, v#) or a constant is 0; a register computed by arithmetic
-// holds the deepest of its sources; a texture read whose coordinate is a computed register (not
-// an input as it stands) is one level deeper than that register, and its result holds its level.
-// So "texld r0, t0, s0" is level 0, "texld r1, r0, s1" level 1, as the documentation counts
-// dependent reads (a read whose coordinates the shader computed) and as ARB_fragment_program
-// issue 24 counts indirections (one more: its first node counts).
+// Dependent texture reads as "texld - ps_2_0 and up" orders them: a sampling instruction is
+// first-order dependent when its coordinate src0 is a temporary r# or its destination was written
+// before; n-th order when it reads or writes an r# whose contents depend (perhaps indirectly) on
+// an (n-1)-th order one. So each r# holds the order its contents depend on (arithmetic: the
+// highest of its sources; inputs and constants 0), and a read is one order above the deepest of
+// its coordinate (an r#) and its earlier destination. Levels = 1 + the highest order, the first
+// (non-dependent) level included, as ps_2_0's "4 levels" and ARB's indirections count them.
 class DependentReads {
  public:
   void instruction(const Instruction& ins) {
     if (ins.info->kind == Kind::Setup || ins.destinations.empty()) return;
-    int depth = 0;
+    const Register& d = ins.destinations.front().reg;
+    int order = 0;
     if (ins.info->kind == Kind::Texture && !ins.sources.empty()) {
       const Register& coordinate = ins.sources.front().reg;
-      if (coordinate.type == "r") {
-        depth = depth_of(coordinate) + 1;
-        deepest_ = std::max(deepest_, depth);
+      const bool from_temporary = coordinate.type == "r";
+      const bool rewritten = d.type == "r" && order_.count(d.index);
+      if (from_temporary || rewritten) {
+        order = 1 + std::max(from_temporary ? order_of(coordinate) : 0,
+                             rewritten ? order_of(d) : 0);
       }
+      levels_ = std::max(levels_, order + 1);
     } else {
-      for (const Operand& s : ins.sources) depth = std::max(depth, depth_of(s.reg));
+      for (const Operand& s : ins.sources) order = std::max(order, order_of(s.reg));
     }
-    const Register& d = ins.destinations.front().reg;
-    if (d.type == "r") depth_[d.index] = depth;
+    if (d.type == "r") order_[d.index] = order;
   }
-  int deepest() const { return deepest_; }
+  int levels() const { return levels_; }
 
  private:
-  int depth_of(const Register& r) const {
+  int order_of(const Register& r) const {
     if (r.type != "r") return 0;
-    const auto it = depth_.find(r.index);
-    return it == depth_.end() ? 0 : it->second;
+    const auto it = order_.find(r.index);
+    return it == order_.end() ? 0 : it->second;
   }
-  std::map<int, int> depth_;
-  int deepest_ = 0;
+  std::map<int, int> order_;  // r# -> the order its contents depend on
+  int levels_ = 0;
 };
 
 }  // namespace
@@ -85,7 +89,7 @@ Counts count(const Program& program) {
   }
   c.samplers = static_cast<int>(samplers.size());
   c.inputs = static_cast<int>(inputs.size());
-  c.dependent_reads = dependent.deepest();
+  c.dependent_levels = dependent.levels();
   return c;
 }
 

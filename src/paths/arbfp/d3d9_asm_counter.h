@@ -17,9 +17,9 @@ struct Counts {
   bool relative_constants = false;  // some c# is relatively addressed: its range is unknown
   int samplers = 0;          // distinct s# declared or sampled
   int inputs = 0;            // distinct t# (ps_2_0, ps_2_x) or v# (others) declared or read
-  // Pixel shaders: the longest chain of texture reads whose coordinates come from a register
-  // the shader computed; ps_2_0 allows 4 ("ps_2_0 ... dependent texture reads: 4 levels").
-  int dependent_reads = 0;
+  // Pixel shaders: levels of texture reads, 1 + the highest dependent order as "texld - ps_2_0
+  // and up" defines it (0 without a texture read); ps_2_0 allows third order, 4 levels.
+  int dependent_levels = 0;
 
   int slots() const { return arithmetic + texture + flow; }
 };

@@ -50,10 +50,11 @@ std::vector<budget::Resource> d3d9_figures(const Counts& c, Version version,
                  limit_of(p.attributes), "distinct input registers declared or read", {}});
   out.push_back({"samplers", "samplers", c.samplers, {}, "distinct s# declared or sampled", {}});
   if (pixel) {
-    // The profile's limit is in ARB texture indirections, one more than dependent levels.
-    out.push_back({"dependent_reads", "dependent-read levels", c.dependent_reads,
-                   p.indirections >= 0 ? std::optional<int>(p.indirections - 1) : std::nullopt,
-                   "texture reads chained through computed coordinates", {}});
+    out.push_back({"dependent_reads", "dependent-read levels", c.dependent_levels,
+                   limit_of(p.dependent_levels),
+                   "1 + the highest dependent order of a texture read (texld - ps_2_0: first "
+                   "order reads an r# or rewrites its destination, n-th depends on an (n-1)-th)",
+                   {}});
   }
   return out;
 }
