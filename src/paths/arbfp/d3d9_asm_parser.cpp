@@ -355,7 +355,12 @@ class Parser {
   void relative(Line& line, Operand& op) {
     op.reg.relative = true;
     if (std::isdigit(static_cast<unsigned char>(line.peek()))) {
-      op.reg.index += std::atoi(line.alnum().c_str());
+      const Position base_at = line.here();
+      const std::string base = line.alnum();
+      if (base.size() > 5 || base.find_first_not_of("0123456789") != std::string::npos) {
+        line.fail_at(base_at, "expected a register offset, found '" + base + "'");
+      }
+      op.reg.index += std::stoi(base);
       line.expect('+', "'+' and an address register");
     }
     const Position at = line.here();
