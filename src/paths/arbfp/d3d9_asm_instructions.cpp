@@ -42,9 +42,10 @@ const std::vector<Entry>& table() {
       {{"exp"}, 1, {10, 1, 1, 1, 1, 1, 1}},
       {{"expp"}, 1, {1, 1, 1, 1, kNo, kNo, kNo}},
       // frc: vs_1_1's table gives 3 slots (a macro); vs_2_0's table gives 1, but fxc counts 3
-      // for vs_2_0 (its "; N ALU" comment on the 59 vs_2_0 programs of tests/data/d3d9 with frc
-      // is 2 more per frc than a 1-slot count, and equal with 3): the runtime still validates
-      // frc as vs_1_1's macro before shader model 3, where vs_3_0's table and fxc say 1.
+      // for vs_2_0: its "; N ALU" comment is 2 more per frc than a 1-slot count, and equal with
+      // 3, on every vs_2_0 program with frc of the corpus's source (59 of 365; 6 of them in
+      // tests/data/d3d9). We count what the compiler holds a program to (vs_2_x as vs_2_0: no
+      // program to say otherwise); vs_3_0's table and fxc say 1.
       {{"frc"}, 1, {3, 3, 3, 1, 1, 1, 1}},
       {{"lit"}, 1, {3, 3, 3, 3, kNo, kNo, kNo}},
       {{"log"}, 1, {10, 1, 1, 1, 1, 1, 1}},
