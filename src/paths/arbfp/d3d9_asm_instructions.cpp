@@ -73,8 +73,7 @@ const std::vector<Entry>& table() {
       // sincos: 8 slots wherever it exists; its sources are in source_count().
       {{"sincos"}, 1, {kNo, 8, 8, 8, 8, 8, 8}},
       {{"slt"}, 2, {1, 1, 1, 1, kNo, kNo, kNo}},
-      // Gradients: ps_2_x (D3DPS20CAPS_GRADIENTINSTRUCTIONS) and ps_3_0, 2 slots in ps_2_x's
-      // table; ps_3_0's taken as the same.
+      // Gradients: ps_2_x (D3DPS20CAPS_GRADIENTINSTRUCTIONS) and ps_3_0, 2 slots in both tables.
       {{"dsx"}, 1, {kNo, kNo, kNo, kNo, kNo, 2, 2}},
       {{"dsy"}, 1, {kNo, kNo, kNo, kNo, kNo, 2, 2}},
       {{"setp", Kind::Arithmetic, true, true}, 2, {kNo, kNo, 1, 1, kNo, 1, 1}},
