@@ -158,22 +158,6 @@ struct Inputs {
   }
 };
 
-// `budget --json` prints one pretty-printed object per file, each closed by a "}" line.
-std::vector<nlohmann::json> records(const std::string& out) {
-  std::vector<nlohmann::json> all;
-  std::string record;
-  std::istringstream in(out);
-  for (std::string line; std::getline(in, line);) {
-    record += line + "\n";
-    if (line == "}") {
-      all.push_back(nlohmann::json::parse(record));
-      record.clear();
-    }
-  }
-  EXPECT_TRUE(record.empty()) << "a record left open: " << record;
-  return all;
-}
-
 std::set<std::string> keys(const nlohmann::json& j) {
   std::set<std::string> out;
   for (const auto& [k, v] : j.items()) out.insert(k);
@@ -185,7 +169,7 @@ TEST(BudgetReport, EveryKindOfInputInOneSchema) {
   const test::RunResult r = test::run_ltrender("budget " + in.fp + " " + in.comb + " " + in.gx +
                                                " " + in.scene + " --profile gl13-3units --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<nlohmann::json> all = records(r.out);
+  const std::vector<nlohmann::json> all = test::budget_records(r.out);
   ASSERT_EQ(all.size(), 4u) << r.out;
   const std::vector<std::pair<std::string, std::string>> expected = {
       {in.fp, "arbfp"}, {in.comb, "combiners"}, {in.gx, "gx"}, {in.scene, "arbfp"}};
@@ -225,7 +209,7 @@ TEST(BudgetReport, AnInvalidFileIsAnErrorRecordUnderJson) {
       test::run_ltrender("budget " + in.fp + " " + in.bad + " " + in.gx + " --json");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "ltrender: error: " + in.bad + ":4:1: expected ';', found 'MOV'\n");
-  const std::vector<nlohmann::json> all = records(r.out);
+  const std::vector<nlohmann::json> all = test::budget_records(r.out);
   ASSERT_EQ(all.size(), 3u) << r.out;
   const nlohmann::json& e = all[1];
   EXPECT_EQ(e["schema"], "ltrender-budget-2");
@@ -271,7 +255,7 @@ TEST(BudgetReport, AProfilePerKindOfInput) {
   // gl13-3units is the combiners path's: the .comb file fits it, the ARB file keeps ps_2_0.
   const test::RunResult one = test::run_ltrender(both + " --profile gl13-3units --json");
   ASSERT_EQ(one.exit_code, 0) << one.err;
-  const std::vector<nlohmann::json> a = records(one.out);
+  const std::vector<nlohmann::json> a = test::budget_records(one.out);
   ASSERT_EQ(a.size(), 2u);
   EXPECT_EQ(a[0]["profiles"][0]["name"], "gl13-3units");
   EXPECT_EQ(a[1]["profiles"][0]["name"], "ps_2_0");
@@ -279,7 +263,7 @@ TEST(BudgetReport, AProfilePerKindOfInput) {
                                  std::string(" --profile arbfp1-min --profile gl13-3units")}) {
     const test::RunResult r = test::run_ltrender(both + two + " --json");
     ASSERT_EQ(r.exit_code, 0) << two << ": " << r.err;
-    const std::vector<nlohmann::json> b = records(r.out);
+    const std::vector<nlohmann::json> b = test::budget_records(r.out);
     ASSERT_EQ(b.size(), 2u);
     EXPECT_EQ(b[0]["profiles"][0]["name"], "gl13-3units") << two;
     EXPECT_EQ(b[1]["profiles"][0]["name"], "arbfp1-min") << two;
@@ -296,8 +280,8 @@ TEST(BudgetReport, AProfilePerKindOfInput) {
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_EQ(unknown.err,
             "ltrender: error: --profile:gl13-4units: unknown profile (arbfp: ps_2_0, ps_2_x, "
-            "arbfp1-min, vs_2_0, arbvp1-min; combiners: gl13-2units, gl13-3units, gl-8units; gx: "
-            "wii-tev)\n");
+            "arbfp1-min, vs_2_0, arbvp1-min, ps_2_a, ps_2_b, ps_3_0, vs_1_1, vs_3_0; combiners: "
+            "gl13-2units, gl13-3units, gl-8units; gx: wii-tev)\n");
   const test::RunResult none = test::run_ltrender(both + " --profile wii-tev");
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_EQ(none.err,

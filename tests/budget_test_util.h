@@ -5,9 +5,27 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace lt::test {
+
+// `budget --json` prints one pretty-printed object per file, each closed by a "}" line.
+inline std::vector<nlohmann::json> budget_records(const std::string& out) {
+  std::vector<nlohmann::json> all;
+  std::string record;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    record += line + "\n";
+    if (line == "}") {
+      all.push_back(nlohmann::json::parse(record));
+      record.clear();
+    }
+  }
+  EXPECT_TRUE(record.empty()) << "a record left open: " << record;
+  return all;
+}
 
 // The resource `key` of one row (an element of "items"); null when the row has none.
 inline nlohmann::json budget_resource(const nlohmann::json& item, const std::string& key) {

@@ -24,11 +24,8 @@ const PathInfo* path_of_program_file(const std::string& file) {
   }
   if (ext == ".json") return nullptr;
   const std::string text = read_text_file(file);
-  const size_t start = text.find_first_not_of(" \t\r\n");
   for (const PathInfo& p : all_paths()) {
-    for (const std::string& h : p.program_headers) {
-      if (start != std::string::npos && text.compare(start, h.size(), h) == 0) return &p;
-    }
+    if (p.reads_program_text(text)) return &p;
   }
   return nullptr;
 }
@@ -110,7 +107,7 @@ Action add_budget(CLI::App& app) {
   auto scene_options = std::make_shared<SceneOptions>();
   sub->add_option("FILE", *files,
                   "Scene files, or program files: .fp/.vp/.arb or !!ARBfp1.0/!!ARBvp1.0 text (ARB "
-                  "programs), .comb (GL 1.3 combiner programs), .c/.gx (GX programs)")
+                  "programs), .asm/.vsh/.psh or vs_2_0/ps_2_0/... text (D3D9 assembly), .comb (GL 1.3 combiner programs), .c/.gx (GX programs)")
       ->required();
   CLI::Option* path_option =
       sub->add_option("--path", *path,
@@ -120,7 +117,8 @@ Action add_budget(CLI::App& app) {
   sub->add_option("--variant", *variant, "Path variant (default: the path's default)");
   sub->add_option("--profile", *profiles,
                   "One per kind of input, repeated or comma-separated; each goes to the path that "
-                  "has it. arbfp: ps_2_0 (default), ps_2_x, arbfp1-min, vs_2_0, arbvp1-min (the "
+                  "has it. arbfp: ps_2_0 (default), ps_2_x, ps_2_a, ps_2_b, ps_3_0, arbfp1-min, "
+                  "vs_1_1, vs_2_0, vs_3_0, arbvp1-min (a D3D9 program's default is its version's; the "
                   "partner profile checks the other program kind); combiners: gl13-2units "
                   "(default), gl13-3units, gl-8units; gx: wii-tev (default)")
       ->delimiter(',');

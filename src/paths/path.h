@@ -179,6 +179,9 @@ class PathInfo {
                                 const std::string& profile) const;
   // `ltrender budget FILE`: a program file of this path's kind, counted against a profile.
   virtual budget::Report budget_file(const std::string& file, const std::string& profile) const;
+  // Whether `text` (a file's, whose extension no path claims) is a program of this path's kind.
+  // Default: it starts with one of program_headers after white space.
+  virtual bool reads_program_text(const std::string& text) const;
   // `export --format dff` and `render --via dolphin`: one frame as a Dolphin FIFO log (the bytes
   // of a .dff file) encoded from exactly the state the path's emulator runs, for an
   // implementation that is not ltrender's to play.

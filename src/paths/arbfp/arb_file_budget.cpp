@@ -37,12 +37,6 @@ std::string mesa_message(const std::string& error) {
   return m;
 }
 
-const budget::Profile& profile_for(ProgramKind kind, const std::string& name) {
-  const budget::Profile& chosen = budget::find_profile(
-      name.empty() ? (kind == ProgramKind::Vertex ? "vs_2_0" : "ps_2_0") : name);
-  return chosen.kind == kind ? chosen : budget::find_profile(chosen.partner);
-}
-
 // The rows of program_resources, each with Mesa's native figure beside ours and the rule that
 // relates them (measured on Mesa 22 llvmpipe, see tests/arb_text_test.cpp).
 std::vector<budget::Resource> figures(const budget::ProgramCounts& c, const budget::Profile& p,
@@ -126,7 +120,8 @@ budget::Report budget_arb_file(const std::string& file, const std::string& profi
     throw InputError(file, std::to_string(e.at().line) + ":" + std::to_string(e.at().column),
                      e.message());
   }
-  const budget::Profile& checked = profile_for(parsed.kind(), profile);
+  const budget::Profile& checked = budget::profile_for(
+      parsed.kind(), profile, parsed.kind() == ProgramKind::Vertex ? "vs_2_0" : "ps_2_0");
   const budget::ProgramCounts counts = ir::count(parsed);
   MesaCounts mesa;
   {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/fs.h"
 #include "gl/map_texture.h"
 #include "paths/arbfp/arb_albedo_map.h"
 #include "paths/arbfp/arb_budget.h"
@@ -13,6 +14,8 @@
 #include "paths/arbfp/arb_passes.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arb_thickness_map.h"
+#include "paths/arbfp/d3d9_asm_parser.h"
+#include "paths/arbfp/d3d9_file_budget.h"
 #include "paths/common/frame.h"
 
 namespace lt {
@@ -281,9 +284,23 @@ class ArbfpInfo final : public TypedPathInfo<arbfp::PowVariant> {
     return budget::run_budget(scene, v, profile);
   }
   // Hand-written ARB_vertex_program / ARB_fragment_program text, checked by our counter and by
-  // Mesa (arb_file_budget.h).
+  // Mesa (arb_file_budget.h); or Direct3D 9 assembly, the same shader model's other language,
+  // counted as fxc counts it against the same profiles (d3d9_file_budget.h).
   budget::Report budget_file(const std::string& file, const std::string& profile) const override {
+    if (is_d3d9_file(file)) return d3d9::budget_d3d9_file(file, profile);
     return arbfp::budget_arb_file(file, profile);
+  }
+  bool reads_program_text(const std::string& text) const override {
+    return PathInfo::reads_program_text(text) || d3d9::starts_with_version(text);
+  }
+
+ private:
+  // An ARB header wins; then a D3D9 extension or a version token on the first code line.
+  bool is_d3d9_file(const std::string& file) const {
+    const std::string text = read_text_file(file);
+    if (PathInfo::reads_program_text(text)) return false;
+    const std::string ext = fs::path(file).extension().string();
+    return ext == ".asm" || ext == ".vsh" || ext == ".psh" || d3d9::starts_with_version(text);
   }
 };
 
@@ -321,7 +338,7 @@ ArbfpInfo::ArbfpInfo() {
   };
   for (const budget::Profile& p : budget::all_profiles()) budget_profiles.push_back(p.name);
   takes_profile = true;
-  program_extensions = {".fp", ".vp", ".arb"};
+  program_extensions = {".fp", ".vp", ".arb", ".asm", ".vsh", ".psh"};
   program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
 }
 

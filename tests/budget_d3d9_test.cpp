@@ -1,0 +1,117 @@
+// `ltrender budget` on Direct3D 9 assembly files (issue 41): the one report schema beside every
+// other kind of input, fxc's comment as the cross-check, exit 1 over a limit naming the file and
+// the limit, exit 2 with file:line:column on bad input, recognition by extension or by the
+// version token, and --profile.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "budget_test_util.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+const fs::path kCorpus = fs::path("tests") / "data" / "d3d9";
+
+// n `add r0, r0, c0` after a texld: n ALU, 1 TEX, by ps_2_0's table.
+std::string ps20_with_adds(int n) {
+  std::string s = "ps_2_0\ndcl t0.xy\ndcl_2d s0\ntexld r0, t0, s0\n";
+  for (int i = 0; i < n; ++i) s += "add r0, r0, c0\n";
+  return s + "mov oC0, r0\n";
+}
+
+TEST(BudgetD3d9, MixedListPrintsOneSchema) {
+  const test::TempDir dir;
+  const std::string fp = (dir / "p.fp").string(), gx = (dir / "one.c").string();
+  test::write_file(fp, "!!ARBfp1.0\nMOV result.color, fragment.color;\nEND\n");
+  test::write_file(gx, "GX_SetNumTevStages(1);\nGX_SetNumChans(1);\n");
+  const std::string ps = (test::source_dir() / kCorpus / "ps_2_0_normal_glossy_1.psh").string();
+  const std::string vs = (test::source_dir() / kCorpus / "vs_3_0_normal_parallaxspec_1.vsh").string();
+  const std::string comb = (test::source_dir() / "combiners" / "lobe_vertex.comb").string();
+  const std::string scene = (test::source_dir() / "scenes" / "backlit_sphere.json").string();
+  const test::RunResult r = test::run_ltrender("budget " + fp + " " + ps + " " + vs + " " +
+                                               comb + " " + gx + " " + scene + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<nlohmann::json> all = test::budget_records(r.out);
+  ASSERT_EQ(all.size(), 6u) << r.out;
+  std::set<std::string> top;
+  for (const auto& [k, v] : all[0].items()) top.insert(k);
+  for (const nlohmann::json& j : all) {
+    std::set<std::string> keys;
+    for (const auto& [k, v] : j.items()) keys.insert(k);
+    EXPECT_EQ(keys, top) << j.dump();
+    EXPECT_EQ(j["schema"], "ltrender-budget-2");
+  }
+  const nlohmann::json& p = all[1];
+  EXPECT_EQ(p["file"], ps);
+  EXPECT_EQ(p["path"], "arbfp");
+  EXPECT_EQ(p["details"]["header"], "ps_2_0");
+  EXPECT_EQ(p["details"]["kind"], "fragment");
+  EXPECT_EQ(p["check"]["name"], "fxc");
+  EXPECT_EQ(p["items"][0]["profile"], "ps_2_0");
+  for (const char* key : {"alu", "tex"}) {
+    const nlohmann::json res = test::budget_resource(p["items"][0], key);
+    EXPECT_TRUE(res["check"]["agrees"].get<bool>()) << res.dump();
+  }
+  EXPECT_EQ(test::budget_resource(p["items"][0], "alu")["limit"], 64);
+  EXPECT_EQ(test::budget_resource(p["items"][0], "dependent_reads")["limit"], 4);
+  EXPECT_EQ(all[2]["details"]["header"], "vs_3_0");
+  EXPECT_EQ(all[2]["items"][0]["profile"], "vs_3_0");
+  EXPECT_EQ(test::budget_resource(all[2]["items"][0], "instruction_slots")["limit"], 512);
+}
+
+TEST(BudgetD3d9, OverPs20sAluSlotsExitsOneNamingTheFileAndTheLimit) {
+  const test::TempDir dir;
+  const std::string file = (dir / "big.psh").string();
+  test::write_file(file, ps20_with_adds(64));  // 64 add + 1 mov = 65 ALU
+  const test::RunResult r = test::run_ltrender("budget " + file);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "ltrender: check failed: budget: " + file +
+                       ": fragment program: ALU instructions: 65 > 64 (ps_2_0)\n");
+  // fxc's ps_2_a target has 512 slots and no ALU limit of its own: 66 fit.
+  EXPECT_EQ(test::run_ltrender("budget " + file + " --profile ps_2_a").exit_code, 0);
+  test::write_file(file, ps20_with_adds(63));  // 64 ALU: the limit itself fits
+  EXPECT_EQ(test::run_ltrender("budget " + file).exit_code, 0);
+}
+
+TEST(BudgetD3d9, BadInputExitsTwoWithLineAndColumn) {
+  const test::TempDir dir;
+  const std::string range = (dir / "range.asm").string(), binary = (dir / "binary.psh").string();
+  test::write_file(range, "// fxc /Fc\n    ps_2_0\n    mov r0, c40\n    mov oC0, r0\n");
+  std::string bytes("\x00\x02\xff\xff", 4);  // ps_2_0's version token, little endian
+  bytes += std::string(8, '\0');
+  test::write_file(binary, bytes);
+  const test::RunResult r = test::run_ltrender("budget " + range);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "ltrender: error: " + range +
+                       ":3:13: c40 is past ps_2_0's 32 constant registers (c0-c31)\n");
+  const test::RunResult b = test::run_ltrender("budget " + binary);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_EQ(b.err.rfind("ltrender: error: " + binary + ":1:1: D3D9 shader bytecode (ps_2_0)", 0),
+            0u)
+      << b.err;
+}
+
+// No extension of its own: the version token on the first line with code says what it is.
+TEST(BudgetD3d9, TheVersionTokenNamesTheKindWhateverTheExtension) {
+  const test::TempDir dir;
+  const std::string file = (dir / "shader.txt").string();
+  test::write_file(file,
+                   "//\n// Generated by fxc\n//\n    vs_2_0\n    dcl_position v0\n"
+                   "    m4x4 oPos, v0, c0\n\n// approximately 4 instruction slots used\n");
+  const test::RunResult r = test::run_ltrender("budget " + file + " --profile ps_2_b --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["details"]["header"], "vs_2_0");
+  EXPECT_EQ(j["profiles"][0]["name"], "vs_2_0") << "ps_2_b's partner checks a vertex program";
+  const nlohmann::json slots = test::budget_resource(j["items"][0], "instruction_slots");
+  EXPECT_EQ(slots["used"], 4);  // m4x4: 4 slots
+  EXPECT_EQ(slots["limit"], 256);
+  EXPECT_EQ(slots["check"]["value"], 4);
+  EXPECT_EQ(test::budget_resource(j["items"][0], "parameters")["used"], 4);  // c0..c3
+}
+
+}  // namespace
+}  // namespace lt
