@@ -76,6 +76,7 @@ struct GxState {
   VertexDescriptor vertex;
   TexCoordFormats texcoord_formats;
   u8 cull_mode = kCullBack;
+  int cull_mode_line = 0;  // the program's line of the GX_SetCullMode in force; 0: GX_Init's
 
   GxState();  // GX_Init's state
 };

@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""A frame with nothing drawn is never silent (ctest: NothingDrawn.<Case>).
+
+Usage: nothing_drawn_test.py LTRENDER_BINARY SOURCE_DIR CASE
+
+Each case renders a scene through the gx path with a hand-written program file, as a porter
+does (`ltrender render SCENE --path gx --program FILE.c`, 64x48), and reads stderr: one
+warning names the pass, the count and the cause, whose figures come from the inputs (the
+triangles of the mesh file, the line of the program that set the cull mode), not from the run.
+The render itself still succeeds (exit 0): the warning says why the frame is empty.
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+# A flat colour, as docs/spec/gx.md's example draws it; {cull} and {extra} are filled per case.
+PROGRAM = """\
+{cull}GX_SetNumChans(1);
+GX_SetChanCtrl(GX_COLOR0A0, GX_DISABLE, GX_SRC_REG, GX_SRC_REG, GX_LIGHTNULL, GX_DF_NONE, GX_AF_NONE);
+GX_SetChanMatColor(GX_COLOR0A0, (GXColor){{200, 120, 40, 255}});
+GX_SetNumTexGens(0);
+GX_SetNumTevStages(1);
+GX_SetTevOrder(GX_TEVSTAGE0, GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLOR0A0);
+GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_ZERO, GX_CC_ZERO, GX_CC_ZERO, GX_CC_RASC);
+GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_TRUE, GX_TEVPREV);
+{extra}"""
+
+# A square facing the camera at +z, wound counter-clockwise as GL's front faces are: GX_Init's
+# GX_CULL_BACK removes both of its triangles (gx_state.h).
+QUAD = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n"
+
+CULL_NONE = "GX_SetCullMode(GX_CULL_NONE);\n"
+CASES = {
+    # name: (mesh, program's cull line, extra calls, camera target, expected cause as a regex)
+    "CulledByGxInitDefault": ("quad", "", "", [0, 0, 0],
+                              r"all {n} triangles culled by GX_CULL_BACK, GX_Init's default"),
+    "CulledBySetCullMode": ("sphere", "GX_SetCullMode(GX_CULL_ALL);\n", "", [0, 0, 0],
+                            r"all {n} triangles culled by GX_CULL_ALL, set by GX_SetCullMode at "
+                            r"\S*program\.c:1\b"),
+    "OutsideTheView": ("sphere", CULL_NONE, "", [0, 0, 8],
+                       r"all {n} triangles outside the view volume"),
+    "DepthTestFailed": ("sphere", CULL_NONE, "GX_SetZMode(GX_TRUE, GX_EQUAL, GX_FALSE);\n",
+                        [0, 0, 0], r"all [1-9]\d* covered pixels failed the depth test"),
+    # The quad: nothing in front of another, so no pixel fails the depth test first (the sphere's
+    # far side would: early z writes depth before the alpha test discards [DSW Draw]).
+    "AlphaTestFailed": ("quad", CULL_NONE,
+                        "GX_SetAlphaCompare(GX_NEVER, 0, GX_AOP_AND, GX_NEVER, 0);\n", [0, 0, 0],
+                        r"all [1-9]\d* covered pixels failed the alpha test"),
+    "DrawnFrameIsSilent": ("sphere", CULL_NONE, "", [0, 0, 0], None),
+}
+
+
+def ply_faces(path):
+    """The face count of a PLY header (ltrender's meshes are triangles)."""
+    with open(path, "rb") as f:
+        for line in f:
+            if line.startswith(b"element face "):
+                return int(line.split()[2])
+            if line.startswith(b"end_header"):
+                break
+    raise SystemExit("%s: no element face" % path)
+
+
+def main(argv):
+    if len(argv) != 4 or argv[3] not in CASES:
+        print("usage: nothing_drawn_test.py LTRENDER_BINARY SOURCE_DIR CASE (%s)" %
+              ", ".join(CASES), file=sys.stderr)
+        return 2
+    binary, source, case = os.path.abspath(argv[1]), os.path.abspath(argv[2]), argv[3]
+    mesh, cull, extra, target, cause = CASES[case]
+    with tempfile.TemporaryDirectory(prefix="ltrender-nothing-drawn-") as work:
+        if mesh == "quad":
+            mesh_file, triangles = os.path.join(work, "quad.obj"), 2
+            with open(mesh_file, "w") as f:
+                f.write(QUAD)
+        else:
+            mesh_file = os.path.join(source, "meshes", "sphere_s4.ply")
+            triangles = ply_faces(mesh_file)
+        scene = os.path.join(work, "scene.json")
+        with open(scene, "w") as f:
+            f.write('{"image": {"width": 64, "height": 48}, "camera": {"eye": [0, 0, 4], '
+                    '"target": %s}, "materials": {"m": {"albedo": [0.5, 0.9, 0.6]}}, '
+                    '"objects": [{"mesh": "%s", "material": "m"}]}' % (target, mesh_file))
+        program = os.path.join(work, "program.c")
+        with open(program, "w") as f:
+            f.write(PROGRAM.format(cull=cull, extra=extra))
+        result = subprocess.run([binary, "render", scene, "--path", "gx", "--program", program,
+                                 "-o", os.path.join(work, "out.png")],
+                                capture_output=True, text=True)
+    if result.returncode != 0:
+        print("FAIL: exit %d\n%s" % (result.returncode, result.stderr))
+        return 1
+    warnings = [l for l in result.stderr.split("\n") if "drew nothing" in l]
+    if cause is None:
+        if warnings:
+            print("FAIL: a frame that draws warned: %s" % warnings)
+            return 1
+        print("PASS: no warning for a frame that draws")
+        return 0
+    expected = re.compile(r"^ltrender: warning: gx pass 0 \(\S+\) drew nothing: " +
+                          cause.format(n=triangles))
+    if len(warnings) != 1 or not expected.search(warnings[0]):
+        print("FAIL: expected one warning matching %r, stderr:\n%s" %
+              (expected.pattern, result.stderr))
+        return 1
+    print("PASS: " + warnings[0])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
