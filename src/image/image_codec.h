@@ -54,6 +54,8 @@ class ImageCodec {
   // `rgba` (width x height) letterboxed into out_width x out_height (ImageBufAlgo::fit).
   virtual void fit_letterbox(const float* rgba, int width, int height, float* out, int out_width,
                              int out_height) const = 0;
+  // The version of the OpenImageIO library the module runs with ("2.4.7"), for --version.
+  virtual std::string library_version() const = 0;
 };
 
 // The module's one entry point (extern "C", so dlsym finds it by this name).
