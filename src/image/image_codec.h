@@ -62,9 +62,9 @@ class ImageCodec {
 inline constexpr const char* kImageCodecEntry = "lt_image_codec";
 using ImageCodecEntry = const ImageCodec* (*)();
 
-// Loads the module on first use (thread-safe) from the directory of the running executable,
-// then from the build directory. Throws std::runtime_error naming the module and dlerror()
-// when it cannot be loaded: an installation fault, not bad input.
+// Loads the module on first use (thread-safe) from the build directory, or an installed binary's
+// module folder (core/run_time_files.h). Throws std::runtime_error naming the module and
+// dlerror() when it cannot be loaded: an installation fault, not bad input.
 const ImageCodec& image_codec();
 
 }  // namespace lt
