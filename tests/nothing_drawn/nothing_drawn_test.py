@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """A frame with nothing drawn is never silent (ctest: NothingDrawn.<Case>).
 
-Usage: nothing_drawn_test.py LTRENDER_BINARY SOURCE_DIR CASE
+Usage: nothing_drawn_test.py LTRENDER_BINARY CASE
 
 Each case renders a scene through the gx path with a hand-written program file, as a porter
 does (`ltrender render SCENE --path gx --program FILE.c`, 64x48), and reads stderr: one
 warning names the pass, the count and the cause, whose figures come from the inputs (the
-triangles of the mesh file, the line of the program that set the cull mode), not from the run.
+triangles of the mesh the test writes, the line of the program that set the cull mode), not from the run.
 The render itself still succeeds (exit 0): the warning says why the frame is empty.
 """
 import os
@@ -27,57 +27,52 @@ GX_SetTevColorIn(GX_TEVSTAGE0, GX_CC_ZERO, GX_CC_ZERO, GX_CC_ZERO, GX_CC_RASC);
 GX_SetTevColorOp(GX_TEVSTAGE0, GX_TEV_ADD, GX_TB_ZERO, GX_CS_SCALE_1, GX_TRUE, GX_TEVPREV);
 {extra}"""
 
+# A unit cube, 12 triangles (two a face, each with its face's normal).
+CUBE = ("v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+        "vn 0 0 -1\nvn 0 0 1\nvn 0 -1 0\nvn 0 1 0\nvn -1 0 0\nvn 1 0 0\n" +
+        "".join("f %d//%d %d//%d %d//%d\nf %d//%d %d//%d %d//%d\n" %
+                (a, n, b, n, c, n, a, n, c, n, d, n)
+                for n, (a, b, c, d) in enumerate([(1, 4, 3, 2), (5, 6, 7, 8), (1, 2, 6, 5),
+                                                  (4, 8, 7, 3), (1, 5, 8, 4), (2, 3, 7, 6)], 1)))
+MESHES = {"cube": (CUBE, 12)}
 # A square facing the camera at +z, wound counter-clockwise as GL's front faces are: GX_Init's
 # GX_CULL_BACK removes both of its triangles (gx_state.h).
-QUAD = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n"
+MESHES["quad"] = ("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n"
+                  "f 1//1 3//1 4//1\n", 2)
 
 CULL_NONE = "GX_SetCullMode(GX_CULL_NONE);\n"
 CASES = {
     # name: (mesh, program's cull line, extra calls, camera target, expected cause as a regex)
     "CulledByGxInitDefault": ("quad", "", "", [0, 0, 0],
                               r"all {n} triangles culled by GX_CULL_BACK, GX_Init's default"),
-    "CulledBySetCullMode": ("sphere", "GX_SetCullMode(GX_CULL_ALL);\n", "", [0, 0, 0],
+    "CulledBySetCullMode": ("cube", "GX_SetCullMode(GX_CULL_ALL);\n", "", [0, 0, 0],
                             r"all {n} triangles culled by GX_CULL_ALL, set by GX_SetCullMode at "
                             r"\S*program\.c:1\b"),
-    "OutsideTheView": ("sphere", CULL_NONE, "", [0, 0, 8],
+    "OutsideTheView": ("cube", CULL_NONE, "", [0, 0, 8],
                        r"all {n} triangles outside the view volume"),
-    "DepthTestFailed": ("sphere", CULL_NONE, "GX_SetZMode(GX_TRUE, GX_EQUAL, GX_FALSE);\n",
+    "DepthTestFailed": ("cube", CULL_NONE, "GX_SetZMode(GX_TRUE, GX_EQUAL, GX_FALSE);\n",
                         [0, 0, 0], r"all [1-9]\d* covered pixels failed the depth test"),
-    # The quad: nothing in front of another, so no pixel fails the depth test first (the sphere's
+    # The quad: nothing in front of another, so no pixel fails the depth test first (the cube's
     # far side would: early z writes depth before the alpha test discards [DSW Draw]).
     "AlphaTestFailed": ("quad", CULL_NONE,
                         "GX_SetAlphaCompare(GX_NEVER, 0, GX_AOP_AND, GX_NEVER, 0);\n", [0, 0, 0],
                         r"all [1-9]\d* covered pixels failed the alpha test"),
-    "DrawnFrameIsSilent": ("sphere", CULL_NONE, "", [0, 0, 0], None),
+    "DrawnFrameIsSilent": ("cube", CULL_NONE, "", [0, 0, 0], None),
 }
 
 
-def ply_faces(path):
-    """The face count of a PLY header (ltrender's meshes are triangles)."""
-    with open(path, "rb") as f:
-        for line in f:
-            if line.startswith(b"element face "):
-                return int(line.split()[2])
-            if line.startswith(b"end_header"):
-                break
-    raise SystemExit("%s: no element face" % path)
-
-
 def main(argv):
-    if len(argv) != 4 or argv[3] not in CASES:
-        print("usage: nothing_drawn_test.py LTRENDER_BINARY SOURCE_DIR CASE (%s)" %
+    if len(argv) != 3 or argv[2] not in CASES:
+        print("usage: nothing_drawn_test.py LTRENDER_BINARY CASE (%s)" %
               ", ".join(CASES), file=sys.stderr)
         return 2
-    binary, source, case = os.path.abspath(argv[1]), os.path.abspath(argv[2]), argv[3]
+    binary, case = os.path.abspath(argv[1]), argv[2]
     mesh, cull, extra, target, cause = CASES[case]
     with tempfile.TemporaryDirectory(prefix="ltrender-nothing-drawn-") as work:
-        if mesh == "quad":
-            mesh_file, triangles = os.path.join(work, "quad.obj"), 2
-            with open(mesh_file, "w") as f:
-                f.write(QUAD)
-        else:
-            mesh_file = os.path.join(source, "meshes", "sphere_s4.ply")
-            triangles = ply_faces(mesh_file)
+        text, triangles = MESHES[mesh]
+        mesh_file = os.path.join(work, mesh + ".obj")
+        with open(mesh_file, "w") as f:
+            f.write(text)
         scene = os.path.join(work, "scene.json")
         with open(scene, "w") as f:
             f.write('{"image": {"width": 64, "height": 48}, "camera": {"eye": [0, 0, 4], '
