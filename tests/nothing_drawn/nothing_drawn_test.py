@@ -3,9 +3,10 @@
 
 Usage: nothing_drawn_test.py LTRENDER_BINARY CASE
 
-Each case renders a scene through the gx path with a hand-written program file, as a porter
-does (`ltrender render SCENE --path gx --program FILE.c`, 64x48), and reads stderr: one
-warning names the pass, the count and the cause, whose figures come from the inputs (the
+Each gx case renders a scene through the gx path with a hand-written program file, as a porter
+does (`ltrender render SCENE --path gx --program FILE.c`, 64x48); each GlPaths case renders it
+through every path GL rasterises. Each reads stderr: one warning names the path and pass, the
+count and the cause, whose figures come from the inputs (the
 triangles of the mesh the test writes, the line of the program that set the cull mode), not from the run.
 The render itself still succeeds (exit 0): the warning says why the frame is empty.
 """
@@ -42,7 +43,8 @@ MESHES["quad"] = ("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvn 0 0 1\nf 1//1 2//1
 
 CULL_NONE = "GX_SetCullMode(GX_CULL_NONE);\n"
 CASES = {
-    # name: (mesh, program's cull line, extra calls, camera target, expected cause as a regex)
+    # name: (mesh, the gx program's cull line and extra calls (None: the GL paths, their own
+    # programs), camera target, expected cause as a regex)
     "CulledByGxInitDefault": ("quad", "", "", [0, 0, 0],
                               r"all {n} triangles culled by GX_CULL_BACK, GX_Init's default"),
     "CulledBySetCullMode": ("cube", "GX_SetCullMode(GX_CULL_ALL);\n", "", [0, 0, 0],
@@ -58,7 +60,13 @@ CASES = {
                         "GX_SetAlphaCompare(GX_NEVER, 0, GX_AOP_AND, GX_NEVER, 0);\n", [0, 0, 0],
                         r"all [1-9]\d* covered pixels failed the alpha test"),
     "DrawnFrameIsSilent": ("cube", CULL_NONE, "", [0, 0, 0], None),
+    # The paths GL rasterises cull nothing; a camera looking away leaves their frame empty.
+    "GlPathsClippedAway": ("cube", None, None, [0, 0, 8],
+                           r"no fragment of its {n} triangles passed \(GL_SAMPLES_PASSED 0"),
+    "GlPathsDrawnFrameIsSilent": ("cube", None, None, [0, 0, 0], None),
 }
+# The paths GL rasterises (their own program, no --program): every one but gx.
+GL_PATHS = ["glsl", "arbfp", "combiners", "flat", "reference", "half"]
 
 
 def main(argv):
@@ -78,30 +86,44 @@ def main(argv):
             f.write('{"image": {"width": 64, "height": 48}, "camera": {"eye": [0, 0, 4], '
                     '"target": %s}, "materials": {"m": {"albedo": [0.5, 0.9, 0.6]}}, '
                     '"objects": [{"mesh": "%s", "material": "m"}]}' % (target, mesh_file))
-        program = os.path.join(work, "program.c")
-        with open(program, "w") as f:
-            f.write(PROGRAM.format(cull=cull, extra=extra))
-        result = subprocess.run([binary, "render", scene, "--path", "gx", "--program", program,
-                                 "-o", os.path.join(work, "out.png")],
-                                capture_output=True, text=True)
-    if result.returncode != 0:
-        print("FAIL: exit %d\n%s" % (result.returncode, result.stderr))
+        if cull is None:
+            runs = [(path, []) for path in GL_PATHS]
+        else:
+            program = os.path.join(work, "program.c")
+            with open(program, "w") as f:
+                f.write(PROGRAM.format(cull=cull, extra=extra))
+            runs = [("gx", ["--program", program])]
+        failures = [check(binary, scene, path, options, work, cause, triangles)
+                    for path, options in runs]
+    failures = [f for f in failures if f]
+    if failures:
+        print("FAIL: " + "\n".join(failures))
         return 1
+    print("PASS: %s on %s" % (case, ", ".join(p for p, _ in runs)))
+    return 0
+
+
+def check(binary, scene, path, options, work, cause, triangles):
+    """None when `ltrender render` through `path` exits 0 with the expected warning (or none);
+    otherwise what went wrong."""
+    result = subprocess.run([binary, "render", scene, "--path", path, "-o",
+                             os.path.join(work, path + ".png")] + options,
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        return "%s: exit %d\n%s" % (path, result.returncode, result.stderr)
     warnings = [l for l in result.stderr.split("\n") if "drew nothing" in l]
     if cause is None:
-        if warnings:
-            print("FAIL: a frame that draws warned: %s" % warnings)
-            return 1
-        print("PASS: no warning for a frame that draws")
-        return 0
-    expected = re.compile(r"^ltrender: warning: gx pass 0 \(\S+\) drew nothing: " +
+        return "%s: a frame that draws warned: %s" % (path, warnings) if warnings else None
+    # gx names its pass and program; a GL path its whole frame (its later passes draw where
+    # pass 0 did: first_frame_fragments.h).
+    who = r"gx pass 0 \(\S+\)" if path == "gx" else r".*\b%s\b.* frame" % path
+    expected = re.compile(r"^ltrender: warning: %s drew nothing: " % who +
                           cause.format(n=triangles))
     if len(warnings) != 1 or not expected.search(warnings[0]):
-        print("FAIL: expected one warning matching %r, stderr:\n%s" %
-              (expected.pattern, result.stderr))
-        return 1
-    print("PASS: " + warnings[0])
-    return 0
+        return "%s: expected one warning matching %r, stderr:\n%s" % (
+            path, expected.pattern, result.stderr)
+    print(warnings[0])
+    return None
 
 
 if __name__ == "__main__":

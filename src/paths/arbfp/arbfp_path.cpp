@@ -13,6 +13,7 @@
 #include "paths/arbfp/arb_passes.h"
 #include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arb_thickness_map.h"
+#include "paths/common/first_frame_fragments.h"
 #include "paths/common/frame.h"
 
 namespace lt {
@@ -78,7 +79,7 @@ void bind_material_textures(const MaterialState* st) {
 class ArbfpPath final : public Path {
  public:
   ArbfpPath(const PathContext& ctx, const arbfp::PowVariant& variant)
-      : ctx_(ctx), variant_(variant) {
+      : ctx_(ctx), fragments_("arbfp", ctx.geometry), variant_(variant) {
     ctx.gl.require_extension("GL_ARB_vertex_program", "the arbfp path");
     ctx.gl.require_extension("GL_ARB_fragment_program", "the arbfp path");
     // The generator writes light positions relative to the eye; the geometry must agree.
@@ -135,6 +136,7 @@ class ArbfpPath final : public Path {
   // pass's sum (docs/arbfp.md, "Passes").
   void frame() override {
     begin_frame(ctx_);
+    fragments_.begin();
     glEnable(GL_VERTEX_PROGRAM_ARB);
     glEnable(GL_FRAGMENT_PROGRAM_ARB);
     glActiveTexture(GL_TEXTURE0);
@@ -152,6 +154,7 @@ class ArbfpPath final : public Path {
       }
     }
     if (passes_ > 1) end_additive_passes();
+    fragments_.end();
     bind_material_textures(nullptr);
     glBindTexture(GL_TEXTURE_1D, 0);
     glDisable(GL_FRAGMENT_PROGRAM_ARB);
@@ -247,6 +250,7 @@ class ArbfpPath final : public Path {
 
  private:
   PathContext ctx_;
+  FirstFrameFragments fragments_;  // the warning of an empty frame
   arbfp::PowVariant variant_;
   std::vector<std::unique_ptr<MaterialState>> materials_;
   size_t passes_ = 1;  // the most passes of any material

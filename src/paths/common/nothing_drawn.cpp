@@ -12,6 +12,10 @@ std::string count(std::size_t n, const char* one, const char* many) {
 
 // Why no pixel was written, from the first stage that removed everything.
 std::string cause(const PassOutcome& p) {
+  if (p.fragments_only)
+    return "no fragment of its " + count(p.triangles, "triangle", "triangles") +
+           " passed (GL_SAMPLES_PASSED 0; no face culling is enabled): all outside the view "
+           "volume (clipped away) or covering no pixel centre";
   if (p.culled == p.triangles)
     return "all " + count(p.triangles, "triangle", "triangles") + " culled by " + p.cull_mode;
   if (p.culled + p.outside == p.triangles) {

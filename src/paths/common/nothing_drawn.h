@@ -23,6 +23,9 @@ struct PassOutcome {
   std::size_t alpha_failed = 0;    // passed it, failed the alpha test
   std::size_t written = 0;         // reached the framebuffer
   std::string cull_mode;           // the mode in force and its source, for the culled cause
+  // GL's paths count fragments alone (first_frame_fragments.h): `written` is the samples that
+  // passed, the triangles' fates are GL's and unknown.
+  bool fragments_only = false;
 };
 
 // The warning for a pass that submitted triangles and wrote no pixel, without the
