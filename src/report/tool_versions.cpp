@@ -61,7 +61,14 @@ std::string dolphin_version() {
 ToolVersions measure() {
   ToolVersions v;
   v.ltrender = ltrender_version();
-  read_gl(v);
+  // Each part on its own: a missing library says so in its place, never ends the line (or
+  // --version, whose callback runs inside CLI11's parse).
+  try {
+    read_gl(v);
+  } catch (const std::exception& e) {
+    v.gl_version = std::string("? (") + e.what() + ")";
+    v.gl_renderer = "?";
+  }
   try {
     v.openimageio = image_codec().library_version();
   } catch (const std::exception& e) {
