@@ -15,7 +15,8 @@ import sys
 
 LINE = re.compile(r"^ltrender (?P<version>\d+\.\d+\.\d+)(?: \(git (?P<describe>[^)]+)\))?; "
                   r"GL (?P<gl>.+) on (?P<renderer>.+); OpenImageIO (?P<oiio>\d+\.\d+\.\d+); "
-                  r"Embree (?P<embree>\d+\.\d+\.\d+); (?:Dolphin (?P<dolphin>\S+)|Dolphin not found)$")
+                  r"Embree (?P<embree>\d+\.\d+\.\d+); "
+                  r"(?:Dolphin (?P<dolphin>\S+)|Dolphin not found)$")
 
 
 def package_version(pattern):

@@ -3,11 +3,11 @@
 
 Usage: nothing_drawn_test.py LTRENDER_BINARY CASE
 
-Each gx case renders a scene through the gx path with a hand-written program file, as a porter
-does (`ltrender render SCENE --path gx --program FILE.c`, 64x48); each GlPaths case renders it
-through every path GL rasterises. Each reads stderr: one warning names the path and pass, the
-count and the cause, whose figures come from the inputs (the
-triangles of the mesh the test writes, the line of the program that set the cull mode), not from the run.
+Each gx case renders a scene through the gx path with a hand-written program file, as a
+porter does (`ltrender render SCENE --path gx --program FILE.c`, 64x48); each GlPaths case
+renders it through every path GL rasterises. Each reads stderr: one warning names the path and
+pass, the count and the cause, whose figures come from the inputs (the triangles of the mesh the
+test writes, the line of the program that set the cull mode), not from the run.
 The render itself still succeeds (exit 0): the warning says why the frame is empty.
 """
 import os
