@@ -19,6 +19,7 @@ packages=(
   fonts-dejavu-core                          # the contact sheet's labels (DejaVu Sans)
   chromium                                   # the report page's test in a real browser
   python3                                    # scripts/map_vs_vertex.py (the demo and its test)
+  file                                       # cpack -G DEB's dependency scan (docs/install.md)
   dolphin-emu xvfb                           # the Wii judge: Dolphin's software renderer plays
                                              # our FIFO logs under a private X server
   gcc-powerpc-linux-gnu libc6-dev-powerpc-cross  # compiling gx exports (with libogc's headers)

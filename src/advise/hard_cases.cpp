@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "core/build_paths.h"
+#include "core/run_time_files.h"
 
 namespace lt::advise {
 
@@ -73,7 +73,7 @@ std::vector<HardCase> reachable_hard_cases(const Scene& scene, const Material& m
   for (const Rule& r : rules()) {
     if (r.reaches(scene, t)) {
       out.push_back(
-          {lt::build_paths::source_dir() / "scenes" / "hard" / (std::string(r.name) + ".json"),
+          {lt::run_time_files::data_dir() / "scenes" / "hard" / (std::string(r.name) + ".json"),
            r.reached_by});
     }
   }

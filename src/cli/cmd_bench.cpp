@@ -12,11 +12,11 @@
 #include "cli/bench_timing_options.h"
 #include "cli/commands.h"
 #include "cli/lights_option.h"
-#include "core/build_paths.h"
 #include "core/cpu_affinity.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/parallel_rows.h"
+#include "core/run_time_files.h"
 #include "report/bench.h"
 #include "report/bench_compare.h"
 #include "report/bench_json.h"
@@ -163,7 +163,7 @@ Action add_bench(CLI::App& app) {
     o->scenes.clear();
     for (const auto& s : *scenes) o->scenes.push_back(s);
     if (o->scenes.empty()) {
-      for (const auto& e : fs::directory_iterator(lt::build_paths::source_dir() / "scenes")) {
+      for (const auto& e : fs::directory_iterator(lt::run_time_files::data_dir() / "scenes")) {
         if (e.path().extension() == ".json") o->scenes.push_back(e.path());
       }
       std::sort(o->scenes.begin(), o->scenes.end());

@@ -100,7 +100,7 @@ struct Input {
 Action add_budget(CLI::App& app) {
   auto* sub = app.add_subcommand("budget", "Check program/stage budgets against hardware profiles");
   auto files = std::make_shared<std::vector<std::string>>();
-  auto path = std::make_shared<std::string>("arbfp");
+  auto path = std::make_shared<std::string>(default_budget_path().name);
   auto variant = std::make_shared<std::string>();
   auto profiles = std::make_shared<std::vector<std::string>>();
   auto json = std::make_shared<bool>(false);

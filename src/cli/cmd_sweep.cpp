@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "paths/path.h"
 #include "render/camera_path.h"
 #include "report/sweep.h"
 
@@ -34,8 +35,17 @@ Action add_sweep(CLI::App& app) {
   return [o, scenes, variants]() -> int {
     if ((o->width > 0) != (o->height > 0))
       throw InputError("--width/--height", "", "give both, or neither");
-    if (!o->light_range.empty() && o->path != "gx")
-      throw InputError("--light-range", o->light_range, "is a gx variant axis (--path gx)");
+    if (!o->light_range.empty()) {
+      // The path's own variant parser says whether it has the axis and takes the value.
+      const PathInfo& info = find_path(o->path);
+      try {
+        info.parse_variant(resolve_variant(info, "") + ":light-range=" + o->light_range);
+      } catch (const InputError& e) {
+        throw InputError("--light-range", o->light_range,
+                         "path " + info.name + " takes no such :light-range= variant (" +
+                             e.what_only() + ")");
+      }
+    }
     o->variants = variant_selections().at(*variants);
     for (const std::string& s : *scenes) o->scenes.emplace_back(s);
     o->progress = [](const std::string& scene) { std::cerr << "sweep: " << scene << "\n"; };

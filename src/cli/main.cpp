@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "report/tool_versions.h"
 
 namespace {
 
@@ -23,6 +24,10 @@ int main(int argc, char** argv) {
       "ltrender: translucency (Barre-Brisebois & Bouchard, GDC 2011) on low-end pipelines"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every subcommand");
+  // Measured only when asked for: it starts a GL context, the image module and Dolphin.
+  app.set_version_flag(
+      "--version", [] { return lt::tool_versions_line(); },
+      "Print ltrender's version and those of Mesa, OpenImageIO, Embree and Dolphin, then exit");
 
   using Registration = lt::cli::Action (*)(CLI::App&);
   const std::vector<Registration> registrations = {
@@ -52,6 +57,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // CLI11's own exit codes differ; cli.md says usage errors are exit 2 with one line.

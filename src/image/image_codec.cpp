@@ -7,7 +7,7 @@
 #include <system_error>
 #include <vector>
 
-#include "core/build_paths.h"
+#include "core/run_time_files.h"
 
 namespace lt {
 
@@ -15,15 +15,10 @@ namespace {
 
 constexpr const char* kModuleName = "libltrender_imageio.so";
 
-// Where to look: beside the running executable (build/ltrender, build/ltrender_tests and the
-// bench binaries all sit there), then the build directory this binary was configured in.
+// Where to look: the build directory for a binary of this build, the installed module folder
+// for an installed one (core/run_time_files.h).
 std::vector<std::filesystem::path> module_candidates() {
-  std::vector<std::filesystem::path> out;
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) out.push_back(exe.parent_path() / kModuleName);
-  out.push_back(build_paths::binary_dir() / kModuleName);
-  return out;
+  return {run_time_files::module_dir() / kModuleName};
 }
 
 const ImageCodec* load_codec() {

@@ -54,15 +54,17 @@ class ImageCodec {
   // `rgba` (width x height) letterboxed into out_width x out_height (ImageBufAlgo::fit).
   virtual void fit_letterbox(const float* rgba, int width, int height, float* out, int out_width,
                              int out_height) const = 0;
+  // The version of the OpenImageIO library the module runs with ("2.4.7"), for --version.
+  virtual std::string library_version() const = 0;
 };
 
 // The module's one entry point (extern "C", so dlsym finds it by this name).
 inline constexpr const char* kImageCodecEntry = "lt_image_codec";
 using ImageCodecEntry = const ImageCodec* (*)();
 
-// Loads the module on first use (thread-safe) from the directory of the running executable,
-// then from the build directory. Throws std::runtime_error naming the module and dlerror()
-// when it cannot be loaded: an installation fault, not bad input.
+// Loads the module on first use (thread-safe) from the build directory, or an installed binary's
+// module folder (core/run_time_files.h). Throws std::runtime_error naming the module and
+// dlerror() when it cannot be loaded: an installation fault, not bad input.
 const ImageCodec& image_codec();
 
 }  // namespace lt

@@ -290,6 +290,9 @@ const std::vector<std::reference_wrapper<const PathInfo>>& all_paths();
 const PathInfo& find_path(const std::string& name);
 // The one path of a role that has exactly one (GroundTruth, Baseline).
 const PathInfo& path_with_role(PathRole role);
+// The path `ltrender budget SCENE` counts without --path: the first in report order that has a
+// budget (arbfp, the SM2-class programs a shader budget is usually about).
+const PathInfo& default_budget_path();
 // The variant to use: `requested` if the path has it, its default if empty; throws InputError
 // listing the valid variants otherwise.
 std::string resolve_variant(const PathInfo& path, const std::string& requested);

@@ -38,6 +38,13 @@ const PathInfo& path_with_role(PathRole role) {
   return *found;
 }
 
+const PathInfo& default_budget_path() {
+  for (const PathInfo& p : all_paths()) {
+    if (!p.budget_profiles.empty()) return p;
+  }
+  check_failed("budget_profiles", __FILE__, __LINE__, "no path has a budget");
+}
+
 std::string resolve_variant(const PathInfo& path, const std::string& requested) {
   if (requested.empty()) return path.variants.front().name;
   return path.parse_variant(requested);

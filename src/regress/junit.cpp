@@ -5,6 +5,7 @@
 
 #include "core/fixed.h"
 #include "core/markup.h"
+#include "report/tool_versions.h"
 
 namespace lt {
 
@@ -57,6 +58,7 @@ std::string junit_xml(const RegressRun& run) {
     if (!per_scene.count(r.regress_case.scene)) scene_order.push_back(r.regress_case.scene);
     per_scene[r.regress_case.scene].add(r);
   }
+  const std::string versions = markup_escape(tool_versions_line());
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
     << "<testsuites name=\"ltrender regress (shard " << run.shard.to_string() << ")\" "
@@ -64,6 +66,9 @@ std::string junit_xml(const RegressRun& run) {
   for (const std::string& scene : scene_order) {
     x << "  <testsuite name=\"" << markup_escape(scene) << "\" " << per_scene[scene].attributes()
       << ">\n";
+    // In every suite: JUnit's schema has properties per testsuite, not per testsuites.
+    x << "    <properties><property name=\"ltrender.versions\" value=\"" << versions
+      << "\"/></properties>\n";
     for (const CaseResult& r : run.results) {
       if (r.regress_case.scene == scene) write_testcase(x, r);
     }

@@ -10,6 +10,7 @@
 #include "core/fs.h"
 #include "core/markup.h"
 #include "metrics/heatmap.h"
+#include "report/tool_versions.h"
 
 namespace lt {
 
@@ -150,6 +151,7 @@ std::string page_html(const ReportPage& page) {
       template_file("page.html"),
       {{"title", esc(page.title)},
        {"summary", esc(page.summary)},
+       {"versions", esc(tool_versions_line())},
        {"style", template_file("page.css")},
        {"script", template_file("page.js")},
        {"legend", legend_html()},

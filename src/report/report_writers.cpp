@@ -16,6 +16,7 @@
 #include "report/bench_json.h"
 #include "report/label_placement.h"
 #include "report/report_page.h"
+#include "report/tool_versions.h"
 
 namespace lt {
 
@@ -93,6 +94,7 @@ std::string timing_summary(const BenchOptions& o) {
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
+    << "Made with " << tool_versions_line() << ".\n\n"
     << "**" << timing_summary(o) << ".**\n\n"
     << "Frames, each bounded by glFinish: at the scene's size, median and min of " << o.frames
     << " after " << o.warmup << " warm-up; at " << o.wide_width << "x" << o.wide_height
@@ -379,7 +381,10 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
 void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   write_text_file(o.out_dir / "report.md", markdown(o, rows));
   write_text_file(o.out_dir / "report.csv", csv(rows));
-  write_text_file(o.out_dir / "report.json", bench_report_json(o, rows).dump(2) + "\n");
+  // Here, not in bench_report_json, which also writes each bench job's rows: one measurement.
+  nlohmann::json json = bench_report_json(o, rows);
+  json["tool_versions"] = tool_versions_line();
+  write_text_file(o.out_dir / "report.json", json.dump(2) + "\n");
   write_text_file(o.out_dir / "chart.svg", svg_chart(rows, time_axis(o)));
   write_text_file(o.out_dir / "chart_work.svg", svg_chart(rows, work_axis(o)));
   write_report_page(o.out_dir, bench_page(o, rows));

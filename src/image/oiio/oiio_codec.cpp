@@ -117,6 +117,14 @@ class OiioCodec final : public ImageCodec {
     OIIO::ImageBuf small = OIIO::ImageBufAlgo::fit(in, "box", 0.0f, "letterbox", roi);
     small.get_pixels(roi, OIIO::TypeDesc::FLOAT, out);
   }
+
+  std::string library_version() const override {
+    // The library's own number (major * 10000 + minor * 100 + patch), not the header's: the
+    // version this process runs with.
+    const int v = OIIO::openimageio_version();
+    return std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." +
+           std::to_string(v % 100);
+  }
 };
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "paths/arbfp/arb_thickness_map.h"
 #include "paths/arbfp/d3d9_asm_parser.h"
 #include "paths/arbfp/d3d9_file_budget.h"
+#include "paths/common/first_frame_fragments.h"
 #include "paths/common/frame.h"
 
 namespace lt {
@@ -81,7 +82,7 @@ void bind_material_textures(const MaterialState* st) {
 class ArbfpPath final : public Path {
  public:
   ArbfpPath(const PathContext& ctx, const arbfp::PowVariant& variant)
-      : ctx_(ctx), variant_(variant) {
+      : ctx_(ctx), fragments_("arbfp", ctx.geometry), variant_(variant) {
     ctx.gl.require_extension("GL_ARB_vertex_program", "the arbfp path");
     ctx.gl.require_extension("GL_ARB_fragment_program", "the arbfp path");
     // The generator writes light positions relative to the eye; the geometry must agree.
@@ -138,6 +139,7 @@ class ArbfpPath final : public Path {
   // pass's sum (docs/arbfp.md, "Passes").
   void frame() override {
     begin_frame(ctx_);
+    fragments_.begin();
     glEnable(GL_VERTEX_PROGRAM_ARB);
     glEnable(GL_FRAGMENT_PROGRAM_ARB);
     glActiveTexture(GL_TEXTURE0);
@@ -155,6 +157,7 @@ class ArbfpPath final : public Path {
       }
     }
     if (passes_ > 1) end_additive_passes();
+    fragments_.end();
     bind_material_textures(nullptr);
     glBindTexture(GL_TEXTURE_1D, 0);
     glDisable(GL_FRAGMENT_PROGRAM_ARB);
@@ -250,6 +253,7 @@ class ArbfpPath final : public Path {
 
  private:
   PathContext ctx_;
+  FirstFrameFragments fragments_;  // the warning of an empty frame
   arbfp::PowVariant variant_;
   std::vector<std::unique_ptr<MaterialState>> materials_;
   size_t passes_ = 1;  // the most passes of any material

@@ -17,6 +17,7 @@
 #include "paths/combiners/map_stage.h"
 #include "paths/combiners/texgen_matrix.h"
 #include "paths/combiners/vertex_terms.h"
+#include "paths/common/first_frame_fragments.h"
 #include "paths/common/frame.h"
 
 namespace lt {
@@ -109,7 +110,10 @@ std::string describe_ramp(const Translucency& tr, const LobeTable& table) {
 class CombinersPath final : public Path {
  public:
   CombinersPath(const PathContext& ctx, CombinersVariant variant)
-      : ctx_(ctx), variant_(variant), plans_(plan_combiners(ctx.scene, variant)) {
+      : ctx_(ctx),
+        fragments_("combiners", ctx.geometry),
+        variant_(variant),
+        plans_(plan_combiners(ctx.scene, variant)) {
     const Scene& s = ctx.scene;
     // A 1x1 white texture: bound by stages that sample nothing, so GL runs their environment.
     glGenTextures(1, &white_);
@@ -188,6 +192,7 @@ class CombinersPath final : public Path {
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glDisable(GL_LIGHTING);
+    fragments_.begin();
 
     int max_passes = 0;
     for (const gl::GpuMesh& m : meshes)
@@ -202,6 +207,7 @@ class CombinersPath final : public Path {
     }
     passes_drawn_ = max_passes;
     end_additive_passes();
+    fragments_.end();
     combiners::reset_texture_state(combiners::kMaxStages);
     gl::check_error("combiners frame");
   }
@@ -412,6 +418,7 @@ class CombinersPath final : public Path {
   }
 
   PathContext ctx_;
+  FirstFrameFragments fragments_;  // the warning of an empty frame
   CombinersVariant variant_;
   std::vector<CombinerMaterialPlan> plans_;
   std::vector<LobeTable> tables_;  // [material]: t^p or its ramp

@@ -9,10 +9,15 @@ namespace lt {
 
 CpuShadedPath::CpuShadedPath(const PathContext& ctx, const std::string& gbuffer_user,
                              std::string shading)
-    : ctx_(ctx), gbuffer_(ctx, gbuffer_user), shading_(std::move(shading)) {}
+    : ctx_(ctx),
+      gbuffer_(ctx, gbuffer_user),
+      fragments_(gbuffer_user, ctx.geometry),
+      shading_(std::move(shading)) {}
 
 void CpuShadedPath::frame() {
+  fragments_.begin();
   gbuffer_.rasterise();
+  fragments_.end();
   const auto t0 = std::chrono::steady_clock::now();
   shade();
   shading_seconds_ = seconds_since(t0);

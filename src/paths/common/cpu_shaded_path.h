@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "paths/common/first_frame_fragments.h"
 #include "paths/common/gbuffer.h"
 #include "paths/path.h"
 
@@ -38,6 +39,7 @@ class CpuShadedPath : public Path {
   std::size_t covered_ = 0;
 
  private:
+  FirstFrameFragments fragments_;  // the warning of an empty frame
   std::string shading_;
   double shading_seconds_ = 0;
 };

@@ -1,5 +1,6 @@
 #include "paths/flat/flat_path.h"
 
+#include "paths/common/first_frame_fragments.h"
 #include "paths/common/frame.h"
 
 namespace lt {
@@ -8,12 +9,13 @@ namespace {
 
 class FlatPath final : public Path {
  public:
-  explicit FlatPath(const PathContext& ctx) : ctx_(ctx) {}
+  explicit FlatPath(const PathContext& ctx) : ctx_(ctx), fragments_("flat", ctx.geometry) {}
 
   void frame() override {
     begin_frame(ctx_);
     glDisable(GL_LIGHTING);
     glDisable(GL_TEXTURE_2D);
+    fragments_.begin();
     for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
       const glm::dvec3 a = ctx_.scene.materials[m.material].albedo;
       ctx_.geometry.bind(m);
@@ -23,6 +25,7 @@ class FlatPath final : public Path {
       glDrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
       ctx_.geometry.unbind();
     }
+    fragments_.end();
   }
 
   Image result() override { return read_framebuffer(ctx_.gl); }
@@ -40,6 +43,7 @@ class FlatPath final : public Path {
 
  private:
   PathContext ctx_;
+  FirstFrameFragments fragments_;  // the warning of an empty frame
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "gl/map_texture.h"
 #include "gl/program.h"
+#include "paths/common/first_frame_fragments.h"
 #include "paths/common/frame.h"
 
 namespace lt {
@@ -151,7 +152,8 @@ void set1(const gl::GlslProgram& p, const std::string& name, double v) {
 // reference).
 class GlslPath final : public Path {
  public:
-  GlslPath(const PathContext& ctx, bool float_target) : ctx_(ctx) {
+  GlslPath(const PathContext& ctx, bool float_target)
+      : ctx_(ctx), fragments_("glsl", ctx.geometry) {
     if (float_target) {
       ctx.gl.require_extension("GL_ARB_texture_float", "the glsl f32 target");
       target_ = std::make_unique<gl::FloatTarget>(ctx.width, ctx.height, 1);
@@ -173,11 +175,13 @@ class GlslPath final : public Path {
   void frame() override {
     if (target_) target_->bind();
     begin_frame(ctx_);
+    fragments_.begin();
     for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
       glUseProgram(programs_[m.material]->id());
       textures_.bind(m.material);
       ctx_.geometry.draw(m);
     }
+    fragments_.end();
     textures_.unbind();
     glUseProgram(0);
     if (target_) target_->unbind();
@@ -245,6 +249,7 @@ class GlslPath final : public Path {
   }
 
   PathContext ctx_;
+  FirstFrameFragments fragments_;  // the warning of an empty frame
   std::unique_ptr<gl::FloatTarget> target_;
   std::vector<std::unique_ptr<gl::GlslProgram>> programs_;
   MaterialTextures textures_;

@@ -6,12 +6,14 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "image/image.h"
+#include "paths/common/nothing_drawn.h"
 #include "paths/gx/fifo/frame_recording.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/gx_export.h"
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/pixel_stage.h"
+#include "paths/gx/program/gx_names.h"
 #include "paths/gx/program/parser.h"
 #include "paths/gx/program/printer.h"
 #include "paths/gx/program_check.h"
@@ -105,6 +107,15 @@ std::string pass_source(const ProgramFile& file, const std::string& function) {
   return print_program(one);
 }
 
+// The cull mode of `state` and where it came from, for the warning of a pass it culled whole.
+std::string cull_mode_in_force(const GxState& state, const std::string& file) {
+  const std::string mode = GxConst<NameGroup::CullMode>::with_value(state.cull_mode).name();
+  if (state.cull_mode_line == 0)
+    return mode + ", GX_Init's default (the program calls no GX_SetCullMode; GX's front faces " +
+           "are clockwise, GL's counter-clockwise)";
+  return mode + ", set by GX_SetCullMode at " + file + ":" + std::to_string(state.cull_mode_line);
+}
+
 // Triangles set up at a time before their pixels are drawn: bounds the memory of a large mesh
 // (a Triangle is ~450 bytes) while keeping the threads' share of each batch large.
 constexpr size_t kTriangleBatch = 4096;
@@ -167,10 +178,13 @@ class GxPath final : public Path {
     VertexOutputs outputs;
     std::vector<RasterVertex> vertices;
     std::vector<Triangle> triangles;
+    std::vector<PassOutcome> outcomes(pixel_programs_.size());
     for (const MaterialDraw& d : draws_) {
       const PixelProgram& pp = pixel_programs_[static_cast<size_t>(d.pass)][d.material];
       const GxState& state = *pp.state;
       const auto scales = texcoord_scales(state, pp.textures);
+      TriangleCounts draw_counts;
+      PixelCounts draw_pixels;
       for (size_t i : d.objects) {
         auto t0 = SteadyClock::now();
         // GX_VA_TEX0 carries the t of light `pass` (a plain one-pass program gets light 0's).
@@ -187,14 +201,23 @@ class GxPath final : public Path {
           triangles.clear();
           setup_triangles(vertices, mesh_triangles, first,
                           std::min(mesh_triangles.size(), first + kTriangleBatch), state, viewport_,
-                          scissor_, triangles, triangle_counts_);
+                          scissor_, triangles, draw_counts);
           vertex_seconds_ += seconds_since(t0);
           t0 = SteadyClock::now();
           const PixelCounts counts = draw_triangles(triangles, pp, variant_.round_colors, efb_);
           stage_pixels_ += counts.stage_pixels;
+          draw_pixels.add(counts);
           pixel_seconds_ += seconds_since(t0);
         }
       }
+      triangle_counts_.add(draw_counts);
+      add_outcome(d, state, draw_counts, draw_pixels,
+                  outcomes[static_cast<size_t>(d.pass)]);
+    }
+    // The scene is static: the first frame says what every frame would.
+    if (!outcomes_checked_) {
+      outcomes_checked_ = true;
+      for (const PassOutcome& o : outcomes) warn_if_nothing_drawn(o);
     }
   }
 
@@ -287,6 +310,24 @@ class GxPath final : public Path {
   }
 
  private:
+  // What the setup unit and the pixel stage did with one draw, added to its pass's outcome.
+  void add_outcome(const MaterialDraw& d, const GxState& state, const TriangleCounts& t,
+                   const PixelCounts& px, PassOutcome& out) const {
+    if (out.path.empty()) {
+      out.path = "gx";
+      out.pass = "pass " + std::to_string(d.pass) + " (" + programs_.source + ")";
+    }
+    if (out.cull_mode.empty() && t.culled > 0)
+      out.cull_mode = cull_mode_in_force(state, programs_.file.file);
+    out.triangles += t.submitted;
+    out.culled += t.culled;
+    out.outside += t.rejected + t.clipped_away;
+    out.pixels += px.covered;
+    out.depth_failed += px.z_failed;
+    out.alpha_failed += px.alpha_failed;
+    out.written += px.written;
+  }
+
   static size_t lights_in(const GxState& st) {
     size_t n = 0;
     for (int c = 0; c < st.lighting.num_channels; ++c) {
@@ -309,6 +350,7 @@ class GxPath final : public Path {
   std::vector<std::vector<PixelProgram>> pixel_programs_;  // [pass][material]
   Efb efb_;
   TriangleCounts triangle_counts_;
+  bool outcomes_checked_ = false;  // the nothing-drawn warning (paths/common/nothing_drawn.h)
   // The copy to the XFB: GX_Init's, which the exported program never changes.
   EfbCopyState copy_;
   Color8 background_;

@@ -88,6 +88,7 @@ struct GxState {
   VertexDescriptor vertex;
   TexCoordFormats texcoord_formats;
   u8 cull_mode = kCullBack;
+  int cull_mode_line = 0;  // the program's line of the GX_SetCullMode in force; 0: GX_Init's
   PixelFormat pixel_format;
   // GX_SetDither(enable): GX_Init enables it [OGC gx.c __GX_InitGX]; it acts on RGBA6_Z24 only
   // (efb.h).

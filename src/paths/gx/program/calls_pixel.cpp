@@ -35,7 +35,11 @@ void add_pixel_calls(CallTable& table) {
       {"GX_SetDither", {{integer(G::Bool, 0, 1)}, [](Machine& m) { m.state.dither = m.b(0); }}},
       // Every mode is modelled: the rasteriser culls as the setup unit does (gx_state.h).
       {"GX_SetCullMode",
-       {{integer(G::CullMode, 0, 3)}, [](Machine& m) { m.state.cull_mode = m.u(0); }}},
+       {{integer(G::CullMode, 0, 3)},
+        [](Machine& m) {
+          m.state.cull_mode = m.u(0);
+          m.state.cull_mode_line = m.line();  // named when the mode culls a whole pass
+        }}},
       // Visibility comes from one depth buffer shared by every pass (the first pass's depth, as
       // an EQUAL/LEQUAL test without update gives on hardware), so only those modes are modelled.
       {"GX_SetZMode",

@@ -87,6 +87,7 @@ class Machine {
   const std::string& name(size_t k) const { return call_->args[k].name; }
   const std::string& text(size_t k) const { return call_->args[k].text; }
   const std::vector<u8>& bytes_of(const std::string& array) const { return arrays_.at(array); }
+  int line() const { return call_->pos.line; }  // of the current call
 
   [[noreturn]] void fail_arg(size_t k, const std::string& what) const {
     fail(call_->args[k].pos, call_->function + " argument " + std::to_string(k + 1) + ": " + what);
