@@ -502,7 +502,7 @@ TEST(GxClipper, TrianglesOutsideOnePlaneAreRejectedAndCrossingOnesClipped) {
   EXPECT_TRUE(found);
 }
 
-// The hwtests' CoordinatePrecisionTest [HWT gxtest/rasterization.cpp L16-113] as far as the
+// The hwtests' CoordinatePrecisionTest [HWT gxtest/rasterization.cpp L16-122] as far as the
 // setup unit's input allows: the test's viewports and quads through the clipper (Dolphin's float
 // viewport transform), its quads as GX_QUADS' two triangles, then EFB pixel `px` of row 0 under
 // `rule`. Quad corners as util.cpp Quad() and the test set them; z = 1 through the test's
@@ -553,9 +553,9 @@ TEST(GxRaster, ConsoleRuleMeetsTheHwtestsCoordinatePrecisionCases) {
   }
   EXPECT_EQ(case1, 2);
 
-  // Case 2 (L83-113): wd = 2e-5, x_orig = 342 + xpos + 2e-5 in float (L101-108), the quad from
+  // Case 2 (L83-122): wd = 2e-5, x_orig = 342 + xpos + 2e-5 in float (L101-108), the quad from
   // clip x = -1 to 1, EFB pixel 0; every float xpos from 0.583297669888 to 0.583328306675 (515
-  // of them); the console covered the pixel for all but the first and the last (L113).
+  // of them); the console covered the pixel for all but the first and the last (L117).
   const float first = 0.583297669888f;
   int positions = 0, console_agrees = 0, dolphin_covers = 0;
   for (float xpos = first; xpos <= 0.583328306675; xpos = std::nextafter(xpos, 1.0f)) {

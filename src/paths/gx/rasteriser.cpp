@@ -97,8 +97,8 @@ bool setup_triangle(const RasterVertex& v0, const RasterVertex& v1, const Raster
   }
   // Bounding box in pixels: ceil(v / unit), the first sample point at or past v ((v + 15) >> 4,
   // an arithmetic shift, for Dolphin's 16), then the scissor.
-  auto pixel = [console](int64_t v) {
-    return static_cast<s32>(console ? ceil_div(v, kConsoleUnitsPerPixel) : (v + 0xF) >> 4);
+  auto pixel = [console](int64_t units) {
+    return static_cast<s32>(console ? ceil_div(units, kConsoleUnitsPerPixel) : (units + 0xF) >> 4);
   };
   t.min_x = std::max(pixel(std::min({X[0], X[1], X[2]})), scissor.left);
   t.max_x = std::min(pixel(std::max({X[0], X[1], X[2]})), scissor.right);

@@ -93,7 +93,7 @@ s32 snap_to_subpixels(float screen, int offset);
 //   and at the next float up, 392.58334350585938 (+ 0.58334), does not (L41-73: the viewport
 //   origin 342 + xpos + 50 in float, xpos one float step either side of 0.583328247070); a
 //   viewport 2e-5 pixel wide (a quad 4e-5 wide) covers pixel 0 exactly while it spans about
-//   0.58333 (L75-112; L79-80: "the default subsample is located close to (but somewhat off)
+//   0.58333 (L75-122; L79-80: "the default subsample is located close to (but somewhat off)
 //   screen position 7/12"). Dolphin read this as "pixel centers are located at 0.58333 ... each
 //   pixel is divided into a 12x12 grid of subsamples" [PR#306]. 7/12 satisfies both cases when
 //   the sliver's edges are taken exactly (xorig +- 2e-5 unrounded); with the float edges
@@ -107,7 +107,9 @@ s32 snap_to_subpixels(float screen, int offset);
 //   342-pixel offset puts the whole EFB there; a float there is a multiple of 2^-15) and 7/12
 //   exactly (7 * 2^15 units), so the half-space tests stay exact integers, shared with
 //   Dolphin's rule (covered_span), and a vertical edge can never lie on a sample point (no float
-//   is n + 7/12). A coordinate below 256 (not reached here) rounds to the nearest unit.
+//   is n + 7/12). Double arithmetic would hold the vertices as well, but not 7/12, and a
+//   near-tie would then be decided by its rounding. A coordinate below 256 (not reached here)
+//   rounds to the nearest unit.
 // - ties (a sloped edge through a sample point): the hwtests do not show the rule; Dolphin's fill
 //   convention is kept, so a shared edge is still drawn once.
 inline constexpr int64_t kConsoleUnitsPerPixel = int64_t{12} << 15;
