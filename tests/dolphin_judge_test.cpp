@@ -9,7 +9,8 @@
 // One log a scene carries every variant as a frame of its own (one Dolphin start a scene).
 // Not judged here: :out=xfb (what the others are compared through), and :colors=round and
 // :lights=round-each, which model Dolphin's shader backends, not its software renderer (against
-// it they differ by 1 LSB in thousands of pixels: docs/dolphin-judge.md).
+// it they differ by 1 LSB in thousands of pixels: docs/dolphin-judge.md), and :coverage=console,
+// which models the console where the hwtests show Dolphin differs (test::judged_variants).
 #include <gtest/gtest.h>
 
 #include <cstdio>

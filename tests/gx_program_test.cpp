@@ -278,9 +278,15 @@ TEST(GxVariantParse, AcceptsTheGrammarAndRefusesTheRest) {
   EXPECT_EQ(to_string(parse_gx_variant("light-range=0.1:t=vertex")), "t=vertex:light-range=0.1");
   EXPECT_EQ(*parse_gx_variant("lobe=xf-spec:light-range=2").light_range, 2.0);
   EXPECT_FALSE(parse_gx_variant("t=vertex").light_range);
-  for (const char* bad : {"", "t=pixel", "lut=1", "lut=1025", "t=vertex:t=vertex",
-                          "lobe=xf-spec:lut=64", "pow=exact", "t=vertex:lut=64x", "light-range=-1",
-                          "light-range=x", "light-range=1:light-range=2", "light-range=inf"}) {
+  // The coverage axis: console spelled out, dolphin the default (its canonical name omits it).
+  EXPECT_EQ(to_string(parse_gx_variant("coverage=console:t=vertex")), "t=vertex:coverage=console");
+  EXPECT_EQ(parse_gx_variant("lobe=xf-spec:coverage=console").coverage, CoverageRule::Console);
+  EXPECT_EQ(parse_gx_variant("t=vertex").coverage, CoverageRule::Dolphin);
+  EXPECT_EQ(to_string(parse_gx_variant("t=vertex:coverage=dolphin")), "t=vertex");
+  for (const char* bad :
+       {"", "t=pixel", "lut=1", "lut=1025", "t=vertex:t=vertex", "lobe=xf-spec:lut=64", "pow=exact",
+        "t=vertex:lut=64x", "light-range=-1", "light-range=x", "light-range=1:light-range=2",
+        "light-range=inf", "t=vertex:coverage=gpu", "coverage=console:coverage=dolphin"}) {
     EXPECT_THROW(parse_gx_variant(bad), InputError) << bad;
   }
 }

@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -35,16 +37,23 @@ RasterVertex snapped(int X, int Y, float z = 0.0f, Color8 color = {}) {
 
 const Scissor kScissor{0, 0, 32, 32, 342, 342};
 
-std::set<Pixel> covered(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c) {
+// The pixels covered_span gives in the rows of t's bounding box.
+std::set<Pixel> spanned(const Triangle& t) {
   std::set<Pixel> out;
-  Triangle t;
-  if (!setup_triangle(a, b, c, 1, 0, kScissor, t)) return out;
-  for (int y = 0; y < 32; ++y) {
+  for (int y = t.min_y; y < t.max_y; ++y) {
     s32 xb, xe;
     covered_span(t, y, xb, xe);
     for (s32 x = xb; x < xe; ++x) out.insert({x, y});
   }
   return out;
+}
+
+std::set<Pixel> covered(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                        CoverageRule rule = CoverageRule::Dolphin,
+                        const Scissor& scissor = kScissor) {
+  Triangle t;
+  if (!setup_triangle(a, b, c, 1, 0, scissor, t, rule)) return {};
+  return spanned(t);
 }
 
 // Every pixel whose sample point passes the three half-space tests, by brute force over the
@@ -55,10 +64,23 @@ std::set<Pixel> covered_by_brute_force(const Triangle& t) {
     for (int x = t.min_x; x < t.max_x; ++x) {
       bool in = true;
       for (size_t e = 0; e < 3; ++e)
-        in = in && t.c[e] + t.dx[e] * (int64_t{y} * 16) - t.dy[e] * (int64_t{x} * 16) > 0;
+        in = in && t.c[e] + t.dx[e] * (int64_t{y} * t.unit) - t.dy[e] * (int64_t{x} * t.unit) > 0;
       if (in) out.insert({x, y});
     }
   return out;
+}
+
+// covered_span's solved spans are the per-pixel test's pixels for (a, b, c) in both windings.
+void expect_spans_are_the_per_pixel_test(const RasterVertex& a, const RasterVertex& b,
+                                         const RasterVertex& c, CoverageRule rule) {
+  for (int order = 0; order < 2; ++order) {
+    Triangle t;
+    const bool ok = order == 0 ? setup_triangle(a, b, c, 0, 0, kScissor, t, rule)
+                               : setup_triangle(a, c, b, 0, 0, kScissor, t, rule);
+    if (!ok) continue;
+    EXPECT_EQ(spanned(t), covered_by_brute_force(t))
+        << a.screen.x << " " << a.screen.y << " order " << order;
+  }
 }
 
 TEST(GxRaster, SnappingRoundsAsDolphinsIround) {
@@ -136,22 +158,9 @@ TEST(GxRaster, SolvedSpansEqualThePerPixelTest) {
                         {5, 3, 17, 200, 300, 41},     {250, 10, 13, 77, 170, 330},
                         {100, 0, 0, 100, 200, 100},   {32, 0, 32, 128, 33, 0},
                         {480, 480, -40, 300, 511, 2}, {7, 7, 8, 500, 9, 7}};
-  for (const auto& p : pts) {
-    Triangle t;
-    const RasterVertex a = snapped(p[0], p[1]), b = snapped(p[2], p[3]), c = snapped(p[4], p[5]);
-    for (int order = 0; order < 2; ++order) {
-      const bool ok = order == 0 ? setup_triangle(a, b, c, 0, 0, kScissor, t)
-                                 : setup_triangle(a, c, b, 0, 0, kScissor, t);
-      if (!ok) continue;
-      std::set<Pixel> spans;
-      for (int y = t.min_y; y < t.max_y; ++y) {
-        s32 xb, xe;
-        covered_span(t, y, xb, xe);
-        for (s32 x = xb; x < xe; ++x) spans.insert({x, y});
-      }
-      EXPECT_EQ(spans, covered_by_brute_force(t)) << p[0] << " " << p[1] << " order " << order;
-    }
-  }
+  for (const auto& p : pts)
+    expect_spans_are_the_per_pixel_test(snapped(p[0], p[1]), snapped(p[2], p[3]),
+                                        snapped(p[4], p[5]), CoverageRule::Dolphin);
 }
 
 TEST(GxRaster, ScissorClipsTheBoundingBox) {
@@ -160,6 +169,229 @@ TEST(GxRaster, ScissorClipsTheBoundingBox) {
   const std::set<Pixel> px = covered(snapped(-169, -169), snapped(-169, 1751), snapped(1751, -169));
   EXPECT_EQ(px.size(), 32u * 32u);
   EXPECT_EQ(px.count({31, 31}), 1u);
+}
+
+// ---- the console's coverage (:coverage=console, rasteriser.h console_subpixels) ----
+
+// A vertex at the screen position (sx, sy), offset still in: the tests pick floats whose value
+// they know exactly.
+RasterVertex at_screen(float sx, float sy) {
+  RasterVertex v;
+  v.screen = {sx, sy, 0.0f};
+  v.clip = {0, 0, 0, 1};
+  return v;
+}
+
+// The pixels of the quad with corners top-left (l, t), bottom-right (r, b) (screen positions),
+// drawn as two triangles split along its diagonal from top-left to bottom-right, each wound as
+// the rasteriser draws; a pixel both triangles cover fails the test.
+std::set<Pixel> quad_pixels(float l, float t, float r, float b, CoverageRule rule,
+                            const Scissor& scissor = kScissor) {
+  const RasterVertex tl = at_screen(l, t), bl = at_screen(l, b), br = at_screen(r, b),
+                     tr = at_screen(r, t);
+  const std::set<Pixel> lower = covered(tl, bl, br, rule, scissor);
+  const std::set<Pixel> upper = covered(tl, br, tr, rule, scissor);
+  for (const Pixel& p : lower) EXPECT_EQ(upper.count(p), 0u) << p.first << "," << p.second;
+  std::set<Pixel> all = lower;
+  all.insert(upper.begin(), upper.end());
+  return all;
+}
+
+// The columns of row `y` among `pixels`.
+std::set<int> columns(const std::set<Pixel>& pixels, int y) {
+  std::set<int> out;
+  for (const Pixel& p : pixels)
+    if (p.second == y) out.insert(p.first);
+  return out;
+}
+
+// Screen x of pixel 5 (342 + 5) plus n / 32768: every such value is a float (from 256 to 512 a
+// float is a multiple of 2^-15), so each position below is exactly what it says.
+float pixel5_plus(int n) {
+  return 347.0f + static_cast<float>(n) / 32768.0f;
+}
+
+TEST(GxRaster, ConsoleSubpixelsHoldFloatPositionsExactly) {
+  // 12 * 2^15 = 393216 units a pixel, moved by 7/12 (229376 units). Screen 342.5: 0.5 pixel =
+  // 196608 units, minus 229376 = -32768.
+  EXPECT_EQ(console_subpixels(342.5f, 342), -32768);
+  // 347 + 19114/32768 (0.58331, the float just below 7/12 = 19114.67/32768): 5 * 393216 +
+  // 19114 * 12 - 229376 = 1966080 - 8, so 8 units left of pixel 5's sample point; the next
+  // float up, 19115 * 12 = 229380, 4 units right of it.
+  EXPECT_EQ(console_subpixels(pixel5_plus(19114), 342), 5 * 393216 - 8);
+  EXPECT_EQ(console_subpixels(pixel5_plus(19115), 342), 5 * 393216 + 4);
+  // Below 256 a float is finer than a unit and rounds to the nearest: 5 + 1/2^20 pixel is
+  // 393216 / 2^20 = 0.375 units -> 0; 5 + 2/2^20 = 0.75 -> 1.
+  EXPECT_EQ(console_subpixels(5.0f + 1.0f / 1048576, 0), 5 * 393216 - 229376);
+  EXPECT_EQ(console_subpixels(5.0f + 2.0f / 1048576, 0), 5 * 393216 - 229376 + 1);
+}
+
+TEST(GxRaster, AVerticalEdgeDecidesAtSevenTwelfthsOnTheConsoleAndNineSixteenthsInDolphin) {
+  // Quads 4 rows tall (screen y 342..346); the columns of row 1 as one edge moves over pixel 5
+  // to pixel5_plus(n). Left edges with the right edge at x = 8 (column 7's samples, 7.58 and
+  // 7.5625, inside; column 8's not); right edges (exclusive) with the left edge at x = 3
+  // (column 3's samples inside, column 2's not).
+  const CoverageRule console = CoverageRule::Console, dolphin = CoverageRule::Dolphin;
+  const std::set<int> from5{5, 6, 7}, from6{6, 7}, to4{3, 4}, to5{3, 4, 5};
+  struct EdgeCase {
+    bool left_edge;
+    int n;
+    CoverageRule rule;
+    std::set<int> columns;
+  };
+  const EdgeCase cases[] = {
+      // Console: pixel 5 samples at 5 + 7/12 = 5 + 19114.67/32768 from the vertex as it is: a
+      // left edge at the float just left of it keeps column 5, at the float just right of it
+      // not; a right edge the other way round.
+      {true, 19114, console, from5},
+      {true, 19115, console, from6},
+      {false, 19114, console, to4},
+      {false, 19115, console, to5},
+      // Dolphin: both round to 16 * 5.5833 = 89.33 -> 89, minus 9 = 80 = 16 * 5, pixel 5's
+      // sample point (5 + 9/16), which the left edge's fill rule keeps and the right edge's
+      // does not: column 5 with either left edge, with neither right edge.
+      {true, 19114, dolphin, from5},
+      {true, 19115, dolphin, from5},
+      {false, 19114, dolphin, to4},
+      {false, 19115, dolphin, to4},
+      // Dolphin's edge leaves the sample point where the 1/16 rounding moves it off: 16 x =
+      // 89.5 at x = 5 + 19/32 (19456/32768) rounds up to 90 -> 81 > 80, one float before it
+      // (89.4995) rounds to 89 -> 80. The console decided long before (19/32 > 7/12).
+      {true, 19455, dolphin, from5},
+      {true, 19456, dolphin, from6},
+      {false, 19455, dolphin, to4},
+      {false, 19456, dolphin, to5},
+      {true, 19455, console, from6},
+      {false, 19455, console, to5},
+  };
+  for (const EdgeCase& c : cases) {
+    const float x = pixel5_plus(c.n);
+    const std::set<Pixel> px = c.left_edge ? quad_pixels(x, 342.0f, 350.0f, 346.0f, c.rule)
+                                           : quad_pixels(345.0f, 342.0f, x, 346.0f, c.rule);
+    EXPECT_EQ(columns(px, 1), c.columns)
+        << (c.left_edge ? "left " : "right ") << c.n << " rule " << static_cast<int>(c.rule);
+  }
+  // y: the same rule at 7/12 (an assumption: the hwtests measured x only). A top edge just
+  // above 1 + 7/12 keeps row 1, just below it loses it (column 5 of a quad from x = 3 to 8).
+  auto rows = [&](float top) {
+    std::set<int> out;
+    for (const Pixel& p : quad_pixels(345.0f, top, 350.0f, 346.0f, console))
+      if (p.first == 5) out.insert(p.second);
+    return out;
+  };
+  EXPECT_EQ(rows(343.0f + 19114.0f / 32768), (std::set<int>{1, 2, 3}));
+  EXPECT_EQ(rows(343.0f + 19115.0f / 32768), (std::set<int>{2, 3}));
+}
+
+TEST(GxRaster, ConsoleSliverNarrowerThanASixteenthCoversThePixelWhoseSampleItSpans) {
+  // The hwtests' tiny viewport (rasterization.cpp L97-101: 2e-5 pixel): a quad 2e-5 pixel wide
+  // covers the pixel while it spans the sample point. Finer than a float at 342 (2^-15 = 3.05e-5),
+  // so from the scissor origin 0, where a float near 5.58 is a multiple of 2^-21: 5 + 7/12 -+ 1e-5
+  // are (7/12 -+ 1e-5) * 393216 = 229376 -+ 3.93 units (within 0.1 of it after the float
+  // rounding), rounded to 229372 and 229380: the sample point 229376 lies between, rows 0..3.
+  const Scissor origin0{0, 0, 32, 32, 0, 0};
+  const float s = 5.0f + 7.0f / 12.0f;
+  std::set<Pixel> column5;
+  for (int y = 0; y < 4; ++y) column5.insert({5, y});
+  EXPECT_EQ(quad_pixels(s - 1e-5f, 0.0f, s + 1e-5f, 4.0f, CoverageRule::Console, origin0), column5);
+  // Moved 2e-5 right (229380..229388) or left (229364..229372) it misses every sample point.
+  EXPECT_TRUE(
+      quad_pixels(s + 1e-5f, 0.0f, s + 3e-5f, 4.0f, CoverageRule::Console, origin0).empty());
+  EXPECT_TRUE(
+      quad_pixels(s - 3e-5f, 0.0f, s - 1e-5f, 4.0f, CoverageRule::Console, origin0).empty());
+  // Dolphin rounds both edges onto 16 * 5.5833 = 89.33 -> 80: no width, nothing.
+  EXPECT_TRUE(
+      quad_pixels(s - 1e-5f, 0.0f, s + 1e-5f, 4.0f, CoverageRule::Dolphin, origin0).empty());
+  // At the 342 offset the narrowest quad is one float step: 19114/32768 to 19115/32768 spans
+  // 7/12 (8 units left, 4 right): column 5; one step right (19115..19116) it does not.
+  std::set<Pixel> column5_rows;
+  for (int y = 0; y < 4; ++y) column5_rows.insert({5, y});
+  EXPECT_EQ(
+      quad_pixels(pixel5_plus(19114), 342.0f, pixel5_plus(19115), 346.0f, CoverageRule::Console),
+      column5_rows);
+  EXPECT_TRUE(
+      quad_pixels(pixel5_plus(19115), 342.0f, pixel5_plus(19116), 346.0f, CoverageRule::Console)
+          .empty());
+}
+
+TEST(GxRaster, ConsoleSharedEdgesAreDrawnOnce) {
+  // A square from 1.25 to 9.75 (pixels from the 342 offset) split along its diagonal y = x,
+  // which runs through the console's sample point (i + 7/12, i + 7/12) of every pixel (i, i):
+  // the ties on the shared edge go to one triangle by the fill rule. Pixels inside: 1.25 < x +
+  // 7/12 < 9.75, so x (and y) from 1 to 9: 81 pixels, none twice (quad_pixels checks).
+  const std::set<Pixel> square =
+      quad_pixels(343.25f, 343.25f, 351.75f, 351.75f, CoverageRule::Console);
+  std::set<Pixel> expected;
+  for (int y = 1; y <= 9; ++y)
+    for (int x = 1; x <= 9; ++x) expected.insert({x, y});
+  EXPECT_EQ(square, expected);
+  // A 5 x 5 grid of cells 2.5 pixels wide from 1.25 to 13.75 whose inner vertices are moved by
+  // multiples of 15/128 pixel, so its 50 triangles have sloped edges of every direction: each
+  // pixel inside the outer square (x and y from 1 to 13 under both rules: the console's 1.25 <
+  // x + 7/12 < 13.75; Dolphin's 1.25 and 13.75 round to 11 and 211 sixteenths from 9/16, and
+  // 11 < 16 x < 211) is covered by exactly one triangle.
+  for (const CoverageRule rule : {CoverageRule::Console, CoverageRule::Dolphin}) {
+    RasterVertex grid[6][6];
+    for (int j = 0; j <= 5; ++j)
+      for (int i = 0; i <= 5; ++i) {
+        const bool inner = i > 0 && i < 5 && j > 0 && j < 5;
+        const float jx = inner ? static_cast<float>((i * 7 + j * 3) % 5 - 2) * 15 / 128 : 0;
+        const float jy = inner ? static_cast<float>((i * 2 + j * 5) % 7 - 3) * 15 / 128 : 0;
+        grid[j][i] = at_screen(343.25f + 2.5f * static_cast<float>(i) + jx,
+                               343.25f + 2.5f * static_cast<float>(j) + jy);
+      }
+    std::map<Pixel, int> times;
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i) {
+        const RasterVertex &tl = grid[j][i], &tr = grid[j][i + 1], &bl = grid[j + 1][i],
+                           &br = grid[j + 1][i + 1];
+        for (const Pixel& p : covered(tl, bl, br, rule)) ++times[p];
+        for (const Pixel& p : covered(tl, br, tr, rule)) ++times[p];
+      }
+    std::set<Pixel> inside;
+    for (const auto& [p, n] : times) {
+      EXPECT_EQ(n, 1) << p.first << "," << p.second << " rule " << static_cast<int>(rule);
+      inside.insert(p);
+    }
+    std::set<Pixel> expected13;
+    for (int y = 1; y <= 13; ++y)
+      for (int x = 1; x <= 13; ++x) expected13.insert({x, y});
+    EXPECT_EQ(inside, expected13) << "rule " << static_cast<int>(rule);
+  }
+}
+
+TEST(GxRaster, ConsoleSolvedSpansEqualThePerPixelTest) {
+  // As SolvedSpansEqualThePerPixelTest, on the console's grid: float vertices off every grid.
+  const float pts[][6] = {{343.1f, 342.7f, 342.3f, 360.9f, 369.77f, 350.01f},
+                          {350.0f, 342.0f, 342.0f, 373.0f, 373.9f, 368.3f},
+                          {342.58333f, 342.0f, 342.58333f, 373.0f, 342.58337f, 342.0f},
+                          {371.5f, 343.25f, 344.0f, 355.125f, 369.0f, 372.9f}};
+  for (const auto& p : pts)
+    expect_spans_are_the_per_pixel_test(at_screen(p[0], p[1]), at_screen(p[2], p[3]),
+                                        at_screen(p[4], p[5]), CoverageRule::Console);
+  Triangle t;
+  ASSERT_TRUE(setup_triangle(at_screen(343.1f, 342.7f), at_screen(342.3f, 360.9f),
+                             at_screen(369.77f, 350.01f), 0, 0, kScissor, t,
+                             CoverageRule::Console));
+  EXPECT_EQ(t.unit, 12 * 32768);
+}
+
+TEST(GxRaster, ConsoleRuleKeepsDolphinsPlanes) {
+  // Attributes stay Dolphin's: the same triangle set up under either rule gives every pixel the
+  // same values (the planes are measured from vertex 0's pixel on Dolphin's grid).
+  const RasterVertex a = snapped(3, 5, 100.0f, {10, 0, 0, 0}),
+                     b = snapped(7, 300, 900.0f, {200, 0, 0, 0}),
+                     c = snapped(280, 20, 50.0f, {90, 0, 0, 0});
+  Triangle d, k;
+  ASSERT_TRUE(setup_triangle(a, b, c, 1, 0, kScissor, d, CoverageRule::Dolphin));
+  ASSERT_TRUE(setup_triangle(a, b, c, 1, 0, kScissor, k, CoverageRule::Console));
+  for (const auto& [x, y] : {Pixel{1, 1}, Pixel{5, 9}, Pixel{12, 3}}) {
+    RasterPixel pd, pk;
+    raster_pixel(d, x, y, false, pd);
+    raster_pixel(k, x, y, false, pk);
+    EXPECT_EQ(pd.z, pk.z);
+    EXPECT_EQ(pd.color[0], pk.color[0]);
+  }
 }
 
 TEST(GxRaster, ConversionsAreDolphinsX86Casts) {
@@ -316,6 +548,92 @@ TEST(GxClipper, NonFiniteHugeAndDegenerateTrianglesDrawNothing) {
   EXPECT_FALSE(setup_triangle(snapped(0, 0), snapped(64, 0), not_a_number, 1, 0, kScissor, t));
   // Three points on a line cover no pixel: every sample point fails one edge test.
   EXPECT_TRUE(covered(snapped(0, 0), snapped(64, 64), snapped(128, 128)).empty());
+}
+
+// The hwtests' CoordinatePrecisionTest [HWT gxtest/rasterization.cpp L16-122] as far as the
+// setup unit's input allows: the test's viewports and quads through the clipper (Dolphin's float
+// viewport transform), its quads as GX_QUADS' two triangles, then EFB pixel `px` of row 0 under
+// `rule`. Quad corners as util.cpp Quad() and the test set them; z = 1 through the test's
+// orthographic matrix (mtx[2][2] = -1) is clip z = -1 = -w, inside.
+bool hwtest_pixel_covered(const Viewport& vp, float left, float right, int px, CoverageRule rule) {
+  const RasterVertex tl = clip_vertex(left, 1.0f, -1.0f), tr = clip_vertex(right, 1.0f, -1.0f),
+                     br = clip_vertex(right, -1.0f, -1.0f), bl = clip_vertex(left, -1.0f, -1.0f);
+  const Scissor efb{0, 0, 640, 528, 342, 342};
+  bool hit = false;
+  for (const auto& [a, b, c] : {std::tuple{&tl, &tr, &br}, std::tuple{&tl, &br, &bl}}) {
+    ClippedTriangles out;
+    if (clip_triangle(*a, *b, *c, kCullNone, vp, out) != TriangleFate::Drawn) continue;
+    for (int k = 0; k < out.count; ++k) {
+      const auto& idx = out.triangles[static_cast<size_t>(k)];
+      Triangle t;
+      if (!setup_triangle(out.vertices[idx[0]], out.vertices[idx[1]], out.vertices[idx[2]], 0, 0,
+                          efb, t, rule))
+        continue;
+      s32 xb, xe;
+      covered_span(t, 0, xb, xe);
+      const bool in = xb <= px && px < xe;
+      EXPECT_FALSE(hit && in) << "pixel " << px << " in both triangles";
+      hit = hit || in;
+    }
+  }
+  return hit;
+}
+
+TEST(GxRaster, ConsoleRuleMeetsTheHwtestsCoordinatePrecisionCases) {
+  // Case 1 (L41-73): CGX_SetViewport(xpos, 0, 100, 100, 0, 1) writes x_orig = 342 + xpos + 50
+  // in float (cgx.cpp L92), wd = 50; the quad from clip x = 0 to 1 has its left edge at screen
+  // x_orig, EFB pixel 50 (the copy starts at 50, L63). For xpos = 0.583328247070 the float sum
+  // 342 + xpos is a tie between two floats and rounds to even: x_orig = 392.58331298828125
+  // (7/12 - 8 units on the console's grid); for the next float up, 392.58334350585938 (+4).
+  // The console covered pixel 50 in the first and not in the second (L68).
+  const float xpos1 = 0.583328247070f;
+  int case1 = 0;
+  for (float xpos = xpos1; xpos <= 0.583328306675f; xpos = std::nextafter(xpos, 1.0f)) {
+    const Viewport vp{50.0f,  -50.0f,     16777215.0f, 342.0f + xpos + 100.0f * 0.5f,
+                      392.0f, 16777215.0f};
+    const bool console_expects = xpos <= xpos1;
+    EXPECT_EQ(hwtest_pixel_covered(vp, 0.0f, 1.0f, 50, CoverageRule::Console), console_expects)
+        << xpos;
+    // Dolphin's software renderer rounds both edges onto pixel 50's sample point (16 * 50.5833
+    // = 809.33 -> 809, minus 9 = 800) and covers the pixel in both: the case it fails.
+    EXPECT_TRUE(hwtest_pixel_covered(vp, 0.0f, 1.0f, 50, CoverageRule::Dolphin)) << xpos;
+    ++case1;
+  }
+  EXPECT_EQ(case1, 2);
+
+  // Case 2 (L83-122): wd = 2e-5, x_orig = 342 + xpos + 2e-5 in float (L101-108), the quad from
+  // clip x = -1 to 1, EFB pixel 0; every float xpos from 0.583297669888 to 0.583328306675 (515
+  // of them); the console covered the pixel for all but the first and the last (L117).
+  const float first = 0.583297669888f;
+  int positions = 0, console_agrees = 0, dolphin_covers = 0;
+  for (float xpos = first; xpos <= 0.583328306675; xpos = std::nextafter(xpos, 1.0f)) {
+    const float vp_width = 2.0e-5f;
+    const Viewport vp{vp_width, -50.0f, 16777215.0f, 342.0f + xpos + vp_width, 392.0f, 16777215.0f};
+    const bool console_expects = !(xpos == first || xpos == 0.583328306675f);
+    const bool console = hwtest_pixel_covered(vp, -1.0f, 1.0f, 0, CoverageRule::Console);
+    ++positions;
+    if (console == console_expects) {
+      ++console_agrees;
+    } else {
+      // The one position the model gets wrong, and why: Dolphin's float viewport transform
+      // (kept: the clipper is Dolphin's) rounds the sliver's right edge x_orig + wd =
+      // 342.58333298 (exact: 7/12 - 0.14 units) up to the float 342.58334350585938 (+4
+      // units), so the float sliver spans 7/12; the exact one ends just short of it, as the
+      // console saw.
+      EXPECT_EQ(xpos, first);
+      const double exact_right = static_cast<double>(vp.x_orig) + static_cast<double>(vp.wd);
+      EXPECT_LT(exact_right - 342.0, 7.0 / 12.0);
+      const float float_right = 1.0f * vp.wd + vp.x_orig;  // clipper.cpp's transform, x = w
+      EXPECT_EQ(float_right, 342.0f + 19115.0f / 32768);
+      EXPECT_GT(static_cast<double>(float_right) - 342.0, 7.0 / 12.0);
+    }
+    dolphin_covers += hwtest_pixel_covered(vp, -1.0f, 1.0f, 0, CoverageRule::Dolphin) ? 1 : 0;
+  }
+  EXPECT_EQ(positions, 515);
+  EXPECT_EQ(console_agrees, 514);
+  // Dolphin rounds every sliver to no width (both edges onto 16 * 0.5833 = 9.33 -> 9, minus 9 =
+  // 0): it covers the pixel for none, and fails the 513 the console covered.
+  EXPECT_EQ(dolphin_covers, 0);
 }
 
 // ---- depth and the EFB ----

@@ -127,6 +127,9 @@ VariantSpace gx_space(const Scene& scene) {
   s.left_out.push_back(
       ":colors=round, :lights=round-each: which of Dolphin's two emulations models the console "
       "(gx-hardware.md §2.4, §2.5), not a choice a port makes");
+  s.left_out.push_back(
+      ":coverage=console: the console's sample point instead of Dolphin's (gx-hardware.md "
+      "§2.6), not a choice a port makes");
   if (!directional) s.left_out.push_back(":base=tev: no directional light (the same program)");
   s.left_out.push_back(
       ":out=xfb: which image the path returns (the EFB or the TV's), not a program");

@@ -201,7 +201,7 @@ class GxPath final : public Path {
           triangles.clear();
           setup_triangles(vertices, mesh_triangles, first,
                           std::min(mesh_triangles.size(), first + kTriangleBatch), state, viewport_,
-                          scissor_, triangles, draw_counts);
+                          scissor_, variant_.coverage, triangles, draw_counts);
           vertex_seconds_ += seconds_since(t0);
           t0 = SteadyClock::now();
           const PixelCounts counts = draw_triangles(triangles, pp, variant_.round_colors, efb_);
@@ -274,8 +274,12 @@ class GxPath final : public Path {
         {"XF lighting, texgen and position transform per vertex on the CPU (float), each pass",
          "cpu", ""});
     out.push_back(
-        {"setup unit and rasteriser on the CPU: clipping, culling, 1/16-pixel edges and "
-         "float attribute planes, as Dolphin's software renderer",
+        {variant_.coverage == CoverageRule::Console
+             ? "setup unit and rasteriser on the CPU: clipping, culling and float attribute "
+               "planes as Dolphin's software renderer, coverage sampled at 7/12 of a pixel from "
+               "exact vertices as the console (gx-hardware.md §2.6)"
+             : "setup unit and rasteriser on the CPU: clipping, culling, 1/16-pixel edges and "
+               "float attribute planes, as Dolphin's software renderer",
          "cpu", ""});
     out.push_back(
         {"depth test, texture unit, TEV and EFB per pixel on the CPU (integer)", "cpu", ""});
@@ -415,7 +419,7 @@ GxInfo::GxInfo() {
       ":view=object (V and L per object: any camera and lights); the LUT variants with :base=tev "
       "(a directional light's translucency base as a TEV konst colour, COLOR0 unlit); any with "
       ":colors=round, :lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of "
-      "the EFB)";
+      "the EFB), :coverage=console (the console's sample point, not Dolphin's)";
   variants = {
       {"t=vertex",
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "
@@ -425,6 +429,10 @@ GxInfo::GxInfo() {
       {"t=vertex:colors=round",
        "the interpolated channel colours rounded, as Dolphin's shader backends do (the default "
        "truncates, as its software rasteriser does): how far that choice moves the image"},
+      {"t=vertex:coverage=console",
+       "t=vertex with the console's coverage as dolphin-emu/hwtests measured it (samples at 7/12 "
+       "of a pixel, vertices not rounded to 1/16) instead of Dolphin's software renderer's (9/16, "
+       "1/16): which pixels a silhouette holds on a Wii"},
       {"t=vertex:lights=round-each",
        "each light's XF contribution rounded before the sum (shader backends) instead of one "
        "truncation of the float sum (software renderer)"},

@@ -51,4 +51,11 @@ inline constexpr u8 kTexCoordNull = 0xff;
 inline constexpr u8 kTexMapNull = 0xff;
 inline constexpr u8 kColorNull = 0xff;
 
+// Where the rasteriser's half-space tests sample a pixel and how finely they hold a vertex
+// (rasteriser.h; the gx variant axis :coverage).
+enum class CoverageRule : u8 {
+  Dolphin,  // Dolphin's software renderer: vertices rounded to 1/16 pixel, samples at x + 9/16
+  Console,  // the console as dolphin-emu/hwtests measured it: exact vertices, samples at x + 7/12
+};
+
 }  // namespace lt::gx

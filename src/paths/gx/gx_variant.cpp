@@ -16,8 +16,8 @@ namespace {
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
-    ":lights=round-each, :map=rgb565, :base=tev (or :base=xf), :out=xfb (or :out=efb) and "
-    ":light-range=D (D >= 0)";
+    ":lights=round-each, :map=rgb565, :base=tev (or :base=xf), :out=xfb (or :out=efb), "
+    ":coverage=console (or :coverage=dolphin) and :light-range=D (D >= 0)";
 
 // Whether all of `text` reads as one number into `out`.
 template <class T>
@@ -76,6 +76,9 @@ GxVariant parse_gx_variant(const std::string& text) {
       v.map_rgb565 = either("rgba8", "rgb565") == "rgb565";
     } else if (key == "out" && first) {
       v.out = either("efb", "xfb") == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
+    } else if (key == "coverage" && first) {
+      v.coverage =
+          either("dolphin", "console") == "console" ? CoverageRule::Console : CoverageRule::Dolphin;
     } else if (key == "base" && first) {
       v.base_in_tev = either("tev", "xf") == "tev";
     } else if (key == "light-range" && first) {
@@ -115,6 +118,7 @@ std::string to_string(const GxVariant& v) {
   if (v.round_each_light) s += ":lights=round-each";
   if (v.map_rgb565) s += ":map=rgb565";
   if (v.out == GxVariant::Output::Xfb) s += ":out=xfb";
+  if (v.coverage == CoverageRule::Console) s += ":coverage=console";
   if (v.light_range) {
     // The shortest text that reads back as the same double (a sweep row builds by its name).
     char buf[32];

@@ -14,6 +14,12 @@
 //   :lights=round-each  each light's XF contribution rounded before the sum, as the shader
 //                       backends do (default: summed in float and truncated once, the software
 //                       renderer)
+// One axis follows the console where dolphin-emu/hwtests show it differs from Dolphin's software
+// renderer (gx-hardware.md §2.6):
+//   :coverage=console   the rasteriser samples each pixel at 7/12 from vertices held exactly, as
+//                       the hwtests measured (default :coverage=dolphin: 9/16 from vertices
+//                       rounded to 1/16, Dolphin's software renderer); attributes, depth and
+//                       clipping stay Dolphin's (rasteriser.h console_subpixels)
 // One axis picks the texture format of a colour thickness map (a grey map is always GX_TF_I8):
 //   :map=rgb565         GX_TF_RGB565, 16 bits a texel (default :map=rgba8, GX_TF_RGBA8, 32 bits:
 //                       the map's 8 bits kept, as the vertex colours it replaces keep theirs)
@@ -38,6 +44,7 @@
 #include <optional>
 #include <string>
 
+#include "paths/gx/gx_types.h"
 #include "scene/scene.h"
 
 namespace lt::gx {
@@ -53,6 +60,7 @@ struct GxVariant {
   bool round_each_light = false;
   bool map_rgb565 = false;  // colour thickness maps as GX_TF_RGB565 instead of GX_TF_RGBA8
   Output out = Output::Efb;
+  CoverageRule coverage = CoverageRule::Dolphin;
   // A directional light's translucency base as a TEV konst colour instead of an XF light.
   bool base_in_tev = false;
   // V and L constant per object, from its centre (object_view.h); default: exact (t=texgen and

@@ -41,8 +41,14 @@ int64_t floor_div(int64_t a, int64_t b) {
 // edge arithmetic exact: |C| <= 4 M^2 and an edge test adds at most 2^16 M, 1.4e9 < 2^31 for
 // M = 12000 (750 pixels: the EFB is 640 x 528, and the clipper keeps vertices on the viewport).
 // Beyond it Dolphin's integers overflow; such a triangle (only a NaN or infinite position gets
-// there) is not drawn.
+// there) is not drawn. The console's rule refuses the same triangles: its 750 pixels are
+// M = 2.9e8 units, |C| <= 4 M^2 = 3.5e17 and C plus a row's term 6 M^2 < 2^63.
 constexpr float kMaxSnapped = 12000.0f;
+
+// ceil(a / b) for b > 0.
+int64_t ceil_div(int64_t a, int64_t b) {
+  return floor_div(a + b - 1, b);
+}
 
 // The shader backends' rounding of an interpolated colour (gx-hardware.md §2.5), clamped to
 // 0..255; NaN as 0.
@@ -57,11 +63,19 @@ s32 snap_to_subpixels(float screen, int offset) {
   return dolphin_iround(16.0f * (screen - static_cast<float>(offset))) - 9;
 }
 
+int64_t console_subpixels(float screen, int offset) {
+  // Exact in double for |screen| >= 256 (console_subpixels' comment in rasteriser.h): the
+  // difference has at most 34 significant bits and 12 * 2^15 adds two.
+  const double units = (static_cast<double>(screen) - offset) * kConsoleUnitsPerPixel;
+  return std::llround(units) - kConsoleSampleOffset;
+}
+
 bool setup_triangle(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
-                    int channels, int texgens, const Scissor& scissor, Triangle& t) {
+                    int channels, int texgens, const Scissor& scissor, Triangle& t,
+                    CoverageRule rule) {
   const float x_off = static_cast<float>(scissor.x_off), y_off = static_cast<float>(scissor.y_off);
   const RasterVertex* v[3] = {&v0, &v1, &v2};
-  s32 X[3], Y[3];
+  int64_t X[3], Y[3];
   for (int i = 0; i < 3; ++i) {
     const float sx = 16.0f * (v[i]->screen.x - x_off), sy = 16.0f * (v[i]->screen.y - y_off);
     if (!(std::fabs(sx) < kMaxSnapped && std::fabs(sy) < kMaxSnapped)) return false;
@@ -70,18 +84,33 @@ bool setup_triangle(const RasterVertex& v0, const RasterVertex& v1, const Raster
     X[i] = snap_to_subpixels(v[i]->screen.x, scissor.x_off);
     Y[i] = snap_to_subpixels(v[i]->screen.y, scissor.y_off);
   }
-  // Bounding box in pixels, (v + 15) >> 4 (an arithmetic shift: the floor), then the scissor.
-  t.min_x = std::max((std::min({X[0], X[1], X[2]}) + 0xF) >> 4, scissor.left);
-  t.max_x = std::min((std::max({X[0], X[1], X[2]}) + 0xF) >> 4, scissor.right);
-  t.min_y = std::max((std::min({Y[0], Y[1], Y[2]}) + 0xF) >> 4, scissor.top);
-  t.max_y = std::min((std::max({Y[0], Y[1], Y[2]}) + 0xF) >> 4, scissor.bottom);
+  // The planes are measured from vertex 0's pixel on Dolphin's grid under either rule.
+  t.origin.x0 = static_cast<s32>((X[0] + 0xF) >> 4);
+  t.origin.y0 = static_cast<s32>((Y[0] + 0xF) >> 4);
+  const bool console = rule == CoverageRule::Console;
+  t.unit = console ? kConsoleUnitsPerPixel : 16;
+  if (console) {
+    for (int i = 0; i < 3; ++i) {
+      X[i] = console_subpixels(v[i]->screen.x, scissor.x_off);
+      Y[i] = console_subpixels(v[i]->screen.y, scissor.y_off);
+    }
+  }
+  // Bounding box in pixels: ceil(v / unit), the first sample point at or past v ((v + 15) >> 4,
+  // an arithmetic shift, for Dolphin's 16), then the scissor.
+  auto pixel = [console](int64_t units) {
+    return static_cast<s32>(console ? ceil_div(units, kConsoleUnitsPerPixel) : (units + 0xF) >> 4);
+  };
+  t.min_x = std::max(pixel(std::min({X[0], X[1], X[2]})), scissor.left);
+  t.max_x = std::min(pixel(std::max({X[0], X[1], X[2]})), scissor.right);
+  t.min_y = std::max(pixel(std::min({Y[0], Y[1], Y[2]})), scissor.top);
+  t.max_y = std::min(pixel(std::max({Y[0], Y[1], Y[2]})), scissor.bottom);
   if (t.min_x >= t.max_x || t.min_y >= t.max_y) return false;
 
   // Edges 1-2, 2-3, 3-1: e = C + DX * y - DY * x with C = DY * X1 - DX * Y1, plus one where
   // "DY < 0 || (DY == 0 && DX > 0)" [DSW "Correct for fill convention"].
   for (int e = 0; e < 3; ++e) {
     const int a = e, b = (e + 1) % 3;
-    const int64_t dx = int64_t{X[a]} - X[b], dy = int64_t{Y[a]} - Y[b];
+    const int64_t dx = X[a] - X[b], dy = Y[a] - Y[b];
     int64_t c = dy * X[a] - dx * Y[a];
     if (dy < 0 || (dy == 0 && dx > 0)) ++c;
     t.c[static_cast<size_t>(e)] = c;
@@ -89,9 +118,7 @@ bool setup_triangle(const RasterVertex& v0, const RasterVertex& v1, const Raster
     t.dy[static_cast<size_t>(e)] = dy;
   }
 
-  // The planes [DSW SlopeContext]: through vertex 0, measured from its pixel.
-  t.origin.x0 = (X[0] + 0xF) >> 4;
-  t.origin.y0 = (Y[0] + 0xF) >> 4;
+  // The planes [DSW SlopeContext]: through vertex 0, measured from its pixel (above).
   // "adjust a little less than 0.5"
   constexpr float kAdjust = 0.495f;
   t.origin.x_off = (static_cast<float>(t.origin.x0) - (v0.screen.x - x_off)) + kAdjust;
@@ -124,12 +151,13 @@ void covered_span(const Triangle& t, s32 y, s32& x_begin, s32& x_end) {
     x_begin = x_end = 0;
     return;
   }
+  const int64_t sample_y = int64_t{y} * t.unit;
   for (size_t e = 0; e < 3 && lo < hi; ++e) {
-    // e(x) = A - B x with A = c + dx (y << 4), B = 16 dy; covered where e(x) > 0.
-    const int64_t a = t.c[e] + t.dx[e] * (int64_t{y} << 4);
-    const int64_t b = 16 * t.dy[e];
+    // e(x) = A - B x with A = c + dx (y unit), B = unit dy; covered where e(x) > 0.
+    const int64_t a = t.c[e] + t.dx[e] * sample_y;
+    const int64_t b = t.unit * t.dy[e];
     if (b > 0) {
-      hi = std::min(hi, floor_div(a + b - 1, b));  // x < a / b
+      hi = std::min(hi, ceil_div(a, b));  // x < a / b
     } else if (b < 0) {
       lo = std::max(lo, floor_div(-a, -b) + 1);  // e(x) = a + |b| x > 0: x > -a / |b|
     } else if (a <= 0) {

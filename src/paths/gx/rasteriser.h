@@ -11,6 +11,9 @@
 //   Dolphin's x86-64 build then narrows): z clamped to 24 bits, colours narrowed to 16 bits and
 //   masked to 8, texture coordinates perspective-divided (q and w) and stored as s17.7 in a
 //   24-bit field.
+// The variant axis :coverage=console (CoverageRule::Console) changes only the coverage: the
+// console's sample point and vertex precision as dolphin-emu/hwtests measured them (see
+// console_subpixels); the planes, the bounding box's scissor and the clipper stay Dolphin's.
 #pragma once
 
 #include <algorithm>
@@ -84,11 +87,46 @@ inline s32 raster_texcoord(float v) {
 // -2 and 2.5 becomes 3. Pixel x then samples at 16 x, a screen position of x + 9/16.
 s32 snap_to_subpixels(float screen, int offset);
 
+// The console's sample grid: 12 * 2^15 units a pixel, the sample point 7/12 of a pixel into it.
+// Why these numbers [HWT gxtest/rasterization.cpp]:
+// - x: a quad's left edge at screen x = 392.58331298828125 (pixel 50 + 0.58331) covers pixel 50
+//   and at the next float up, 392.58334350585938 (+ 0.58334), does not (L41-73: the viewport
+//   origin 342 + xpos + 50 in float, xpos one float step either side of 0.583328247070); a
+//   viewport 2e-5 pixel wide (a quad 4e-5 wide) covers pixel 0 exactly while it spans about
+//   0.58333 (L75-122; L79-80: "the default subsample is located close to (but somewhat off)
+//   screen position 7/12"). Dolphin read this as "pixel centers are located at 0.58333 ... each
+//   pixel is divided into a 12x12 grid of subsamples" [PR#306]. 7/12 satisfies both cases when
+//   the sliver's edges are taken exactly (xorig +- 2e-5 unrounded); with the float edges
+//   Dolphin's viewport transform makes (which this variant keeps) one of the 515 positions of
+//   L83 covers the pixel where the console did not (tests/gx_raster_test.cpp holds all of it).
+// - y: not measured on hardware; 7/12 as in x is an assumption (PR#306's 12x12 grid).
+// - precision: the first case moves an edge by one float step, 2^-15 pixel at x = 392, and the
+//   console tells the two apart, so it holds vertices at least that finely; Dolphin's 1/16 pixel
+//   cannot (both positions round onto pixel 50's sample point, which its fill rule covers). A
+//   unit of 1/(12 * 2^15) pixel holds every float screen position in [256, 1024) exactly (the
+//   342-pixel offset puts the whole EFB there; a float there is a multiple of 2^-15) and 7/12
+//   exactly (7 * 2^15 units), so the half-space tests stay exact integers, shared with
+//   Dolphin's rule (covered_span), and a vertical edge can never lie on a sample point (no float
+//   is n + 7/12). Double arithmetic would hold the vertices as well, but not 7/12, and a
+//   near-tie would then be decided by its rounding. A coordinate below 256 (not reached here)
+//   rounds to the nearest unit.
+// - ties (a sloped edge through a sample point): the hwtests do not show the rule; Dolphin's fill
+//   convention is kept, so a shared edge is still drawn once.
+inline constexpr int64_t kConsoleUnitsPerPixel = int64_t{12} << 15;
+inline constexpr int64_t kConsoleSampleOffset = int64_t{7} << 15;  // 7/12 of a pixel
+
+// A screen coordinate (pixels, offset still in) on the console's grid, moved by -7/12 so pixel x
+// samples at kConsoleUnitsPerPixel * x, as snap_to_subpixels does for Dolphin's 1/16.
+int64_t console_subpixels(float screen, int offset);
+
 // One triangle, set up.
 struct Triangle {
   s32 min_x = 0, max_x = 0, min_y = 0, max_y = 0;  // the scissored bounding box, max exclusive
-  // Half-space functions e = c + dx * (y << 4) - dy * (x << 4); covered where all three are > 0.
+  // Half-space functions e = c + dx * (y * unit) - dy * (x * unit), in units of 1/unit pixel
+  // (16 under Dolphin's rule, kConsoleUnitsPerPixel under the console's); covered where all
+  // three are > 0.
   std::array<int64_t, 3> c{}, dx{}, dy{};
+  int64_t unit = 16;
   SlopeOrigin origin;
   Slope z, w;
   std::array<std::array<Slope, 4>, kMaxChannels> color{};
@@ -97,11 +135,14 @@ struct Triangle {
 };
 
 // Sets up (v0, v1, v2) (screen positions from the clipper, wound front-facing) with `channels`
-// colour channels and `texgens` texture coordinates. Returns false when the scissored bounding
-// box is empty (Dolphin returns before any slope) or a coordinate is beyond what Dolphin's
-// 32-bit snapping holds (a non-finite or huge screen position: there its integers overflow).
+// colour channels and `texgens` texture coordinates, its coverage under `rule` (the planes are
+// Dolphin's under either). Returns false when the scissored bounding box is empty (Dolphin
+// returns before any slope) or a coordinate is beyond what Dolphin's 32-bit snapping holds (a
+// non-finite or huge screen position: there its integers overflow; the console's rule refuses
+// the same triangles).
 bool setup_triangle(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
-                    int channels, int texgens, const Scissor& scissor, Triangle& out);
+                    int channels, int texgens, const Scissor& scissor, Triangle& out,
+                    CoverageRule rule = CoverageRule::Dolphin);
 
 // The covered pixels of row y as [x_begin, x_end) (empty when x_begin >= x_end): the three
 // half-space tests solved exactly in integers, which is the per-pixel test of

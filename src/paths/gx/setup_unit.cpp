@@ -31,7 +31,7 @@ void make_raster_vertices(const std::vector<glm::vec4>& clip, const VertexOutput
 void setup_triangles(const std::vector<RasterVertex>& vertices,
                      const std::vector<glm::uvec3>& triangles, size_t first, size_t last,
                      const GxState& state, const Viewport& viewport, const Scissor& scissor,
-                     std::vector<Triangle>& out, TriangleCounts& counts) {
+                     CoverageRule rule, std::vector<Triangle>& out, TriangleCounts& counts) {
   ClippedTriangles clipped;
   Triangle t;
   for (size_t i = first; i < last; ++i) {
@@ -55,7 +55,7 @@ void setup_triangles(const std::vector<RasterVertex>& vertices,
       const auto& idx = clipped.triangles[static_cast<size_t>(k)];
       if (!setup_triangle(clipped.vertices[idx[0]], clipped.vertices[idx[1]],
                           clipped.vertices[idx[2]], state.lighting.num_channels,
-                          state.texgen.num_texgens, scissor, t))
+                          state.texgen.num_texgens, scissor, t, rule))
         continue;
       out.push_back(t);
       ++counts.set_up;

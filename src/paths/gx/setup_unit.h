@@ -30,10 +30,10 @@ void make_raster_vertices(const std::vector<glm::vec4>& clip, const VertexOutput
                           std::vector<RasterVertex>& out);
 
 // Appends to `out` the set-up triangles of mesh triangles [first, last) under `state`'s cull
-// mode, colour channel and texgen counts.
+// mode, colour channel and texgen counts, their coverage under `rule` (rasteriser.h).
 void setup_triangles(const std::vector<RasterVertex>& vertices,
                      const std::vector<glm::uvec3>& triangles, size_t first, size_t last,
                      const GxState& state, const Viewport& viewport, const Scissor& scissor,
-                     std::vector<Triangle>& out, TriangleCounts& counts);
+                     CoverageRule rule, std::vector<Triangle>& out, TriangleCounts& counts);
 
 }  // namespace lt::gx
