@@ -49,6 +49,27 @@ void GBuffer::rasterise() {
   gl::check_error("reference G-buffer");
 }
 
+void GBuffer::append(size_t g, PixelRun& run) const {
+  const size_t i = run.count++;
+  for (int c = 0; c < 3; ++c) {
+    run.position[c][i] = position_[g + c];
+    run.normal[c][i] = normal_[g + c];
+    run.thickness[c][i] = thickness_[g + c];
+  }
+  for (int c = 0; c < 2; ++c) run.uv[c][i] = uv_.empty() ? 0.0f : uv_[g + c];
+}
+
+void GBuffer::pad(PixelRun& run) {
+  for (size_t i = run.count; i < padded_count(run.count, kPixelRunPadding); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      run.position[c][i] = run.position[c][0];
+      run.normal[c][i] = run.normal[c][0];
+      run.thickness[c][i] = run.thickness[c][0];
+    }
+    for (int c = 0; c < 2; ++c) run.uv[c][i] = run.uv[c][0];
+  }
+}
+
 std::vector<BuiltStage> GBuffer::stages() const {
   return {{uv_target_ ? "G-buffer: 4 x RGBA32F (position, normal + material, thickness, map UV)"
                       : "G-buffer: 3 x RGBA32F (position, normal + material, thickness)",

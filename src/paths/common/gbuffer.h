@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/parallel_rows.h"
+#include "paths/common/pixel_run.h"
 #include "gl/program.h"
 #include "paths/path.h"
 
@@ -42,42 +43,53 @@ class GBuffer {
   bool covered(size_t g) const { return position_[g + 3] > 0.5f; }
   // The material index travels as a float in the normal target's alpha.
   int material(size_t g) const { return static_cast<int>(normal_[g + 3] + 0.5f); }
-  // Camera-relative position, interpolated (not renormalised) normal, vertex thickness: xyz.
-  const float* position(size_t g) const { return &position_[g]; }
-  const float* normal(size_t g) const { return &normal_[g]; }
-  const float* thickness(size_t g) const { return &thickness_[g]; }
-  // The interpolated (u, v) of a material that samples a map; (0, 0) in a scene without maps
-  // (the fourth target is only built for a scene with one).
-  glm::dvec2 uv(size_t g) const {
-    return uv_.empty() ? glm::dvec2(0) : glm::dvec2(uv_[g], uv_[g + 1]);
-  }
-
   // Threads the CPU paths shade on: every core.
   static unsigned threads() { return worker_threads(); }
 
-  // Fills `image` (top row first): background with alpha 0 where nothing is covered, and
-  // `shade(g, rgb, worker)` with alpha 1 where something is; `worker` < threads() lets the caller
-  // keep per-thread counters without locks. Returns the number of covered pixels.
-  template <class ShadePixel>
-  size_t shade_covered(Image& image, const glm::dvec3& background, ShadePixel&& shade) const {
+  // Fills `image` (top row first): background with alpha 0 where nothing is covered, and with
+  // alpha 1 where something is, the colours `shade(run, shaded, worker)` writes into `shaded`
+  // for each run of covered pixels of one row and one material (pixel_run.h: vectorised
+  // shading takes a run's lanes at once). `worker` < threads() lets the caller keep per-thread
+  // counters without locks. Returns the number of covered pixels.
+  template <class ShadeRun>
+  size_t shade_covered(Image& image, const glm::dvec3& background, ShadeRun&& shade) const {
     const int w = ctx_.width, h = ctx_.height;
     // Every pixel is written below, so the last frame's image is reused as it is: a fresh one
     // would be 15 MB of page faults a frame at 1280x720, noise the bench would time.
     if (image.width != w || image.height != h) image = Image(w, h);
     std::vector<size_t> covered(threads(), 0);
     for_each_row_in_parallel(h, [&](int gy, unsigned worker) {
+      PixelRun run;
+      ShadedRun shaded;
+      int run_x[kPixelRunCapacity];
+      float* const row = image.at(0, h - 1 - gy);  // G-buffer rows bottom-up, image top-down
+      auto flush = [&] {
+        if (run.count == 0) return;
+        pad(run);
+        shade(static_cast<const PixelRun&>(run), shaded, worker);
+        for (size_t i = 0; i < run.count; ++i) {
+          float* out = row + static_cast<size_t>(run_x[i]) * 4;
+          for (int c = 0; c < 3; ++c) out[c] = shaded.rgb[c][i];
+          out[3] = 1;
+        }
+        covered[worker] += run.count;
+        run.count = 0;
+      };
       for (int x = 0; x < w; ++x) {
-        const size_t g = index(x, gy);         // G-buffer row gy, bottom-up
-        float* out = image.at(x, h - 1 - gy);  // image rows top-down
+        const size_t g = index(x, gy);
         if (!this->covered(g)) {
+          float* out = row + static_cast<size_t>(x) * 4;
           for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
           out[3] = 0;
           continue;
         }
-        ++covered[worker];
-        shade(g, out, worker);
-        out[3] = 1;
+        const int m = material(g);
+        if (run.count > 0 && (m != run.material || run.count == kPixelRunCapacity)) flush();
+        run.material = m;
+        run_x[run.count] = x;
+        append(g, run);
       }
+      flush();
     });
     size_t total = 0;
     for (size_t c : covered) total += c;
@@ -94,6 +106,11 @@ class GBuffer {
   bool uv_target_ = false;  // a material samples a map: the fourth target holds (u, v)
   gl::FloatTarget target_;
   std::vector<float> position_, normal_, thickness_, uv_;
+
+  // Pixel g's G-buffer values as the run's next lane.
+  void append(size_t g, PixelRun& run) const;
+  // Lanes past run.count up to the widest vector's multiple (kPixelRunPadding): lane 0 again.
+  static void pad(PixelRun& run);
 };
 
 }  // namespace lt

@@ -16,19 +16,21 @@ class ReferencePath final : public CpuShadedPath {
  private:
   void shade() override {
     const Scene& s = relative_scene_;
-    covered_ = gbuffer_.shade_covered(image_, s.background, [&](size_t g, float* out, unsigned) {
-      const float* pos = gbuffer_.position(g);
-      const float* nrm = gbuffer_.normal(g);
-      const float* thk = gbuffer_.thickness(g);
-      model::SurfacePoint sp;
-      sp.P = glm::dvec3(pos[0], pos[1], pos[2]);
-      sp.N = glm::dvec3(nrm[0], nrm[1], nrm[2]);
-      sp.V = model::view_vector(s.camera, sp.P);
-      sp.vertex_thickness = glm::dvec3(thk[0], thk[1], thk[2]);
-      sp.uv = gbuffer_.uv(g);  // a map material's (u, v)
-      const glm::dvec3 c = model::shade(s, s.materials[gbuffer_.material(g)], sp);
-      for (int ch = 0; ch < 3; ++ch) out[ch] = static_cast<float>(c[ch]);
-    });
+    covered_ = gbuffer_.shade_covered(
+        image_, s.background, [&](const PixelRun& run, ShadedRun& out, unsigned) {
+          const Material& material = s.materials[run.material];
+          for (size_t i = 0; i < run.count; ++i) {
+            model::SurfacePoint sp;
+            sp.P = glm::dvec3(run.position[0][i], run.position[1][i], run.position[2][i]);
+            sp.N = glm::dvec3(run.normal[0][i], run.normal[1][i], run.normal[2][i]);
+            sp.V = model::view_vector(s.camera, sp.P);
+            sp.vertex_thickness =
+                glm::dvec3(run.thickness[0][i], run.thickness[1][i], run.thickness[2][i]);
+            sp.uv = glm::dvec2(run.uv[0][i], run.uv[1][i]);  // a map material's (u, v)
+            const glm::dvec3 c = model::shade(s, material, sp);
+            for (int ch = 0; ch < 3; ++ch) out.rgb[ch][i] = static_cast<float>(c[ch]);
+          }
+        });
   }
 
   Scene relative_scene_;
