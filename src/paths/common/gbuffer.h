@@ -37,8 +37,15 @@ class GBuffer {
 
   int width() const { return ctx_.width; }
   int height() const { return ctx_.height; }
-  // Index of the first float of pixel (x, gy) in every array; gy counts rows bottom-up.
-  size_t index(int x, int gy) const { return (static_cast<size_t>(gy) * ctx_.width + x) * 4; }
+  // Only the pixels of the geometry's covered_rect are cleared and read back (the rest hold
+  // nothing): at 1280x720 the read-back of all of them was most of a CPU path's frame on the
+  // demo scenes whose objects fill part of it (issue 39).
+  bool in_rect(int x, int gy) const { return rect_.contains(x, gy); }
+  // Index of the first float of pixel (x, gy) of the rectangle in every array; gy counts rows
+  // bottom-up.
+  size_t index(int x, int gy) const {
+    return (static_cast<size_t>(gy - rect_.y) * rect_.width + (x - rect_.x)) * 4;
+  }
   // Alpha of the position target is the coverage the G-buffer fragment shader writes.
   bool covered(size_t g) const { return position_[g + 3] > 0.5f; }
   // The material index travels as a float in the normal target's alpha.
@@ -76,8 +83,8 @@ class GBuffer {
         run.count = 0;
       };
       for (int x = 0; x < w; ++x) {
-        const size_t g = index(x, gy);
-        if (!this->covered(g)) {
+        const size_t g = in_rect(x, gy) ? index(x, gy) : 0;
+        if (!in_rect(x, gy) || !this->covered(g)) {
           float* out = row + static_cast<size_t>(x) * 4;
           for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
           out[3] = 0;
@@ -103,7 +110,12 @@ class GBuffer {
  private:
   PathContext ctx_;
   gl::GlslProgram program_;
+  gl::PixelRect rect_;
   bool uv_target_ = false;  // a material samples a map: the fourth target holds (u, v)
+  // A material takes its thickness from the vertex colour: only then is the third target read
+  // back (14.7 MB a frame at 1280x720, a third of the read-back the CPU paths wait for; issue
+  // 39). Without it the runs' thickness lanes are 0, which no shading reads.
+  bool thickness_read_ = false;
   gl::FloatTarget target_;
   std::vector<float> position_, normal_, thickness_, uv_;
 
