@@ -34,8 +34,8 @@ namespace lt::fp16 {
 
 namespace {
 
-// The arithmetic of one mode for the scene's constants and the texture units: IEEE half
-// (unguarded) or saturating half (guarded). The shading's own, on lanes, is half_shading_lanes.cpp's
+// The arithmetic of one mode for the scene's constants: IEEE half (unguarded) or saturating
+// half (guarded). The shading's and the texture units', on lanes, is half_shading_lanes.cpp's
 // Lanes16, operation for operation the same rules.
 class Fp16 {
  public:
@@ -47,12 +47,7 @@ class Fp16 {
     return half(x);
   }
   half add(half a, half b) const { return r(float(a) + float(b)); }
-  half sub(half a, half b) const { return r(float(a) - float(b)); }
   half mul(half a, half b) const { return r(float(a) * float(b)); }
-  Vec3h add(const Vec3h& a, const Vec3h& b) const {
-    return {add(a.x, b.x), add(a.y, b.y), add(a.z, b.z)};
-  }
-  Vec3h mul(const Vec3h& a, half s) const { return {mul(a.x, s), mul(a.y, s), mul(a.z, s)}; }
 
  private:
   bool guarded_;
@@ -122,24 +117,6 @@ SceneH prepare_scene(const Scene& scene, PowMode mode) {
     out.materials.push_back(h);
   }
   return out;
-}
-
-namespace {
-// The sampling arithmetic: texture units round as the guarded shader does (no Inf texels: the
-// scene's texels are at most 1e4).
-Vec3h sample_with(const Fp16& f, const TextureH& t, glm::dvec2 uv) {
-  const model::BilinearTaps k = model::bilinear_taps(t.width, t.height, uv, t.wrap_s, t.wrap_t);
-  const half fx = to_half(k.fx), fy = to_half(k.fy);
-  const half gx = f.sub(half(1.0f), fx), gy = f.sub(half(1.0f), fy);
-  auto texel = [&](int x, int y) { return t.texels[static_cast<size_t>(y) * t.width + x]; };
-  const Vec3h bottom = f.add(f.mul(texel(k.x0, k.y0), gx), f.mul(texel(k.x1, k.y0), fx));
-  const Vec3h top = f.add(f.mul(texel(k.x0, k.y1), gx), f.mul(texel(k.x1, k.y1), fx));
-  return f.add(f.mul(bottom, gy), f.mul(top, fy));
-}
-}  // namespace
-
-Vec3h sample_half(const TextureH& texture, glm::dvec2 uv, bool guarded) {
-  return sample_with(Fp16(guarded), texture, uv);
 }
 
 }  // namespace lt::fp16

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "model/texture_sampling.h"
 #include "paths/half/half_rounding-inl.h"
 #include "paths/half/half_shading_lanes.h"
 
@@ -82,19 +83,45 @@ class Lanes16 {
             hn::IfThenElse(normal, unit.z, fallback.z)};
   }
 
-  // A texture unit's bilinear sample (sample_half) at each lane's (u, v).
+  // A texture unit's bilinear sample at each lane's (u, v) (sample_half in half_shading.h):
+  // the taps and fractions are the unit's addressing (model::bilinear_taps, a lane at a time);
+  // each weight (fx, 1 - fx, fy, 1 - fy) is rounded to half and the blend
+  // ((1-fy)((1-fx) t00 + fx t10) + fy((1-fx) t01 + fx t11)) rounds every product and sum.
+  V3 sample(const TextureH& t, const glm::dvec2* uv) const {
+    alignas(64) float fx[kPixelRunCapacity], fy[kPixelRunCapacity];
+    alignas(64) float texels[4][3][kPixelRunCapacity];  // t00, t10, t01, t11
+    for (size_t i = 0; i < count(); ++i) {
+      const model::BilinearTaps taps =
+          model::bilinear_taps(t.width, t.height, uv[i], t.wrap_s, t.wrap_t);
+      fx[i] = static_cast<float>(taps.fx);  // to half below through float, as to_half(double)
+      fy[i] = static_cast<float>(taps.fy);
+      const int xs[4] = {taps.x0, taps.x1, taps.x0, taps.x1};
+      const int ys[4] = {taps.y0, taps.y0, taps.y1, taps.y1};
+      for (int tap = 0; tap < 4; ++tap) {
+        const Vec3h& texel = t.texels[static_cast<size_t>(ys[tap]) * t.width + xs[tap]];
+        texels[tap][0][i] = float(texel.x);
+        texels[tap][1][i] = float(texel.y);
+        texels[tap][2][i] = float(texel.z);
+      }
+    }
+    auto tap = [&](int n) {
+      return V3{hn::Load(D(), texels[n][0]), hn::Load(D(), texels[n][1]),
+                hn::Load(D(), texels[n][2])};
+    };
+    const V wx = input(fx), wy = input(fy);  // a weight is rounded to half as it is, no saturation
+    const V gx = sub(k(1.0f), wx), gy = sub(k(1.0f), wy);
+    const V3 bottom = add(mul(tap(0), gx), mul(tap(1), wx));
+    const V3 top = add(mul(tap(2), gx), mul(tap(3), wx));
+    return add(mul(bottom, gy), mul(top, wy));
+  }
+  // The same at the lanes' (u, v) as floats (the G-buffer's, or a ramp's (t, 0.5)).
   V3 sample(const TextureH& t, V u, V v) const {
     alignas(64) float us[kPixelRunCapacity], vs[kPixelRunCapacity];
-    alignas(64) float rgb[3][kPixelRunCapacity];
     hn::Store(u, D(), us);
     hn::Store(v, D(), vs);
-    for (size_t i = 0; i < count(); ++i) {
-      const Vec3h s = sample_half(t, {us[i], vs[i]}, guarded_);
-      rgb[0][i] = float(s.x);
-      rgb[1][i] = float(s.y);
-      rgb[2][i] = float(s.z);
-    }
-    return {hn::Load(D(), rgb[0]), hn::Load(D(), rgb[1]), hn::Load(D(), rgb[2])};
+    glm::dvec2 uv[kPixelRunCapacity];
+    for (size_t i = 0; i < count(); ++i) uv[i] = {us[i], vs[i]};
+    return sample(t, uv);
   }
 
  private:
@@ -225,6 +252,16 @@ void RoundToHalfArray(const float* in, float* out, size_t n) {
   for (; i < n; ++i) hn::StoreU(RoundToHalf(d1, hn::LoadU(d1, in + i)), d1, out + i);
 }
 
+// One sample at `uv`, in every lane; lane 0's value.
+void SampleOne(const TextureH& texture, glm::dvec2 uv, bool guarded, float* rgb) {
+  glm::dvec2 uvs[kPixelRunCapacity];
+  for (glm::dvec2& x : uvs) x = uv;
+  const V3 s = Lanes16(guarded).sample(texture, uvs);
+  rgb[0] = hn::GetLane(s.x);
+  rgb[1] = hn::GetLane(s.y);
+  rgb[2] = hn::GetLane(s.z);
+}
+
 int64_t Target() { return HWY_TARGET; }
 
 }  // namespace lt::fp16::HWY_NAMESPACE
@@ -235,7 +272,14 @@ namespace lt::fp16 {
 
 HWY_EXPORT(ShadeRun);
 HWY_EXPORT(RoundToHalfArray);
+HWY_EXPORT(SampleOne);
 HWY_EXPORT(Target);
+
+Vec3h sample_half(const TextureH& texture, glm::dvec2 uv, bool guarded) {
+  float rgb[3];
+  HWY_DYNAMIC_DISPATCH(SampleOne)(texture, uv, guarded, rgb);
+  return {half(rgb[0]), half(rgb[1]), half(rgb[2])};  // exact: each is a half already
+}
 
 void shade_run(const SceneH& scene, const MaterialH& material, PowMode mode, const PixelRun& run,
                ShadedRun& out) {

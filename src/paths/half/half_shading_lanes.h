@@ -1,8 +1,9 @@
 // The half path's shading of a run of covered pixels (paths/common/pixel_run.h), vectorised with
 // Highway: one pixel a lane, every operation of the seed's half3 code done in float and rounded
 // to binary16 in the lanes (half_rounding-inl.h), in the order and with the guards of the
-// conventions in half_shading.cpp's file comment. exp2, log2 and the texture units stay per
-// lane: std::exp2/std::log2 in float as before, and sample_half.
+// conventions in half_shading.cpp's file comment. exp2 and log2 stay per lane (std:: in float, as
+// before), and so do the texture units' addressing (model::bilinear_taps) and texel fetches;
+// their blend is in the lanes (sample_half, half_shading.h, is the same code on one texel).
 //
 // One binary for every x86-64 machine: each Highway target is compiled and the best the CPU runs
 // is chosen at the first call (HWY_DYNAMIC_DISPATCH). Every target gives the same bits: the
