@@ -57,15 +57,22 @@ class GBuffer {
   // alpha 1 where something is, the colours `shade(run, shaded, worker)` writes into `shaded`
   // for each run of covered pixels of one row and one material (pixel_run.h: vectorised
   // shading takes a run's lanes at once). `worker` < threads() lets the caller keep per-thread
-  // counters without locks. Returns the number of covered pixels.
+  // counters without locks. Returns the number of covered pixels. Pixels outside the covered
+  // rectangle are written only when `image` is made (neither the rectangle nor a path's
+  // background changes between its frames), so a frame costs the rectangle's pixels alone.
   template <class ShadeRun>
   size_t shade_covered(Image& image, const glm::dvec3& background, ShadeRun&& shade) const {
     const int w = ctx_.width, h = ctx_.height;
-    // Every pixel is written below, so the last frame's image is reused as it is: a fresh one
-    // would be 15 MB of page faults a frame at 1280x720, noise the bench would time.
-    if (image.width != w || image.height != h) image = Image(w, h);
+    // The last frame's image is reused as it is: a fresh one would be 15 MB of page faults a
+    // frame at 1280x720, noise the bench would time.
+    if (image.width != w || image.height != h) {
+      image = Image(w, h);
+      for (size_t i = 0; i < image.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c) image.rgba[i * 4 + c] = static_cast<float>(background[c]);
+    }
     std::vector<size_t> covered(threads(), 0);
-    for_each_row_in_parallel(h, [&](int gy, unsigned worker) {
+    for_each_row_in_parallel(rect_.height, [&](int rect_row, unsigned worker) {
+      const int gy = rect_.y + rect_row;
       PixelRun run;
       ShadedRun shaded;
       int run_x[kPixelRunCapacity];
@@ -82,9 +89,9 @@ class GBuffer {
         covered[worker] += run.count;
         run.count = 0;
       };
-      for (int x = 0; x < w; ++x) {
-        const size_t g = in_rect(x, gy) ? index(x, gy) : 0;
-        if (!in_rect(x, gy) || !this->covered(g)) {
+      for (int x = rect_.x; x < rect_.x + rect_.width; ++x) {
+        const size_t g = index(x, gy);
+        if (!this->covered(g)) {
           float* out = row + static_cast<size_t>(x) * 4;
           for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
           out[3] = 0;
