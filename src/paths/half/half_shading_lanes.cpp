@@ -147,9 +147,11 @@ V lobe(const Lanes16& f, const MaterialH& m, PowMode mode, V t) {
     return f.exp2(f.sub(f.mul(t, n), n));
   }
   // POW = EX2(p * LG2(t)); LG2(0) = -Inf, so t = 0 takes the model's 0. p * log2(t) <= 0, and
-  // underflows (0.5^1024) round to 0 through half's subnormals.
-  return hn::IfThenElseZero(hn::Gt(t, hn::Zero(D())),
-                            f.exp2(f.mul(Lanes16::k(m.power), f.log2(t))));
+  // underflows (0.5^1024) round to 0 through half's subnormals. No lane with t > 0: all 0, and
+  // the per-lane exp2 and log2 are not called.
+  const auto lit = hn::Gt(t, hn::Zero(D()));
+  if (hn::AllFalse(D(), lit)) return hn::Zero(D());
+  return hn::IfThenElseZero(lit, f.exp2(f.mul(Lanes16::k(m.power), f.log2(t))));
 }
 
 // The lanes of `run` from index o: the seed's shader, a pixel a lane.

@@ -167,9 +167,12 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
       } else if (tr->power == 0) {
         lobe3 = {k(1.0), k(1.0), k(1.0)};
       } else {
+        // std::pow only where lobe() calls it: a lane whose t <= 0 takes 0 below whatever
+        // stands in it (a NaN t, which is not <= 0, still goes through std::pow as in lobe()).
         const double p = tr->power;
-        const V lobe = hn::IfThenElse(hn::Le(t, zero), zero,
-                                      each_lane(t, [p](double x) { return std::pow(x, p); }));
+        const V lobe = hn::IfThenElse(
+            hn::Le(t, zero), zero,
+            each_lane(t, [p](double x) { return x <= 0 ? 0.0 : std::pow(x, p); }));
         lobe3 = {lobe, lobe, lobe};
       }
       // term += att * (lobe * scale + ambient) * T.
