@@ -12,6 +12,7 @@ packages=(
   libopenmesh-dev                            # mesh I/O and processing
   libopenimageio-dev                         # image I/O
   libimath-dev                               # half (binary16) for the fp16 path
+  libhwy-dev                                 # Highway: the CPU paths' vector lanes
   libembree-dev                              # ray casting for the thickness baker
   nlohmann-json3-dev libcli11-dev            # scene files, command line
   libtinygltf-dev                            # glTF 2.0 scenes (.gltf, .glb)

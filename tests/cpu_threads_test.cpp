@@ -7,6 +7,7 @@
 #include "arb_test_util.h"
 #include "core/parallel_rows.h"
 #include "render/session.h"
+#include "test_util.h"
 
 namespace lt {
 namespace {
@@ -47,6 +48,28 @@ TEST_P(CpuThreads, OneWorkerAndThreeGiveTheSameBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths, CpuThreads, ::testing::Values("reference", "half", "gx"));
+
+// `--threads N` (render, regress, advise): taken, said in --help with the default it stands
+// for, and N = 0 refused as bad input (exit 2), not read as "every core".
+TEST(ThreadsOption, EveryRenderingCommandTakesItAndSaysItsDefault) {
+  for (const char* command : {"render", "regress", "advise"}) {
+    const test::RunResult help = test::run_ltrender(std::string(command) + " --help");
+    EXPECT_EQ(help.exit_code, 0) << command;
+    EXPECT_NE(help.out.find("--threads"), std::string::npos) << command;
+    EXPECT_NE(help.out.find("every core this process may use"), std::string::npos) << command;
+  }
+  test::TempDir dir;
+  const std::string scene = (test::source_dir() / "scenes/backlit_sphere.json").string();
+  const std::string out = (dir / "one.exr").string();
+  EXPECT_EQ(test::run_ltrender("render " + scene + " --path reference --threads 1 -o " + out)
+                .exit_code,
+            0);
+  EXPECT_TRUE(fs::exists(out));
+  const test::RunResult zero =
+      test::run_ltrender("render " + scene + " --path reference --threads 0 -o " + out);
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.err.find("--threads"), std::string::npos) << zero.err;
+}
 
 }  // namespace
 }  // namespace lt

@@ -6,6 +6,7 @@
 #include "advise/advise_page.h"
 #include "advise/refined_scene.h"
 #include "cli/commands.h"
+#include "cli/threads_option.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "load/load_scene.h"
@@ -45,6 +46,7 @@ Action add_advise(CLI::App& app) {
                   "errs most until the budget holds or it has this many vertices")
       ->check(CLI::Range(1, 10000000));
   sub->add_flag("--exhaustive", o->exhaustive, "Render every candidate of the grid (no pruning)");
+  add_threads_option(sub);
   return [=]() -> int {
     static const std::map<std::string, advise::Stat> stats = {
         {"max", advise::Stat::Max}, {"p99", advise::Stat::P99}, {"mean", advise::Stat::Mean}};

@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/lights_option.h"
+#include "cli/threads_option.h"
 #include "regress/regress.h"
 
 namespace lt::cli {
@@ -43,6 +44,7 @@ Action add_regress(CLI::App& app) {
       ->check(CLI::Range(1, 16384));
   sub->add_flag("--quiet", o->quiet, "No line per passing case");
   add_lights_option(sub, o->scene_options);
+  add_threads_option(sub);
   return [o, inputs, shard, goldens, junit, json, report]() -> int {
     o->inputs.assign(inputs->begin(), inputs->end());
     o->goldens = *goldens;

@@ -2,6 +2,7 @@
 
 #include "cli/commands.h"
 #include "cli/lights_option.h"
+#include "cli/threads_option.h"
 #include "core/error.h"
 #include "core/file_name.h"
 #include "core/fs.h"
@@ -96,6 +97,7 @@ Action add_render(CLI::App& app) {
   sub->add_option("--height", a->height, "Override the scene's height")
       ->check(CLI::Range(1, 16384));
   add_lights_option(sub, a->scene_options);
+  add_threads_option(sub);
   sub->add_option("--camera", a->scene_options.camera,
                   "glTF scenes: the camera to look through, by its name or its node's, or by "
                   "its index '#N' (or N) for /cameras/N; a name wins over an index")

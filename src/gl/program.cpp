@@ -118,10 +118,15 @@ void FloatTarget::unbind() const {
 }
 
 void FloatTarget::read(int index, std::vector<float>& out) const {
-  out.resize(static_cast<size_t>(width_) * height_ * 4);
+  read(index, PixelRect{0, 0, width_, height_}, out);
+}
+
+void FloatTarget::read(int index, const PixelRect& rect, std::vector<float>& out) const {
+  out.resize(static_cast<size_t>(rect.width) * rect.height * 4);
+  if (out.empty()) return;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glReadBuffer(GL_COLOR_ATTACHMENT0 + index);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
+  glReadPixels(rect.x, rect.y, rect.width, rect.height, GL_RGBA, GL_FLOAT, out.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gl/gl.h"
+#include "gl/pixel_rect.h"
 
 namespace lt::gl {
 
@@ -40,8 +41,9 @@ class FloatTarget {
 
   void bind() const;    // binds and selects all draw buffers
   void unbind() const;  // back to the OSMesa framebuffer
-  // Reads attachment `index` as RGBA float, bottom row first.
+  // Reads attachment `index` as RGBA float, bottom row first: the whole target, or `rect`.
   void read(int index, std::vector<float>& out) const;
+  void read(int index, const PixelRect& rect, std::vector<float>& out) const;
 
  private:
   int width_, height_;

@@ -1,5 +1,7 @@
 #include "gl/scene_geometry.h"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -24,6 +26,34 @@ std::vector<float> to_float(const std::vector<glm::dvec3>& v, const glm::dvec3& 
   }
   return out;
 }
+
+// The pixel rectangle of every vertex projected in double (the bound of its triangles' pixels:
+// a triangle's pixels lie in the projection of its vertices' hull, clipped or not, while every
+// vertex is in front of the eye). `min_w`: a vertex with a smaller clip w gives the whole
+// viewport.
+PixelRect rect_of_vertices(const Scene& scene, const glm::dmat4& view_projection,
+                           const glm::dvec3& origin, int width, int height, double min_w) {
+  const PixelRect whole{0, 0, width, height};
+  double lo_x = width, lo_y = height, hi_x = 0, hi_y = 0;
+  for (const SceneObject& obj : scene.objects) {
+    for (const glm::dvec3& p : obj.mesh.positions) {
+      const glm::dvec4 c = view_projection * glm::dvec4(p - origin, 1.0);
+      if (!(c.w >= min_w)) return whole;  // NaN included
+      const double x = (c.x / c.w * 0.5 + 0.5) * width, y = (c.y / c.w * 0.5 + 0.5) * height;
+      if (!std::isfinite(x) || !std::isfinite(y)) return whole;
+      lo_x = std::min(lo_x, x);
+      lo_y = std::min(lo_y, y);
+      hi_x = std::max(hi_x, x);
+      hi_y = std::max(hi_y, y);
+    }
+  }
+  const double x0 = std::clamp(std::floor(lo_x) - kCoveredRectMargin, 0.0, double(width));
+  const double y0 = std::clamp(std::floor(lo_y) - kCoveredRectMargin, 0.0, double(height));
+  const double x1 = std::clamp(std::ceil(hi_x) + kCoveredRectMargin, x0, double(width));
+  const double y1 = std::clamp(std::ceil(hi_y) + kCoveredRectMargin, y0, double(height));
+  return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0),
+          static_cast<int>(y1 - y0)};
+}
 }  // namespace
 
 SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
@@ -38,6 +68,11 @@ SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
     const double h = cam.height / 2, w = h * aspect;
     projection_ = glm::ortho(-w, w, -h, h, cam.near, cam.far);
   }
+  // Clip w is the eye distance in perspective (half the near plane is still well in front of
+  // the eye), 1 in orthographic.
+  const bool perspective = cam.projection == Camera::Projection::Perspective;
+  covered_rect_ = rect_of_vertices(scene, projection_ * view_, origin_, width, height,
+                                   perspective ? cam.near / 2 : 0.5);
   for (const SceneObject& obj : scene.objects) {
     const TriangleMesh& m = obj.mesh;
     GpuMesh g;

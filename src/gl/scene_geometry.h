@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl/gl.h"
+#include "gl/pixel_rect.h"
 #include "scene/scene.h"
 
 namespace lt::gl {
@@ -20,6 +21,11 @@ namespace lt::gl {
 // unit 0's set is the combiners' per-vertex t, so a thickness map's stage takes unit 1 and its
 // coordinates with it.
 inline constexpr int kUvTexCoordSet = 1;
+
+// How far, in pixels, SceneGeometry::covered_rect reaches past the projected vertices: GL
+// projects them in float and snaps them to its sub-pixel grid, the bound in double; their
+// difference is a small fraction of a pixel.
+inline constexpr int kCoveredRectMargin = 2;
 
 struct GpuMesh {
   GLuint positions = 0, normals = 0, colors = 0, uvs = 0, indices = 0;
@@ -43,6 +49,12 @@ class SceneGeometry {
   glm::dvec3 origin() const { return origin_; }
   glm::dvec3 to_camera_relative(const glm::dvec3& world) const { return world - origin_; }
 
+  // Every pixel a triangle of the scene can cover lies in this rectangle (with a margin of
+  // kCoveredRectMargin pixels for float against double); the whole viewport when a vertex is
+  // nearer the eye than half the near plane (it may be behind the eye, where a projection no
+  // longer bounds). The CPU paths clear and read back only these pixels of their G-buffer.
+  PixelRect covered_rect() const { return covered_rect_; }
+
   // Loads PROJECTION and MODELVIEW (camera-relative view) into fixed-function state.
   void load_matrices() const;
   // Binds the conventional vertex arrays of one mesh; colours only where the mesh has them, UVs
@@ -55,6 +67,7 @@ class SceneGeometry {
   std::vector<GpuMesh> meshes_;
   glm::dvec3 origin_;
   glm::dmat4 projection_, view_;
+  PixelRect covered_rect_;
 };
 
 // Replaces an array buffer's contents with vertex data made on the CPU every frame (the combiners

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/parallel_rows.h"
+#include "paths/common/pixel_run.h"
 #include "gl/program.h"
 #include "paths/path.h"
 
@@ -36,48 +37,73 @@ class GBuffer {
 
   int width() const { return ctx_.width; }
   int height() const { return ctx_.height; }
-  // Index of the first float of pixel (x, gy) in every array; gy counts rows bottom-up.
-  size_t index(int x, int gy) const { return (static_cast<size_t>(gy) * ctx_.width + x) * 4; }
+  // Only the pixels of the geometry's covered_rect are cleared and read back (the rest hold
+  // nothing): at 1280x720 the read-back of all of them was most of a CPU path's frame on the
+  // demo scenes whose objects fill part of it (issue 39).
+  bool in_rect(int x, int gy) const { return rect_.contains(x, gy); }
+  // Index of the first float of pixel (x, gy) of the rectangle in every array; gy counts rows
+  // bottom-up.
+  size_t index(int x, int gy) const {
+    return (static_cast<size_t>(gy - rect_.y) * rect_.width + (x - rect_.x)) * 4;
+  }
   // Alpha of the position target is the coverage the G-buffer fragment shader writes.
   bool covered(size_t g) const { return position_[g + 3] > 0.5f; }
   // The material index travels as a float in the normal target's alpha.
   int material(size_t g) const { return static_cast<int>(normal_[g + 3] + 0.5f); }
-  // Camera-relative position, interpolated (not renormalised) normal, vertex thickness: xyz.
-  const float* position(size_t g) const { return &position_[g]; }
-  const float* normal(size_t g) const { return &normal_[g]; }
-  const float* thickness(size_t g) const { return &thickness_[g]; }
-  // The interpolated (u, v) of a material that samples a map; (0, 0) in a scene without maps
-  // (the fourth target is only built for a scene with one).
-  glm::dvec2 uv(size_t g) const {
-    return uv_.empty() ? glm::dvec2(0) : glm::dvec2(uv_[g], uv_[g + 1]);
-  }
-
   // Threads the CPU paths shade on: every core.
   static unsigned threads() { return worker_threads(); }
 
-  // Fills `image` (top row first): background with alpha 0 where nothing is covered, and
-  // `shade(g, rgb, worker)` with alpha 1 where something is; `worker` < threads() lets the caller
-  // keep per-thread counters without locks. Returns the number of covered pixels.
-  template <class ShadePixel>
-  size_t shade_covered(Image& image, const glm::dvec3& background, ShadePixel&& shade) const {
+  // Fills `image` (top row first): background with alpha 0 where nothing is covered, and with
+  // alpha 1 where something is, the colours `shade(run, shaded, worker)` writes into `shaded`
+  // for each run of covered pixels of one row and one material (pixel_run.h: vectorised
+  // shading takes a run's lanes at once). `worker` < threads() lets the caller keep per-thread
+  // counters without locks. Returns the number of covered pixels. Pixels outside the covered
+  // rectangle are written only when `image` is made (neither the rectangle nor a path's
+  // background changes between its frames), so a frame costs the rectangle's pixels alone.
+  template <class ShadeRun>
+  size_t shade_covered(Image& image, const glm::dvec3& background, ShadeRun&& shade) const {
     const int w = ctx_.width, h = ctx_.height;
-    // Every pixel is written below, so the last frame's image is reused as it is: a fresh one
-    // would be 15 MB of page faults a frame at 1280x720, noise the bench would time.
-    if (image.width != w || image.height != h) image = Image(w, h);
+    // The last frame's image is reused as it is: a fresh one would be 15 MB of page faults a
+    // frame at 1280x720, noise the bench would time.
+    if (image.width != w || image.height != h) {
+      image = Image(w, h);
+      for (size_t i = 0; i < image.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c) image.rgba[i * 4 + c] = static_cast<float>(background[c]);
+    }
     std::vector<size_t> covered(threads(), 0);
-    for_each_row_in_parallel(h, [&](int gy, unsigned worker) {
-      for (int x = 0; x < w; ++x) {
-        const size_t g = index(x, gy);         // G-buffer row gy, bottom-up
-        float* out = image.at(x, h - 1 - gy);  // image rows top-down
+    for_each_row_in_parallel(rect_.height, [&](int rect_row, unsigned worker) {
+      const int gy = rect_.y + rect_row;
+      PixelRun run;
+      ShadedRun shaded;
+      int run_x[kPixelRunCapacity];
+      float* const row = image.at(0, h - 1 - gy);  // G-buffer rows bottom-up, image top-down
+      auto flush = [&] {
+        if (run.count == 0) return;
+        pad(run);
+        shade(static_cast<const PixelRun&>(run), shaded, worker);
+        for (size_t i = 0; i < run.count; ++i) {
+          float* out = row + static_cast<size_t>(run_x[i]) * 4;
+          for (int c = 0; c < 3; ++c) out[c] = shaded.rgb[c][i];
+          out[3] = 1;
+        }
+        covered[worker] += run.count;
+        run.count = 0;
+      };
+      for (int x = rect_.x; x < rect_.x + rect_.width; ++x) {
+        const size_t g = index(x, gy);
         if (!this->covered(g)) {
+          float* out = row + static_cast<size_t>(x) * 4;
           for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
           out[3] = 0;
           continue;
         }
-        ++covered[worker];
-        shade(g, out, worker);
-        out[3] = 1;
+        const int m = material(g);
+        if (run.count > 0 && (m != run.material || run.count == kPixelRunCapacity)) flush();
+        run.material = m;
+        run_x[run.count] = x;
+        append(g, run);
       }
+      flush();
     });
     size_t total = 0;
     for (size_t c : covered) total += c;
@@ -91,9 +117,19 @@ class GBuffer {
  private:
   PathContext ctx_;
   gl::GlslProgram program_;
+  gl::PixelRect rect_;
   bool uv_target_ = false;  // a material samples a map: the fourth target holds (u, v)
+  // A material takes its thickness from the vertex colour: only then is the third target read
+  // back (14.7 MB a frame at 1280x720, a third of the read-back the CPU paths wait for; issue
+  // 39). Without it the runs' thickness lanes are 0, which no shading reads.
+  bool thickness_read_ = false;
   gl::FloatTarget target_;
   std::vector<float> position_, normal_, thickness_, uv_;
+
+  // Pixel g's G-buffer values as the run's next lane.
+  void append(size_t g, PixelRun& run) const;
+  // Lanes past run.count up to the widest vector's multiple (kPixelRunPadding): lane 0 again.
+  static void pad(PixelRun& run);
 };
 
 }  // namespace lt

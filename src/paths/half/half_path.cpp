@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "paths/common/cpu_shaded_path.h"
+#include "paths/half/half_shading_lanes.h"
 #include "paths/half/half_shading.h"
 
 namespace lt {
@@ -17,7 +18,9 @@ constexpr float kNonFiniteMarker[3] = {1, 0, 1};
 class HalfPath final : public CpuShadedPath {
  public:
   HalfPath(const PathContext& ctx, fp16::PowMode mode)
-      : CpuShadedPath(ctx, "the half path's G-buffer", "fp16 emulation (Imath half)"), mode_(mode) {
+      : CpuShadedPath(ctx, "the half path's G-buffer",
+                      "fp16 emulation in " + fp16::simd_target() + " vector lanes"),
+        mode_(mode) {
     // The shader sees the G-buffer's camera-relative space, so its light positions are too.
     const Scene relative = camera_relative_lights(ctx);
     scene_ = fp16::prepare_scene(relative, mode_);
@@ -33,14 +36,18 @@ class HalfPath final : public CpuShadedPath {
  private:
   void shade() override {
     std::vector<size_t> nonfinite(threads(), 0);
-    covered_ = gbuffer_.shade_covered(image_, background_, [&](size_t g, float* out, unsigned w) {
-      const glm::vec3 c = fp16::shade_pixel(scene_, scene_.materials[gbuffer_.material(g)], mode_,
-                                            gbuffer_.position(g), gbuffer_.normal(g),
-                                            gbuffer_.thickness(g), gbuffer_.uv(g));
-      const bool finite = std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-      nonfinite[w] += !finite;
-      for (int ch = 0; ch < 3; ++ch) out[ch] = finite ? c[ch] : kNonFiniteMarker[ch];
-    });
+    covered_ = gbuffer_.shade_covered(
+        image_, background_, [&](const PixelRun& run, ShadedRun& out, unsigned w) {
+          fp16::shade_run(scene_, scene_.materials[run.material], mode_, run, out);
+          for (size_t i = 0; i < run.count; ++i) {
+            const bool finite = std::isfinite(out.rgb[0][i]) && std::isfinite(out.rgb[1][i]) &&
+                                std::isfinite(out.rgb[2][i]);
+            nonfinite[w] += !finite;
+            if (!finite) {
+              for (int ch = 0; ch < 3; ++ch) out.rgb[ch][i] = kNonFiniteMarker[ch];
+            }
+          }
+        });
     nonfinite_ = 0;
     for (size_t n : nonfinite) nonfinite_ += n;
   }

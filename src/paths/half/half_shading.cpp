@@ -34,11 +34,12 @@ namespace lt::fp16 {
 
 namespace {
 
-// The arithmetic of one mode: IEEE half (unguarded) or saturating half (guarded).
+// The arithmetic of one mode for the scene's constants: IEEE half (unguarded) or saturating
+// half (guarded). The shading's and the texture units', on lanes, is half_shading_lanes.cpp's
+// Lanes16, operation for operation the same rules.
 class Fp16 {
  public:
   explicit Fp16(bool guarded) : guarded_(guarded) {}
-  bool guarded() const { return guarded_; }
 
   half r(float x) const {
     if (guarded_ && x > kHalfMax) return half(kHalfMax);
@@ -46,40 +47,7 @@ class Fp16 {
     return half(x);
   }
   half add(half a, half b) const { return r(float(a) + float(b)); }
-  half sub(half a, half b) const { return r(float(a) - float(b)); }
   half mul(half a, half b) const { return r(float(a) * float(b)); }
-  half div(half a, half b) const { return r(float(a) / float(b)); }
-  half sqrt(half a) const { return r(std::sqrt(float(a))); }
-  half rsqrt(half a) const { return r(1.0f / std::sqrt(float(a))); }
-  half exp2(half a) const { return r(std::exp2(float(a))); }
-  half log2(half a) const { return r(std::log2(float(a))); }
-  // NaN compares false, so NaN -> 0 (D3D10+ saturate/max rule).
-  static half max0(half a) { return float(a) > 0 ? a : half(0.0f); }
-  static half saturate(half a) { return float(a) > 1 ? half(1.0f) : max0(a); }
-
-  Vec3h add(const Vec3h& a, const Vec3h& b) const {
-    return {add(a.x, b.x), add(a.y, b.y), add(a.z, b.z)};
-  }
-  Vec3h sub(const Vec3h& a, const Vec3h& b) const {
-    return {sub(a.x, b.x), sub(a.y, b.y), sub(a.z, b.z)};
-  }
-  Vec3h mul(const Vec3h& a, const Vec3h& b) const {
-    return {mul(a.x, b.x), mul(a.y, b.y), mul(a.z, b.z)};
-  }
-  Vec3h mul(const Vec3h& a, half s) const { return {mul(a.x, s), mul(a.y, s), mul(a.z, s)}; }
-  // DP3 as three rounded products and two rounded sums.
-  half dot(const Vec3h& a, const Vec3h& b) const {
-    return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
-  }
-  static Vec3h neg(const Vec3h& a) { return {-a.x, -a.y, -a.z}; }
-
-  // v / |v| as v * rsqrt(dot(v, v)); `fallback` when the squared length is not a normal half
-  // (guarded) -- see the file comment. Unguarded: 0 * rsqrt(0) = 0 * Inf = NaN.
-  Vec3h normalize(const Vec3h& v, const Vec3h& fallback) const {
-    const half len2 = dot(v, v);
-    if (guarded_ && !(float(len2) >= kHalfMinNormal)) return fallback;
-    return mul(v, rsqrt(len2));
-  }
 
  private:
   bool guarded_;
@@ -101,21 +69,6 @@ TextureH to_half(const model::Texture& t) {
   h.texels.reserve(t.texels.size() / 3);
   for (size_t i = 0; i < t.texels.size(); i += 3) h.texels.push_back(to_half(&t.texels[i]));
   return h;
-}
-
-// t^p per mode (the seed's pow(saturate(...), iLTPower)).
-half lobe(const Fp16& f, const MaterialH& m, PowMode mode, half t) {
-  if (mode == PowMode::Unguarded) return f.exp2(f.mul(m.power, f.log2(t)));  // 0^0 = NaN here
-  if (float(m.power) == 0) return half(1.0f);  // 0^0 := 1: the lobe is flat, t plays no part
-  if (mode == PowMode::Sg) {
-    // exp2(t * n' - n') as MUL then SUB (t <= 1, so the argument is <= 0: exp2 cannot overflow
-    // half's 16; for large n' it underflows to 0 like pow).
-    return f.exp2(f.sub(f.mul(t, m.sg_exponent), m.sg_exponent));
-  }
-  // POW = EX2(p * LG2(t)); LG2(0) = -Inf, so t = 0 takes the model's 0. p * log2(t) <= 0, and
-  // underflows (0.5^1024) round to 0 through half's subnormals.
-  if (!(float(t) > 0)) return half(0.0f);
-  return f.exp2(f.mul(m.power, f.log2(t)));
 }
 
 }  // namespace
@@ -164,86 +117,6 @@ SceneH prepare_scene(const Scene& scene, PowMode mode) {
     out.materials.push_back(h);
   }
   return out;
-}
-
-namespace {
-// The sampling arithmetic: texture units round as the guarded shader does (no Inf texels: the
-// scene's texels are at most 1e4).
-Vec3h sample_with(const Fp16& f, const TextureH& t, glm::dvec2 uv) {
-  const model::BilinearTaps k = model::bilinear_taps(t.width, t.height, uv, t.wrap_s, t.wrap_t);
-  const half fx = to_half(k.fx), fy = to_half(k.fy);
-  const half gx = f.sub(half(1.0f), fx), gy = f.sub(half(1.0f), fy);
-  auto texel = [&](int x, int y) { return t.texels[static_cast<size_t>(y) * t.width + x]; };
-  const Vec3h bottom = f.add(f.mul(texel(k.x0, k.y0), gx), f.mul(texel(k.x1, k.y0), fx));
-  const Vec3h top = f.add(f.mul(texel(k.x0, k.y1), gx), f.mul(texel(k.x1, k.y1), fx));
-  return f.add(f.mul(bottom, gy), f.mul(top, fy));
-}
-}  // namespace
-
-Vec3h sample_half(const TextureH& texture, glm::dvec2 uv) {
-  return sample_with(Fp16(true), texture, uv);
-}
-
-glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& m, PowMode mode, const float* position,
-                      const float* normal, const float* vertex_thickness, glm::dvec2 uv) {
-  const Fp16 f(mode != PowMode::Unguarded);
-  const Vec3h zero{half(0.0f), half(0.0f), half(0.0f)};
-  // A half-precision pipeline sees its G-buffer in half: round the inputs first. Positions are
-  // camera-relative, so a scene at 1e6 still has small numbers here.
-  const Vec3h P = to_half(position);
-  const Vec3h N = f.normalize(to_half(normal), zero);
-  const Vec3h V = scene.orthographic ? scene.view_dir : f.normalize(Fp16::neg(P), scene.view_dir);
-  Vec3h T = zero;
-  if (m.translucent) {
-    if (m.map_thickness) {
-      T = f.mul(sample_with(f, m.map, uv), m.thickness);
-    } else {
-      T = m.vertex_thickness ? f.mul(to_half(vertex_thickness), m.thickness) : m.thickness;
-    }
-  }
-
-  Vec3h sum = zero;
-  for (const LightH& l : scene.lights) {
-    Vec3h L = l.to_light;
-    half att(1.0f);
-    if (l.point) {
-      const Vec3h d = f.sub(l.position, P);
-      const half dist = f.sqrt(f.dot(d, d));
-      L = f.normalize(d, N);  // guarded: a light "at" the point lights it head-on (L = N)
-      // kc + kl*dist + kq*dist^2, step by step.
-      const half den = f.add(f.add(l.kc, f.mul(l.kl, dist)), f.mul(f.mul(l.kq, dist), dist));
-      // Guarded: att <= 65504 (denominator floored at 1/65504, see the file comment).
-      // Unguarded: 1/0 = Inf, and anything below 1/65504 overflows to Inf too.
-      att =
-          f.guarded() && !(float(den) > 1.0f / kHalfMax) ? half(kHalfMax) : f.div(half(1.0f), den);
-    }
-    const half diffuse = f.mul(att, Fp16::max0(f.dot(N, L)));
-    Vec3h term{diffuse, diffuse, diffuse};
-    if (m.translucent) {
-      // half3 vLTLight = vLight + vNormal * fLTDistortion;
-      Vec3h H = f.add(L, f.mul(N, m.distortion));
-      if (m.normalize_h) H = f.normalize(H, zero);
-      // half fLTDot = pow(saturate(dot(vEye, -vLTLight)), iLTPower) * fLTScale;
-      const half t = Fp16::saturate(f.dot(V, Fp16::neg(H)));
-      // A ramp material: tex2D(ramp, float2(t, 0.5)).rgb instead of the pow, per channel.
-      const half p = m.ramp_lobe ? half(0.0f) : lobe(f, m, mode, t);
-      const Vec3h lobe3 = m.ramp_lobe ? sample_with(f, m.ramp, {float(t), 0.5}) : Vec3h{p, p, p};
-      const Vec3h lt_dot = f.mul(lobe3, l.scale);
-      // half3 fLT = fLightAttenuation * (fLTDot + fLTAmbient) * fLTThickness;
-      const Vec3h lt = f.mul(
-          T, Vec3h{f.mul(att, f.add(lt_dot.x, m.ambient)), f.mul(att, f.add(lt_dot.y, m.ambient)),
-                   f.mul(att, f.add(lt_dot.z, m.ambient))});
-      term = f.add(term, lt);
-    }
-    // outColor.rgb += cDiffuseAlbedo * cLightDiffuse * fLT; (albedo applied once, below, in the
-    // model's order: c = albedo * (ambient_light + sum of color * (diffuse + trans)).)
-    sum = f.add(sum, f.mul(l.color, term));
-  }
-  // The seed's cDiffuseAlbedo from a texture: tex2D(albedo, uv).rgb * albedo, in half.
-  const Vec3h albedo =
-      m.albedo_mapped ? f.mul(sample_with(f, m.albedo_map, uv), m.albedo) : m.albedo;
-  const Vec3h c = f.mul(albedo, f.add(scene.ambient_light, sum));
-  return {float(c.x), float(c.y), float(c.z)};
 }
 
 }  // namespace lt::fp16

@@ -1,6 +1,7 @@
 // The equation of model.md evaluated the way an fp16 pixel shader evaluates it (the seed's
 // `half3` code, PS3 RSX, mobile GPUs): every input rounded to IEEE binary16 and every intermediate
-// rounded again, using Imath's half. One function shades one G-buffer pixel.
+// rounded again. The scene's constants and the texture units are in Imath's half here; the
+// shading itself, a run of pixels at a time in vector lanes, is half_shading_lanes.h.
 #pragma once
 
 #include <Imath/half.h>
@@ -80,15 +81,8 @@ SceneH prepare_scene(const Scene& scene, PowMode mode);
 // Bilinear (GL_LINEAR, CLAMP_TO_EDGE) as an fp16 pipeline does it: the coordinate is a float
 // interpolant and the texel-space position, taps and fractions are the texture unit's addressing
 // (model::bilinear_taps); each weight (fx, 1 - fx, fy, 1 - fy) is rounded to half, and the blend
-// ((1-fy)((1-fx) t00 + fx t10) + fy((1-fx) t01 + fx t11)) rounds every product and sum to half.
-Vec3h sample_half(const TextureH& texture, glm::dvec2 uv);
-
-// One covered pixel from its float G-buffer values (position, normal and vertex thickness: xyz;
-// a map material's (u, v)).
-// Returns the half result widened to float. With PowMode::Unguarded it may be NaN or Inf; the
-// guarded modes are finite by construction.
-glm::vec3 shade_pixel(const SceneH& scene, const MaterialH& material, PowMode mode,
-                      const float* position, const float* normal, const float* vertex_thickness,
-                      glm::dvec2 uv);
+// ((1-fy)((1-fx) t00 + fx t10) + fy((1-fx) t01 + fx t11)) rounds every product and sum to half,
+// saturating at +-65504 when `guarded` (the shader's mode; texels up to 1e4 never reach it).
+Vec3h sample_half(const TextureH& texture, glm::dvec2 uv, bool guarded = true);
 
 }  // namespace lt::fp16

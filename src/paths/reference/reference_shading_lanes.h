@@ -1,0 +1,24 @@
+// The reference's shading of a run of covered pixels (paths/common/pixel_run.h) in double vector
+// lanes (Highway): model::shade (model/translucency.h) operation for operation, one pixel a lane,
+// so every lane's result is model::shade's to the bit (tests/reference_lanes_test.cpp holds the
+// two equal). What has no vector form that is the scalar one to the bit stays per lane: std::pow
+// for the lobe, and the texture samples (model::sample_bilinear, sample_ramp).
+//
+// One binary for every x86-64 machine: each Highway target is compiled and the best the CPU runs
+// is chosen at the first call (HWY_DYNAMIC_DISPATCH). The lanes use + - * / sqrt and compares
+// only, each IEEE-rounded in double on every target, and nothing is fused (-ffp-contract=off).
+#pragma once
+
+#include "paths/common/pixel_run.h"
+#include "scene/scene.h"
+
+namespace lt::reference {
+
+// Fills out.rgb[c][i] for every i < run.count (and the padding lanes, which the caller drops)
+// with model::shade(scene, material, point) narrowed to float, the point being pixel i's
+// G-buffer values widened to double and V = model::view_vector(scene.camera, P). `scene`'s
+// light positions are camera-relative, as the G-buffer's.
+void shade_run(const Scene& scene, const Material& material, const PixelRun& run,
+               ShadedRun& out);
+
+}  // namespace lt::reference
