@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel_rows.h"
+#include "paths/gx/tev_plan.h"
 
 namespace lt::gx {
 
@@ -12,26 +13,58 @@ namespace {
 // large enough that a triangle's bounds are tested once for several rows.
 constexpr int kBandRows = 4;
 
-// The texel stage `s` fetches at this pixel [DSW Tev::Draw, TextureSampler::Sample].
-Color8 stage_texel(const PixelProgram& p, const TevStage& stage, const RasterPixel& px) {
-  const TextureObject* tex = p.textures[stage.texmap & 7];
-  const int texgens = p.state->texgen.num_texgens;
-  // Zero texgens read a black texel here (Dolphin reads whatever texture coordinate its TEV last
-  // held); a texcoord beyond them reads texcoord 0 ("Quirk: when the tex coord is not less than
-  // the number of tex gens ... tex coord 0 is used" [DSW Tev::Draw]); GX_TEXCOORDNULL with a map
-  // programs texcoord 0 [OGC gx.c GX_SetTevOrder].
-  if (!tex || texgens == 0) return {};
-  int tc = stage.texcoord == kTexCoordNull ? 0 : stage.texcoord;
-  if (tc >= texgens) tc = 0;
-  const auto& uv = px.uv[static_cast<size_t>(tc)];
-  return sample_texture(*tex, uv[0], uv[1]);
+// What one draw's pixels do that does not depend on the pixel, decoded once: the TEV plan and
+// the texture fetches (which stages fetch, from which texture, at which texture coordinate), so
+// the per-pixel loop looks nothing up in the state.
+struct DrawPlan {
+  // One stage's fetch [DSW Tev::Draw, TextureSampler::Sample]; texture null: a black texel.
+  struct Fetch {
+    int stage = 0;
+    const TextureObject* texture = nullptr;
+    size_t texcoord = 0;
+  };
+  TevPlan tev;
+  std::array<Fetch, kMaxTevStages> fetches{};
+  int num_fetches = 0;
+
+  explicit DrawPlan(const PixelProgram& p) : tev(p.state->tev) {
+    const GxState& st = *p.state;
+    const int texgens = st.texgen.num_texgens;
+    for (int s = 0; s < std::min(st.tev.num_stages, kMaxTevStages); ++s) {
+      const TevStage& stage = st.tev.stages[static_cast<size_t>(s)];
+      if (stage.texmap == kTexMapNull) continue;
+      Fetch& f = fetches[static_cast<size_t>(num_fetches++)];
+      f.stage = s;
+      // Zero texgens read a black texel here (Dolphin reads whatever texture coordinate its TEV
+      // last held); a texcoord beyond them reads texcoord 0 ("Quirk: when the tex coord is not
+      // less than the number of tex gens ... tex coord 0 is used" [DSW Tev::Draw]);
+      // GX_TEXCOORDNULL with a map programs texcoord 0 [OGC gx.c GX_SetTevOrder].
+      const TextureObject* tex = p.textures[stage.texmap & 7];
+      f.texture = texgens == 0 ? nullptr : tex;
+      int tc = stage.texcoord == kTexCoordNull ? 0 : stage.texcoord;
+      if (tc >= texgens) tc = 0;
+      f.texcoord = static_cast<size_t>(tc);
+    }
+  }
+};
+
+// The TEV inputs of one pixel that passed early z: its channel colours and its stages' texels.
+void load_tev_inputs(const DrawPlan& plan, const RasterPixel& px, TevPlan::Values& values) {
+  for (int c = 0; c < kMaxChannels; ++c) values.set_channel(c, px.color[static_cast<size_t>(c)]);
+  for (int k = 0; k < plan.num_fetches; ++k) {
+    const DrawPlan::Fetch& f = plan.fetches[static_cast<size_t>(k)];
+    const auto& uv = px.uv[f.texcoord];
+    values.set_texel(f.stage, f.texture ? sample_texture(*f.texture, uv[0], uv[1]) : Color8{});
+  }
 }
 
 // One covered pixel, as [DSW Draw] then [DSW Tev::Draw] take it.
-void shade_pixel(const PixelProgram& p, const RasterPixel& px, size_t index, Efb& efb,
-                 PixelCounts& counts) {
+void shade_pixel(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s32 x, s32 y,
+                 bool round_colors, size_t index, Efb& efb, RasterPixel& px,
+                 TevPlan::Values& values, PixelCounts& counts) {
   const GxState& st = *p.state;
   ++counts.covered;
+  px.z = raster_pixel_depth(t, x, y);
   // GX_Init's GX_SetZCompLoc(GX_TRUE) puts the depth test before texturing [DSW Draw, "early
   // z"; BPMemory.h GetEmulatedZ], so a pixel the alpha test then discards has written its
   // depth. With the test off nothing is compared or written.
@@ -43,15 +76,13 @@ void shade_pixel(const PixelProgram& p, const RasterPixel& px, size_t index, Efb
     }
     if (st.z.update) depth = px.z & 0xffffff;  // [DSW SetPixelDepth]: 24 bits kept
   }
-  TevPixelInputs in;
-  in.channels = px.color;
-  for (int s = 0; s < st.tev.num_stages; ++s) {
-    const TevStage& stage = st.tev.stages[static_cast<size_t>(s)];
-    in.texels[static_cast<size_t>(s)] =
-        stage.texmap == kTexMapNull ? Color8{} : stage_texel(p, stage, px);
-  }
+  // A pixel that failed the depth test needs no colour or texture coordinate. Every triangle of
+  // a draw has the state's channel and texgen counts, so the entries raster_pixel leaves alone
+  // (beyond those counts) stay what they were whichever pixels skip this.
+  raster_pixel_attributes(t, x, y, round_colors, px);
+  load_tev_inputs(plan, px, values);
   counts.stage_pixels += static_cast<size_t>(st.tev.num_stages);
-  const Color8 src = tev_to_efb(run_tev(st.tev, in));
+  const Color8 src = tev_to_efb(plan.tev.run(values));
   if (!alpha_test(st.alpha_compare, src.a)) {
     ++counts.alpha_failed;
     return;
@@ -75,10 +106,13 @@ PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelPr
                            bool round_colors, Efb& efb) {
   std::vector<PixelCounts> per_worker(worker_threads());
   const int bands = (efb.height + kBandRows - 1) / kBandRows;
+  const DrawPlan plan(program);
   for_each_row_in_parallel(bands, [&](int band, unsigned worker) {
     PixelCounts& counts = per_worker[worker];
     const s32 y0 = band * kBandRows, y1 = std::min(efb.height, y0 + kBandRows);
     RasterPixel px;
+    TevPlan::Values values;
+    plan.tev.start(values);
     for (const Triangle& t : triangles) {
       if (t.max_y <= y0 || t.min_y >= y1) continue;
       for (s32 y = std::max(y0, t.min_y); y < std::min(y1, t.max_y); ++y) {
@@ -88,8 +122,7 @@ PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelPr
           const size_t index =
               static_cast<size_t>(y) * static_cast<size_t>(efb.width) + static_cast<size_t>(x);
           efb.covered[index] = 1;
-          raster_pixel(t, x, y, round_colors, px);
-          shade_pixel(program, px, index, efb, counts);
+          shade_pixel(program, plan, t, x, y, round_colors, index, efb, px, values, counts);
         }
       }
     }
