@@ -1,6 +1,7 @@
 #include "paths/gx/pixel_stage.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "core/parallel_rows.h"
 #include "paths/gx/tev_plan.h"
@@ -92,6 +93,36 @@ void shade_pixel(const PixelProgram& p, const DrawPlan& plan, const Triangle& t,
   ++counts.written;
 }
 
+// The triangles that reach each band of rows, in draw order, as one list per band (offsets into
+// one array): a band then visits only those, where it otherwise tested every triangle's rows
+// against its own -- for a draw of many small triangles most of the band's time. A band gets a
+// triangle when their rows overlap; one whose rows then hold none of the triangle's (the last,
+// short band) draws nothing of it, as before.
+struct BandLists {
+  std::vector<u32> first;  // band b's triangles are items[first[b] .. first[b + 1])
+  std::vector<u32> items;
+
+  BandLists(const std::vector<Triangle>& triangles, int bands)
+      : first(static_cast<size_t>(bands) + 1, 0) {
+    const auto range = [&](const Triangle& t, int& b0, int& b1) {
+      b0 = std::max(t.min_y, 0) / kBandRows;
+      b1 = t.max_y <= t.min_y ? b0 : std::min(bands, (t.max_y + kBandRows - 1) / kBandRows);
+    };
+    int b0, b1;
+    for (const Triangle& t : triangles) {
+      range(t, b0, b1);
+      for (int b = b0; b < b1; ++b) ++first[static_cast<size_t>(b) + 1];
+    }
+    for (size_t b = 0; b < static_cast<size_t>(bands); ++b) first[b + 1] += first[b];
+    items.resize(first.back());
+    std::vector<u32> next(first.begin(), first.end() - 1);
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      range(triangles[i], b0, b1);
+      for (int b = b0; b < b1; ++b) items[next[static_cast<size_t>(b)]++] = static_cast<u32>(i);
+    }
+  }
+};
+
 }  // namespace
 
 void PixelCounts::add(const PixelCounts& o) {
@@ -107,14 +138,16 @@ PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelPr
   std::vector<PixelCounts> per_worker(worker_threads());
   const int bands = (efb.height + kBandRows - 1) / kBandRows;
   const DrawPlan plan(program);
+  const BandLists lists(triangles, bands);
   for_each_row_in_parallel(bands, [&](int band, unsigned worker) {
     PixelCounts& counts = per_worker[worker];
     const s32 y0 = band * kBandRows, y1 = std::min(efb.height, y0 + kBandRows);
     RasterPixel px;
     TevPlan::Values values;
     plan.tev.start(values);
-    for (const Triangle& t : triangles) {
-      if (t.max_y <= y0 || t.min_y >= y1) continue;
+    const size_t band_index = static_cast<size_t>(band);
+    for (u32 k = lists.first[band_index]; k < lists.first[band_index + 1]; ++k) {
+      const Triangle& t = triangles[lists.items[k]];
       for (s32 y = std::max(y0, t.min_y); y < std::min(y1, t.max_y); ++y) {
         s32 xb, xe;
         covered_span(t, y, xb, xe);
