@@ -86,7 +86,9 @@ size_t texel_offset(const TileShape& shape, int width, int x, int y) {
 //   g 10..5, b 4..0, each expanded by bit replication; alpha 255 [DecodePixel_RGB565].
 // - RGBA8: a = byte 0, r = byte 1 of the texel's pair in the first half, g = byte 0 and b = byte
 //   1 of its pair in the second half (offset + 32).
-Color8 fetch(const TextureObject& tex, const TileShape& shape, int x, int y) {
+// Always inlined: the bilinear sampler calls it four times a pixel.
+[[gnu::always_inline]] inline Color8 fetch(const TextureObject& tex, const TileShape& shape, int x,
+                                           int y) {
   const size_t o = texel_offset(shape, tex.width, x, y);
   const std::vector<u8>& d = tex.data;
   switch (tex.format) {
@@ -108,7 +110,7 @@ Color8 fetch(const TextureObject& tex, const TileShape& shape, int x, int y) {
 // MIRROR use size - 1 as a mask, which assumes a power-of-two size (YAGCD, quoted there); with
 // another size they still land in range, just not evenly. Mode 3 behaves as CLAMP ("hardware
 // testing indicates", same function). int64 because u - 64 of an arbitrary s32 may not fit.
-std::int64_t wrap(std::int64_t i, u8 mode, int size) {
+[[gnu::always_inline]] inline std::int64_t wrap(std::int64_t i, u8 mode, int size) {
   LT_CHECK(mode == kClamp || mode == kRepeat || mode == kMirror || mode == 3,
            "wrap mode must be GX_CLAMP, GX_REPEAT, GX_MIRROR (or 3)");
   if (mode == kRepeat) return i & (size - 1);
