@@ -168,8 +168,17 @@ void covered_span(const Triangle& t, s32 y, s32& x_begin, s32& x_end) {
   x_end = static_cast<s32>(std::max(lo, hi));
 }
 
+u32 raster_pixel_depth(const Triangle& t, s32 x, s32 y) {
+  return raster_depth(slope_value(t.z, t.origin, x, y));
+}
+
 void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out) {
-  out.z = raster_depth(slope_value(t.z, t.origin, x, y));
+  out.z = raster_pixel_depth(t, x, y);
+  raster_pixel_attributes(t, x, y, round_colors, out);
+}
+
+void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors,
+                             RasterPixel& out) {
   for (int c = 0; c < t.channels; ++c) {
     for (int i = 0; i < 4; ++i) {
       const float v =

@@ -2,41 +2,22 @@
 
 #include <algorithm>
 
+#include "paths/gx/tev_arith.h"
+
 namespace lt::gx {
 
 namespace {
+
+// The arithmetic lives in tev_arith.h (shared with tev_plan.cpp); its names are qualified, not
+// imported, because a using-directive here would reach the next files of a unity batch.
 
 // Konst selectors 0..7, the fractions 1, 7/8 .. 1/8 as the hardware outputs them; note 5/8 is
 // 159 and 1/2 is 128, not round(255*f) [HWT gxtest/tev.cpp L338-343, PR#368].
 constexpr u8 kKonstFractions[8] = {255, 223, 191, 159, 128, 96, 64, 32};
 
-// Register fields are narrow bit-fields; a value outside a field's width cannot reach the
-// hardware, so every selector is read through its width [HWT gxtest/BPMemory.h L528-572].
-constexpr u8 bits(u8 v, int width) {
-  return static_cast<u8>(v & ((1 << width) - 1));
-}
-
-// d and the registers are 11-bit two's complement [HWT gxtest/BPMemory.h L1827-1849];
-// GX_SetTevColorS10 masks with 0x7ff [OGC gx.c L3790-3803], so out-of-range values wrap.
-constexpr s32 wrap11(s32 v) {
-  return ((v & 0x7ff) ^ 0x400) - 0x400;
-}
-
-// a, b, c are 8-bit inputs: a register feeding them contributes its low 8 bits (wrap, not clamp)
-// [DSW Tev.h InputRegType; HWT gxtest/tev.cpp L18-20].
-constexpr s32 low8(s32 v) {
-  return v & 255;
-}
-
-// The per-stage clamp: 0..255 with the clamp bit, else the 11-bit range [DSW Tev.cpp Tev::Draw
-// Clamp255/Clamp1024; HWT gxtest/tev.cpp L31-34].
-constexpr s32 stage_clamp(s32 r, bool clamp) {
-  return clamp ? std::clamp(r, 0, 255) : std::clamp(r, -1024, 1023);
-}
-
 Color8 swizzle(const Color8& c, const std::array<u8, 4>& table) {
   Color8 out;
-  for (int i = 0; i < 4; ++i) out[i] = c[bits(table[i], 2)];
+  for (int i = 0; i < 4; ++i) out[i] = c[tev_arith::bits(table[i], 2)];
   return out;
 }
 
@@ -47,7 +28,8 @@ Color8 swizzle(const Color8& c, const std::array<u8, 4>& table) {
 // GX_Init default [OGC gx.c L695-697]) [DSW Tev.cpp SetRasColor, Tev::Indirect].
 Color8 ras_color(const TevStage& stage, const TevState& state, const TevPixelInputs& in) {
   if (stage.channel > 5) return Color8{};
-  return swizzle(in.channels[stage.channel & 1], state.swap_tables[bits(stage.ras_swap, 2)]);
+  return swizzle(in.channels[stage.channel & 1],
+                 state.swap_tables[tev_arith::bits(stage.ras_swap, 2)]);
 }
 
 // Everything a stage's selectors can read, fixed before the stage runs: both combiners of one
@@ -64,7 +46,7 @@ struct StageSources {
 // TEXA/RASA replicate alpha into r, g, b; ONE, HALF, ZERO are 255, 128, 0 [DSW Tev.h
 // m_ColorInputLUT, V1/V1_2/V0; HALF = 128 HW-verified, HWT gxtest/tev.cpp L378].
 s32 color_source(u8 selector, int i, const StageSources& s) {
-  const u8 sel = bits(selector, 4);
+  const u8 sel = tev_arith::bits(selector, 4);
   if (sel < 8) {
     const ColorS10& reg = s.regs[sel >> 1];
     return (sel & 1) ? reg.a : reg[i];
@@ -91,7 +73,7 @@ s32 color_source(u8 selector, int i, const StageSources& s) {
 
 // One alpha selector (GX_CA_*) [DSW Tev.h m_AlphaInputLUT].
 s32 alpha_source(u8 selector, const StageSources& s) {
-  const u8 sel = bits(selector, 3);
+  const u8 sel = tev_arith::bits(selector, 3);
   if (sel < 4) return s.regs[sel].a;
   switch (static_cast<TevAlphaArg>(sel)) {
     case TevAlphaArg::TexA:
@@ -105,40 +87,14 @@ s32 alpha_source(u8 selector, const StageSources& s) {
   }
 }
 
-// The four operands of one component as the combiner sees them: a, b, c 8 bits, d 11 bits.
-struct Operands {
-  s32 a, b, c, d;
-};
-
-Operands color_operands(const TevCombiner& cc, int i, const StageSources& s) {
-  return {low8(color_source(cc.a, i, s)), low8(color_source(cc.b, i, s)),
-          low8(color_source(cc.c, i, s)), wrap11(color_source(cc.d, i, s))};
+tev_arith::Operands color_operands(const TevCombiner& cc, int i, const StageSources& s) {
+  return tev_arith::operands(color_source(cc.a, i, s), color_source(cc.b, i, s),
+                             color_source(cc.c, i, s), color_source(cc.d, i, s));
 }
 
-Operands alpha_operands(const TevCombiner& ac, const StageSources& s) {
-  return {low8(alpha_source(ac.a, s)), low8(alpha_source(ac.b, s)), low8(alpha_source(ac.c, s)),
-          wrap11(alpha_source(ac.d, s))};
-}
-
-// The compare stage's condition: op bit 18 selects GT (0) or EQ (1) [HWT gxtest/BPMemory.h
-// L538-545; OGC gx.c L3897-3904].
-bool compare(u8 op, u32 a, u32 b) {
-  return bits(op, 1) ? a == b : a > b;
-}
-
-// The R8 / GR16 / BGR24 comparands: red is the lowest byte [DSW Tev.cpp DrawColorCompare].
-u32 packed(const Operands (&ops)[3], s32 Operands::*field, u8 mode) {
-  u32 v = static_cast<u32>(ops[0].*field);
-  if (mode >= 1) v |= static_cast<u32>(ops[1].*field) << 8;
-  if (mode >= 2) v |= static_cast<u32>(ops[2].*field) << 16;
-  return v;
-}
-
-// r = d + (cond ? c : 0), then the stage clamp: no bias, scale or rounding [DSW Tev.cpp
-// DrawColorCompare / DrawAlphaCompare; OGC gx.c L3901-3904 writes bias 3 and the mode into the
-// scale field].
-s32 compare_result(const Operands& o, bool cond, bool clamp) {
-  return stage_clamp(o.d + (cond ? o.c : 0), clamp);
+tev_arith::Operands alpha_operands(const TevCombiner& ac, const StageSources& s) {
+  return tev_arith::operands(alpha_source(ac.a, s), alpha_source(ac.b, s), alpha_source(ac.c, s),
+                             alpha_source(ac.d, s));
 }
 
 }  // namespace
@@ -146,7 +102,7 @@ s32 compare_result(const Operands& o, bool cond, bool clamp) {
 u8 konst_value(u8 selector, int component, const std::array<Color8, kMaxKonstColors>& konst,
                bool alpha) {
   // KCSEL/KASEL are 5-bit fields [OGC gx.c L4046-4066]; table [HWT gxtest/tev.cpp L338-343].
-  const u8 sel = bits(selector, 5);
+  const u8 sel = tev_arith::bits(selector, 5);
   if (sel < 8) return kKonstFractions[sel];
   // 8..11 "invalid ... on hardware, they all output zero" [DSW Tev.h m_KonstLUT].
   if (sel < 12) return 0;
@@ -158,35 +114,14 @@ u8 konst_value(u8 selector, int component, const std::array<Color8, kMaxKonstCol
 }
 
 s16 tev_regular(int a, int b, int c, int d, u8 op, u8 bias, u8 scale, bool clamp) {
-  // The hardware-verified expectation of gx-hardware.md §1.2 [HWT gxtest/tev.cpp L16-36].
-  const bool sub = bits(op, 1) == 1;
-  const u8 sc = bits(scale, 2);
-  // Step 1: c rescaled onto 0..256 so the lerp divides by 256 exactly (255 -> 256).
-  const int c_prime = c + (c >> 7);
-  // Step 2: the lerp, 0..65280.
-  const int lerp = a * (256 - c_prime) + b * c_prime;
-  // Step 3: the scale is applied inside the lerp before the divide; DIVIDE_2 adds no rounding
-  // term, SUB rounds with 127 [HWT L24-26; DHW PixelShaderGen WriteTevRegular].
-  const int shift = sc == 1 ? 1 : sc == 2 ? 2 : 0;
-  const int round = sc == 3 ? 0 : sub ? 127 : 128;
-  // Step 4: m >= 0, so >> 8 is a floor. The sign is applied after the shift (colour path of
-  // DSW DrawColorRegular; §1.3 models alpha the same way).
-  const int m = ((lerp << shift) + round) >> 8;
-  // Step 5: d and the bias are scaled too. Bias 3 is the compare encoding and never reaches
-  // here from run_tev; its LUT entry is 0 [DSW Tev.h s_BiasLUT].
-  const u8 bs = bits(bias, 2);
-  const int bias_value = bs == 1 ? 128 : bs == 2 ? -128 : 0;
-  int r = ((d + bias_value) << shift) + (sub ? -m : m);
-  // Step 6: DIVIDE_2 is an arithmetic shift, i.e. floor (-3 -> -2) [HWT L30].
-  if (sc == 3) r >>= 1;
-  // Step 7.
-  return static_cast<s16>(stage_clamp(r, clamp));
+  return static_cast<s16>(
+      tev_arith::apply_regular(tev_arith::regular_op(op, bias, scale, clamp), a, b, c, d));
 }
 
 ColorS10 run_tev(const TevState& state, const TevPixelInputs& in) {
   std::array<ColorS10, kTevRegisters> regs = state.registers;
   for (ColorS10& reg : regs) {
-    for (int i = 0; i < 4; ++i) reg[i] = static_cast<s16>(wrap11(reg[i]));
+    for (int i = 0; i < 4; ++i) reg[i] = static_cast<s16>(tev_arith::wrap11(reg[i]));
   }
   // numtevstages is stored as n-1 in 4 bits [OGC gx.c L4035]: there is always at least one stage.
   const int num_stages = std::clamp(state.num_stages, 1, kMaxTevStages);
@@ -203,7 +138,7 @@ ColorS10 run_tev(const TevState& state, const TevPixelInputs& in) {
     const TevStage& stage = state.stages[n];
     if (stage.texmap != kTexMapNull) {
       // The swapped texel, with the fetching stage's tex swap table [DSW Tev.cpp Tev::Draw].
-      tex = swizzle(in.texels[n], state.swap_tables[bits(stage.tex_swap, 2)]);
+      tex = swizzle(in.texels[n], state.swap_tables[tev_arith::bits(stage.tex_swap, 2)]);
     }
     StageSources s{regs, tex, ras_color(stage, state, in), {}, 0};
     for (int i = 0; i < 3; ++i) {
@@ -213,55 +148,46 @@ ColorS10 run_tev(const TevState& state, const TevPixelInputs& in) {
 
     const TevCombiner& cc = stage.color;
     const TevCombiner& ac = stage.alpha;
-    const Operands col[3] = {color_operands(cc, 0, s), color_operands(cc, 1, s),
-                             color_operands(cc, 2, s)};
-    const Operands alp = alpha_operands(ac, s);
+    const tev_arith::Operands col[3] = {color_operands(cc, 0, s), color_operands(cc, 1, s),
+                                        color_operands(cc, 2, s)};
+    const tev_arith::Operands alp = alpha_operands(ac, s);
 
     s32 rgb[3];
     for (int i = 0; i < 3; ++i) {
-      if (bits(cc.bias, 2) != 3) {
+      if (tev_arith::bits(cc.bias, 2) != 3) {
         rgb[i] =
             tev_regular(col[i].a, col[i].b, col[i].c, col[i].d, cc.op, cc.bias, cc.scale, cc.clamp);
         continue;
       }
-      // Compare stage; mode 3 is RGB8, each component compared on its own [DSW Tev.cpp
-      // DrawColorCompare].
-      const u8 mode = bits(cc.scale, 2);
-      const bool cond =
-          mode == 3
-              ? compare(cc.op, static_cast<u32>(col[i].a), static_cast<u32>(col[i].b))
-              : compare(cc.op, packed(col, &Operands::a, mode), packed(col, &Operands::b, mode));
-      rgb[i] = compare_result(col[i], cond, cc.clamp);
+      // Compare stage [DSW Tev.cpp DrawColorCompare].
+      const bool cond = tev_arith::color_condition(cc.op, tev_arith::bits(cc.scale, 2), col, i);
+      rgb[i] = tev_arith::compare_result(col[i], cond, cc.clamp);
     }
 
     s32 alpha;
-    if (bits(ac.bias, 2) != 3) {
+    if (tev_arith::bits(ac.bias, 2) != 3) {
       // Same equation as colour (gx-hardware.md §1.3 recommendation: HWT formula = Dolphin's
       // shader path; DSW DrawAlphaRegular's SUB floor-of-negative variant is not followed).
       alpha = tev_regular(alp.a, alp.b, alp.c, alp.d, ac.op, ac.bias, ac.scale, ac.clamp);
     } else {
-      // Mode 3 is A8; R8/GR16/BGR24 compare the *colour* combiner's a and b (HW-verified:
-      // [HWT gxtest/tev.cpp L178-232]; [DSW Tev.cpp DrawAlphaCompare]; PR#193). c, d are alpha's.
-      const u8 mode = bits(ac.scale, 2);
-      const bool cond = mode == 3 ? compare(ac.op, static_cast<u32>(alp.a), static_cast<u32>(alp.b))
-                                  : compare(ac.op, packed(col, &Operands::a, mode),
-                                            packed(col, &Operands::b, mode));
-      alpha = compare_result(alp, cond, ac.clamp);
+      // Mode 3 is A8; the others compare the colour combiner's a and b (tev_arith.h).
+      const bool cond = tev_arith::alpha_condition(ac.op, tev_arith::bits(ac.scale, 2), col, alp);
+      alpha = tev_arith::compare_result(alp, cond, ac.clamp);
     }
 
     // Write back after both combiners have read: colour to dest.rgb, alpha to its own dest.a
     // [DSW Tev.cpp Tev::Draw].
-    ColorS10& cdst = regs[bits(cc.dest, 2)];
+    ColorS10& cdst = regs[tev_arith::bits(cc.dest, 2)];
     for (int i = 0; i < 3; ++i) cdst[i] = static_cast<s16>(rgb[i]);
-    regs[bits(ac.dest, 2)].a = static_cast<s16>(alpha);
+    regs[tev_arith::bits(ac.dest, 2)].a = static_cast<s16>(alpha);
   }
 
   // The output is the last stage's colour dest .rgb and alpha dest .a, whatever registers they
   // are ("regardless of the used destination register" [DSW Tev.cpp Tev::Draw]; libogc requires
   // the last stage to write PREV [OGC gx.h L3057]).
   const TevStage& last = state.stages[num_stages - 1];
-  ColorS10 out = regs[bits(last.color.dest, 2)];
-  out.a = regs[bits(last.alpha.dest, 2)].a;
+  ColorS10 out = regs[tev_arith::bits(last.color.dest, 2)];
+  out.a = regs[tev_arith::bits(last.alpha.dest, 2)].a;
   return out;
 }
 

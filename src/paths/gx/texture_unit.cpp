@@ -25,17 +25,21 @@ struct TileShape {
   int width, height;
   int bytes_per_texel;  // within one 32-byte half
   int halves;           // 32-byte halves a tile: 2 for RGBA8, else 1
+  // log2 of width and height: both are powers of two, and texel indices are never negative
+  // (wrap() returns 0..size-1), so a shift and a mask stand for the divide and the remainder
+  // (the sampler computes four offsets a pixel; a divide by a variable is slow).
+  int width_shift, height_shift;
 };
 
 TileShape tile_shape(u8 format) {
   switch (format) {
     case kTexFormatI8:
-      return {8, 4, 1, 1};
+      return {8, 4, 1, 1, 3, 2};
     case kTexFormatIA8:
     case kTexFormatRGB565:
-      return {4, 4, 2, 1};
+      return {4, 4, 2, 1, 2, 2};
     case kTexFormatRGBA8:
-      return {4, 4, 2, 2};
+      return {4, 4, 2, 2, 2, 2};
     default:
       break;
   }
@@ -57,7 +61,7 @@ void check_size(int width, int height) {
 }
 
 int tiles_across(const TileShape& shape, int width) {
-  return (width + shape.width - 1) / shape.width;
+  return (width + shape.width - 1) >> shape.width_shift;
 }
 
 // Byte offset of texel (x, y)'s first byte (in the first half of an RGBA8 tile). Tiles are stored
@@ -66,8 +70,9 @@ int tiles_across(const TileShape& shape, int width) {
 // formats [DHW TexDecoder_DecodeTexel], the same number. For I8 this is
 // ((y>>2)*ceil(W/8) + (x>>3))*32 + (y&3)*8 + (x&7) (§3.4).
 size_t texel_offset(const TileShape& shape, int width, int x, int y) {
-  const int tile = (y / shape.height) * tiles_across(shape, width) + x / shape.width;
-  const int in_tile = (y % shape.height) * shape.width + x % shape.width;
+  const int tile =
+      (y >> shape.height_shift) * tiles_across(shape, width) + (x >> shape.width_shift);
+  const int in_tile = (y & (shape.height - 1)) * shape.width + (x & (shape.width - 1));
   return static_cast<size_t>(tile) * 32 * static_cast<size_t>(shape.halves) +
          static_cast<size_t>(in_tile * shape.bytes_per_texel);
 }
@@ -81,7 +86,9 @@ size_t texel_offset(const TileShape& shape, int width, int x, int y) {
 //   g 10..5, b 4..0, each expanded by bit replication; alpha 255 [DecodePixel_RGB565].
 // - RGBA8: a = byte 0, r = byte 1 of the texel's pair in the first half, g = byte 0 and b = byte
 //   1 of its pair in the second half (offset + 32).
-Color8 fetch(const TextureObject& tex, const TileShape& shape, int x, int y) {
+// Always inlined: the bilinear sampler calls it four times a pixel.
+[[gnu::always_inline]] inline Color8 fetch(const TextureObject& tex, const TileShape& shape, int x,
+                                           int y) {
   const size_t o = texel_offset(shape, tex.width, x, y);
   const std::vector<u8>& d = tex.data;
   switch (tex.format) {
@@ -103,7 +110,7 @@ Color8 fetch(const TextureObject& tex, const TileShape& shape, int x, int y) {
 // MIRROR use size - 1 as a mask, which assumes a power-of-two size (YAGCD, quoted there); with
 // another size they still land in range, just not evenly. Mode 3 behaves as CLAMP ("hardware
 // testing indicates", same function). int64 because u - 64 of an arbitrary s32 may not fit.
-std::int64_t wrap(std::int64_t i, u8 mode, int size) {
+[[gnu::always_inline]] inline std::int64_t wrap(std::int64_t i, u8 mode, int size) {
   LT_CHECK(mode == kClamp || mode == kRepeat || mode == kMirror || mode == 3,
            "wrap mode must be GX_CLAMP, GX_REPEAT, GX_MIRROR (or 3)");
   if (mode == kRepeat) return i & (size - 1);
@@ -155,7 +162,7 @@ u16 nearest_rgb565(double r, double g, double b) {
 size_t tiled_size(u8 format, int width, int height) {
   const TileShape shape = tile_shape(format);
   check_size(width, height);
-  const int rows = (height + shape.height - 1) / shape.height;
+  const int rows = (height + shape.height - 1) >> shape.height_shift;
   return static_cast<size_t>(tiles_across(shape, width)) * static_cast<size_t>(rows) * 32 *
          static_cast<size_t>(shape.halves);
 }
