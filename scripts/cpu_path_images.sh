@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Every repository scene through every variant of the CPU-shaded paths (half, reference), written
-# as float EXR into one folder: run it before and after a change to their shading, and
-# `diff -r BEFORE AFTER` says whether any pixel moved (issue 39: vectorising them must not).
+# Every repository scene through every variant of the paths that shade on the CPU (half,
+# reference, gx), written as float EXR into one folder: run it before and after a change meant to
+# make them faster, and `--compare` says whether any byte moved (issue 39: none may). An 8-bit
+# path's EXR holds its bytes exactly (k/255 in half floats), so its PNG is covered too.
 #
-#   scripts/cpu_path_images.sh DIR [PATH...]     # default paths: half reference
+#   scripts/cpu_path_images.sh DIR [PATH...]     # default paths: half reference gx
 #   scripts/cpu_path_images.sh before/ && <change, rebuild> && scripts/cpu_path_images.sh after/
-#   diff -r before/ after/ && echo identical
+#   scripts/cpu_path_images.sh --compare before/ after/
 #
 # Scenes: every scenes/**/*.json and .glb, at each scene's own size, plus the demo scenes
 # (scenes/*.json) at the bench's 1280x720. A scene a variant refuses is listed as refused.
@@ -34,7 +35,7 @@ cd "$(dirname "$0")/.."
 out=${1:?usage: scripts/cpu_path_images.sh DIR [PATH...]}
 shift
 paths=("$@")
-[ ${#paths[@]} -gt 0 ] || paths=(half reference)
+[ ${#paths[@]} -gt 0 ] || paths=(half reference gx)
 bin=${LTRENDER:-build/ltrender}
 mkdir -p "$out"
 
@@ -44,6 +45,13 @@ variants_of() {
     index($0, p) == 1 { on = 1; next }
     on && /^      --variant / { print $2; next }
     on { exit }'
+}
+
+# The modifiers a path's grammar takes that its list does not spell out, so every branch of its
+# pixel stage is drawn (gx: the TEV konst base of advise's search, the RGB565 thickness map).
+extra_variants_of() {
+  [ "$1" = gx ] && printf '%s\n' t=vertex:base=tev t=texgen:view=object:base=tev t=vertex:map=rgb565
+  return 0
 }
 
 render_one() {  # scene path variant [width height]
@@ -64,7 +72,7 @@ render_one() {  # scene path variant [width height]
 
 mapfile -t scenes < <(find scenes -name '*.json' -o -name '*.glb' | sort)
 for path in "${paths[@]}"; do
-  mapfile -t variants < <(variants_of "$path")
+  mapfile -t variants < <(variants_of "$path"; extra_variants_of "$path")
   [ ${#variants[@]} -gt 0 ] || { echo "no variants listed for $path" >&2; exit 1; }
   for variant in "${variants[@]}"; do
     for scene in "${scenes[@]}"; do render_one "$scene" "$path" "$variant"; done
