@@ -8,9 +8,8 @@
 //
 // One thread: the figures are a core's, as `ltrender bench` pins one. The lights and materials
 // are scenes/three_point_blob.json's (three point lights); the pixels are a sphere's front.
-#include <benchmark/benchmark.h>
-
 #include <Imath/half.h>
+#include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <vector>
@@ -112,8 +111,8 @@ void BM_RoundToHalf(benchmark::State& state) {
     lt::fp16::round_to_half(in.data(), out.data(), in.size());
     benchmark::DoNotOptimize(out.data());
   }
-  state.counters["values"] = benchmark::Counter(
-      static_cast<double>(state.iterations() * in.size()), benchmark::Counter::kIsRate);
+  state.counters["values"] = benchmark::Counter(static_cast<double>(state.iterations() * in.size()),
+                                                benchmark::Counter::kIsRate);
   state.SetLabel(lt::fp16::simd_target());
 }
 BENCHMARK(BM_RoundToHalf);
@@ -126,8 +125,8 @@ void BM_RoundToHalfImath(benchmark::State& state) {
     for (size_t i = 0; i < in.size(); ++i) out[i] = float(Imath::half(in[i]));
     benchmark::DoNotOptimize(out.data());
   }
-  state.counters["values"] = benchmark::Counter(
-      static_cast<double>(state.iterations() * in.size()), benchmark::Counter::kIsRate);
+  state.counters["values"] = benchmark::Counter(static_cast<double>(state.iterations() * in.size()),
+                                                benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RoundToHalfImath);
 

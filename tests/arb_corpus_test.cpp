@@ -25,8 +25,8 @@ struct CgcCount {
 // KIL instructions in the text, which cgc's TEX leaves out.
 int kills(const std::string& text) {
   static const std::regex kil(R"(\nKIL )");
-  return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), kil),
-                                        std::sregex_iterator()));
+  return static_cast<int>(
+      std::distance(std::sregex_iterator(text.begin(), text.end(), kil), std::sregex_iterator()));
 }
 
 CgcCount cgc_count(const std::string& text) {
@@ -72,12 +72,12 @@ TEST(ArbCorpus, CountsEqualCgcsCommentsAndMesas) {
     const int slots = used("instruction_slots");
     const bool fragment = kind == "fragment";
     const int tex = fragment ? used("tex") - kills(text) : 0;
-    const bool cgc_same = cgc.alu == slots && cgc.tex == tex &&
-                          cgc.instructions == slots && cgc.registers == used("temporaries");
-    EXPECT_TRUE(cgc_same) << files[i] << ": ours " << slots << " slots, "
-                          << tex << " TEX but KIL, " << used("temporaries")
-                          << " temporaries; cgc " << cgc.alu << " ALU, " << cgc.tex << " TEX, "
-                          << cgc.instructions << " instructions, " << cgc.registers << " R-regs";
+    const bool cgc_same = cgc.alu == slots && cgc.tex == tex && cgc.instructions == slots &&
+                          cgc.registers == used("temporaries");
+    EXPECT_TRUE(cgc_same) << files[i] << ": ours " << slots << " slots, " << tex << " TEX but KIL, "
+                          << used("temporaries") << " temporaries; cgc " << cgc.alu << " ALU, "
+                          << cgc.tex << " TEX, " << cgc.instructions << " instructions, "
+                          << cgc.registers << " R-regs";
     bool mesa_same = true;
     for (const nlohmann::json& res : row["resources"]) {
       if (!res["check"].is_null()) mesa_same = mesa_same && res["check"]["agrees"].get<bool>();

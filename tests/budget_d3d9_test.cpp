@@ -28,11 +28,12 @@ TEST(BudgetD3d9, MixedListPrintsOneSchema) {
   test::write_file(fp, "!!ARBfp1.0\nMOV result.color, fragment.color;\nEND\n");
   test::write_file(gx, "GX_SetNumTevStages(1);\nGX_SetNumChans(1);\n");
   const std::string ps = (test::source_dir() / kCorpus / "ps_2_0_normal_glossy_1.psh").string();
-  const std::string vs = (test::source_dir() / kCorpus / "vs_3_0_normal_parallaxspec_1.vsh").string();
+  const std::string vs =
+      (test::source_dir() / kCorpus / "vs_3_0_normal_parallaxspec_1.vsh").string();
   const std::string comb = (test::source_dir() / "combiners" / "lobe_vertex.comb").string();
   const std::string scene = (test::source_dir() / "scenes" / "backlit_sphere.json").string();
-  const test::RunResult r = test::run_ltrender("budget " + fp + " " + ps + " " + vs + " " +
-                                               comb + " " + gx + " " + scene + " --json");
+  const test::RunResult r = test::run_ltrender("budget " + fp + " " + ps + " " + vs + " " + comb +
+                                               " " + gx + " " + scene + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<nlohmann::json> all = test::budget_records(r.out);
   ASSERT_EQ(all.size(), 6u) << r.out;

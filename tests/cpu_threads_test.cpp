@@ -61,9 +61,9 @@ TEST(ThreadsOption, EveryRenderingCommandTakesItAndSaysItsDefault) {
   test::TempDir dir;
   const std::string scene = (test::source_dir() / "scenes/backlit_sphere.json").string();
   const std::string out = (dir / "one.exr").string();
-  EXPECT_EQ(test::run_ltrender("render " + scene + " --path reference --threads 1 -o " + out)
-                .exit_code,
-            0);
+  EXPECT_EQ(
+      test::run_ltrender("render " + scene + " --path reference --threads 1 -o " + out).exit_code,
+      0);
   EXPECT_TRUE(fs::exists(out));
   const test::RunResult zero =
       test::run_ltrender("render " + scene + " --path reference --threads 0 -o " + out);

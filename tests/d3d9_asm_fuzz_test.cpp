@@ -21,10 +21,18 @@ std::string mutate_listing(std::string s, std::mt19937& rng) {
   for (int e = 0; e < edits && !s.empty(); ++e) {
     const size_t at = rng() % s.size();
     switch (rng() % 4) {
-      case 0: s[at] = bytes[rng() % bytes.size()]; break;
-      case 1: s.erase(at, 1 + rng() % 8); break;
-      case 2: s.insert(at, 1, bytes[rng() % bytes.size()]); break;
-      default: s.resize(at); break;
+      case 0:
+        s[at] = bytes[rng() % bytes.size()];
+        break;
+      case 1:
+        s.erase(at, 1 + rng() % 8);
+        break;
+      case 2:
+        s.insert(at, 1, bytes[rng() % bytes.size()]);
+        break;
+      default:
+        s.resize(at);
+        break;
     }
   }
   return s;

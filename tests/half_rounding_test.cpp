@@ -3,14 +3,13 @@
 // path used before it was vectorised (issue 39): bit for bit, on every Highway target this
 // machine runs, over every binary16 value, every halfway point between two of them (and the
 // floats either side), and a seeded million products, sums, differences and quotients.
-#include <gtest/gtest.h>
-
 #include <Imath/half.h>
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <hwy/targets.h>
 #include <random>
 #include <vector>
 
@@ -63,8 +62,8 @@ std::vector<float> every_half_and_every_tie() {
     if (std::isnan(h) || std::isinf(h)) continue;
     // The next half away from zero; past 65504 the "next" is 65536, where Inf begins.
     const bool top = (bits & 0x7FFF) == 0x7BFF;
-    const float next = top ? std::copysign(65536.0f, h)
-                           : half_from_bits(static_cast<std::uint16_t>(bits + 1));
+    const float next =
+        top ? std::copysign(65536.0f, h) : half_from_bits(static_cast<std::uint16_t>(bits + 1));
     if (std::isnan(next)) continue;
     const float tie = h + (next - h) / 2;  // exact: both are halves, 11 bits apart at most
     v.push_back(tie);

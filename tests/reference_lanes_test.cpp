@@ -5,10 +5,10 @@
 // under lights and materials of every kind the lanes branch on. Maps and ramps, sampled a lane
 // at a time by model's own functions, are held by scripts/cpu_path_images.sh's scenes.
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <bit>
 #include <cstdint>
-#include <hwy/targets.h>
 #include <random>
 
 #include "model/translucency.h"
@@ -67,8 +67,8 @@ PixelRun random_run(std::mt19937& rng, const Scene& scene) {
     run.uv[0][i] = run.uv[1][i] = 0;
   }
   for (int c = 0; c < 3; ++c) {
-    run.normal[c][1] = 0;                                            // no normal
-    run.normal[c][2] = 1e-7f;                                        // below kMinNormalLength
+    run.normal[c][1] = 0;                                                  // no normal
+    run.normal[c][2] = 1e-7f;                                              // below kMinNormalLength
     run.position[c][3] = static_cast<float>(scene.lights[1].position[c]);  // at the light
   }
   return run;

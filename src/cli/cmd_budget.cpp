@@ -107,7 +107,8 @@ Action add_budget(CLI::App& app) {
   auto scene_options = std::make_shared<SceneOptions>();
   sub->add_option("FILE", *files,
                   "Scene files, or program files: .fp/.vp/.arb or !!ARBfp1.0/!!ARBvp1.0 text (ARB "
-                  "programs), .asm/.vsh/.psh or vs_2_0/ps_2_0/... text (D3D9 assembly), .comb (GL 1.3 combiner programs), .c/.gx (GX programs)")
+                  "programs), .asm/.vsh/.psh or vs_2_0/ps_2_0/... text (D3D9 assembly), .comb (GL "
+                  "1.3 combiner programs), .c/.gx (GX programs)")
       ->required();
   CLI::Option* path_option =
       sub->add_option("--path", *path,
@@ -115,12 +116,13 @@ Action add_budget(CLI::App& app) {
                       "passes) or gx (TEV stages, texgens, channels, lights, passes). Given, every "
                       "program file must be that path's");
   sub->add_option("--variant", *variant, "Path variant (default: the path's default)");
-  sub->add_option("--profile", *profiles,
-                  "One per kind of input, repeated or comma-separated; each goes to the path that "
-                  "has it. arbfp: ps_2_0 (default), ps_2_x, ps_2_a, ps_2_b, ps_3_0, arbfp1-min, "
-                  "vs_1_1, vs_2_0, vs_3_0, arbvp1-min (a D3D9 program's default is its version's; the "
-                  "partner profile checks the other program kind); combiners: gl13-2units "
-                  "(default), gl13-3units, gl-8units; gx: wii-tev (default)")
+  sub->add_option(
+         "--profile", *profiles,
+         "One per kind of input, repeated or comma-separated; each goes to the path that "
+         "has it. arbfp: ps_2_0 (default), ps_2_x, ps_2_a, ps_2_b, ps_3_0, arbfp1-min, "
+         "vs_1_1, vs_2_0, vs_3_0, arbvp1-min (a D3D9 program's default is its version's; the "
+         "partner profile checks the other program kind); combiners: gl13-2units "
+         "(default), gl13-3units, gl-8units; gx: wii-tev (default)")
       ->delimiter(',');
   sub->add_flag("--json", *json,
                 "Print one ltrender-budget-2 JSON object per file, an error record for an "

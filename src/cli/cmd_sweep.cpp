@@ -41,9 +41,9 @@ Action add_sweep(CLI::App& app) {
       try {
         info.parse_variant(resolve_variant(info, "") + ":light-range=" + o->light_range);
       } catch (const InputError& e) {
-        throw InputError("--light-range", o->light_range,
-                         "path " + info.name + " takes no such :light-range= variant (" +
-                             e.what_only() + ")");
+        throw InputError(
+            "--light-range", o->light_range,
+            "path " + info.name + " takes no such :light-range= variant (" + e.what_only() + ")");
       }
     }
     o->variants = variant_selections().at(*variants);

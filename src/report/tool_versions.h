@@ -25,6 +25,8 @@ const ToolVersions& tool_versions();
 // "ltrender 0.1.0 (git 6831d86); GL 4.5 (...) Mesa 22.3.6 on llvmpipe (...); OpenImageIO 2.4.7;
 // Embree 3.13.5; Dolphin 5.0-17995-g8bad821019" ("Dolphin not found" without it).
 std::string tool_versions_line(const ToolVersions& versions);
-inline std::string tool_versions_line() { return tool_versions_line(tool_versions()); }
+inline std::string tool_versions_line() {
+  return tool_versions_line(tool_versions());
+}
 
 }  // namespace lt

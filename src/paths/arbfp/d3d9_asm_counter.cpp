@@ -26,8 +26,8 @@ class DependentReads {
       const bool from_temporary = coordinate.type == "r";
       const bool rewritten = d.type == "r" && order_.count(d.index);
       if (from_temporary || rewritten) {
-        order = 1 + std::max(from_temporary ? order_of(coordinate) : 0,
-                             rewritten ? order_of(d) : 0);
+        order =
+            1 + std::max(from_temporary ? order_of(coordinate) : 0, rewritten ? order_of(d) : 0);
       }
       levels_ = std::max(levels_, order + 1);
     } else {
@@ -61,10 +61,17 @@ Counts count(const Program& program) {
   for (const Instruction& ins : program.instructions) {
     const int n = slots(*ins.info, program.version, ins.compared);
     switch (ins.info->kind) {
-      case Kind::Setup: break;
-      case Kind::Arithmetic: c.arithmetic += n; break;
-      case Kind::Texture: c.texture += n; break;
-      case Kind::Flow: c.flow += n; break;
+      case Kind::Setup:
+        break;
+      case Kind::Arithmetic:
+        c.arithmetic += n;
+        break;
+      case Kind::Texture:
+        c.texture += n;
+        break;
+      case Kind::Flow:
+        c.flow += n;
+        break;
     }
     auto use = [&](const Register& r) {
       if (r.type == "r") c.temporaries = std::max(c.temporaries, r.index + 1);

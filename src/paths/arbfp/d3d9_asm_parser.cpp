@@ -15,13 +15,27 @@ namespace {
 // What a register type is called in messages.
 std::string register_name(const std::string& type) {
   static const std::map<std::string, std::string> names = {
-      {"r", "temporary"},         {"c", "constant"},        {"i", "integer constant"},
-      {"b", "boolean constant"},  {"s", "sampler"},         {"t", "texture coordinate"},
-      {"v", "input"},             {"o", "output"},          {"oc", "colour output"},
-      {"od", "colour output"},    {"ot", "texture output"}, {"a", "address"},
-      {"al", "loop counter"},     {"l", "label"},           {"p", "predicate"},
-      {"opos", "position output"}, {"ofog", "fog output"},   {"opts", "point size output"},
-      {"odepth", "depth output"}, {"vpos", "position input"}, {"vface", "face input"},
+      {"r", "temporary"},
+      {"c", "constant"},
+      {"i", "integer constant"},
+      {"b", "boolean constant"},
+      {"s", "sampler"},
+      {"t", "texture coordinate"},
+      {"v", "input"},
+      {"o", "output"},
+      {"oc", "colour output"},
+      {"od", "colour output"},
+      {"ot", "texture output"},
+      {"a", "address"},
+      {"al", "loop counter"},
+      {"l", "label"},
+      {"p", "predicate"},
+      {"opos", "position output"},
+      {"ofog", "fog output"},
+      {"opts", "point size output"},
+      {"odepth", "depth output"},
+      {"vpos", "position input"},
+      {"vface", "face input"},
   };
   const auto it = names.find(type);
   return it == names.end() ? "" : it->second;
@@ -34,7 +48,8 @@ class Line {
   Line(std::string text, int number) : text_(std::move(text)), number_(number) {}
 
   void skip_space() {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\r')) {
+    while (pos_ < text_.size() &&
+           (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\r')) {
       ++pos_;
     }
   }
@@ -62,8 +77,8 @@ class Line {
   std::string word() {
     skip_space();
     const size_t start = pos_;
-    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) ||
-                                   text_[pos_] == '_')) {
+    while (pos_ < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) {
       ++pos_;
     }
     return text_.substr(start, pos_ - start);
@@ -117,8 +132,8 @@ std::string lower(std::string s) {
 
 // The registers written without an index: the named outputs and inputs, the loop counter.
 bool single_register(const std::string& type) {
-  return type == "opos" || type == "ofog" || type == "opts" || type == "odepth" ||
-         type == "vpos" || type == "vface" || type == "al";
+  return type == "opos" || type == "ofog" || type == "opts" || type == "odepth" || type == "vpos" ||
+         type == "vface" || type == "al";
 }
 
 bool is_comparison(const std::string& s) {
@@ -210,7 +225,8 @@ class Parser {
     bool first = true;
     while (!rest.empty()) {
       const size_t next = rest.find('_', 1);
-      const std::string m = rest.substr(1, next == std::string::npos ? std::string::npos : next - 1);
+      const std::string m =
+          rest.substr(1, next == std::string::npos ? std::string::npos : next - 1);
       rest = next == std::string::npos ? "" : rest.substr(next);
       if (first && ins.info->compares && is_comparison(m)) {
         ins.compared = true;
@@ -221,12 +237,12 @@ class Parser {
         }
       } else if (m == "pp" || m == "centroid") {
         if (!is_pixel(version_)) {
-          line.fail_at(ins.at, "_" + m + " is a pixel shader modifier, not in " +
-                                   to_string(version_));
+          line.fail_at(ins.at,
+                       "_" + m + " is a pixel shader modifier, not in " + to_string(version_));
         }
       } else if (m == "x2" || m == "x4" || m == "x8" || m == "d2" || m == "d4" || m == "d8") {
-        line.fail_at(ins.at, "the result shift _" + m + " is ps_1_x's, not in " +
-                                 to_string(version_));
+        line.fail_at(ins.at,
+                     "the result shift _" + m + " is ps_1_x's, not in " + to_string(version_));
       } else {
         line.fail_at(ins.at, "unknown modifier '_" + m + "' on '" + ins.info->name + "'");
       }
@@ -242,21 +258,23 @@ class Parser {
   Instruction declaration(Line& line, Instruction& ins, const std::string& opcode) {
     static const std::set<std::string> usages = {
         "position", "blendweight", "blendindices", "normal", "psize", "texcoord", "tangent",
-        "binormal", "tessfactor", "positiont", "color", "fog", "depth", "sample"};
+        "binormal", "tessfactor",  "positiont",    "color",  "fog",   "depth",    "sample"};
     ins.info = find_instruction("dcl");
     size_t at = 3;
     while (at < opcode.size()) {
       const size_t next = opcode.find('_', at + 1);
-      const std::string part = opcode.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
+      const std::string part =
+          opcode.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
       at = next == std::string::npos ? opcode.size() : next;
       std::string usage = part;
-      while (!usage.empty() && std::isdigit(static_cast<unsigned char>(usage.back()))) usage.pop_back();
+      while (!usage.empty() && std::isdigit(static_cast<unsigned char>(usage.back())))
+        usage.pop_back();
       const bool known = part == "2d" || part == "cube" || part == "volume" ||
                          usages.count(usage) || part == "pp" || part == "centroid";
       if (!known) line.fail_at(ins.at, "unknown declaration '_" + part + "' in '" + opcode + "'");
       if ((part == "pp" || part == "centroid") && !is_pixel(version_)) {
-        line.fail_at(ins.at, "_" + part + " is a pixel shader modifier, not in " +
-                                 to_string(version_));
+        line.fail_at(ins.at,
+                     "_" + part + " is a pixel shader modifier, not in " + to_string(version_));
       }
     }
     ins.destinations.push_back(operand(line, true));
@@ -280,11 +298,13 @@ class Parser {
       const std::string v = lower(line.number());
       char* end = nullptr;
       if (name == "defb") {
-        if (v != "true" && v != "false") line.fail_at(value_at, "expected true or false, found '" + v + "'");
+        if (v != "true" && v != "false")
+          line.fail_at(value_at, "expected true or false, found '" + v + "'");
       } else if (v.empty()) {
         line.expected("a number");
       } else if (v.find("#") == std::string::npos) {  // 1.#INF and 1.#QNAN, as fxc prints them
-        (name == "def" ? (void)std::strtod(v.c_str(), &end) : (void)std::strtol(v.c_str(), &end, 10));
+        (name == "def" ? (void)std::strtod(v.c_str(), &end)
+                       : (void)std::strtol(v.c_str(), &end, 10));
         if (*end != '\0') line.fail_at(value_at, "expected a number, found '" + v + "'");
       }
     }
@@ -335,17 +355,21 @@ class Parser {
       const std::string m = lower(line.alnum());
       if (m != "abs" || destination) {
         line.fail_at(at, "source modifier '_" + m + "' is not in " + to_string(version_) +
-                  (m == "bias" || m == "bx2" || m == "x2" || m == "dz" || m == "dw" ? " (ps_1_x's)" : ""));
+                             (m == "bias" || m == "bx2" || m == "x2" || m == "dz" || m == "dw"
+                                  ? " (ps_1_x's)"
+                                  : ""));
       }
       if (!is_model3(version_)) {
         line.fail_at(at, "the source modifier _abs is shader model 3's (vs_3_0, ps_3_0), not in " +
-                  to_string(version_) + " (use the abs instruction)");
+                             to_string(version_) + " (use the abs instruction)");
       }
     }
     if (line.accept('.')) {
       const std::string s = lower(line.alnum());
       if (s.empty() || s.size() > 4 || s.find_first_not_of("xyzwrgba") != std::string::npos) {
-        line.fail_at(at, "expected a swizzle or write mask of x, y, z, w (or r, g, b, a), found '." + s + "'");
+        line.fail_at(
+            at,
+            "expected a swizzle or write mask of x, y, z, w (or r, g, b, a), found '." + s + "'");
       }
     }
     return op;
@@ -392,10 +416,12 @@ Version read_version(Line& line) {
   const std::optional<Version> v = parse_version(token);
   if (!v) {
     if (is_ps1x(token)) {
-      line.fail_at(at, "pixel shader " + token + " is not read (ltrender reads " + version_list() + ")");
+      line.fail_at(
+          at, "pixel shader " + token + " is not read (ltrender reads " + version_list() + ")");
     }
     const bool looks = token.rfind("vs_", 0) == 0 || token.rfind("ps_", 0) == 0;
-    line.fail_at(at, (looks ? "unknown version '" + token + "'" : "expected a version token, found '" + token + "'") +
+    line.fail_at(at, (looks ? "unknown version '" + token + "'"
+                            : "expected a version token, found '" + token + "'") +
                          " (ltrender reads " + version_list() + ")");
   }
   if (!line.at_end()) line.expected("the end of the version line");
@@ -411,8 +437,9 @@ Program parse(const std::string& source) {
   size_t k = 0;
   while (k < lines.size() && lines[k].at_end()) ++k;
   if (k == lines.size()) {
-    throw SyntaxError({static_cast<int>(lines.size()), 1},
-                      "expected a version token (" + version_list() + "), found the end of the file");
+    throw SyntaxError(
+        {static_cast<int>(lines.size()), 1},
+        "expected a version token (" + version_list() + "), found the end of the file");
   }
   program.version_at = lines[k].here();
   program.version = read_version(lines[k]);

@@ -37,8 +37,9 @@ using RegisterCounts = std::map<std::string, int>;
 // Per version, the register types and their counts, from each version's "Registers" page:
 // vs_1_1: 12 r, 96+ c (256: the most a device reports in MaxVertexShaderConst), one a0, 16 v,
 //   oPos oFog oPts, 2 oD, 8 oT.
-// vs_2_0 adds 16 i, 16 b, aL and 16 labels l# (2048 in shader model 3); vs_2_x: up to 32 r and the predicate p0.
-// vs_3_0: 32 r, 256 c, 16 i, 16 b, 4 samplers (vertex texture fetch), 12 o# replace the named
+// vs_2_0 adds 16 i, 16 b, aL and 16 labels l# (2048 in shader model 3); vs_2_x: up to 32 r and the
+// predicate p0. vs_3_0: 32 r, 256 c, 16 i, 16 b, 4 samplers (vertex texture fetch), 12 o# replace
+// the named
 //   outputs.
 // ps_2_0: 12 r, 32 c, 16 s, 8 t, 2 v (colours), 4 oC, oDepth; no i, b, p0 or loops.
 // ps_2_x: up to 32 r, 16 i, 16 b, p0.
@@ -46,27 +47,84 @@ using RegisterCounts = std::map<std::string, int>;
 const RegisterCounts& counts_of(Version v) {
   static const std::map<Version, RegisterCounts> counts = {
       {Version::Vs11,
-       {{"r", 12}, {"c", 256}, {"a", 1}, {"v", 16}, {"opos", 1}, {"ofog", 1}, {"opts", 1},
-        {"od", 2}, {"ot", 8}}},
+       {{"r", 12},
+        {"c", 256},
+        {"a", 1},
+        {"v", 16},
+        {"opos", 1},
+        {"ofog", 1},
+        {"opts", 1},
+        {"od", 2},
+        {"ot", 8}}},
       {Version::Vs20,
-       {{"r", 12}, {"c", 256}, {"i", 16}, {"b", 16}, {"a", 1}, {"al", 1}, {"l", 16}, {"v", 16},
-        {"opos", 1}, {"ofog", 1}, {"opts", 1}, {"od", 2}, {"ot", 8}}},
+       {{"r", 12},
+        {"c", 256},
+        {"i", 16},
+        {"b", 16},
+        {"a", 1},
+        {"al", 1},
+        {"l", 16},
+        {"v", 16},
+        {"opos", 1},
+        {"ofog", 1},
+        {"opts", 1},
+        {"od", 2},
+        {"ot", 8}}},
       {Version::Vs2x,
-       {{"r", 32}, {"c", 256}, {"i", 16}, {"b", 16}, {"a", 1}, {"al", 1}, {"l", 16}, {"p", 1},
-        {"v", 16}, {"opos", 1}, {"ofog", 1}, {"opts", 1}, {"od", 2}, {"ot", 8}}},
+       {{"r", 32},
+        {"c", 256},
+        {"i", 16},
+        {"b", 16},
+        {"a", 1},
+        {"al", 1},
+        {"l", 16},
+        {"p", 1},
+        {"v", 16},
+        {"opos", 1},
+        {"ofog", 1},
+        {"opts", 1},
+        {"od", 2},
+        {"ot", 8}}},
       {Version::Vs30,
-       {{"r", 32}, {"c", 256}, {"i", 16}, {"b", 16}, {"a", 1}, {"al", 1}, {"l", 2048}, {"p", 1},
+       {{"r", 32},
+        {"c", 256},
+        {"i", 16},
+        {"b", 16},
+        {"a", 1},
+        {"al", 1},
+        {"l", 2048},
+        {"p", 1},
         {"s", 4},
-        {"v", 16}, {"o", 12}}},
-      {Version::Ps20, {{"r", 12}, {"c", 32}, {"s", 16}, {"t", 8}, {"v", 2}, {"oc", 4},
-                       {"odepth", 1}}},
+        {"v", 16},
+        {"o", 12}}},
+      {Version::Ps20,
+       {{"r", 12}, {"c", 32}, {"s", 16}, {"t", 8}, {"v", 2}, {"oc", 4}, {"odepth", 1}}},
       {Version::Ps2x,
-       {{"r", 32}, {"c", 32}, {"i", 16}, {"b", 16}, {"l", 16}, {"p", 1}, {"s", 16}, {"t", 8}, {"v", 2},
-        {"oc", 4}, {"odepth", 1}}},
+       {{"r", 32},
+        {"c", 32},
+        {"i", 16},
+        {"b", 16},
+        {"l", 16},
+        {"p", 1},
+        {"s", 16},
+        {"t", 8},
+        {"v", 2},
+        {"oc", 4},
+        {"odepth", 1}}},
       {Version::Ps30,
-       {{"r", 32}, {"c", 224}, {"i", 16}, {"b", 16}, {"l", 2048}, {"p", 1}, {"al", 1},
-        {"s", 16}, {"v", 10},
-        {"vpos", 1}, {"vface", 1}, {"oc", 4}, {"odepth", 1}}},
+       {{"r", 32},
+        {"c", 224},
+        {"i", 16},
+        {"b", 16},
+        {"l", 2048},
+        {"p", 1},
+        {"al", 1},
+        {"s", 16},
+        {"v", 10},
+        {"vpos", 1},
+        {"vface", 1},
+        {"oc", 4},
+        {"odepth", 1}}},
   };
   return counts.at(v);
 }
@@ -86,7 +144,8 @@ std::string to_string(Version v) {
 
 std::string version_list() {
   std::string out;
-  for (const VersionName& n : version_names()) out += (out.empty() ? "" : ", ") + std::string(n.token);
+  for (const VersionName& n : version_names())
+    out += (out.empty() ? "" : ", ") + std::string(n.token);
   return out;
 }
 

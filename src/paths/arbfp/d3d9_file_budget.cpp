@@ -32,25 +32,40 @@ std::vector<budget::Resource> d3d9_figures(const Counts& c, Version version,
                    "= fxc's TEX",
                    check(fxc ? fxc->texture : std::nullopt, c.texture)});
   } else {
-    out.push_back({"alu", "ALU instructions", c.arithmetic, {},
+    out.push_back({"alu",
+                   "ALU instructions",
+                   c.arithmetic,
+                   {},
                    "arithmetic slots by the version's instruction table; = fxc's ALU",
                    check(fxc ? std::optional<int>(fxc->arithmetic) : std::nullopt, c.arithmetic)});
   }
   out.push_back({"instruction_slots", "instruction slots", c.slots(), limit_of(p.instructions),
                  "arithmetic + texture + flow-control slots",
                  check(fxc ? fxc->slots : std::nullopt, c.slots())});
-  out.push_back({"temporaries", "temporaries", c.temporaries, limit_of(p.temporaries),
-                 "r0..rN used: N + 1", {}});
-  out.push_back({"parameters", "constants", c.constants, limit_of(p.parameters),
+  out.push_back({"temporaries",
+                 "temporaries",
+                 c.temporaries,
+                 limit_of(p.temporaries),
+                 "r0..rN used: N + 1",
+                 {}});
+  out.push_back({"parameters",
+                 "constants",
+                 c.constants,
+                 limit_of(p.parameters),
                  std::string("c0..cN read or defined: N + 1") +
                      (c.relative_constants ? " (relatively addressed: from the base index)" : ""),
                  {}});
-  out.push_back({"attributes", pixel && !model3 ? "texture coordinates (t#)" : "inputs (v#)",
+  out.push_back({"attributes",
+                 pixel && !model3 ? "texture coordinates (t#)" : "inputs (v#)",
                  c.inputs,
-                 limit_of(p.attributes), "distinct input registers declared or read", {}});
+                 limit_of(p.attributes),
+                 "distinct input registers declared or read",
+                 {}});
   out.push_back({"samplers", "samplers", c.samplers, {}, "distinct s# declared or sampled", {}});
   if (pixel) {
-    out.push_back({"dependent_reads", "dependent-read levels", c.dependent_levels,
+    out.push_back({"dependent_reads",
+                   "dependent-read levels",
+                   c.dependent_levels,
                    limit_of(p.dependent_levels),
                    "1 + the highest dependent order of a texture read (texld - ps_2_0: first "
                    "order reads an r# or rewrites its destination, n-th depends on an (n-1)-th)",

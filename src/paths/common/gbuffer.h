@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/parallel_rows.h"
-#include "paths/common/pixel_run.h"
 #include "gl/program.h"
+#include "paths/common/pixel_run.h"
 #include "paths/path.h"
 
 namespace lt {

@@ -34,8 +34,8 @@ std::string cause(const PassOutcome& p) {
   if (p.depth_failed == 0)
     return "all " + count(p.pixels, "covered pixel", "covered pixels") + " failed the alpha test";
   return "all " + count(p.pixels, "covered pixel", "covered pixels") + " failed the depth test (" +
-         std::to_string(p.depth_failed) + ") or the alpha test (" +
-         std::to_string(p.alpha_failed) + ")";
+         std::to_string(p.depth_failed) + ") or the alpha test (" + std::to_string(p.alpha_failed) +
+         ")";
 }
 
 }  // namespace

@@ -13,16 +13,16 @@ namespace lt {
 
 // What became of one pass's triangles and pixels in one frame.
 struct PassOutcome {
-  std::string path;                // "gx"
-  std::string pass;                // "pass 0 (material jade: generated)"
-  std::size_t triangles = 0;       // submitted
-  std::size_t culled = 0;          // removed by the cull mode
-  std::size_t outside = 0;         // rejected or clipped away: wholly outside the view volume
-  std::size_t pixels = 0;          // covered by the triangles left
-  std::size_t depth_failed = 0;    // of those, failed the depth test
-  std::size_t alpha_failed = 0;    // passed it, failed the alpha test
-  std::size_t written = 0;         // reached the framebuffer
-  std::string cull_mode;           // the mode in force and its source, for the culled cause
+  std::string path;              // "gx"
+  std::string pass;              // "pass 0 (material jade: generated)"
+  std::size_t triangles = 0;     // submitted
+  std::size_t culled = 0;        // removed by the cull mode
+  std::size_t outside = 0;       // rejected or clipped away: wholly outside the view volume
+  std::size_t pixels = 0;        // covered by the triangles left
+  std::size_t depth_failed = 0;  // of those, failed the depth test
+  std::size_t alpha_failed = 0;  // passed it, failed the alpha test
+  std::size_t written = 0;       // reached the framebuffer
+  std::string cull_mode;         // the mode in force and its source, for the culled cause
   // GL's paths count fragments alone (first_frame_fragments.h): `written` is the samples that
   // passed, the triangles' fates are GL's and unknown.
   bool fragments_only = false;

@@ -211,8 +211,7 @@ class GxPath final : public Path {
         }
       }
       triangle_counts_.add(draw_counts);
-      add_outcome(d, state, draw_counts, draw_pixels,
-                  outcomes[static_cast<size_t>(d.pass)]);
+      add_outcome(d, state, draw_counts, draw_pixels, outcomes[static_cast<size_t>(d.pass)]);
     }
     // The scene is static: the first frame says what every frame would.
     if (!outcomes_checked_) {

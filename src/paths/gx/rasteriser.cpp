@@ -177,8 +177,7 @@ void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixe
   raster_pixel_attributes(t, x, y, round_colors, out);
 }
 
-void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors,
-                             RasterPixel& out) {
+void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out) {
   for (int c = 0; c < t.channels; ++c) {
     for (int i = 0; i < 4; ++i) {
       const float v =

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "paths/common/cpu_shaded_path.h"
-#include "paths/half/half_shading_lanes.h"
 #include "paths/half/half_shading.h"
+#include "paths/half/half_shading_lanes.h"
 
 namespace lt {
 

@@ -4,6 +4,8 @@
 // the re-inclusion needs a translation unit of its own.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "paths/half/half_shading_lanes.cpp"
+#include "paths/half/half_shading_lanes.h"
+
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
@@ -12,7 +14,6 @@
 #include "core/error.h"
 #include "model/texture_sampling.h"
 #include "paths/half/half_rounding-inl.h"
-#include "paths/half/half_shading_lanes.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace lt::fp16::HWY_NAMESPACE {
@@ -69,7 +70,9 @@ class Lanes16 {
   V3 mul(const V3& a, const V3& b) const { return {mul(a.x, b.x), mul(a.y, b.y), mul(a.z, b.z)}; }
   V3 mul(const V3& a, V s) const { return {mul(a.x, s), mul(a.y, s), mul(a.z, s)}; }
   // DP3 as three rounded products and two rounded sums.
-  V dot(const V3& a, const V3& b) const { return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z)); }
+  V dot(const V3& a, const V3& b) const {
+    return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
+  }
   static V3 neg(const V3& a) { return {hn::Neg(a.x), hn::Neg(a.y), hn::Neg(a.z)}; }
 
   // v * rsqrt(dot(v, v)), or `fallback` in the lanes whose squared length is not a normal half
@@ -138,8 +141,9 @@ class Lanes16 {
 
 // t^p per mode (the seed's pow(saturate(...), iLTPower)).
 V lobe(const Lanes16& f, const MaterialH& m, PowMode mode, V t) {
-  if (mode == PowMode::Unguarded) return f.exp2(f.mul(Lanes16::k(m.power), f.log2(t)));  // 0^0 = NaN
-  if (float(m.power) == 0) return Lanes16::k(1.0f);  // 0^0 := 1: the lobe is flat
+  if (mode == PowMode::Unguarded)
+    return f.exp2(f.mul(Lanes16::k(m.power), f.log2(t)));  // 0^0 = NaN
+  if (float(m.power) == 0) return Lanes16::k(1.0f);        // 0^0 := 1: the lobe is flat
   if (mode == PowMode::Sg) {
     // exp2(t * n' - n') as MUL then SUB (t <= 1, so the argument is <= 0: exp2 cannot overflow
     // half's 16; for large n' it underflows to 0 like pow).
@@ -192,12 +196,13 @@ V3 shade_lanes(const SceneH& scene, const MaterialH& m, PowMode mode, const Pixe
       const V dist = f.sqrt(f.dot(d, d));
       Ld = f.normalize(d, N);  // guarded: a light "at" the point lights it head-on (L = N)
       // kc + kl*dist + kq*dist^2, step by step.
-      const V den = f.add(f.add(A::k(l.kc), f.mul(A::k(l.kl), dist)),
-                          f.mul(f.mul(A::k(l.kq), dist), dist));
+      const V den =
+          f.add(f.add(A::k(l.kc), f.mul(A::k(l.kl), dist)), f.mul(f.mul(A::k(l.kq), dist), dist));
       // Guarded: att <= 65504 (denominator floored at 1/65504, see half_shading.cpp).
       // Unguarded: 1/0 = Inf, and anything below 1/65504 overflows to Inf too.
       att = f.div(A::k(1.0f), den);
-      if (f.guarded()) att = hn::IfThenElse(hn::Gt(den, A::k(1.0f / kHalfMax)), att, A::k(kHalfMax));
+      if (f.guarded())
+        att = hn::IfThenElse(hn::Gt(den, A::k(1.0f / kHalfMax)), att, A::k(kHalfMax));
     }
     const V diffuse = f.mul(att, A::max0(f.dot(N, Ld)));
     V3 term{diffuse, diffuse, diffuse};
@@ -218,9 +223,9 @@ V3 shade_lanes(const SceneH& scene, const MaterialH& m, PowMode mode, const Pixe
       const V3 lt_dot = f.mul(lobe3, A::k(l.scale));
       // half3 fLT = fLightAttenuation * (fLTDot + fLTAmbient) * fLTThickness;
       const V ambient = A::k(m.ambient);
-      const V3 lt = f.mul(T, V3{f.mul(att, f.add(lt_dot.x, ambient)),
-                                f.mul(att, f.add(lt_dot.y, ambient)),
-                                f.mul(att, f.add(lt_dot.z, ambient))});
+      const V3 lt =
+          f.mul(T, V3{f.mul(att, f.add(lt_dot.x, ambient)), f.mul(att, f.add(lt_dot.y, ambient)),
+                      f.mul(att, f.add(lt_dot.z, ambient))});
       term = f.add(term, lt);
     }
     // outColor.rgb += cDiffuseAlbedo * cLightDiffuse * fLT; (albedo applied once, below, in the
@@ -264,7 +269,9 @@ void SampleOne(const TextureH& texture, glm::dvec2 uv, bool guarded, float* rgb)
   rgb[2] = hn::GetLane(s.z);
 }
 
-int64_t Target() { return HWY_TARGET; }
+int64_t Target() {
+  return HWY_TARGET;
+}
 
 }  // namespace lt::fp16::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -292,7 +299,9 @@ void round_to_half(const float* in, float* out, std::size_t n) {
   HWY_DYNAMIC_DISPATCH(RoundToHalfArray)(in, out, n);
 }
 
-std::string simd_target() { return hwy::TargetName(HWY_DYNAMIC_DISPATCH(Target)()); }
+std::string simd_target() {
+  return hwy::TargetName(HWY_DYNAMIC_DISPATCH(Target)());
+}
 
 }  // namespace lt::fp16
 #endif  // HWY_ONCE

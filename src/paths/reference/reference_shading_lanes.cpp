@@ -4,6 +4,8 @@
 // operation is that line's, since a different order would round differently.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "paths/reference/reference_shading_lanes.cpp"
+#include "paths/reference/reference_shading_lanes.h"
+
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
@@ -12,7 +14,6 @@
 #include "core/error.h"
 #include "model/texture_sampling.h"
 #include "model/translucency.h"
-#include "paths/reference/reference_shading_lanes.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace lt::reference::HWY_NAMESPACE {
@@ -112,8 +113,8 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
   // shade: N = len >= kMinNormalLength ? sp.N / len : 0.
   const V3 normal = widen3(run.normal, o);
   const V normal_length = length(normal);
-  const V3 N = select(hn::Ge(normal_length, k(model::kMinNormalLength)), div(normal, normal_length),
-                      zero3);
+  const V3 N =
+      select(hn::Ge(normal_length, k(model::kMinNormalLength)), div(normal, normal_length), zero3);
   // T = thickness(tr, vertex_thickness, uv): source * tint.
   V3 T = zero3;
   const Translucency* tr = material.translucency ? &*material.translucency : nullptr;
@@ -170,9 +171,9 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
         // std::pow only where lobe() calls it: a lane whose t <= 0 takes 0 below whatever
         // stands in it (a NaN t, which is not <= 0, still goes through std::pow as in lobe()).
         const double p = tr->power;
-        const V lobe = hn::IfThenElse(
-            hn::Le(t, zero), zero,
-            each_lane(t, [p](double x) { return x <= 0 ? 0.0 : std::pow(x, p); }));
+        const V lobe =
+            hn::IfThenElse(hn::Le(t, zero), zero,
+                           each_lane(t, [p](double x) { return x <= 0 ? 0.0 : std::pow(x, p); }));
         lobe3 = {lobe, lobe, lobe};
       }
       // term += att * (lobe * scale + ambient) * T.
@@ -192,8 +193,7 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
   return mul(albedo, add(k(scene.ambient_light), sum));
 }
 
-void ShadeRun(const Scene& scene, const Material& material, const PixelRun& run,
-              ShadedRun& out) {
+void ShadeRun(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out) {
   const D d;
   const hn::Rebind<float, D> df;
   const size_t n = hn::Lanes(d);
@@ -214,8 +214,7 @@ namespace lt::reference {
 
 HWY_EXPORT(ShadeRun);
 
-void shade_run(const Scene& scene, const Material& material, const PixelRun& run,
-               ShadedRun& out) {
+void shade_run(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out) {
   HWY_DYNAMIC_DISPATCH(ShadeRun)(scene, material, run, out);
 }
 

@@ -18,7 +18,6 @@ namespace lt::reference {
 // with model::shade(scene, material, point) narrowed to float, the point being pixel i's
 // G-buffer values widened to double and V = model::view_vector(scene.camera, P). `scene`'s
 // light positions are camera-relative, as the G-buffer's.
-void shade_run(const Scene& scene, const Material& material, const PixelRun& run,
-               ShadedRun& out);
+void shade_run(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out);
 
 }  // namespace lt::reference
