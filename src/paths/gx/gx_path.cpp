@@ -83,13 +83,15 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
   // stored as that format's (Dolphin reinterprets them [DSW SWEfbInterface.cpp GetPixelColor]),
   // which the emulator does not model; a game sets its format once.
   const u8 format = out.pixel_format(scene).pixel;
+  auto name = [](u8 f) {
+    return std::string(GxConst<NameGroup::PixelFormat>::with_value(f).name());
+  };
   for (const MaterialDraw& d : out.draws(scene)) {
     const PassProgram& p = out.by_material[d.material][static_cast<size_t>(d.pass)];
     if (p.state.pixel_format.pixel != format)
       throw InputError(out.file.file, p.name,
-                       "GX_SetPixelFmt: pixel format " +
-                           std::to_string(p.state.pixel_format.pixel) +
-                           " where the frame's first pass draws in " + std::to_string(format) +
+                       "GX_SetPixelFmt: " + name(p.state.pixel_format.pixel) +
+                           " where the frame's first pass draws in " + name(format) +
                            " (one EFB format a frame is modelled)");
   }
   return out;
