@@ -3,11 +3,14 @@
 // seeded random register states -- every colour and alpha selector, konst selector, swap table,
 // channel, fetch pattern, regular and compare stage, scale, bias, clamp, destination, and fields
 // wider than the hardware's -- and several pixels per state through one plan and one value array
-// (as a worker reuses them), the two must agree bit for bit.
+// (as a worker reuses them), the two must agree bit for bit, a pixel a lane, on every vector
+// target the machine runs.
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "paths/gx/tev.h"
 #include "paths/gx/tev_plan.h"
@@ -81,6 +84,8 @@ TEST(GxTevPlan, MatchesRunTevOverRandomStatesAndPixels) {
   std::array<int, 4> color_compare_modes{}, alpha_compare_modes{};
   int regular = 0, unclamped = 0, fetching = 0;
 
+  const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
   for (int program = 0; program < 2000; ++program) {
     const TevState st = plan_random_state(rng);
     const TevPlan plan(st);
@@ -99,25 +104,41 @@ TEST(GxTevPlan, MatchesRunTevOverRandomStatesAndPixels) {
       unclamped += !sg.color.clamp;
       fetching += sg.texmap != kTexMapNull;
     }
-    for (int pixel = 0; pixel < 8; ++pixel) {
-      // The pixel stage writes the channels and only the fetching stages' texels; the other
-      // texels run_tev is given are noise it must ignore.
-      TevPixelInputs in;
+    // A pixel a lane. The pixel stage writes the channels and only the fetching stages'
+    // texels; the other texels run_tev is given are noise it must ignore.
+    std::array<TevPixelInputs, kPixelLanes> in;
+    for (int lane = 0; lane < kPixelLanes; ++lane) {
       for (int c = 0; c < kMaxChannels; ++c) {
-        in.channels[static_cast<size_t>(c)] = rng.color();
-        values.set_channel(c, in.channels[static_cast<size_t>(c)]);
+        const Color8 colour = rng.color();
+        in[lane].channels[static_cast<size_t>(c)] = colour;
+        for (int i = 0; i < 4; ++i) values.channel(c, i)[lane] = colour[i];
       }
       for (int n = 0; n < kMaxTevStages; ++n) {
-        in.texels[static_cast<size_t>(n)] = rng.color();
+        in[lane].texels[static_cast<size_t>(n)] = rng.color();
         if (st.stages[static_cast<size_t>(n)].texmap != kTexMapNull)
-          values.set_texel(n, in.texels[static_cast<size_t>(n)]);
+          values.set_texel(n, lane, in[lane].texels[static_cast<size_t>(n)]);
       }
-      const ColorS10 want = run_tev(st, in);
-      const ColorS10 got = plan.run(values);
-      ASSERT_EQ(got, want) << "program " << program << " pixel " << pixel << ": plan "
-                           << describe(got) << ", run_tev " << describe(want);
     }
+    // Every target on the same values, twice (a worker reuses its values: run() must reset what
+    // it wrote), each lane against run_tev.
+    for (std::int64_t target : targets) {
+      hwy::SetSupportedTargetsForTest(target);
+      for (int repeat = 0; repeat < 2; ++repeat) {
+        TevPlan::Output out;
+        plan.run(values, out);
+        for (int lane = 0; lane < kPixelLanes; ++lane) {
+          const ColorS10 want = run_tev(st, in[lane]);
+          const ColorS10 got = out.at(lane);
+          ASSERT_EQ(got, want) << hwy::TargetName(target) << " program " << program << " lane "
+                               << lane << ": plan " << describe(got) << ", run_tev "
+                               << describe(want);
+        }
+      }
+    }
+    hwy::SetSupportedTargetsForTest(0);
   }
+  // Every target the machine runs was compared (the emulated one always is).
+  EXPECT_GE(targets.size(), 2u);
   for (size_t s = 0; s < color_selectors.size(); ++s)
     EXPECT_GT(color_selectors[s], 100) << "colour selector " << s;
   for (size_t s = 0; s < alpha_selectors.size(); ++s)
@@ -148,8 +169,11 @@ TEST(GxTevPlan, IsASnapshotOfItsState) {
   TevPlan::Values a, b;
   before.start(a);
   after.start(b);
-  EXPECT_EQ(before.run(a), (ColorS10{255, 255, 255, 128}));
-  EXPECT_EQ(after.run(b), (ColorS10{32, 32, 32, 128}));
+  TevPlan::Output out_a, out_b;
+  before.run(a, out_a);
+  after.run(b, out_b);
+  EXPECT_EQ(out_a.at(0), (ColorS10{255, 255, 255, 128}));
+  EXPECT_EQ(out_b.at(kPixelLanes - 1), (ColorS10{32, 32, 32, 128}));
 }
 
 }  // namespace

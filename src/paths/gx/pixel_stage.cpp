@@ -1,9 +1,12 @@
 #include "paths/gx/pixel_stage.h"
 
 #include <algorithm>
+#include <iterator>
+#include <memory>
 #include <vector>
 
 #include "core/parallel_rows.h"
+#include "paths/gx/raster_span.h"
 #include "paths/gx/tev_plan.h"
 
 namespace lt::gx {
@@ -49,50 +52,81 @@ struct DrawPlan {
   }
 };
 
-// The TEV inputs of one pixel that passed early z: its channel colours and its stages' texels.
-void load_tev_inputs(const DrawPlan& plan, const RasterPixel& px, TevPlan::Values& values) {
-  for (int c = 0; c < kMaxChannels; ++c) values.set_channel(c, px.color[static_cast<size_t>(c)]);
+// What a worker reuses from one run of pixels to the next: the rasterised values and the TEV's
+// inputs and output, each a lane a pixel. Made once per band: the channels and texture
+// coordinates beyond the draw's counts stay zero, as the scalar pixel's did (every triangle of a
+// draw has the state's counts).
+struct Lanes {
+  SpanValues raster;
+  TevPlan::Values tev;
+  TevPlan::Output out;
+};
+
+// Pixels x .. x + n - 1 of row y of triangle t (n <= kPixelLanes), as [DSW Draw] then [DSW
+// Tev::Draw] take each: the depths of all of them first (the pixels are distinct, so no pixel's
+// test sees another's write), then the colours, texels and TEV of those that passed, in lanes,
+// then each one's alpha test and blend.
+void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s32 x, s32 y, int n,
+               bool round_colors, Efb& efb, Lanes& lanes, PixelCounts& counts) {
+  const GxState& st = *p.state;
+  const size_t row = static_cast<size_t>(y) * static_cast<size_t>(efb.width);
+  counts.covered += static_cast<size_t>(n);
+  span_depths(t, x, y, lanes.raster);
+  int passed[kPixelLanes];
+  int num_passed = 0;
+  for (int i = 0; i < n; ++i) {
+    const size_t index = row + static_cast<size_t>(x + i);
+    efb.covered[index] = 1;
+    // GX_Init's GX_SetZCompLoc(GX_TRUE) puts the depth test before texturing [DSW Draw, "early
+    // z"; BPMemory.h GetEmulatedZ], so a pixel the alpha test then discards has written its
+    // depth. With the test off nothing is compared or written.
+    if (st.z.enable) {
+      u32& depth = efb.depth[index];
+      const u32 z = lanes.raster.z[i];
+      if (!z_compare(st.z.func, z, depth)) {
+        ++counts.z_failed;
+        continue;
+      }
+      if (st.z.update) depth = z & 0xffffff;  // [DSW SetPixelDepth]: 24 bits kept
+    }
+    passed[num_passed++] = i;
+  }
+  // A pixel that failed the depth test needs no colour, texel or TEV.
+  if (num_passed == 0) return;
+  span_attributes(t, x, y, round_colors, lanes.raster);
+  for (int c = 0; c < kMaxChannels; ++c)
+    for (int i = 0; i < 4; ++i)
+      std::copy(std::begin(lanes.raster.color[c][i]), std::end(lanes.raster.color[c][i]),
+                lanes.tev.channel(c, i));
   for (int k = 0; k < plan.num_fetches; ++k) {
     const DrawPlan::Fetch& f = plan.fetches[static_cast<size_t>(k)];
-    const auto& uv = px.uv[f.texcoord];
-    values.set_texel(f.stage, f.texture ? sample_texture(*f.texture, uv[0], uv[1]) : Color8{});
-  }
-}
-
-// One covered pixel, as [DSW Draw] then [DSW Tev::Draw] take it.
-void shade_pixel(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s32 x, s32 y,
-                 bool round_colors, size_t index, Efb& efb, RasterPixel& px,
-                 TevPlan::Values& values, PixelCounts& counts) {
-  const GxState& st = *p.state;
-  ++counts.covered;
-  px.z = raster_pixel_depth(t, x, y);
-  // GX_Init's GX_SetZCompLoc(GX_TRUE) puts the depth test before texturing [DSW Draw, "early
-  // z"; BPMemory.h GetEmulatedZ], so a pixel the alpha test then discards has written its
-  // depth. With the test off nothing is compared or written.
-  if (st.z.enable) {
-    u32& depth = efb.depth[index];
-    if (!z_compare(st.z.func, px.z, depth)) {
-      ++counts.z_failed;
-      return;
+    const auto& uv = lanes.raster.uv[f.texcoord];
+    Color8 texels[kPixelLanes] = {};
+    if (f.texture) {
+      s32 u[kPixelLanes], v[kPixelLanes];
+      for (int j = 0; j < num_passed; ++j) {
+        u[j] = uv[0][passed[j]];
+        v[j] = uv[1][passed[j]];
+      }
+      sample_texture_at(*f.texture, u, v, num_passed, texels);
     }
-    if (st.z.update) depth = px.z & 0xffffff;  // [DSW SetPixelDepth]: 24 bits kept
+    for (int j = 0; j < num_passed; ++j) lanes.tev.set_texel(f.stage, passed[j], texels[j]);
   }
-  // A pixel that failed the depth test needs no colour or texture coordinate. Every triangle of
-  // a draw has the state's channel and texgen counts, so the entries raster_pixel leaves alone
-  // (beyond those counts) stay what they were whichever pixels skip this.
-  raster_pixel_attributes(t, x, y, round_colors, px);
-  load_tev_inputs(plan, px, values);
-  counts.stage_pixels += static_cast<size_t>(st.tev.num_stages);
-  const Color8 src = tev_to_efb(plan.tev.run(values));
-  if (!alpha_test(st.alpha_compare, src.a)) {
-    ++counts.alpha_failed;
-    return;
+  counts.stage_pixels += static_cast<size_t>(num_passed) * static_cast<size_t>(st.tev.num_stages);
+  plan.tev.run(lanes.tev, lanes.out);
+  for (int j = 0; j < num_passed; ++j) {
+    const int i = passed[j];
+    const Color8 src = tev_to_efb(lanes.out.at(i));
+    if (!alpha_test(st.alpha_compare, src.a)) {
+      ++counts.alpha_failed;
+      continue;
+    }
+    // [DSW BlendTev]: the EFB's colour as it reads back, blended, dithered and stored in the
+    // frame's pixel format (GX_Init's colour and alpha updates on, destination alpha off).
+    Color8& dst = efb.color[row + static_cast<size_t>(x + i)];
+    dst = efb_written(efb.pixel_format, st.dither, x + i, y, blend(st.blend, src, dst));
+    ++counts.written;
   }
-  // [DSW BlendTev]: the EFB's colour as it reads back, blended, dithered and stored in the
-  // frame's pixel format (GX_Init's colour and alpha updates on, destination alpha off).
-  Color8& dst = efb.color[index];
-  dst = efb_written(efb.pixel_format, st.dither, x, y, blend(st.blend, src, dst));
-  ++counts.written;
 }
 
 // The triangles that reach each band of rows, in draw order, as one list per band (offsets into
@@ -144,21 +178,19 @@ PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelPr
   for_each_row_in_parallel(bands, [&](int band, unsigned worker) {
     PixelCounts& counts = per_worker[worker];
     const s32 y0 = band * kBandRows, y1 = std::min(efb.height, y0 + kBandRows);
-    RasterPixel px;
-    TevPlan::Values values;
-    plan.tev.start(values);
+    // Per band, not per worker: 10 KB a band is nothing beside its pixels, and a fresh one holds
+    // the zeros the draw's unused channels must read.
+    auto lanes = std::make_unique<Lanes>();
+    plan.tev.start(lanes->tev);
     const size_t band_index = static_cast<size_t>(band);
     for (u32 k = lists.first[band_index]; k < lists.first[band_index + 1]; ++k) {
       const Triangle& t = triangles[lists.items[k]];
       for (s32 y = std::max(y0, t.min_y); y < std::min(y1, t.max_y); ++y) {
         s32 xb, xe;
         covered_span(t, y, xb, xe);
-        for (s32 x = xb; x < xe; ++x) {
-          const size_t index =
-              static_cast<size_t>(y) * static_cast<size_t>(efb.width) + static_cast<size_t>(x);
-          efb.covered[index] = 1;
-          shade_pixel(program, plan, t, x, y, round_colors, index, efb, px, values, counts);
-        }
+        for (s32 x = xb; x < xe; x += kPixelLanes)
+          shade_run(program, plan, t, x, y, std::min<s32>(kPixelLanes, xe - x), round_colors, efb,
+                    *lanes, counts);
       }
     }
   });

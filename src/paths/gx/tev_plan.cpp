@@ -1,9 +1,10 @@
 // The TEV state decoded once per draw (tev_plan.h). The decoding mirrors run_tev's selectors
-// (tev.cpp color_source, alpha_source, ras_color, the texel swizzle); the arithmetic is the same
-// code (tev_arith.h).
+// (tev.cpp color_source, alpha_source, ras_color, the texel swizzle); the arithmetic, in lanes, is
+// tev_plan_lanes.cpp, each step named after its scalar line in tev_arith.h.
 #include "paths/gx/tev_plan.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace lt::gx {
 
@@ -134,44 +135,9 @@ TevPlan::TevPlan(const TevState& state) {
 }
 
 void TevPlan::start(Values& values) const {
-  std::copy(constants_.begin(), constants_.end(), values.v.begin() + kZero);
-}
-
-ColorS10 TevPlan::run(Values& values) const {
-  s32* v = values.v.data();
-  std::copy(registers_.begin(), registers_.end(), v + kRegisters);
-  for (int n = 0; n < num_stages_; ++n) {
-    const Stage& s = stages_[static_cast<size_t>(n)];
-    const Combiner& cc = s.color;
-    const Combiner& ac = s.alpha;
-    // Both combiners read before either writes (tev.cpp run_tev).
-    tev_arith::Operands col[3];
-    for (size_t i = 0; i < 3; ++i)
-      col[i] = tev_arith::operands(v[cc.a[i]], v[cc.b[i]], v[cc.c[i]], v[cc.d[i]]);
-    const tev_arith::Operands alp =
-        tev_arith::operands(v[ac.a[0]], v[ac.b[0]], v[ac.c[0]], v[ac.d[0]]);
-
-    s32 rgb[3];
-    if (!cc.compare) {
-      for (int i = 0; i < 3; ++i)
-        rgb[i] = tev_arith::apply_regular(cc.regular, col[i].a, col[i].b, col[i].c, col[i].d);
-    } else {
-      for (int i = 0; i < 3; ++i)
-        rgb[i] = tev_arith::compare_result(
-            col[i], tev_arith::color_condition(cc.op, cc.mode, col, i), cc.clamp);
-    }
-    const s32 alpha =
-        !ac.compare ? tev_arith::apply_regular(ac.regular, alp.a, alp.b, alp.c, alp.d)
-                    : tev_arith::compare_result(
-                          alp, tev_arith::alpha_condition(ac.op, ac.mode, col, alp), ac.clamp);
-
-    s32* cdst = v + kRegisters + 4 * cc.dest;
-    for (int i = 0; i < 3; ++i) cdst[i] = rgb[i];
-    v[kRegisters + 4 * ac.dest + 3] = alpha;
-  }
-  const s32* c = v + kRegisters + 4 * out_color_;
-  return {static_cast<s16>(c[0]), static_cast<s16>(c[1]), static_cast<s16>(c[2]),
-          static_cast<s16>(v[kRegisters + 4 * out_alpha_ + 3])};
+  for (int k = kZero; k < kValues; ++k)
+    std::fill(std::begin(values.v[k]), std::end(values.v[k]),
+              constants_[static_cast<size_t>(k - kZero)]);
 }
 
 }  // namespace lt::gx

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/error.h"
 
@@ -87,32 +88,28 @@ size_t texel_offset(const TileShape& shape, int width, int x, int y) {
 // - RGBA8: a = byte 0, r = byte 1 of the texel's pair in the first half, g = byte 0 and b = byte
 //   1 of its pair in the second half (offset + 32).
 // Always inlined: the bilinear sampler calls it four times a pixel.
+// Texel (x, y) of a texture of format Format (tile_shape has refused the formats not modelled).
+template <u8 Format>
 [[gnu::always_inline]] inline Color8 fetch(const TextureObject& tex, const TileShape& shape, int x,
                                            int y) {
   const size_t o = texel_offset(shape, tex.width, x, y);
-  const std::vector<u8>& d = tex.data;
-  switch (tex.format) {
-    case kTexFormatI8:
-      return {d[o], d[o], d[o], d[o]};
-    case kTexFormatIA8:
-      return {d[o + 1], d[o + 1], d[o + 1], d[o]};
-    case kTexFormatRGB565: {
-      const int v = (d[o] << 8) | d[o + 1];
-      return {static_cast<u8>(expand5((v >> 11) & 0x1f)), static_cast<u8>(expand6((v >> 5) & 0x3f)),
-              static_cast<u8>(expand5(v & 0x1f)), 255};
-    }
-    default:  // RGBA8 (tile_shape refused the rest)
-      return {d[o + 1], d[o + 32], d[o + 33], d[o]};
+  const u8* d = tex.data.data();
+  if constexpr (Format == kTexFormatI8) {
+    return {d[o], d[o], d[o], d[o]};
+  } else if constexpr (Format == kTexFormatIA8) {
+    return {d[o + 1], d[o + 1], d[o + 1], d[o]};
+  } else if constexpr (Format == kTexFormatRGB565) {
+    const int v = (d[o] << 8) | d[o + 1];
+    return {static_cast<u8>(expand5((v >> 11) & 0x1f)), static_cast<u8>(expand6((v >> 5) & 0x3f)),
+            static_cast<u8>(expand5(v & 0x1f)), 255};
+  } else {
+    static_assert(Format == kTexFormatRGBA8);
+    return {d[o + 1], d[o + 32], d[o + 33], d[o]};
   }
 }
 
-// An integer texel index wrapped into [0, size) [DSW TextureSampler.cpp WrapCoord]. REPEAT and
-// MIRROR use size - 1 as a mask, which assumes a power-of-two size (YAGCD, quoted there); with
-// another size they still land in range, just not evenly. Mode 3 behaves as CLAMP ("hardware
-// testing indicates", same function). int64 because u - 64 of an arbitrary s32 may not fit.
+// A tap's index wrapped by `mode` (checked by the caller: check_texture).
 [[gnu::always_inline]] inline std::int64_t wrap(std::int64_t i, u8 mode, int size) {
-  LT_CHECK(mode == kClamp || mode == kRepeat || mode == kMirror || mode == 3,
-           "wrap mode must be GX_CLAMP, GX_REPEAT, GX_MIRROR (or 3)");
   if (mode == kRepeat) return i & (size - 1);
   if (mode == kMirror) {
     // An odd repeat (bit `size` set) is reflected: ~i = -1 - i, so for a power-of-two size
@@ -219,23 +216,41 @@ std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u
   return row_major;
 }
 
-Color8 texel_at(const TextureObject& texture, int x, int y) {
-  LT_CHECK(x >= 0 && x < texture.width && y >= 0 && y < texture.height, "texel out of range");
+namespace {
+
+// What every sample of a texture relies on, checked once per call of sample_texture_at rather
+// than per texel.
+void check_texture(const TextureObject& texture) {
   LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
            "texture data must hold the whole tiles of its size");
-  return fetch(texture, tile_shape(texture.format), x, y);
+  for (u8 mode : {texture.wrap_s, texture.wrap_t})
+    LT_CHECK(mode == kClamp || mode == kRepeat || mode == kMirror || mode == 3,
+             "wrap mode must be GX_CLAMP, GX_REPEAT, GX_MIRROR (or 3)");
 }
 
-Color8 sample_texture(const TextureObject& texture, s32 u, s32 v) {
-  const TileShape shape = tile_shape(texture.format);
-  LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
-           "texture data must hold the whole tiles of its size");
+// One texture's format, picked once for a run of pixels.
+template <class Body>
+void with_format(u8 format, Body&& body) {
+  switch (format) {
+    case kTexFormatI8:
+      return body(std::integral_constant<u8, kTexFormatI8>{});
+    case kTexFormatIA8:
+      return body(std::integral_constant<u8, kTexFormatIA8>{});
+    case kTexFormatRGB565:
+      return body(std::integral_constant<u8, kTexFormatRGB565>{});
+    default:  // RGBA8 (tile_shape refuses the rest)
+      return body(std::integral_constant<u8, kTexFormatRGBA8>{});
+  }
+}
+
+template <u8 Format>
+Color8 sample_one(const TextureObject& texture, const TileShape& shape, s32 u, s32 v) {
   const int w = texture.width, h = texture.height;
   if (!texture.linear) {
     // Nearest: the texel containing (u, v), u >> 7 (flooring) [DSW SampleMip].
     const int x = static_cast<int>(wrap(std::int64_t{u} >> 7, texture.wrap_s, w));
     const int y = static_cast<int>(wrap(std::int64_t{v} >> 7, texture.wrap_t, h));
-    return fetch(texture, shape, x, y);
+    return fetch<Format>(texture, shape, x, y);
   }
   // Bilinear [DSW SampleMip]: the -64 (half a texel) moves the sample to texel centres; the
   // arithmetic shift floors negative coordinates; 7-bit weights, products summed in 14
@@ -247,13 +262,44 @@ Color8 sample_texture(const TextureObject& texture, s32 u, s32 v) {
   const int x1 = static_cast<int>(wrap((us >> 7) + 1, texture.wrap_s, w));
   const int y0 = static_cast<int>(wrap(vs >> 7, texture.wrap_t, h));
   const int y1 = static_cast<int>(wrap((vs >> 7) + 1, texture.wrap_t, h));
-  const Color8 t00 = fetch(texture, shape, x0, y0), t10 = fetch(texture, shape, x1, y0);
-  const Color8 t01 = fetch(texture, shape, x0, y1), t11 = fetch(texture, shape, x1, y1);
+  const Color8 t00 = fetch<Format>(texture, shape, x0, y0);
+  const Color8 t10 = fetch<Format>(texture, shape, x1, y0);
+  const Color8 t01 = fetch<Format>(texture, shape, x0, y1);
+  const Color8 t11 = fetch<Format>(texture, shape, x1, y1);
   const int w00 = (128 - fs) * (128 - ft), w10 = fs * (128 - ft);
   const int w01 = (128 - fs) * ft, w11 = fs * ft;
   Color8 out;
   for (int c = 0; c < 4; ++c)
     out[c] = static_cast<u8>((t00[c] * w00 + t10[c] * w10 + t01[c] * w01 + t11[c] * w11) >> 14);
+  return out;
+}
+
+}  // namespace
+
+Color8 texel_at(const TextureObject& texture, int x, int y) {
+  LT_CHECK(x >= 0 && x < texture.width && y >= 0 && y < texture.height, "texel out of range");
+  LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
+           "texture data must hold the whole tiles of its size");
+  const TileShape shape = tile_shape(texture.format);
+  Color8 out;
+  with_format(texture.format,
+              [&](auto format) { out = fetch<decltype(format)::value>(texture, shape, x, y); });
+  return out;
+}
+
+void sample_texture_at(const TextureObject& texture, const s32* u, const s32* v, int n,
+                       Color8* out) {
+  const TileShape shape = tile_shape(texture.format);
+  check_texture(texture);
+  with_format(texture.format, [&](auto format) {
+    for (int k = 0; k < n; ++k)
+      out[k] = sample_one<decltype(format)::value>(texture, shape, u[k], v[k]);
+  });
+}
+
+Color8 sample_texture(const TextureObject& texture, s32 u, s32 v) {
+  Color8 out;
+  sample_texture_at(texture, &u, &v, 1, &out);
   return out;
 }
 

@@ -40,11 +40,16 @@ size_t tiled_size(u8 format, int width, int height);
 std::vector<u8> to_tiles(u8 format, int width, int height, const std::vector<u8>& row_major);
 std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u8>& tiles);
 
-// The filtered texel at fixed-point (u, v) (s17.7, the rasteriser's: rasteriser.h raster_texcoord): bilinear with 7-bit weights and truncation, or
-// nearest (u >> 7), with each tap's index wrapped [DSW TextureSampler.cpp SampleMip, WrapCoord].
-// I8: (i, i, i, i); IA8: (i, i, i, a); RGB565: (r, g, b, 255) expanded to 8 bits by bit
-// replication; RGBA8: (r, g, b, a). Every component is filtered on its own.
+// The filtered texel at fixed-point (u, v) (s17.7, the rasteriser's: rasteriser.h raster_texcoord):
+// bilinear with 7-bit weights and truncation, or nearest (u >> 7), with each tap's index wrapped
+// [DSW TextureSampler.cpp SampleMip, WrapCoord]. I8: (i, i, i, i); IA8: (i, i, i, a); RGB565: (r,
+// g, b, 255) expanded to 8 bits by bit replication; RGBA8: (r, g, b, a). Every component is
+// filtered on its own.
 Color8 sample_texture(const TextureObject& texture, s32 u, s32 v);
+// sample_texture at n pixels: out[k] is the texel at (u[k], v[k]). The texture's format, tile
+// shape and checks are decoded once for all of them (the pixel stage's runs of pixels).
+void sample_texture_at(const TextureObject& texture, const s32* u, const s32* v, int n,
+                       Color8* out);
 
 // One unfiltered texel (x, y) of a tiled texture, decoded as sample_texture reads it.
 Color8 texel_at(const TextureObject& texture, int x, int y);
