@@ -52,10 +52,10 @@ struct DrawPlan {
   }
 };
 
-// What a worker reuses from one run of pixels to the next: the rasterised values and the TEV's
-// inputs and output, each a lane a pixel. Made once per band: the channels and texture
-// coordinates beyond the draw's counts stay zero, as the scalar pixel's did (every triangle of a
-// draw has the state's counts).
+// What a band reuses from one run of pixels to the next: the rasterised values and the TEV's
+// inputs and output, each a lane a pixel. Made zero once per band and never written beyond the
+// draw's channel and texgen counts (every triangle of a draw has the state's), so a stage that
+// reads a channel the draw does not light reads zero.
 struct Lanes {
   SpanValues raster;
   TevPlan::Values tev;
@@ -94,7 +94,8 @@ void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s
   // A pixel that failed the depth test needs no colour, texel or TEV.
   if (num_passed == 0) return;
   span_attributes(t, x, y, round_colors, lanes.raster);
-  for (int c = 0; c < kMaxChannels; ++c)
+  // The channels beyond the draw's count stay the zeros the band's Lanes began with.
+  for (int c = 0; c < t.channels; ++c)
     for (int i = 0; i < 4; ++i)
       std::copy(std::begin(lanes.raster.color[c][i]), std::end(lanes.raster.color[c][i]),
                 lanes.tev.channel(c, i));

@@ -87,7 +87,7 @@ void SpanDepths(const Triangle& t, s32 x, s32 y, SpanValues& out) {
   }
 }
 
-// raster_pixel_attributes.
+// raster_pixel's colours and texture coordinates (rasteriser.cpp raster_pixel_attributes).
 void SpanAttributes(const Triangle& t, s32 x, s32 y, bool round_colors, SpanValues& out) {
   const DF df;
   const DI di;

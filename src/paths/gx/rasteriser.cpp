@@ -168,13 +168,10 @@ void covered_span(const Triangle& t, s32 y, s32& x_begin, s32& x_end) {
   x_end = static_cast<s32>(std::max(lo, hi));
 }
 
+namespace {
+
 u32 raster_pixel_depth(const Triangle& t, s32 x, s32 y) {
   return raster_depth(slope_value(t.z, t.origin, x, y));
-}
-
-void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out) {
-  out.z = raster_pixel_depth(t, x, y);
-  raster_pixel_attributes(t, x, y, round_colors, out);
 }
 
 void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out) {
@@ -198,6 +195,13 @@ void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors,
         raster_texcoord(slope_value(s[0], t.origin, x, y) * projection),
         raster_texcoord(slope_value(s[1], t.origin, x, y) * projection)};
   }
+}
+
+}  // namespace
+
+void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out) {
+  out.z = raster_pixel_depth(t, x, y);
+  raster_pixel_attributes(t, x, y, round_colors, out);
 }
 
 }  // namespace lt::gx

@@ -157,12 +157,9 @@ struct RasterPixel {
 };
 
 // The values at covered pixel (x, y). `round_colors`: the shader backends' rounding of the colours
-// instead of the software renderer's narrowing (the :colors=round variant).
+// instead of the software renderer's narrowing (the :colors=round variant). The definition: the
+// pixel stage computes the same values a run of pixels at a time in vector lanes (raster_span.h),
+// and tests/gx_raster_span_test.cpp holds the two together.
 void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out);
-// raster_pixel in its two halves, for a caller that tests depth before it needs the rest (the
-// pixel stage's early z): the depth, and the colours and texture coordinates. Each value is a
-// function of (t, x, y) alone, so the halves give what raster_pixel gives.
-u32 raster_pixel_depth(const Triangle& t, s32 x, s32 y);
-void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out);
 
 }  // namespace lt::gx
