@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "model/texture_sampling.h"
 #include "model/translucency.h"
+#include "paths/reference/exact_pow-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace lt::reference::HWY_NAMESPACE {
@@ -90,14 +91,6 @@ V3 each_lane3(F f) {
   }
   return {hn::Load(D(), rgb[0]), hn::Load(D(), rgb[1]), hn::Load(D(), rgb[2])};
 }
-template <class F>
-V each_lane(V x, F f) {
-  alignas(64) double lanes[kPixelRunCapacity];
-  hn::Store(x, D(), lanes);
-  for (size_t i = 0; i < hn::Lanes(D()); ++i) lanes[i] = f(lanes[i]);
-  return hn::Load(D(), lanes);
-}
-
 V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run, size_t o) {
   const V zero = hn::Zero(D());
   const V3 zero3{zero, zero, zero};
@@ -168,12 +161,12 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
       } else if (tr->power == 0) {
         lobe3 = {k(1.0), k(1.0), k(1.0)};
       } else {
-        // std::pow only where lobe() calls it: a lane whose t <= 0 takes 0 below whatever
-        // stands in it (a NaN t, which is not <= 0, still goes through std::pow as in lobe()).
-        const double p = tr->power;
-        const V lobe =
-            hn::IfThenElse(hn::Le(t, zero), zero,
-                           each_lane(t, [p](double x) { return x <= 0 ? 0.0 : std::pow(x, p); }));
+        // std::pow's value only where lobe() calls it: a lane whose t <= 0 takes 0 below
+        // whatever stands in it (a NaN t, which is not <= 0, still goes through std::pow as in
+        // lobe()). Most lanes of a whole power skip the call (exact_pow-inl.h says why their
+        // value is std::pow's).
+        const auto positive = hn::Not(hn::Le(t, zero));
+        const V lobe = hn::IfThenElseZero(positive, ExactPow(D(), t, tr->power, positive));
         lobe3 = {lobe, lobe, lobe};
       }
       // term += att * (lobe * scale + ambient) * T.
@@ -206,6 +199,19 @@ void ShadeRun(const Scene& scene, const Material& material, const PixelRun& run,
   }
 }
 
+size_t ExactPowArray(const double* x, double p, double* out, size_t n) {
+  const D d;
+  size_t calls = 0;
+  size_t i = 0;
+  for (; i + hn::Lanes(d) <= n; i += hn::Lanes(d))
+    hn::StoreU(ExactPow(d, hn::LoadU(d, x + i), p, hn::FirstN(d, hn::Lanes(d)), &calls), d,
+               out + i);
+  const hn::CappedTag<double, 1> d1;
+  for (; i < n; ++i)
+    hn::StoreU(ExactPow(d1, hn::LoadU(d1, x + i), p, hn::FirstN(d1, 1), &calls), d1, out + i);
+  return calls;
+}
+
 }  // namespace lt::reference::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -213,6 +219,11 @@ HWY_AFTER_NAMESPACE();
 namespace lt::reference {
 
 HWY_EXPORT(ShadeRun);
+HWY_EXPORT(ExactPowArray);
+
+size_t exact_pow(const double* x, double p, double* out, size_t n) {
+  return HWY_DYNAMIC_DISPATCH(ExactPowArray)(x, p, out, n);
+}
 
 void shade_run(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out) {
   HWY_DYNAMIC_DISPATCH(ShadeRun)(scene, material, run, out);

@@ -1,8 +1,9 @@
 // The reference's shading of a run of covered pixels (paths/common/pixel_run.h) in double vector
 // lanes (Highway): model::shade (model/translucency.h) operation for operation, one pixel a lane,
 // so every lane's result is model::shade's to the bit (tests/reference_lanes_test.cpp holds the
-// two equal). What has no vector form that is the scalar one to the bit stays per lane: std::pow
-// for the lobe, and the texture samples (model::sample_bilinear, sample_ramp).
+// two equal). What has no vector form that is the scalar one to the bit stays per lane: the
+// texture samples (model::sample_bilinear, sample_ramp), and std::pow for the lobe where the
+// lanes cannot certify their own power's value (exact_pow-inl.h).
 //
 // One binary for every x86-64 machine: each Highway target is compiled and the best the CPU runs
 // is chosen at the first call (HWY_DYNAMIC_DISPATCH). The lanes use + - * / sqrt and compares
@@ -19,5 +20,9 @@ namespace lt::reference {
 // G-buffer values widened to double and V = model::view_vector(scene.camera, P). `scene`'s
 // light positions are camera-relative, as the G-buffer's.
 void shade_run(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out);
+
+// out[i] = std::pow(x[i], p) for i < n, through the lobe's lanes (exact_pow-inl.h) on the best
+// target the CPU runs; returns how many of the n went through std::pow itself.
+size_t exact_pow(const double* x, double p, double* out, size_t n);
 
 }  // namespace lt::reference
