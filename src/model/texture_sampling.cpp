@@ -9,6 +9,9 @@ namespace {
 
 // A texel index wrapped into [0, size - 1] by REPEAT (modulo) or MIRRORED_REPEAT (period 2 size).
 int wrap_index(long long i, int size, Wrap wrap) {
+  // Inside the texture both wraps leave the index as it is: the common case (a coordinate in
+  // [0, 1]), which so skips the two 64-bit divisions below (most of a map sample's time).
+  if (i >= 0 && i < size) return static_cast<int>(i);
   const long long period = wrap == Wrap::Repeat ? size : 2LL * size;
   long long m = i % period;
   if (m < 0) m += period;
