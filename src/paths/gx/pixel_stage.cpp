@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/parallel_rows.h"
-#include "paths/gx/raster_span.h"
+#include "paths/gx/raster_run.h"
 #include "paths/gx/tev_plan.h"
 
 namespace lt::gx {
@@ -57,25 +57,34 @@ struct DrawPlan {
 // draw's channel and texgen counts (every triangle of a draw has the state's), so a stage that
 // reads a channel the draw does not light reads zero.
 struct Lanes {
-  SpanValues raster;
+  RunPixels pixels;
+  RunValues raster;
   TevPlan::Values tev;
   TevPlan::Output out;
 };
 
-// Pixels x .. x + n - 1 of row y of triangle t (n <= kPixelLanes), as [DSW Draw] then [DSW
-// Tev::Draw] take each: the depths of all of them first (the pixels are distinct, so no pixel's
-// test sees another's write), then the colours, texels and TEV of those that passed, in lanes,
-// then each one's alpha test and blend.
-void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s32 x, s32 y, int n,
-               bool round_colors, Efb& efb, Lanes& lanes, PixelCounts& counts) {
+// The pixels of lanes.pixels (covered pixels of triangle t), as [DSW Draw] then [DSW Tev::Draw]
+// take each: the depths of all of them first (the pixels are distinct, so no pixel's test sees
+// another's write), then the colours, texels and TEV of those that passed, in lanes, then each
+// one's alpha test and blend. Empties lanes.pixels.
+void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, bool round_colors,
+               Efb& efb, Lanes& lanes, PixelCounts& counts) {
   const GxState& st = *p.state;
-  const size_t row = static_cast<size_t>(y) * static_cast<size_t>(efb.width);
+  RunPixels& pixels = lanes.pixels;
+  const int n = pixels.count;
+  if (n == 0) return;
+  pixels.pad();
+  pixels.count = 0;
+  const auto efb_index = [&](int i) {
+    return static_cast<size_t>(pixels.y[i]) * static_cast<size_t>(efb.width) +
+           static_cast<size_t>(pixels.x[i]);
+  };
   counts.covered += static_cast<size_t>(n);
-  span_depths(t, x, y, lanes.raster);
+  run_depths(t, pixels, lanes.raster);
   int passed[kPixelLanes];
   int num_passed = 0;
   for (int i = 0; i < n; ++i) {
-    const size_t index = row + static_cast<size_t>(x + i);
+    const size_t index = efb_index(i);
     efb.covered[index] = 1;
     // GX_Init's GX_SetZCompLoc(GX_TRUE) puts the depth test before texturing [DSW Draw, "early
     // z"; BPMemory.h GetEmulatedZ], so a pixel the alpha test then discards has written its
@@ -93,7 +102,7 @@ void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s
   }
   // A pixel that failed the depth test needs no colour, texel or TEV.
   if (num_passed == 0) return;
-  span_attributes(t, x, y, round_colors, lanes.raster);
+  run_attributes(t, pixels, round_colors, lanes.raster);
   // The channels beyond the draw's count stay the zeros the band's Lanes began with.
   for (int c = 0; c < t.channels; ++c)
     for (int i = 0; i < 4; ++i)
@@ -124,8 +133,9 @@ void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, s
     }
     // [DSW BlendTev]: the EFB's colour as it reads back, blended, dithered and stored in the
     // frame's pixel format (GX_Init's colour and alpha updates on, destination alpha off).
-    Color8& dst = efb.color[row + static_cast<size_t>(x + i)];
-    dst = efb_written(efb.pixel_format, st.dither, x + i, y, blend(st.blend, src, dst));
+    Color8& dst = efb.color[efb_index(i)];
+    dst = efb_written(efb.pixel_format, st.dither, pixels.x[i], pixels.y[i],
+                      blend(st.blend, src, dst));
     ++counts.written;
   }
 }
@@ -186,13 +196,18 @@ PixelCounts draw_triangles(const std::vector<Triangle>& triangles, const PixelPr
     const size_t band_index = static_cast<size_t>(band);
     for (u32 k = lists.first[band_index]; k < lists.first[band_index + 1]; ++k) {
       const Triangle& t = triangles[lists.items[k]];
+      // The triangle's covered pixels of the band, kPixelLanes a run across its rows (a small
+      // triangle covers a few a row); each triangle's runs end with it, so a pixel sees the
+      // triangles in draw order.
       for (s32 y = std::max(y0, t.min_y); y < std::min(y1, t.max_y); ++y) {
         s32 xb, xe;
         covered_span(t, y, xb, xe);
-        for (s32 x = xb; x < xe; x += kPixelLanes)
-          shade_run(program, plan, t, x, y, std::min<s32>(kPixelLanes, xe - x), round_colors, efb,
-                    *lanes, counts);
+        for (s32 x = xb; x < xe; ++x) {
+          lanes->pixels.add(x, y);
+          if (lanes->pixels.full()) shade_run(program, plan, t, round_colors, efb, *lanes, counts);
+        }
       }
+      shade_run(program, plan, t, round_colors, efb, *lanes, counts);
     }
   });
   PixelCounts total;

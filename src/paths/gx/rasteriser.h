@@ -158,8 +158,8 @@ struct RasterPixel {
 
 // The values at covered pixel (x, y). `round_colors`: the shader backends' rounding of the colours
 // instead of the software renderer's narrowing (the :colors=round variant). The definition: the
-// pixel stage computes the same values a run of pixels at a time in vector lanes (raster_span.h),
-// and tests/gx_raster_span_test.cpp holds the two together.
+// pixel stage computes the same values a run of pixels at a time in vector lanes (raster_run.h),
+// and tests/gx_raster_run_test.cpp holds the two together.
 void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out);
 
 }  // namespace lt::gx

@@ -1,4 +1,4 @@
-// The rasteriser's values in vector lanes (src/paths/gx/raster_span.h) against the scalar
+// The rasteriser's values in vector lanes (src/paths/gx/raster_run.h) against the scalar
 // functions they replace in the pixel stage (rasteriser.h raster_pixel, which
 // tests/dolphin_raster_test.cpp holds to Dolphin): over seeded random planes -- ordinary values,
 // and the cases the conversions must keep (NaN, infinities, values past 2^31, past 2^23 texture
@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include "paths/gx/raster_span.h"
+#include "paths/gx/raster_run.h"
 
 namespace lt::gx {
 namespace {
 
 // Raw mt19937 output (fully specified by the standard), not a distribution (implementation
 // defined), so the cases are the same with every standard library.
-struct SpanRng {
+struct RunRng {
   std::mt19937 engine;
   int below(int n) { return static_cast<int>(engine() % static_cast<unsigned>(n)); }
   float unit() { return static_cast<float>(engine() >> 8) / 16777216.0f; }  // [0, 1)
@@ -55,36 +56,46 @@ struct SpanRng {
   }
 };
 
-std::string where(std::int64_t target, int tri, s32 x, s32 y, int lane) {
+std::string where(std::int64_t target, int tri, const RunPixels& pixels, int lane) {
   return std::string(hwy::TargetName(target)) + " triangle " + std::to_string(tri) + " pixel (" +
-         std::to_string(x + lane) + ", " + std::to_string(y) + ")";
+         std::to_string(pixels.x[lane]) + ", " + std::to_string(pixels.y[lane]) + ")";
 }
 
-// Every lane of the run at (x, y) against raster_pixel, under both colour rules.
-void expect_span_is_scalar(const Triangle& t, s32 x, s32 y, std::int64_t target, int tri) {
+// Every lane of the run against raster_pixel at its pixel, under both colour rules.
+void expect_run_is_scalar(const Triangle& t, const RunPixels& pixels, std::int64_t target,
+                          int tri) {
   for (bool round_colors : {false, true}) {
-    SpanValues span;
-    span_depths(t, x, y, span);
-    span_attributes(t, x, y, round_colors, span);
+    RunValues run;
+    run_depths(t, pixels, run);
+    run_attributes(t, pixels, round_colors, run);
     for (int lane = 0; lane < kPixelLanes; ++lane) {
       RasterPixel want;
-      raster_pixel(t, x + lane, y, round_colors, want);
-      ASSERT_EQ(span.z[lane], want.z) << where(target, tri, x, y, lane);
+      raster_pixel(t, pixels.x[lane], pixels.y[lane], round_colors, want);
+      ASSERT_EQ(run.z[lane], want.z) << where(target, tri, pixels, lane);
       for (int c = 0; c < t.channels; ++c)
         for (int i = 0; i < 4; ++i)
-          ASSERT_EQ(span.color[c][i][lane], want.color[static_cast<size_t>(c)][i])
-              << where(target, tri, x, y, lane) << " channel " << c << " component " << i
+          ASSERT_EQ(run.color[c][i][lane], want.color[static_cast<size_t>(c)][i])
+              << where(target, tri, pixels, lane) << " channel " << c << " component " << i
               << (round_colors ? " (rounded)" : "");
       for (int g = 0; g < t.texgens; ++g)
         for (int k = 0; k < 2; ++k)
-          ASSERT_EQ(span.uv[g][k][lane], want.uv[static_cast<size_t>(g)][static_cast<size_t>(k)])
-              << where(target, tri, x, y, lane) << " texcoord " << g << "." << k;
+          ASSERT_EQ(run.uv[g][k][lane], want.uv[static_cast<size_t>(g)][static_cast<size_t>(k)])
+              << where(target, tri, pixels, lane) << " texcoord " << g << "." << k;
     }
   }
 }
 
-TEST(GxRasterSpan, LanesAreTheScalarOnRandomPlanes) {
-  SpanRng rng{std::mt19937(20261206)};
+void expect_run_is_scalar_on_every_target(const Triangle& t, RunPixels pixels,
+                                          const std::vector<std::int64_t>& targets, int tri) {
+  pixels.pad();
+  for (std::int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    expect_run_is_scalar(t, pixels, target, tri);
+  }
+}
+
+TEST(GxRasterRun, LanesAreTheScalarOnRandomPlanes) {
+  RunRng rng{std::mt19937(20261206)};
   const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
   // Every target the machine runs (the emulated one always is).
   ASSERT_GE(targets.size(), 2u);
@@ -101,17 +112,17 @@ TEST(GxRasterSpan, LanesAreTheScalarOnRandomPlanes) {
       for (Slope& s : gen) s = rng.slope(600.0f);
     if (rng.below(8) == 0) t.tex[0][2] = {0, 0, 0};  // q = 0: the projection is 1/w
     if (rng.below(8) == 0) t.w = {0, 0, 0};          // 1/w infinite
-    const s32 x = rng.below(640), y = rng.below(528);
-    for (std::int64_t target : targets) {
-      hwy::SetSupportedTargetsForTest(target);
-      expect_span_is_scalar(t, x, y, target, tri);
-    }
+    // Pixels anywhere in the EFB, some repeated: a run holds any pixels.
+    RunPixels pixels;
+    const int count = 1 + rng.below(kPixelLanes);
+    while (pixels.count < count) pixels.add(rng.below(640), rng.below(528));
+    expect_run_is_scalar_on_every_target(t, pixels, targets, tri);
   }
   hwy::SetSupportedTargetsForTest(0);
 }
 
-TEST(GxRasterSpan, LanesAreTheScalarOverSetUpTriangles) {
-  SpanRng rng{std::mt19937(7)};
+TEST(GxRasterRun, LanesAreTheScalarOverSetUpTriangles) {
+  RunRng rng{std::mt19937(7)};
   const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
   Scissor scissor;
   scissor.right = 640;
@@ -131,17 +142,21 @@ TEST(GxRasterSpan, LanesAreTheScalarOverSetUpTriangles) {
         !setup_triangle(v[0], v[2], v[1], rng.below(3), rng.below(kMaxTexGens + 1), scissor, t))
       continue;
     ++drawn;
-    // The pixel stage's runs: each covered span from its first pixel, kPixelLanes at a time.
-    for (s32 y = t.min_y; y < t.max_y; y += 7) {
+    // The pixel stage's runs: the triangle's covered pixels of its first rows (a band and
+    // more), kPixelLanes a run across the rows.
+    RunPixels pixels;
+    for (s32 y = t.min_y; y < std::min(t.max_y, t.min_y + 8); ++y) {
       s32 xb, xe;
       covered_span(t, y, xb, xe);
-      for (s32 x = xb; x < xe; x += kPixelLanes) {
-        for (std::int64_t target : targets) {
-          hwy::SetSupportedTargetsForTest(target);
-          expect_span_is_scalar(t, x, y, target, tri);
+      for (s32 x = xb; x < xe; ++x) {
+        pixels.add(x, y);
+        if (pixels.full()) {
+          expect_run_is_scalar_on_every_target(t, pixels, targets, tri);
+          pixels.count = 0;
         }
       }
     }
+    if (pixels.count > 0) expect_run_is_scalar_on_every_target(t, pixels, targets, tri);
   }
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_GT(drawn, 200);

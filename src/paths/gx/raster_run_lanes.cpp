@@ -1,14 +1,14 @@
-// raster_span.h in float vector lanes. Compiled once per Highway target (hwy/foreach_target.h
+// raster_run.h in float vector lanes. Compiled once per Highway target (hwy/foreach_target.h
 // re-includes this file), outside the unity build (CMakeLists.txt). Each function names the
 // scalar one of rasteriser.h/.cpp it computes, operation for operation.
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "paths/gx/raster_span_lanes.cpp"
+#define HWY_TARGET_INCLUDE "paths/gx/raster_run_lanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include <cstdint>
 
-#include "paths/gx/raster_span.h"
+#include "paths/gx/raster_run.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace lt::gx::HWY_NAMESPACE {
@@ -26,23 +26,24 @@ VI ki(s32 x) {
   return hn::Set(DI(), x);
 }
 
-// The planes' position terms of one row, from `lane` on: dx = x_off + (float)(x - x0) per lane
-// (x - x0 is an exact small integer, so its conversion is the scalar's), and dy's product, the
-// same in every lane.
+// The planes' position terms of the lanes from `lane` on: dx = x_off + (float)(x - x0) and
+// dy = y_off + (float)(y - y0) per lane (x - x0 and y - y0 are exact small integers, so their
+// conversions are the scalar's).
 struct Position {
-  VF dx;
-  float dy;
+  VF dx, dy;
 };
 
-Position position(const SlopeOrigin& o, s32 x, s32 y, size_t lane) {
-  const VI offsets = hn::Iota(DI(), static_cast<s32>(x - o.x0 + static_cast<s32>(lane)));
-  return {hn::Add(kf(o.x_off), hn::ConvertTo(DF(), offsets)),
-          o.y_off + static_cast<float>(y - o.y0)};
+Position position(const SlopeOrigin& o, const RunPixels& pixels, size_t lane) {
+  const DI di;
+  const VI x = hn::Sub(hn::Load(di, pixels.x + lane), ki(o.x0));
+  const VI y = hn::Sub(hn::Load(di, pixels.y + lane), ki(o.y0));
+  return {hn::Add(kf(o.x_off), hn::ConvertTo(DF(), x)),
+          hn::Add(kf(o.y_off), hn::ConvertTo(DF(), y))};
 }
 
 // slope_value: f0 + (dfdx * dx) + (dfdy * dy), left to right.
 VF slope_value(const Slope& s, const Position& p) {
-  return hn::Add(hn::Add(kf(s.f0), hn::Mul(kf(s.dfdx), p.dx)), hn::Mul(kf(s.dfdy), kf(p.dy)));
+  return hn::Add(hn::Add(kf(s.f0), hn::Mul(kf(s.dfdx), p.dx)), hn::Mul(kf(s.dfdy), p.dy));
 }
 
 // x86_float_to_int: truncation, INT_MIN for NaN and anything outside [-2^31, 2^31). The lanes'
@@ -79,20 +80,20 @@ VI raster_texcoord(VF v) {
   return hn::ShiftRight<8>(hn::ShiftLeft<8>(x86_float_to_int(hn::Mul(v, kf(128.0f)))));
 }
 
-void SpanDepths(const Triangle& t, s32 x, s32 y, SpanValues& out) {
+void RunDepths(const Triangle& t, const RunPixels& pixels, RunValues& out) {
   const DF df;
   for (size_t lane = 0; lane < static_cast<size_t>(kPixelLanes); lane += hn::Lanes(df)) {
-    const VI z = raster_depth(slope_value(t.z, position(t.origin, x, y, lane)));
+    const VI z = raster_depth(slope_value(t.z, position(t.origin, pixels, lane)));
     hn::Store(z, DI(), reinterpret_cast<s32*>(out.z) + lane);
   }
 }
 
 // raster_pixel's colours and texture coordinates (rasteriser.cpp raster_pixel_attributes).
-void SpanAttributes(const Triangle& t, s32 x, s32 y, bool round_colors, SpanValues& out) {
+void RunAttributes(const Triangle& t, const RunPixels& pixels, bool round_colors, RunValues& out) {
   const DF df;
   const DI di;
   for (size_t lane = 0; lane < static_cast<size_t>(kPixelLanes); lane += hn::Lanes(df)) {
-    const Position p = position(t.origin, x, y, lane);
+    const Position p = position(t.origin, pixels, lane);
     for (int c = 0; c < t.channels; ++c) {
       for (int i = 0; i < 4; ++i) {
         const VF v = slope_value(t.color[static_cast<size_t>(c)][static_cast<size_t>(i)], p);
@@ -121,15 +122,15 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace lt::gx {
 
-HWY_EXPORT(SpanDepths);
-HWY_EXPORT(SpanAttributes);
+HWY_EXPORT(RunDepths);
+HWY_EXPORT(RunAttributes);
 
-void span_depths(const Triangle& t, s32 x, s32 y, SpanValues& out) {
-  HWY_DYNAMIC_DISPATCH(SpanDepths)(t, x, y, out);
+void run_depths(const Triangle& t, const RunPixels& pixels, RunValues& out) {
+  HWY_DYNAMIC_DISPATCH(RunDepths)(t, pixels, out);
 }
 
-void span_attributes(const Triangle& t, s32 x, s32 y, bool round_colors, SpanValues& out) {
-  HWY_DYNAMIC_DISPATCH(SpanAttributes)(t, x, y, round_colors, out);
+void run_attributes(const Triangle& t, const RunPixels& pixels, bool round_colors, RunValues& out) {
+  HWY_DYNAMIC_DISPATCH(RunAttributes)(t, pixels, round_colors, out);
 }
 
 }  // namespace lt::gx
