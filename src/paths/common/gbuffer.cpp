@@ -4,6 +4,26 @@
 
 namespace lt {
 
+namespace {
+
+bool any_material(const Scene& scene, bool (*test)(const Material&)) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(), test);
+}
+
+bool takes_vertex_thickness(const Material& m) {
+  return m.translucency && m.translucency->thickness_source == ThicknessSource::Vertex;
+}
+
+// gbuffer.vert or gbuffer.frag with the varyings and the third target only a material needs.
+std::string gbuffer_source(const std::string& file, bool vertex_thickness, bool map_uv) {
+  const std::string defines = gl::glsl_define("LT_VERTEX_THICKNESS", vertex_thickness) +
+                              gl::glsl_define("LT_MAP_UV", map_uv);
+  return gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/" + file),
+                           {{"DEFINES", defines}}, file);
+}
+
+}  // namespace
+
 Scene camera_relative_lights(const PathContext& ctx) {
   Scene s;
   s.file = ctx.scene.file;
@@ -20,32 +40,28 @@ Scene camera_relative_lights(const PathContext& ctx) {
 
 GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
     : ctx_(ctx),
-      program_(gl::read_shader_source("legacy_shaders/glsl/gbuffer.vert"),
-               gl::read_shader_source("legacy_shaders/glsl/gbuffer.frag"), "gbuffer"),
+      vertex_thickness_(any_material(ctx.scene, takes_vertex_thickness)),
+      map_uv_(any_material(ctx.scene, samples_uvs)),
+      program_(gbuffer_source("gbuffer.vert", vertex_thickness_, map_uv_),
+               gbuffer_source("gbuffer.frag", vertex_thickness_, map_uv_), "gbuffer"),
       rect_(ctx.geometry.covered_rect()),
-      uv_target_(std::any_of(ctx.scene.materials.begin(), ctx.scene.materials.end(),
-                             [](const Material& m) { return samples_uvs(m); })),
-      thickness_read_(std::any_of(ctx.scene.materials.begin(), ctx.scene.materials.end(),
-                                  [](const Material& m) {
-                                    return m.translucency && m.translucency->thickness_source ==
-                                                                 ThicknessSource::Vertex;
-                                  })),
-      target_(ctx.width, ctx.height, uv_target_ ? 4 : 3) {
+      target_(ctx.width, ctx.height, third_target() ? 3 : 2) {
   ctx.gl.require_extension("GL_ARB_texture_float", user);
   ctx.gl.require_extension("GL_ARB_draw_buffers", user);
 }
 
 void GBuffer::rasterise() {
-  target_.bind();
   glEnable(GL_SCISSOR_TEST);
   glScissor(rect_.x, rect_.y, rect_.width, rect_.height);
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // Only the target that carries coverage is cleared: the others are read where a fragment was
+  // written this frame alone (append, from shade_covered's covered pixels).
+  target_.clear_first_and_depth();
   glEnable(GL_DEPTH_TEST);
   glUseProgram(program_.id());
   ctx_.geometry.load_matrices();
+  const GLint material_plus_one = program_.uniform("u_material_plus_one");
   for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
-    glUniform1f(program_.uniform("u_material"), static_cast<float>(m.material));
+    glUniform1f(material_plus_one, static_cast<float>(m.material + 1));
     ctx_.geometry.draw(m);
   }
   glUseProgram(0);
@@ -53,8 +69,7 @@ void GBuffer::rasterise() {
   target_.unbind();
   target_.read(0, rect_, position_);
   target_.read(1, rect_, normal_);
-  if (thickness_read_) target_.read(2, rect_, thickness_);
-  if (uv_target_) target_.read(3, rect_, uv_);
+  if (third_target()) target_.read(2, rect_, thickness_);
   gl::check_error("reference G-buffer");
 }
 
@@ -63,9 +78,10 @@ void GBuffer::append(size_t g, PixelRun& run) const {
   for (int c = 0; c < 3; ++c) {
     run.position[c][i] = position_[g + c];
     run.normal[c][i] = normal_[g + c];
-    run.thickness[c][i] = thickness_read_ ? thickness_[g + c] : 0.0f;
+    run.thickness[c][i] = third_target() ? thickness_[g + c] : 0.0f;
   }
-  for (int c = 0; c < 2; ++c) run.uv[c][i] = uv_.empty() ? 0.0f : uv_[g + c];
+  run.uv[0][i] = normal_[g + 3];
+  run.uv[1][i] = third_target() ? thickness_[g + 3] : 0.0f;
 }
 
 void GBuffer::pad(PixelRun& run) {
@@ -80,9 +96,13 @@ void GBuffer::pad(PixelRun& run) {
 }
 
 std::vector<BuiltStage> GBuffer::stages() const {
-  return {{uv_target_ ? "G-buffer: 4 x RGBA32F (position, normal + material, thickness, map UV)"
-                      : "G-buffer: 3 x RGBA32F (position, normal + material, thickness)",
-           "glsl-vertex", program_.vertex_source()},
+  std::string layout = "position + material, normal";
+  if (map_uv_) layout += " + map u";
+  if (vertex_thickness_) layout += ", vertex thickness";
+  if (map_uv_) layout += vertex_thickness_ ? " + map v" : ", map v";
+  const std::string targets = third_target() ? "3" : "2";
+  return {{"G-buffer: " + targets + " x RGBA32F (" + layout + ")", "glsl-vertex",
+           program_.vertex_source()},
           {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
 }
 
@@ -94,10 +114,9 @@ std::vector<int> material_per_pixel(const PathContext& ctx) {
   for (int gy = 0; gy < g.height(); ++gy) {
     for (int x = 0; x < g.width(); ++x) {
       if (!g.in_rect(x, gy)) continue;
-      const size_t i = g.index(x, gy);
-      const int m = g.material(i);
+      const int m = g.material(g.index(x, gy));
       // G-buffer rows count bottom-up, images top-down.
-      if (g.covered(i) && m >= 0 && m < count)
+      if (m >= 0 && m < count)
         material[static_cast<size_t>(g.height() - 1 - gy) * g.width() + x] = m;
     }
   }

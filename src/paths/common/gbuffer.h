@@ -1,5 +1,6 @@
 // The float G-buffer the CPU paths shade (reference in double, half in emulated fp16): the scene
-// rasterised once through OSMesa into three RGBA32F targets, read back as plain arrays.
+// rasterised once through OSMesa into two RGBA32F targets (three when a material reads the vertex
+// thickness or a map), read back as plain arrays.
 #pragma once
 
 #include <algorithm>
@@ -32,7 +33,7 @@ class GBuffer {
   // Builds the G-buffer program and targets; `user` names the path in extension errors.
   GBuffer(const PathContext& ctx, const std::string& user);
 
-  // Draws every mesh and reads the three targets back (bottom row first, like glReadPixels).
+  // Draws every mesh and reads the targets back (bottom row first, like glReadPixels).
   void rasterise();
 
   int width() const { return ctx_.width; }
@@ -46,10 +47,10 @@ class GBuffer {
   size_t index(int x, int gy) const {
     return (static_cast<size_t>(gy - rect_.y) * rect_.width + (x - rect_.x)) * 4;
   }
-  // Alpha of the position target is the coverage the G-buffer fragment shader writes.
-  bool covered(size_t g) const { return position_[g + 3] > 0.5f; }
-  // The material index travels as a float in the normal target's alpha.
-  int material(size_t g) const { return static_cast<int>(normal_[g + 3] + 0.5f); }
+  // The material index of pixel g, -1 where nothing is covered: the position target's alpha is
+  // the index + 1, written by the G-buffer fragment shader over a target cleared to 0, so
+  // coverage and material share one channel and the other targets need no clear (issue 39).
+  int material(size_t g) const { return static_cast<int>(position_[g + 3] + 0.5f) - 1; }
   // Threads the CPU paths shade on: every core.
   static unsigned threads() { return worker_threads(); }
 
@@ -91,13 +92,13 @@ class GBuffer {
       };
       for (int x = rect_.x; x < rect_.x + rect_.width; ++x) {
         const size_t g = index(x, gy);
-        if (!this->covered(g)) {
+        const int m = material(g);
+        if (m < 0) {
           float* out = row + static_cast<size_t>(x) * 4;
           for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
           out[3] = 0;
           continue;
         }
-        const int m = material(g);
         if (run.count > 0 && (m != run.material || run.count == kPixelRunCapacity)) flush();
         run.material = m;
         run_x[run.count] = x;
@@ -116,15 +117,18 @@ class GBuffer {
 
  private:
   PathContext ctx_;
+  // A material takes its thickness from the vertex colour, or samples a map at (u, v): only
+  // then is the third target (thickness, v) drawn and read back. Each RGBA32F target costs
+  // llvmpipe 3-4 ms a frame at 1280x720 and 14.7 MB of read-back (issue 39). Without them the
+  // runs' thickness and uv lanes are 0, which no shading reads.
+  bool vertex_thickness_ = false, map_uv_ = false;
   gl::GlslProgram program_;
   gl::PixelRect rect_;
-  bool uv_target_ = false;  // a material samples a map: the fourth target holds (u, v)
-  // A material takes its thickness from the vertex colour: only then is the third target read
-  // back (14.7 MB a frame at 1280x720, a third of the read-back the CPU paths wait for; issue
-  // 39). Without it the runs' thickness lanes are 0, which no shading reads.
-  bool thickness_read_ = false;
   gl::FloatTarget target_;
-  std::vector<float> position_, normal_, thickness_, uv_;
+  // Target 0: position, material + 1; 1: normal, u; 2: vertex thickness, v (gbuffer.frag).
+  std::vector<float> position_, normal_, thickness_;
+
+  bool third_target() const { return vertex_thickness_ || map_uv_; }
 
   // Pixel g's G-buffer values as the run's next lane.
   void append(size_t g, PixelRun& run) const;
