@@ -73,15 +73,9 @@ void GBuffer::rasterise() {
   gl::check_error("reference G-buffer");
 }
 
-void GBuffer::append(size_t g, PixelRun& run) const {
-  const size_t i = run.count++;
-  for (int c = 0; c < 3; ++c) {
-    run.position[c][i] = position_[g + c];
-    run.normal[c][i] = normal_[g + c];
-    run.thickness[c][i] = third_target() ? thickness_[g + c] : 0.0f;
-  }
-  run.uv[0][i] = normal_[g + 3];
-  run.uv[1][i] = third_target() ? thickness_[g + 3] : 0.0f;
+void GBuffer::zero_third_target_lanes(PixelRun& run) {
+  for (int c = 0; c < 3; ++c) std::fill_n(run.thickness[c], kPixelRunCapacity, 0.0f);
+  std::fill_n(run.uv[1], kPixelRunCapacity, 0.0f);
 }
 
 void GBuffer::pad(PixelRun& run) {

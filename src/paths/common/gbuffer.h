@@ -50,7 +50,7 @@ class GBuffer {
   // The material index of pixel g, -1 where nothing is covered: the position target's alpha is
   // the index + 1, written by the G-buffer fragment shader over a target cleared to 0, so
   // coverage and material share one channel and the other targets need no clear (issue 39).
-  int material(size_t g) const { return static_cast<int>(position_[g + 3] + 0.5f) - 1; }
+  int material(size_t g) const { return material_of(&position_[g]); }
   // Threads the CPU paths shade on: every core.
   static unsigned threads() { return worker_threads(); }
 
@@ -73,38 +73,10 @@ class GBuffer {
     }
     std::vector<size_t> covered(threads(), 0);
     for_each_row_in_parallel(rect_.height, [&](int rect_row, unsigned worker) {
-      const int gy = rect_.y + rect_row;
-      PixelRun run;
-      ShadedRun shaded;
-      int run_x[kPixelRunCapacity];
-      float* const row = image.at(0, h - 1 - gy);  // G-buffer rows bottom-up, image top-down
-      auto flush = [&] {
-        if (run.count == 0) return;
-        pad(run);
-        shade(static_cast<const PixelRun&>(run), shaded, worker);
-        for (size_t i = 0; i < run.count; ++i) {
-          float* out = row + static_cast<size_t>(run_x[i]) * 4;
-          for (int c = 0; c < 3; ++c) out[c] = shaded.rgb[c][i];
-          out[3] = 1;
-        }
-        covered[worker] += run.count;
-        run.count = 0;
-      };
-      for (int x = rect_.x; x < rect_.x + rect_.width; ++x) {
-        const size_t g = index(x, gy);
-        const int m = material(g);
-        if (m < 0) {
-          float* out = row + static_cast<size_t>(x) * 4;
-          for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(background[c]);
-          out[3] = 0;
-          continue;
-        }
-        if (run.count > 0 && (m != run.material || run.count == kPixelRunCapacity)) flush();
-        run.material = m;
-        run_x[run.count] = x;
-        append(g, run);
-      }
-      flush();
+      // One row loop a layout, so the gather tests no flag per pixel.
+      covered[worker] += third_target()
+                             ? shade_row<true>(rect_row, image, background, shade, worker)
+                             : shade_row<false>(rect_row, image, background, shade, worker);
     });
     size_t total = 0;
     for (size_t c : covered) total += c;
@@ -130,8 +102,67 @@ class GBuffer {
 
   bool third_target() const { return vertex_thickness_ || map_uv_; }
 
-  // Pixel g's G-buffer values as the run's next lane.
-  void append(size_t g, PixelRun& run) const;
+  // Row rect_row of the rectangle, as shade_covered says; returns its covered pixels.
+  template <bool kThirdTarget, class ShadeRun>
+  size_t shade_row(int rect_row, Image& image, const glm::dvec3& background, ShadeRun& shade,
+                   unsigned worker) const {
+    const int gy = rect_.y + rect_row;
+    // The three targets' texels of the row, walked side by side (4 floats a pixel each).
+    const size_t g0 = index(rect_.x, gy);
+    const float* const position = position_.data() + g0;
+    const float* const normal = normal_.data() + g0;
+    const float* const thickness = kThirdTarget ? thickness_.data() + g0 : nullptr;
+    // G-buffer rows count bottom-up, image rows top-down.
+    float* const out = image.at(rect_.x, ctx_.height - 1 - gy);
+    const float uncovered[4] = {static_cast<float>(background[0]),
+                                static_cast<float>(background[1]),
+                                static_cast<float>(background[2]), 0.0f};
+    PixelRun run;
+    // Without the third target the thickness and v lanes are 0 for the whole row (no shading
+    // reads them then); append leaves them as they are.
+    if constexpr (!kThirdTarget) zero_third_target_lanes(run);
+    ShadedRun shaded;
+    int run_x[kPixelRunCapacity];  // each lane's pixel, as a float offset into the row
+    size_t covered = 0;
+    auto flush = [&] {
+      if (run.count == 0) return;
+      pad(run);
+      shade(static_cast<const PixelRun&>(run), shaded, worker);
+      for (size_t i = 0; i < run.count; ++i) {
+        float* o = out + run_x[i];
+        for (int c = 0; c < 3; ++c) o[c] = shaded.rgb[c][i];
+        o[3] = 1;
+      }
+      covered += run.count;
+      run.count = 0;
+    };
+    for (int g = 0; g < rect_.width * 4; g += 4) {
+      const int m = material_of(position + g);
+      if (m < 0) {
+        std::copy(uncovered, uncovered + 4, out + g);
+        continue;
+      }
+      if (run.count > 0 && (m != run.material || run.count == kPixelRunCapacity)) flush();
+      run.material = m;
+      run_x[run.count] = g;
+      const size_t i = run.count++;
+      for (int c = 0; c < 3; ++c) {
+        run.position[c][i] = position[g + c];
+        run.normal[c][i] = normal[g + c];
+      }
+      run.uv[0][i] = normal[g + 3];
+      if constexpr (kThirdTarget) {
+        for (int c = 0; c < 3; ++c) run.thickness[c][i] = thickness[g + c];
+        run.uv[1][i] = thickness[g + 3];
+      }
+    }
+    flush();
+    return covered;
+  }
+  // The material of a position texel (position.xyz, material + 1), -1 where nothing is covered.
+  static int material_of(const float* position) { return static_cast<int>(position[3] + 0.5f) - 1; }
+  // The lanes of the third target (thickness, v) set to 0.
+  static void zero_third_target_lanes(PixelRun& run);
   // Lanes past run.count up to the widest vector's multiple (kPixelRunPadding): lane 0 again.
   static void pad(PixelRun& run);
 };
