@@ -1,36 +1,36 @@
 #version 110
-// CPU paths' G-buffer pass (src/paths/common/gbuffer.cpp), fragment stage. Each RGBA32F target
-// costs llvmpipe about as much as a varying's interpolation and its read-back, so the values are
-// packed into two targets, and a third only when a material reads it (issue 39):
-//   0: camera-relative position; material index + 1 (the target is cleared to 0: 0 = uncovered)
-//   1: interpolated normal (NOT renormalised: the CPU does that in double); map u
-//   2: interpolated vertex thickness colour; map v (bound only when LT_THIRD_TARGET)
-// A channel nothing reads is written 0 and its varying is not interpolated at all.
+// CPU paths' G-buffer pass (src/paths/common/gbuffer.cpp), fragment stage: what each channel of
+// the two or three RGBA32F targets carries is src/paths/common/gbuffer_layout.h's to say, and
+// the #defines are its choice for the scene. Every value is the varying as interpolated, moved
+// to a channel, never computed on.
 {{DEFINES}}
-#define LT_THIRD_TARGET (LT_VERTEX_THICKNESS || LT_MAP_UV)
 uniform float u_material_plus_one;
 varying vec3 v_position;
 varying vec3 v_normal;
-#if LT_VERTEX_THICKNESS
+#if LT_RGB_THICKNESS
 varying vec3 v_thickness;
+#endif
+#if LT_GREY_THICKNESS
+varying float v_grey_thickness;
 #endif
 #if LT_MAP_UV
 varying vec2 v_uv;
 #endif
 
 void main() {
-#if LT_MAP_UV
-  vec2 uv = v_uv;
-#else
-  vec2 uv = vec2(0.0);
-#endif
   gl_FragData[0] = vec4(v_position, u_material_plus_one);
-  gl_FragData[1] = vec4(v_normal, uv.x);
-#if LT_THIRD_TARGET
-#if LT_VERTEX_THICKNESS
-  gl_FragData[2] = vec4(v_thickness, uv.y);
+#if LT_MAP_UV
+  gl_FragData[1] = vec4(v_normal, v_uv.x);
+#elif LT_GREY_THICKNESS
+  gl_FragData[1] = vec4(v_normal, v_grey_thickness);
 #else
-  gl_FragData[2] = vec4(0.0, 0.0, 0.0, uv.y);
+  gl_FragData[1] = vec4(v_normal, 0.0);
 #endif
+#if LT_RGB_THICKNESS && LT_MAP_UV
+  gl_FragData[2] = vec4(v_thickness, v_uv.y);
+#elif LT_RGB_THICKNESS
+  gl_FragData[2] = vec4(v_thickness, 0.0);
+#elif LT_MAP_UV
+  gl_FragData[2] = vec4(0.0, 0.0, 0.0, v_uv.y);
 #endif
 }

@@ -6,20 +6,10 @@ namespace lt {
 
 namespace {
 
-bool any_material(const Scene& scene, bool (*test)(const Material&)) {
-  return std::any_of(scene.materials.begin(), scene.materials.end(), test);
-}
-
-bool takes_vertex_thickness(const Material& m) {
-  return m.translucency && m.translucency->thickness_source == ThicknessSource::Vertex;
-}
-
-// gbuffer.vert or gbuffer.frag with the varyings and the third target only a material needs.
-std::string gbuffer_source(const std::string& file, bool vertex_thickness, bool map_uv) {
-  const std::string defines = gl::glsl_define("LT_VERTEX_THICKNESS", vertex_thickness) +
-                              gl::glsl_define("LT_MAP_UV", map_uv);
+// gbuffer.vert or gbuffer.frag with the varyings and the targets of `layout` alone.
+std::string gbuffer_source(const std::string& file, const GBufferLayout& layout) {
   return gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/" + file),
-                           {{"DEFINES", defines}}, file);
+                           {{"DEFINES", layout.defines()}}, file);
 }
 
 }  // namespace
@@ -38,14 +28,13 @@ Scene camera_relative_lights(const PathContext& ctx) {
   return s;
 }
 
-GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
+GBuffer::GBuffer(const PathContext& ctx, const std::string& user, GreyThickness grey)
     : ctx_(ctx),
-      vertex_thickness_(any_material(ctx.scene, takes_vertex_thickness)),
-      map_uv_(any_material(ctx.scene, samples_uvs)),
-      program_(gbuffer_source("gbuffer.vert", vertex_thickness_, map_uv_),
-               gbuffer_source("gbuffer.frag", vertex_thickness_, map_uv_), "gbuffer"),
+      layout_(gbuffer_layout(ctx.scene, ctx.geometry, grey)),
+      program_(gbuffer_source("gbuffer.vert", layout_), gbuffer_source("gbuffer.frag", layout_),
+               "gbuffer"),
       rect_(ctx.geometry.covered_rect()),
-      target_(ctx.width, ctx.height, third_target() ? 3 : 2) {
+      target_(ctx.width, ctx.height, layout_.targets()) {
   ctx.gl.require_extension("GL_ARB_texture_float", user);
   ctx.gl.require_extension("GL_ARB_draw_buffers", user);
 }
@@ -53,8 +42,8 @@ GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
 void GBuffer::rasterise() {
   glEnable(GL_SCISSOR_TEST);
   glScissor(rect_.x, rect_.y, rect_.width, rect_.height);
-  // Only the target that carries coverage is cleared: the others are read where a fragment was
-  // written this frame alone (append, from shade_covered's covered pixels).
+  // Only the target that carries coverage is cleared: the others are read only at the pixels
+  // it says a fragment covered this frame (shade_row; material_per_pixel reads target 0 alone).
   target_.clear_first_and_depth();
   glEnable(GL_DEPTH_TEST);
   glUseProgram(program_.id());
@@ -69,13 +58,16 @@ void GBuffer::rasterise() {
   target_.unbind();
   target_.read(0, rect_, position_);
   target_.read(1, rect_, normal_);
-  if (third_target()) target_.read(2, rect_, thickness_);
+  if (layout_.targets() == 3) target_.read(2, rect_, thickness_);
   gl::check_error("reference G-buffer");
 }
 
-void GBuffer::zero_third_target_lanes(PixelRun& run) {
-  for (int c = 0; c < 3; ++c) std::fill_n(run.thickness[c], kPixelRunCapacity, 0.0f);
-  std::fill_n(run.uv[1], kPixelRunCapacity, 0.0f);
+void GBuffer::zero_thickness_lanes(PixelRun& run) {
+  for (auto& channel : run.thickness) std::fill_n(channel, kPixelRunCapacity, 0.0f);
+}
+
+void GBuffer::zero_uv_lanes(PixelRun& run) {
+  for (auto& channel : run.uv) std::fill_n(channel, kPixelRunCapacity, 0.0f);
 }
 
 void GBuffer::pad(PixelRun& run) {
@@ -90,13 +82,7 @@ void GBuffer::pad(PixelRun& run) {
 }
 
 std::vector<BuiltStage> GBuffer::stages() const {
-  std::string layout = "position + material, normal";
-  if (map_uv_) layout += " + map u";
-  if (vertex_thickness_) layout += ", vertex thickness";
-  if (map_uv_) layout += vertex_thickness_ ? " + map v" : ", map v";
-  const std::string targets = third_target() ? "3" : "2";
-  return {{"G-buffer: " + targets + " x RGBA32F (" + layout + ")", "glsl-vertex",
-           program_.vertex_source()},
+  return {{"G-buffer: " + layout_.description(), "glsl-vertex", program_.vertex_source()},
           {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
 }
 

@@ -1,6 +1,6 @@
 // The float G-buffer the CPU paths shade (reference in double, half in emulated fp16): the scene
-// rasterised once through OSMesa into two RGBA32F targets (three when a material reads the vertex
-// thickness or a map), read back as plain arrays.
+// rasterised once through OSMesa into two or three RGBA32F targets (gbuffer_layout.h), read back
+// as plain arrays.
 #pragma once
 
 #include <algorithm>
@@ -10,6 +10,7 @@
 
 #include "core/parallel_rows.h"
 #include "gl/program.h"
+#include "paths/common/gbuffer_layout.h"
 #include "paths/common/pixel_run.h"
 #include "paths/path.h"
 
@@ -31,7 +32,8 @@ std::vector<double> covered_pixels_by_material(const PathContext& ctx);
 class GBuffer {
  public:
   // Builds the G-buffer program and targets; `user` names the path in extension errors.
-  GBuffer(const PathContext& ctx, const std::string& user);
+  GBuffer(const PathContext& ctx, const std::string& user,
+          GreyThickness grey = GreyThickness::OneChannel);
 
   // Draws every mesh and reads the targets back (bottom row first, like glReadPixels).
   void rasterise();
@@ -74,9 +76,12 @@ class GBuffer {
     std::vector<size_t> covered(threads(), 0);
     for_each_row_in_parallel(rect_.height, [&](int rect_row, unsigned worker) {
       // One row loop a layout, so the gather tests no flag per pixel.
-      covered[worker] += third_target()
-                             ? shade_row<true>(rect_row, image, background, shade, worker)
-                             : shade_row<false>(rect_row, image, background, shade, worker);
+      covered[worker] +=
+          layout_.targets() == 3
+              ? shade_row<Gather::ThreeTargets>(rect_row, image, background, shade, worker)
+          : layout_.grey_thickness
+              ? shade_row<Gather::GreyThickness>(rect_row, image, background, shade, worker)
+              : shade_row<Gather::TwoTargets>(rect_row, image, background, shade, worker);
     });
     size_t total = 0;
     for (size_t c : covered) total += c;
@@ -89,21 +94,23 @@ class GBuffer {
 
  private:
   PathContext ctx_;
-  // A material takes its thickness from the vertex colour, or samples a map at (u, v): only
-  // then is the third target (thickness, v) drawn and read back. Each RGBA32F target costs
-  // llvmpipe 3-4 ms a frame at 1280x720 and 14.7 MB of read-back (issue 39). Without them the
-  // runs' thickness and uv lanes are 0, which no shading reads.
-  bool vertex_thickness_ = false, map_uv_ = false;
+  GBufferLayout layout_;
   gl::GlslProgram program_;
   gl::PixelRect rect_;
   gl::FloatTarget target_;
-  // Target 0: position, material + 1; 1: normal, u; 2: vertex thickness, v (gbuffer.frag).
+  // Targets 0, 1 and 2 as read back (gbuffer_layout.h); the third only when there is one.
   std::vector<float> position_, normal_, thickness_;
 
-  bool third_target() const { return vertex_thickness_ || map_uv_; }
+  // Where a run's lanes come from. Lanes no material reads are 0 (the shader's 0, or set so
+  // once a row): the thickness without vertex thickness, the uv without a map.
+  enum class Gather {
+    TwoTargets,     // thickness and uv 0
+    GreyThickness,  // thickness: target 1's alpha in all three channels; uv 0
+    ThreeTargets,   // u: target 1's alpha; thickness, v: target 2
+  };
 
   // Row rect_row of the rectangle, as shade_covered says; returns its covered pixels.
-  template <bool kThirdTarget, class ShadeRun>
+  template <Gather kGather, class ShadeRun>
   size_t shade_row(int rect_row, Image& image, const glm::dvec3& background, ShadeRun& shade,
                    unsigned worker) const {
     const int gy = rect_.y + rect_row;
@@ -111,16 +118,16 @@ class GBuffer {
     const size_t g0 = index(rect_.x, gy);
     const float* const position = position_.data() + g0;
     const float* const normal = normal_.data() + g0;
-    const float* const thickness = kThirdTarget ? thickness_.data() + g0 : nullptr;
+    const float* const thickness =
+        kGather == Gather::ThreeTargets ? thickness_.data() + g0 : nullptr;
     // G-buffer rows count bottom-up, image rows top-down.
     float* const out = image.at(rect_.x, ctx_.height - 1 - gy);
     const float uncovered[4] = {static_cast<float>(background[0]),
                                 static_cast<float>(background[1]),
                                 static_cast<float>(background[2]), 0.0f};
     PixelRun run;
-    // Without the third target the thickness and v lanes are 0 for the whole row (no shading
-    // reads them then); append leaves them as they are.
-    if constexpr (!kThirdTarget) zero_third_target_lanes(run);
+    if constexpr (kGather == Gather::TwoTargets) zero_thickness_lanes(run);
+    if constexpr (kGather != Gather::ThreeTargets) zero_uv_lanes(run);
     ShadedRun shaded;
     int run_x[kPixelRunCapacity];  // each lane's pixel, as a float offset into the row
     size_t covered = 0;
@@ -150,9 +157,12 @@ class GBuffer {
         run.position[c][i] = position[g + c];
         run.normal[c][i] = normal[g + c];
       }
-      run.uv[0][i] = normal[g + 3];
-      if constexpr (kThirdTarget) {
+      if constexpr (kGather == Gather::GreyThickness) {
+        for (int c = 0; c < 3; ++c) run.thickness[c][i] = normal[g + 3];
+      }
+      if constexpr (kGather == Gather::ThreeTargets) {
         for (int c = 0; c < 3; ++c) run.thickness[c][i] = thickness[g + c];
+        run.uv[0][i] = normal[g + 3];
         run.uv[1][i] = thickness[g + 3];
       }
     }
@@ -161,8 +171,9 @@ class GBuffer {
   }
   // The material of a position texel (position.xyz, material + 1), -1 where nothing is covered.
   static int material_of(const float* position) { return static_cast<int>(position[3] + 0.5f) - 1; }
-  // The lanes of the third target (thickness, v) set to 0.
-  static void zero_third_target_lanes(PixelRun& run);
+  // Every lane of the run's thickness, or of its uv, set to 0.
+  static void zero_thickness_lanes(PixelRun& run);
+  static void zero_uv_lanes(PixelRun& run);
   // Lanes past run.count up to the widest vector's multiple (kPixelRunPadding): lane 0 again.
   static void pad(PixelRun& run);
 };
