@@ -1,19 +1,36 @@
 #version 110
-// reference path, G-buffer pass: three RGBA32F targets, and a fourth when a material samples a
-// map (gl_FragData[3] is discarded when only three draw buffers are bound).
-//   0: camera-relative position, coverage (1)
-//   1: interpolated normal (NOT renormalised: the CPU does that in double), material index
-//   2: interpolated vertex thickness colour
-//   3: interpolated (u, v) for a thickness or albedo map
-uniform float u_material;
+// CPU paths' G-buffer pass (src/paths/common/gbuffer.cpp), fragment stage: what each channel of
+// the two or three RGBA32F targets carries is src/paths/common/gbuffer_layout.h's to say, and
+// the #defines are its choice for the scene. Every value is the varying as interpolated, moved
+// to a channel, never computed on.
+{{DEFINES}}
+uniform float u_material_plus_one;
 varying vec3 v_position;
 varying vec3 v_normal;
+#if LT_RGB_THICKNESS
 varying vec3 v_thickness;
+#endif
+#if LT_GREY_THICKNESS
+varying float v_grey_thickness;
+#endif
+#if LT_MAP_UV
 varying vec2 v_uv;
+#endif
 
 void main() {
-  gl_FragData[0] = vec4(v_position, 1.0);
-  gl_FragData[1] = vec4(v_normal, u_material);
+  gl_FragData[0] = vec4(v_position, u_material_plus_one);
+#if LT_MAP_UV
+  gl_FragData[1] = vec4(v_normal, v_uv.x);
+#elif LT_GREY_THICKNESS
+  gl_FragData[1] = vec4(v_normal, v_grey_thickness);
+#else
+  gl_FragData[1] = vec4(v_normal, 0.0);
+#endif
+#if LT_RGB_THICKNESS && LT_MAP_UV
+  gl_FragData[2] = vec4(v_thickness, v_uv.y);
+#elif LT_RGB_THICKNESS
   gl_FragData[2] = vec4(v_thickness, 0.0);
-  gl_FragData[3] = vec4(v_uv, 0.0, 0.0);
+#elif LT_MAP_UV
+  gl_FragData[2] = vec4(0.0, 0.0, 0.0, v_uv.y);
+#endif
 }

@@ -107,10 +107,22 @@ FloatTarget::~FloatTarget() {
 
 void FloatTarget::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  select_all_draw_buffers();
+  glViewport(0, 0, width_, height_);
+}
+
+void FloatTarget::select_all_draw_buffers() const {
   std::vector<GLenum> bufs(textures_.size());
   for (size_t i = 0; i < bufs.size(); ++i) bufs[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
   glDrawBuffers(static_cast<GLsizei>(bufs.size()), bufs.data());
-  glViewport(0, 0, width_, height_);
+}
+
+void FloatTarget::clear_first_and_depth() const {
+  bind();
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  select_all_draw_buffers();
 }
 
 void FloatTarget::unbind() const {
@@ -145,6 +157,10 @@ std::string fill_template(std::string text,
                              text.substr(left, text.find("}}", left) - left + 2));
   }
   return text;
+}
+
+std::string glsl_define(const std::string& name, bool on) {
+  return "#define " + name + (on ? " 1\n" : " 0\n");
 }
 
 std::string read_shader_source(const std::string& relative_path) {

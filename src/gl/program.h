@@ -41,6 +41,11 @@ class FloatTarget {
 
   void bind() const;    // binds and selects all draw buffers
   void unbind() const;  // back to the OSMesa framebuffer
+  // Clears attachment 0 to 0 and the depth buffer (within the scissor when it is on), and leaves
+  // the other attachments as they are; bound, with all draw buffers selected again after. Each
+  // cleared target is a pass over its pixels: a G-buffer that keeps coverage in attachment 0
+  // never reads the others where nothing was drawn.
+  void clear_first_and_depth() const;
   // Reads attachment `index` as RGBA float, bottom row first: the whole target, or `rect`.
   void read(int index, std::vector<float>& out) const;
   void read(int index, const PixelRect& rect, std::vector<float>& out) const;
@@ -49,6 +54,8 @@ class FloatTarget {
   int width_, height_;
   GLuint fbo_ = 0, depth_ = 0;
   std::vector<GLuint> textures_;
+
+  void select_all_draw_buffers() const;
 };
 
 // Replaces every `{{KEY}}` in `text` by its value; throws if a placeholder is left unreplaced,
@@ -56,6 +63,9 @@ class FloatTarget {
 std::string fill_template(std::string text,
                           const std::vector<std::pair<std::string, std::string>>& values,
                           const std::string& name);
+
+// `#define NAME 1` or `#define NAME 0` and a newline: a template's switches, tested with `#if`.
+std::string glsl_define(const std::string& name, bool on);
 
 // A file under legacy_shaders/ or combiners/, embedded at build time (core/embedded.h).
 std::string read_shader_source(const std::string& relative_path);

@@ -1,7 +1,9 @@
 #include "gl/scene_geometry.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -86,6 +88,10 @@ SceneGeometry::SceneGeometry(const Scene& scene, int width, int height)
       const auto col = to_float(m.colors, glm::dvec3(0));
       g.colors = upload(GL_ARRAY_BUFFER, col.data(), col.size() * sizeof(float));
       g.has_colors = true;
+      // Bit for bit: -0 and +0 compare equal but need not interpolate to the same bits.
+      const auto bits = [&](size_t i) { return std::bit_cast<uint32_t>(col[i]); };
+      for (size_t i = 0; i < col.size(); i += 3)
+        g.grey_colors = g.grey_colors && bits(i) == bits(i + 1) && bits(i) == bits(i + 2);
     }
     const Material& mat = scene.materials[static_cast<size_t>(obj.material)];
     if (samples_uvs(mat)) {

@@ -32,6 +32,10 @@ struct GpuMesh {
   GLsizei index_count = 0;
   int material = 0;
   bool has_colors = false;
+  // Every colour GL reads has red = green = blue (as floats), or the mesh has none (white): an
+  // interpolated grey needs one channel where three would carry the same value (the CPU paths'
+  // G-buffer packs it so; issue 39).
+  bool grey_colors = true;
   bool has_uvs = false;  // uploaded only where the material samples a map (samples_uvs)
   size_t vertex_count = 0;
 };

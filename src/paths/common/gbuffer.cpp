@@ -4,6 +4,16 @@
 
 namespace lt {
 
+namespace {
+
+// gbuffer.vert or gbuffer.frag with the varyings and the targets of `layout` alone.
+std::string gbuffer_source(const std::string& file, const GBufferLayout& layout) {
+  return gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/" + file),
+                           {{"DEFINES", layout.defines()}}, file);
+}
+
+}  // namespace
+
 Scene camera_relative_lights(const PathContext& ctx) {
   Scene s;
   s.file = ctx.scene.file;
@@ -18,34 +28,29 @@ Scene camera_relative_lights(const PathContext& ctx) {
   return s;
 }
 
-GBuffer::GBuffer(const PathContext& ctx, const std::string& user)
+GBuffer::GBuffer(const PathContext& ctx, const std::string& user, GreyThickness grey)
     : ctx_(ctx),
-      program_(gl::read_shader_source("legacy_shaders/glsl/gbuffer.vert"),
-               gl::read_shader_source("legacy_shaders/glsl/gbuffer.frag"), "gbuffer"),
+      layout_(gbuffer_layout(ctx.scene, ctx.geometry, grey)),
+      program_(gbuffer_source("gbuffer.vert", layout_), gbuffer_source("gbuffer.frag", layout_),
+               "gbuffer"),
       rect_(ctx.geometry.covered_rect()),
-      uv_target_(std::any_of(ctx.scene.materials.begin(), ctx.scene.materials.end(),
-                             [](const Material& m) { return samples_uvs(m); })),
-      thickness_read_(std::any_of(ctx.scene.materials.begin(), ctx.scene.materials.end(),
-                                  [](const Material& m) {
-                                    return m.translucency && m.translucency->thickness_source ==
-                                                                 ThicknessSource::Vertex;
-                                  })),
-      target_(ctx.width, ctx.height, uv_target_ ? 4 : 3) {
+      target_(ctx.width, ctx.height, layout_.targets()) {
   ctx.gl.require_extension("GL_ARB_texture_float", user);
   ctx.gl.require_extension("GL_ARB_draw_buffers", user);
 }
 
 void GBuffer::rasterise() {
-  target_.bind();
   glEnable(GL_SCISSOR_TEST);
   glScissor(rect_.x, rect_.y, rect_.width, rect_.height);
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // Only the target that carries coverage is cleared: the others are read only at the pixels
+  // it says a fragment covered this frame (shade_row; material_per_pixel reads target 0 alone).
+  target_.clear_first_and_depth();
   glEnable(GL_DEPTH_TEST);
   glUseProgram(program_.id());
   ctx_.geometry.load_matrices();
+  const GLint material_plus_one = program_.uniform("u_material_plus_one");
   for (const gl::GpuMesh& m : ctx_.geometry.meshes()) {
-    glUniform1f(program_.uniform("u_material"), static_cast<float>(m.material));
+    glUniform1f(material_plus_one, static_cast<float>(m.material + 1));
     ctx_.geometry.draw(m);
   }
   glUseProgram(0);
@@ -53,19 +58,16 @@ void GBuffer::rasterise() {
   target_.unbind();
   target_.read(0, rect_, position_);
   target_.read(1, rect_, normal_);
-  if (thickness_read_) target_.read(2, rect_, thickness_);
-  if (uv_target_) target_.read(3, rect_, uv_);
+  if (layout_.targets() == 3) target_.read(2, rect_, thickness_);
   gl::check_error("reference G-buffer");
 }
 
-void GBuffer::append(size_t g, PixelRun& run) const {
-  const size_t i = run.count++;
-  for (int c = 0; c < 3; ++c) {
-    run.position[c][i] = position_[g + c];
-    run.normal[c][i] = normal_[g + c];
-    run.thickness[c][i] = thickness_read_ ? thickness_[g + c] : 0.0f;
-  }
-  for (int c = 0; c < 2; ++c) run.uv[c][i] = uv_.empty() ? 0.0f : uv_[g + c];
+void GBuffer::zero_thickness_lanes(PixelRun& run) {
+  for (auto& channel : run.thickness) std::fill_n(channel, kPixelRunCapacity, 0.0f);
+}
+
+void GBuffer::zero_uv_lanes(PixelRun& run) {
+  for (auto& channel : run.uv) std::fill_n(channel, kPixelRunCapacity, 0.0f);
 }
 
 void GBuffer::pad(PixelRun& run) {
@@ -80,9 +82,7 @@ void GBuffer::pad(PixelRun& run) {
 }
 
 std::vector<BuiltStage> GBuffer::stages() const {
-  return {{uv_target_ ? "G-buffer: 4 x RGBA32F (position, normal + material, thickness, map UV)"
-                      : "G-buffer: 3 x RGBA32F (position, normal + material, thickness)",
-           "glsl-vertex", program_.vertex_source()},
+  return {{"G-buffer: " + layout_.description(), "glsl-vertex", program_.vertex_source()},
           {"G-buffer fragment", "glsl-fragment", program_.fragment_source()}};
 }
 
@@ -94,10 +94,9 @@ std::vector<int> material_per_pixel(const PathContext& ctx) {
   for (int gy = 0; gy < g.height(); ++gy) {
     for (int x = 0; x < g.width(); ++x) {
       if (!g.in_rect(x, gy)) continue;
-      const size_t i = g.index(x, gy);
-      const int m = g.material(i);
+      const int m = g.material(g.index(x, gy));
       // G-buffer rows count bottom-up, images top-down.
-      if (g.covered(i) && m >= 0 && m < count)
+      if (m >= 0 && m < count)
         material[static_cast<size_t>(g.height() - 1 - gy) * g.width() + x] = m;
     }
   }

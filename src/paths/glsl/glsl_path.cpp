@@ -12,10 +12,6 @@ namespace lt {
 
 namespace {
 
-std::string define(const char* name, bool on) {
-  return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
-}
-
 std::string light_prefix(size_t i) {
   return "u_light" + std::to_string(i) + "_";
 }
@@ -52,14 +48,18 @@ GlslSources generate_glsl(const Scene& scene, const Material& material) {
   }
   const bool vertex_thickness = translucent && tr.thickness_source == ThicknessSource::Vertex;
   const std::string defines =
-      define("LT_TRANSLUCENCY", translucent) + define("LT_VERTEX_THICKNESS", vertex_thickness) +
-      define("LT_NORMALIZE_H", translucent && tr.normalize_distorted_light) +
-      define("LT_POWER_ZERO", translucent && tr.power == 0) + define("LT_POINT_LIGHTS", any_point) +
-      define("LT_AMBIENT_LIGHT", scene.ambient_light != glm::dvec3(0)) +
-      define("LT_ORTHOGRAPHIC", scene.camera.projection == Camera::Projection::Orthographic) +
-      define("LT_THICKNESS_MAP", translucent && tr.thickness_source == ThicknessSource::Texture) +
-      define("LT_RAMP", translucent && tr.ramp != nullptr) +
-      define("LT_ALBEDO_MAP", material.albedo_map != nullptr);
+      gl::glsl_define("LT_TRANSLUCENCY", translucent) +
+      gl::glsl_define("LT_VERTEX_THICKNESS", vertex_thickness) +
+      gl::glsl_define("LT_NORMALIZE_H", translucent && tr.normalize_distorted_light) +
+      gl::glsl_define("LT_POWER_ZERO", translucent && tr.power == 0) +
+      gl::glsl_define("LT_POINT_LIGHTS", any_point) +
+      gl::glsl_define("LT_AMBIENT_LIGHT", scene.ambient_light != glm::dvec3(0)) +
+      gl::glsl_define("LT_ORTHOGRAPHIC",
+                      scene.camera.projection == Camera::Projection::Orthographic) +
+      gl::glsl_define("LT_THICKNESS_MAP",
+                      translucent && tr.thickness_source == ThicknessSource::Texture) +
+      gl::glsl_define("LT_RAMP", translucent && tr.ramp != nullptr) +
+      gl::glsl_define("LT_ALBEDO_MAP", material.albedo_map != nullptr);
   GlslSources s;
   s.vertex = gl::fill_template(gl::read_shader_source("legacy_shaders/glsl/translucency.vert"),
                                {{"DEFINES", defines}}, "translucency.vert");
