@@ -109,6 +109,8 @@ HWY_INLINE hn::Vec<D> ExactPow(D d, hn::Vec<D> x, double p, hn::Mask<D> wanted,
   constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
   const hn::RebindToUnsigned<D> du;
   hn::Vec<D> fast = hn::Zero(d);
+  // A light behind every pixel of the vector (t <= 0 for all) costs nothing, as before.
+  if (hn::AllFalse(d, wanted)) return fast;
   hn::Mask<D> certain = hn::FirstN(d, 0);
   if (lanes_take_power(p)) fast = CertifiedPower(d, x, static_cast<int>(p), certain);
   const auto left = hn::AndNot(certain, wanted);
