@@ -12,8 +12,10 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
+#include "model/texture_sampling.h"
 #include "model/translucency.h"
 #include "paths/reference/reference_shading_lanes.h"
 
@@ -171,6 +173,67 @@ TEST(ExactPow, IsStdPowToTheBitOnEveryTarget) {
     }
   }
   hwy::SetSupportedTargetsForTest(0);
+}
+
+// A map's sample in lanes (bilinear_lanes-inl.h) against model::sample_bilinear, bit for bit on
+// every target: textures of odd sizes (one texel, one row, one column) under every pair of wrap
+// modes, at coordinates inside and outside [0, 1] (so both the lanes' taps and model's wrapping
+// are taken), on texel centres and edges, and NaN, Inf and beyond 1e15 texels.
+TEST(BilinearLanes, IsModelSampleBilinearToTheBitOnEveryTarget) {
+  std::mt19937_64 rng(39);
+  std::uniform_real_distribution<double> texel_value(-1, 2), inside(0, 1), outside(-3, 4);
+  const model::Wrap wraps[] = {model::Wrap::ClampToEdge, model::Wrap::Repeat,
+                               model::Wrap::MirroredRepeat};
+  const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  size_t compared = 0;
+  for (auto [w, h] : {std::pair{1, 1}, {7, 1}, {1, 5}, {13, 9}, {64, 32}}) {
+    model::Texture tex;
+    tex.width = w;
+    tex.height = h;
+    for (int i = 0; i < w * h * 3; ++i) tex.texels.push_back(static_cast<float>(texel_value(rng)));
+    std::vector<double> u, v;
+    for (int i = 0; i < 3000; ++i) {
+      const bool out = i % 3 == 0;
+      u.push_back(out ? outside(rng) : inside(rng));
+      v.push_back(out ? outside(rng) : inside(rng));
+    }
+    for (int i = 0; i <= 2 * w; ++i)
+      u.push_back(i / (2.0 * w)), v.push_back(0.5);  // centres, edges
+    for (double special :
+         {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity(), 1e16, -1e16, 1e14, -0.0})
+      u.push_back(special), v.push_back(inside(rng)), u.push_back(inside(rng)),
+          v.push_back(special);
+    const size_t n = u.size();
+    std::vector<double> got(3 * n);
+    for (model::Wrap ws : wraps) {
+      for (model::Wrap wt : wraps) {
+        tex.wrap_s = ws;
+        tex.wrap_t = wt;
+        for (std::int64_t t : targets) {
+          hwy::SetSupportedTargetsForTest(t);
+          reference::sample_bilinear(tex, u.data(), v.data(), got.data(), n);
+          size_t bad = 0;
+          for (size_t i = 0; i < n; ++i) {
+            const glm::dvec3 want = model::sample_bilinear(tex, {u[i], v[i]});
+            for (int c = 0; c < 3; ++c) {
+              if (std::bit_cast<std::uint64_t>(got[c * n + i]) !=
+                      std::bit_cast<std::uint64_t>(want[c]) &&
+                  ++bad <= 3)
+                ADD_FAILURE() << hwy::TargetName(t) << " " << w << "x" << h << " "
+                              << model::wrap_name(ws) << "/" << model::wrap_name(wt) << " at ("
+                              << u[i] << ", " << v[i] << ") channel " << c << ": lanes "
+                              << got[c * n + i] << ", model " << want[c];
+            }
+            ++compared;
+          }
+          EXPECT_EQ(bad, 0u) << hwy::TargetName(t);
+        }
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GT(compared, 100000u);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "model/texture_sampling.h"
 #include "model/translucency.h"
+#include "paths/reference/bilinear_lanes-inl.h"
 #include "paths/reference/exact_pow-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -91,11 +92,17 @@ V3 each_lane3(F f) {
   }
   return {hn::Load(D(), rgb[0]), hn::Load(D(), rgb[1]), hn::Load(D(), rgb[2])};
 }
+// model::sample_bilinear at the run's (u, v) from lane o on (bilinear_lanes-inl.h).
+V3 sample_map(const model::Texture& texture, const PixelRun& run, size_t o) {
+  V rgb[3];
+  SampleBilinear(D(), texture, widen(run.uv[0] + o), widen(run.uv[1] + o), rgb);
+  return {rgb[0], rgb[1], rgb[2]};
+}
+
 V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run, size_t o) {
   const V zero = hn::Zero(D());
   const V3 zero3{zero, zero, zero};
   const V3 P = widen3(run.position, o);
-  auto uv = [&](size_t i) { return glm::dvec2(run.uv[0][o + i], run.uv[1][o + i]); };
   // view_vector: -forward (orthographic), else len > 0 ? -P_rel / len : -forward.
   const V3 forward_back = k(-scene.camera.forward());
   V3 view = forward_back;
@@ -117,10 +124,7 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
         T = mul(widen3(run.thickness, o), k(tr->tint));
         break;
       case ThicknessSource::Texture:
-        T = mul(each_lane3([&](size_t i) {
-                  return model::sample_bilinear(tr->thickness_map->texture, uv(i));
-                }),
-                k(tr->tint));
+        T = mul(sample_map(tr->thickness_map->texture, run, o), k(tr->tint));
         break;
       case ThicknessSource::Constant:
         T = k(tr->thickness * tr->tint);
@@ -179,9 +183,7 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
   // diffuse_albedo(material, uv) * (ambient_light + sum); a map's albedo is albedo * sample.
   V3 albedo = k(material.albedo);
   if (material.albedo_map) {
-    albedo = mul(albedo, each_lane3([&](size_t i) {
-                   return model::sample_bilinear(material.albedo_map->texture, uv(i));
-                 }));
+    albedo = mul(albedo, sample_map(material.albedo_map->texture, run, o));
   }
   return mul(albedo, add(k(scene.ambient_light), sum));
 }
@@ -212,6 +214,26 @@ size_t ExactPowArray(const double* x, double p, double* out, size_t n) {
   return calls;
 }
 
+void SampleBilinearArray(const model::Texture& texture, const double* u, const double* v,
+                         double* rgb, size_t n) {
+  const hn::CappedTag<double, 1> d1;
+  const D d;
+  size_t i = 0;
+  const auto store = [&](auto dd, size_t at, auto(&c)[3]) {
+    for (int ch = 0; ch < 3; ++ch) hn::StoreU(c[ch], dd, rgb + ch * n + at);
+  };
+  for (; i + hn::Lanes(d) <= n; i += hn::Lanes(d)) {
+    V c[3];
+    SampleBilinear(d, texture, hn::LoadU(d, u + i), hn::LoadU(d, v + i), c);
+    store(d, i, c);
+  }
+  for (; i < n; ++i) {
+    hn::Vec<decltype(d1)> c[3];
+    SampleBilinear(d1, texture, hn::LoadU(d1, u + i), hn::LoadU(d1, v + i), c);
+    store(d1, i, c);
+  }
+}
+
 }  // namespace lt::reference::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -220,6 +242,12 @@ namespace lt::reference {
 
 HWY_EXPORT(ShadeRun);
 HWY_EXPORT(ExactPowArray);
+HWY_EXPORT(SampleBilinearArray);
+
+void sample_bilinear(const model::Texture& texture, const double* u, const double* v, double* rgb,
+                     size_t n) {
+  HWY_DYNAMIC_DISPATCH(SampleBilinearArray)(texture, u, v, rgb, n);
+}
 
 size_t exact_pow(const double* x, double p, double* out, size_t n) {
   return HWY_DYNAMIC_DISPATCH(ExactPowArray)(x, p, out, n);

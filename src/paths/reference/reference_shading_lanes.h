@@ -1,15 +1,16 @@
 // The reference's shading of a run of covered pixels (paths/common/pixel_run.h) in double vector
 // lanes (Highway): model::shade (model/translucency.h) operation for operation, one pixel a lane,
 // so every lane's result is model::shade's to the bit (tests/reference_lanes_test.cpp holds the
-// two equal). What has no vector form that is the scalar one to the bit stays per lane: the
-// texture samples (model::sample_bilinear, sample_ramp), and std::pow for the lobe where the
-// lanes cannot certify their own power's value (exact_pow-inl.h).
+// two equal). What has no vector form that is the scalar one to the bit stays per lane: a lobe
+// ramp's sample (model::sample_ramp), std::pow for the lobe where the lanes cannot certify their
+// own power's value (exact_pow-inl.h), and a map's texel loads (bilinear_lanes-inl.h).
 //
 // One binary for every x86-64 machine: each Highway target is compiled and the best the CPU runs
 // is chosen at the first call (HWY_DYNAMIC_DISPATCH). The lanes use + - * / sqrt and compares
 // only, each IEEE-rounded in double on every target, and nothing is fused (-ffp-contract=off).
 #pragma once
 
+#include "model/texture_sampling.h"
 #include "paths/common/pixel_run.h"
 #include "scene/scene.h"
 
@@ -24,5 +25,10 @@ void shade_run(const Scene& scene, const Material& material, const PixelRun& run
 // out[i] = std::pow(x[i], p) for i < n, through the lobe's lanes (exact_pow-inl.h) on the best
 // target the CPU runs; returns how many of the n went through std::pow itself.
 size_t exact_pow(const double* x, double p, double* out, size_t n);
+
+// model::sample_bilinear(texture, (u[i], v[i])) for i < n through the maps' lanes
+// (bilinear_lanes-inl.h): channel c of sample i in rgb[c * n + i].
+void sample_bilinear(const model::Texture& texture, const double* u, const double* v, double* rgb,
+                     size_t n);
 
 }  // namespace lt::reference
