@@ -177,8 +177,9 @@ TEST(ExactPow, IsStdPowToTheBitOnEveryTarget) {
 
 // A map's sample in lanes (bilinear_lanes-inl.h) against model::sample_bilinear, bit for bit on
 // every target: textures of odd sizes (one texel, one row, one column) under every pair of wrap
-// modes, at coordinates inside and outside [0, 1] (so both the lanes' taps and model's wrapping
-// are taken), on texel centres and edges, and NaN, Inf and beyond 1e15 texels.
+// modes, at coordinates inside and outside [0, 1] and far outside (up to the 1e15 texels where
+// the wrap stops: there the quotient of the modulo is rounded), on texel centres and edges, and
+// NaN, Inf and beyond 1e15 texels.
 TEST(BilinearLanes, IsModelSampleBilinearToTheBitOnEveryTarget) {
   std::mt19937_64 rng(39);
   std::uniform_real_distribution<double> texel_value(-1, 2), inside(0, 1), outside(-3, 4);

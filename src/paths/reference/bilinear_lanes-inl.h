@@ -1,9 +1,8 @@
 // model::sample_bilinear (model/texture_sampling.h, the definition) in double vector lanes, a
-// pixel's (u, v) a lane: the taps' positions, weights and wrap in the lanes with the scalar's
-// operations in its order, the texel loads a lane at a time, the filter in the lanes in its
-// order, so every lane is model::sample_bilinear's value to the bit. A lane whose REPEAT or
-// MIRRORED_REPEAT index leaves the texture (a coordinate outside [0, 1], rare on a mapped
-// surface) takes its taps from model::bilinear_taps itself, which owns the wrapping arithmetic.
+// pixel's (u, v) a lane: the taps' positions, weights and wrapped indices in the lanes with the
+// scalar's operations in its order (the wrap's modulo exact in double), the texel loads a lane
+// at a time, the filter in the lanes in its order, so every lane is model::sample_bilinear's
+// value to the bit.
 // Included once per Highway target by a file compiled through hwy/foreach_target.h, so it has
 // Highway's per-target include guard instead of #pragma once. tests/reference_lanes_test.cpp
 // holds it to model::sample_bilinear on every target.
@@ -17,7 +16,6 @@
 #include <hwy/highway.h>
 
 #include <cstddef>
-#include <cstdint>
 
 #include "model/texture_sampling.h"
 
@@ -26,12 +24,25 @@ namespace lt::reference::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // One axis's taps of every lane (model's axis_taps): the lower and upper texel and the upper's
-// weight; `scalar` marks the lanes whose wrapped index model::bilinear_taps must give.
+// weight.
 template <class D>
 struct AxisTapsLanes {
   hn::Vec<D> i0, i1, f;
-  hn::Mask<D> scalar;
 };
+
+// model's wrap_index: i modulo the period (size, or 2 size mirrored) into [0, period), mirrored
+// back into [0, size). Exact in double: i is a whole number of at most 1e15 + 1 (axis_taps clamps
+// beyond), so where i / period is not whole it lies at least 1 / period from the next whole
+// number, while its rounding moves it at most 1e15 * 2^-53 / period = 0.11 / period; the floor of
+// the rounded quotient is the true one, and i - q * period is exact (both below 2^53).
+template <class D>
+HWY_INLINE hn::Vec<D> WrapIndex(D d, hn::Vec<D> i, int size, model::Wrap wrap) {
+  const double period = wrap == model::Wrap::Repeat ? size : 2.0 * size;
+  const auto p = hn::Set(d, period);
+  const auto m = hn::Sub(i, hn::Mul(hn::Floor(hn::Div(i, p)), p));
+  return hn::IfThenElse(hn::Lt(m, hn::Set(d, static_cast<double>(size))), m,
+                        hn::Sub(hn::Set(d, period - 1), m));
+}
 
 template <class D>
 HWY_INLINE AxisTapsLanes<D> AxisTaps(D d, hn::Vec<D> coordinate, int size, model::Wrap wrap) {
@@ -45,15 +56,14 @@ HWY_INLINE AxisTapsLanes<D> AxisTaps(D d, hn::Vec<D> coordinate, int size, model
   const auto i0c = hn::Floor(xc);
   const auto i1c = hn::Min(hn::Add(i0c, hn::Set(d, 1.0)), last);
   const auto fc = hn::Sub(xc, i0c);
-  if (wrap == model::Wrap::ClampToEdge) return {i0c, i1c, fc, hn::FirstN(d, 0)};
+  if (wrap == model::Wrap::ClampToEdge) return {i0c, i1c, fc};
   const auto clamped = hn::Or(hn::Not(hn::IsFinite(x)), hn::Gt(hn::Abs(x), hn::Set(d, 1e15)));
-  // REPEAT and MIRRORED_REPEAT: lower = floor(x), f = x - lower, each index wrapped; inside the
-  // texture the wrap leaves it, outside it is model's to wrap.
+  // REPEAT and MIRRORED_REPEAT: lower = floor(x), f = x - lower, each index wrapped.
   const auto lower = hn::Floor(x);
-  const auto upper = hn::Add(lower, hn::Set(d, 1.0));
-  const auto inside = hn::And(hn::Ge(lower, hn::Zero(d)), hn::Le(upper, last));
-  return {hn::IfThenElse(clamped, i0c, lower), hn::IfThenElse(clamped, i1c, upper),
-          hn::IfThenElse(clamped, fc, hn::Sub(x, lower)), hn::AndNot(clamped, hn::Not(inside))};
+  const auto i0 = WrapIndex(d, lower, size, wrap);
+  const auto i1 = WrapIndex(d, hn::Add(lower, hn::Set(d, 1.0)), size, wrap);
+  return {hn::IfThenElse(clamped, i0c, i0), hn::IfThenElse(clamped, i1c, i1),
+          hn::IfThenElse(clamped, fc, hn::Sub(x, lower))};
 }
 
 // model::sample_bilinear(texture, (u[i], v[i])) for every lane i.
@@ -72,20 +82,6 @@ HWY_INLINE void SampleBilinear(D d, const model::Texture& texture, hn::Vec<D> u,
   hn::Store(tx.f, d, fx);
   hn::Store(ty.f, d, fy);
   const size_t n = hn::Lanes(d);
-  if (!hn::AllFalse(d, hn::Or(tx.scalar, ty.scalar))) {
-    alignas(HWY_MAX_BYTES) double us[kMaxLanes], vs[kMaxLanes];
-    hn::Store(u, d, us);
-    hn::Store(v, d, vs);
-    const hn::RebindToUnsigned<D> du;
-    alignas(HWY_MAX_BYTES) std::uint64_t scalar[kMaxLanes];
-    hn::Store(hn::BitCast(du, hn::VecFromMask(d, hn::Or(tx.scalar, ty.scalar))), du, scalar);
-    for (size_t i = 0; i < n; ++i) {
-      if (scalar[i] == 0) continue;
-      const model::BilinearTaps t = model::bilinear_taps(
-          texture.width, texture.height, {us[i], vs[i]}, texture.wrap_s, texture.wrap_t);
-      x0[i] = t.x0, x1[i] = t.x1, y0[i] = t.y0, y1[i] = t.y1, fx[i] = t.fx, fy[i] = t.fy;
-    }
-  }
   // The four texels of each lane, channel by channel (float texels widened, as texel() does).
   alignas(HWY_MAX_BYTES) double t00[3][kMaxLanes], t10[3][kMaxLanes], t01[3][kMaxLanes],
       t11[3][kMaxLanes];
