@@ -1,5 +1,6 @@
 // The CPU paths' G-buffer pass (issue 39): the float G-buffer's rasterisation through llvmpipe and
-// its read-back, on each demo scene at 1280x720, beside flat's whole frame on the same context: the
+// its read-back, on each demo scene at 1280x720, beside the reference's whole frame (the pass,
+// the gather into runs and the shading, on one thread) and flat's frame on the same context: the
 // part of a reference or half frame that is not shading, and the baseline the bench divides by.
 //
 //   LP_NUM_THREADS=0 taskset -c 1 build/bench_gbuffer --benchmark_counters_tabular=true
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "core/build_paths.h"
+#include "core/parallel_rows.h"
 #include "load/load_scene.h"
 #include "paths/common/gbuffer.h"
 #include "paths/path.h"
@@ -53,7 +55,22 @@ void BM_FlatFrame(benchmark::State& state) {
   state.SetLabel(demo_scenes()[static_cast<size_t>(state.range(0))]);
 }
 
+// One thread, as `ltrender bench` times the CPU paths.
+void BM_ReferenceFrame(benchmark::State& state) {
+  SceneAtWideSize s(demo_scenes()[static_cast<size_t>(state.range(0))]);
+  const unsigned saved = lt::worker_threads_setting().load();
+  lt::worker_threads_setting() = 1;
+  std::unique_ptr<lt::Path> reference = s.session.build(lt::find_path("reference"), "");
+  for (auto _ : state) {
+    reference->frame();
+    glFinish();
+  }
+  lt::worker_threads_setting() = saved;
+  state.SetLabel(demo_scenes()[static_cast<size_t>(state.range(0))]);
+}
+
 BENCHMARK(BM_GBufferPass)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceFrame)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FlatFrame)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -1,7 +1,9 @@
-// The TEV's per-component arithmetic (gx-hardware.md §1.2-1.4), shared by the interpreter of the
-// register state (tev.cpp run_tev, the definition the tests check) and the per-draw plan the
-// pixel stage runs (tev_plan.h): operand widths, the regular equation with its fields decoded
-// once, the compare stage. One copy, so the two can differ only in how they find the operands.
+// The TEV's per-component arithmetic (gx-hardware.md §1.2-1.4): operand widths, the regular
+// equation with its fields decoded once (regular_op, which the per-draw plan of tev_plan.h keeps),
+// the compare stage. The interpreter of the register state (tev.cpp run_tev, the definition the
+// tests check) computes with these functions; the pixel stage's plan computes the same steps in
+// vector lanes (tev_plan_lanes.cpp, each named after its function here), and
+// tests/gx_tev_plan_test.cpp holds the two together on every target.
 #pragma once
 
 #include <algorithm>

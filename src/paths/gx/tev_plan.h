@@ -17,7 +17,7 @@ namespace lt::gx {
 
 class TevPlan {
  public:
-  // Where each value sits in a pixel's value array (TevValues). Registers, channels and texels
+  // Where each value sits in a pixel's value array (Values). Registers, channels and texels
   // change per pixel; the constants and the konst values are the draw's.
   static constexpr int kRegisters = 0;                              // 4 registers x r g b a
   static constexpr int kChannels = kRegisters + 4 * kTevRegisters;  // COLOR0A0, COLOR1A1
@@ -50,7 +50,7 @@ class TevPlan {
 
   explicit TevPlan(const TevState& state);
 
-  // The constants of this draw written into every lane of `values` (once per worker and draw).
+  // The constants of this draw written into every lane of `values` (once per band and draw).
   void start(Values& values) const;
   // The TEV's output for each lane's pixel, whose inputs `values` holds; overwrites its
   // registers. Every lane is run: a caller ignores the lanes that hold no pixel.
