@@ -46,9 +46,9 @@ inline constexpr int kMaxKonstColors = 4;     // GX_KCOLOR0..3 [OGC gx.h L692-69
 inline constexpr int kTevRegisters = 4;       // PREV, REG0..2 [OGC gx.h L637-641]
 inline constexpr int kMaxTextureSize = 1024;  // per side [OGC gx.h L4263-4264]
 
-// Pixels of one row the CPU pixel stage takes at a time in vector lanes (pixel_stage.cpp): a
-// multiple of every x86-64 target's 32-bit lanes (AVX-512 has 16), so each target runs whole
-// vectors, and short enough that a small triangle's spans waste little.
+// Covered pixels of one triangle the CPU pixel stage takes at a time in vector lanes (a run,
+// raster_run.h): a multiple of every x86-64 target's 32-bit lanes (AVX-512 has 16), so each
+// target runs whole vectors, and few enough that a small triangle's run wastes little.
 inline constexpr int kPixelLanes = 16;
 
 // libogc's "none" selectors [OGC gx.h]: GX_TEXCOORDNULL, GX_TEXMAP_NULL, GX_COLORNULL.
