@@ -1,7 +1,8 @@
 // The CPU paths' per-pixel stages (issue 39): pixels per second of the half path's fp16 shading
 // and the reference's double shading, a run of 64 G-buffer pixels at a time in vector lanes, and
 // what each did before (Imath's software rounding, model::shade a pixel at a time); values per
-// second of the fp16 rounding alone. Light evaluations per second ("light_evals") are pixels
+// second of the fp16 rounding alone, of the lobe's power and of a map's sample, each in lanes
+// and as before. Light evaluations per second ("light_evals") are pixels
 // times the scene's lights: the bench's work axis for these paths (docs/bench.md).
 //
 //   build/bench_cpu_shading --benchmark_counters_tabular=true
@@ -16,6 +17,7 @@
 
 #include "core/build_paths.h"
 #include "load/load_scene.h"
+#include "model/texture_sampling.h"
 #include "model/translucency.h"
 #include "paths/half/half_shading_lanes.h"
 #include "paths/reference/reference_shading_lanes.h"
@@ -96,6 +98,89 @@ void BM_ReferenceShadeScalar(benchmark::State& state) {
   count(state, run.count);
 }
 BENCHMARK(BM_ReferenceShadeScalar);
+
+// The lobe's t^p for a whole p: the lanes' own power (std::pow only where they cannot certify
+// it), and std::pow a value at a time as the reference called it before. t over (0, 1], with
+// every bit of a double's mantissa used (a dyadic t with few bits has an exact t^p, which the
+// lanes always keep: not the lobe's case).
+std::vector<double> lobe_bases() {
+  std::vector<double> t(4096);
+  for (size_t i = 0; i < t.size(); ++i)
+    t[i] = std::fmod((static_cast<double>(i) + 1.0) * 0.6180339887498949, 1.0) + 1e-9;
+  return t;
+}
+
+void values_per_second(benchmark::State& state, size_t n) {
+  state.counters["values"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * n), benchmark::Counter::kIsRate);
+}
+
+// Arg: the power.
+void BM_ExactPowLanes(benchmark::State& state) {
+  const std::vector<double> t = lobe_bases();
+  std::vector<double> out(t.size());
+  size_t calls = 0;
+  for (auto _ : state) {
+    calls = lt::reference::exact_pow(t.data(), static_cast<double>(state.range(0)), out.data(),
+                                     t.size());
+    benchmark::DoNotOptimize(out.data());
+  }
+  values_per_second(state, t.size());
+  state.counters["std_pow_share"] = static_cast<double>(calls) / static_cast<double>(t.size());
+}
+BENCHMARK(BM_ExactPowLanes)->ArgName("p")->Arg(3)->Arg(8)->Arg(32);
+
+void BM_StdPow(benchmark::State& state) {
+  const std::vector<double> t = lobe_bases();
+  std::vector<double> out(t.size());
+  const double p = static_cast<double>(state.range(0));
+  for (auto _ : state) {
+    for (size_t i = 0; i < t.size(); ++i) out[i] = std::pow(t[i], p);
+    benchmark::DoNotOptimize(out.data());
+  }
+  values_per_second(state, t.size());
+}
+BENCHMARK(BM_StdPow)->ArgName("p")->Arg(3)->Arg(8)->Arg(32);
+
+// A map's bilinear sample: in the reference's lanes, and model::sample_bilinear a sample at a
+// time. A 512 x 512 REPEAT texture (debian_box_textured's albedo map is one), coordinates over
+// [-0.5, 1.5] so both the inside and the wrapped taps are taken.
+struct MapSamples {
+  lt::model::Texture texture;
+  std::vector<double> u, v;
+  MapSamples() {
+    texture.width = texture.height = 512;
+    texture.wrap_s = texture.wrap_t = lt::model::Wrap::Repeat;
+    texture.texels.resize(512 * 512 * 3);
+    for (size_t i = 0; i < texture.texels.size(); ++i)
+      texture.texels[i] = static_cast<float>(i % 251) / 250.0f;
+    for (int i = 0; i < 4096; ++i) {
+      u.push_back(-0.5 + 2.0 * ((i * 37) % 4096) / 4096.0);
+      v.push_back(-0.5 + 2.0 * ((i * 101) % 4096) / 4096.0);
+    }
+  }
+};
+
+void BM_SampleBilinearLanes(benchmark::State& state) {
+  const MapSamples m;
+  std::vector<double> rgb(3 * m.u.size());
+  for (auto _ : state) {
+    lt::reference::sample_bilinear(m.texture, m.u.data(), m.v.data(), rgb.data(), m.u.size());
+    benchmark::DoNotOptimize(rgb.data());
+  }
+  values_per_second(state, m.u.size());
+}
+BENCHMARK(BM_SampleBilinearLanes);
+
+void BM_SampleBilinearScalar(benchmark::State& state) {
+  const MapSamples m;
+  for (auto _ : state) {
+    for (size_t i = 0; i < m.u.size(); ++i)
+      benchmark::DoNotOptimize(lt::model::sample_bilinear(m.texture, {m.u[i], m.v[i]}));
+  }
+  values_per_second(state, m.u.size());
+}
+BENCHMARK(BM_SampleBilinearScalar);
 
 std::vector<float> operation_results() {
   std::vector<float> v(4096);

@@ -1,8 +1,10 @@
-// The gx path's CPU pixel stage (issue 39): TEV stage-pixels per second through
-// lt::gx::draw_triangles -- rasterised attributes, early z, texture fetch, TEV, alpha test,
-// blend -- for a grid of triangles covering an EFB, with the t=vertex variant's kind of program
-// (a fetch from an I8 LUT modulated by the lit channels, three stages). The "stage_pixels"
-// counter is the rate; `ltrender bench` prints the same work as "TEV ... stage-pixels".
+// The gx path's CPU pixel stage (issue 39), whole and stage by stage. Whole: TEV stage-pixels per
+// second through lt::gx::draw_triangles -- rasterised attributes, early z, texture fetch, TEV,
+// alpha test, blend -- for a grid of triangles covering an EFB, with the t=vertex variant's kind
+// of program (a fetch from an I8 LUT modulated by the lit channels, three stages); the
+// "stage_pixels" counter is the rate, and `ltrender bench` prints the same work as "TEV ...
+// stage-pixels". By stage: one run of pixels through each of its steps (BM_GxRasterRun,
+// BM_GxTevPlanRun, BM_GxSampleTextureRun), in pixels per second.
 //
 //   build/bench_gx_pixel_stage --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
@@ -12,6 +14,9 @@
 #include "core/parallel_rows.h"
 #include "paths/gx/gx_state.h"
 #include "paths/gx/pixel_stage.h"
+#include "paths/gx/raster_run.h"
+#include "paths/gx/tev_plan.h"
+#include "paths/gx/texture_unit.h"
 
 namespace {
 
@@ -144,6 +149,79 @@ BENCHMARK(BM_GxPixelStage)
     ->Args({32, 0})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+
+// The stages of a run one at a time, kPixelLanes pixels of one triangle: the rasterised values
+// (depth, two channels, one texture coordinate) in lanes, the three-stage TEV plan in lanes, and
+// the LUT's bilinear fetch for the run; "pixels" is the rate.
+void pixels_per_second(benchmark::State& state) {
+  state.counters["pixels"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * kPixelLanes), benchmark::Counter::kIsRate);
+}
+
+const Triangle& one_triangle() {
+  static const Triangle t = grid(32).front();
+  return t;
+}
+
+RunPixels run_of(const Triangle& t) {
+  RunPixels pixels;
+  for (s32 y = t.min_y; y < t.max_y && !pixels.full(); ++y) {
+    s32 xb, xe;
+    covered_span(t, y, xb, xe);
+    for (s32 x = xb; x < xe && !pixels.full(); ++x) pixels.add(x, y);
+  }
+  pixels.pad();
+  return pixels;
+}
+
+void BM_GxRasterRun(benchmark::State& state) {
+  const Triangle& t = one_triangle();
+  const RunPixels pixels = run_of(t);
+  RunValues values;
+  for (auto _ : state) {
+    run_depths(t, pixels, values);
+    run_attributes(t, pixels, false, values);
+    benchmark::DoNotOptimize(values.uv[0][0][0]);
+  }
+  pixels_per_second(state);
+}
+BENCHMARK(BM_GxRasterRun);
+
+void BM_GxTevPlanRun(benchmark::State& state) {
+  const GxState st = program();
+  const TevPlan plan(st.tev);
+  TevPlan::Values values;
+  plan.start(values);
+  for (int c = 0; c < kMaxChannels; ++c)
+    for (int i = 0; i < 4; ++i)
+      for (int lane = 0; lane < kPixelLanes; ++lane) values.channel(c, i)[lane] = 40 * c + lane;
+  TevPlan::Output out;
+  for (auto _ : state) {
+    plan.run(values, out);
+    benchmark::DoNotOptimize(out.c[0][0]);
+  }
+  pixels_per_second(state);
+  state.counters["stage_pixels"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * kPixelLanes * plan.num_stages()),
+                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_GxTevPlanRun);
+
+void BM_GxSampleTextureRun(benchmark::State& state) {
+  const TextureObject texture = lut();
+  s32 u[kPixelLanes], v[kPixelLanes];
+  for (int i = 0; i < kPixelLanes; ++i) {
+    u[i] = 100 * i + 37;
+    v[i] = 64 + 3 * i;
+  }
+  Color8 texels[kPixelLanes];
+  for (auto _ : state) {
+    sample_texture_at(texture, u, v, kPixelLanes, texels);
+    benchmark::DoNotOptimize(texels[0]);
+  }
+  pixels_per_second(state);
+}
+BENCHMARK(BM_GxSampleTextureRun);
 
 }  // namespace
 
