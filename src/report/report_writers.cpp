@@ -38,8 +38,9 @@ std::string stats_note(const BenchRow& r) {
   auto add = [&](const std::string& s) { n += (n.empty() ? "" : "; ") + s; };
   const FrameStats& st = r.stats;
   if (r.shading_mpixels_per_s) {
-    add("CPU shading " + fmt(*r.shading_mpixels_per_s) + " Mpixels/s on " +
-        fmt(st.threads.value_or(1), 0) + " threads");
+    const double threads = st.threads.value_or(1);
+    add("CPU shading " + fmt(*r.shading_mpixels_per_s) + " Mpixels/s on " + fmt(threads, 0) +
+        (threads == 1 ? " thread" : " threads"));
   }
   if (st.cpu_vertex_seconds)
     add("per-vertex CPU " + fmt(*st.cpu_vertex_seconds * 1e3) + " ms a frame");

@@ -25,8 +25,9 @@ void CpuShadedPath::frame() {
 
 std::vector<BuiltStage> CpuShadedPath::stages() const {
   std::vector<BuiltStage> out = gbuffer_.stages();
-  out.push_back(
-      {"shading: " + shading_ + " on " + std::to_string(threads()) + " threads", "cpu", ""});
+  out.push_back({"shading: " + shading_ + " on " + std::to_string(threads()) +
+                     (threads() == 1 ? " thread" : " threads"),
+                 "cpu", ""});
   return out;
 }
 
