@@ -17,6 +17,7 @@
 
 #include "core/build_paths.h"
 #include "load/load_scene.h"
+#include "model/lobe_power.h"
 #include "model/texture_sampling.h"
 #include "model/translucency.h"
 #include "paths/half/half_shading_lanes.h"
@@ -99,10 +100,9 @@ void BM_ReferenceShadeScalar(benchmark::State& state) {
 }
 BENCHMARK(BM_ReferenceShadeScalar);
 
-// The lobe's t^p for a whole p: the lanes' own power (std::pow only where they cannot certify
-// it), and std::pow a value at a time as the reference called it before. t over (0, 1], with
-// every bit of a double's mantissa used (a dyadic t with few bits has an exact t^p, which the
-// lanes always keep: not the lobe's case).
+// The lobe's t^p for a whole p: model::lobe_power in vector lanes (the reference's), and std::pow
+// a value at a time as the reference called it before. t over (0, 1], with every bit of a
+// double's mantissa used.
 std::vector<double> lobe_bases() {
   std::vector<double> t(4096);
   for (size_t i = 0; i < t.size(); ++i)
@@ -116,19 +116,19 @@ void values_per_second(benchmark::State& state, size_t n) {
 }
 
 // Arg: the power.
-void BM_ExactPowLanes(benchmark::State& state) {
+void BM_LobePowerLanes(benchmark::State& state) {
   const std::vector<double> t = lobe_bases();
   std::vector<double> out(t.size());
   size_t calls = 0;
   for (auto _ : state) {
-    calls = lt::reference::exact_pow(t.data(), static_cast<double>(state.range(0)), out.data(),
-                                     t.size());
+    calls =
+        lt::model::lobe_power(t.data(), static_cast<double>(state.range(0)), out.data(), t.size());
     benchmark::DoNotOptimize(out.data());
   }
   values_per_second(state, t.size());
   state.counters["std_pow_share"] = static_cast<double>(calls) / static_cast<double>(t.size());
 }
-BENCHMARK(BM_ExactPowLanes)->ArgName("p")->Arg(3)->Arg(8)->Arg(32);
+BENCHMARK(BM_LobePowerLanes)->ArgName("p")->Arg(3)->Arg(8)->Arg(32);
 
 void BM_StdPow(benchmark::State& state) {
   const std::vector<double> t = lobe_bases();

@@ -52,7 +52,7 @@ Scene lanes_scene(Camera::Projection projection) {
   Translucency flat_lobe = constant;
   flat_lobe.power = 0;  // 0^0 := 1
   Translucency whole = constant;
-  whole.power = 6;  // a whole power: the lanes' own x^p (exact_pow-inl.h)
+  whole.power = 6;  // a whole power: model::lobe_power's own x^p
   s.materials = {Material{"constant", {0.9, 0.8, 0.7}, nullptr, constant},
                  Material{"whole_power", {0.7, 0.9, 0.8}, nullptr, whole},
                  Material{"normalised_vertex", {0.5, 1, 0.25}, nullptr, normalised},
@@ -118,58 +118,6 @@ TEST(ReferenceLanes, EveryTargetIsModelShadeToTheBit) {
       std::mt19937 rng(39);
       for (size_t m = 0; m < scene.materials.size(); ++m)
         EXPECT_EQ(mismatches(scene, m, rng), 0u) << hwy::TargetName(t) << " " << m;
-    }
-  }
-  hwy::SetSupportedTargetsForTest(0);
-}
-
-// The lobe's power in lanes (exact_pow-inl.h) against std::pow, bit for bit on every target: whole
-// powers 1..64 where the lanes compute x^p themselves, and others that go through std::pow; x
-// over (0, 1] as the lobe's t, near 1, near the underflow, the powers of two, and the values the
-// lobe never passes but the function must still answer as std::pow (0, negatives, NaN, Inf).
-TEST(ExactPow, IsStdPowToTheBitOnEveryTarget) {
-  std::mt19937_64 rng(20261206);
-  std::vector<double> xs;
-  std::uniform_real_distribution<double> unit(0, 1);
-  constexpr size_t kUniform = 200000;
-  for (size_t i = 0; i < kUniform; ++i) xs.push_back(unit(rng));
-  for (int i = 0; i < 20000; ++i) {
-    // Any positive double up to 1: random mantissa bits at every exponent, subnormals included.
-    const std::uint64_t bits = rng() % 0x3ff0000000000001ull;
-    xs.push_back(std::bit_cast<double>(bits));
-  }
-  for (int k = 0; k < 2000; ++k) xs.push_back(1.0 - k * 0x1p-53);
-  for (int e = 0; e <= 1074; ++e) xs.push_back(std::ldexp(1.0, -e));
-  for (double special : {0.0, -0.0, -0.5, 1.0, 1.5, std::numeric_limits<double>::quiet_NaN(),
-                         std::numeric_limits<double>::infinity()})
-    xs.push_back(special);
-  std::vector<double> got(xs.size());
-  const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  ASSERT_GE(targets.size(), 2u);
-  for (double p :
-       {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 12.0, 16.0, 31.0, 33.0, 64.0, 3.5, 0.25, 65.0}) {
-    for (std::int64_t t : targets) {
-      hwy::SetSupportedTargetsForTest(t);
-      const size_t calls = reference::exact_pow(xs.data(), p, got.data(), xs.size());
-      size_t bad = 0;
-      for (size_t i = 0; i < xs.size(); ++i) {
-        const double want = std::pow(xs[i], p);
-        if (std::bit_cast<std::uint64_t>(got[i]) != std::bit_cast<std::uint64_t>(want) &&
-            ++bad <= 3)
-          ADD_FAILURE() << hwy::TargetName(t) << " pow(" << std::hexfloat << xs[i] << ", "
-                        << std::defaultfloat << p << "): lanes " << std::hexfloat << got[i]
-                        << ", std::pow " << want;
-      }
-      EXPECT_EQ(bad, 0u) << hwy::TargetName(t) << " p = " << p;
-      // The lanes take whole powers up to 64 themselves: of the uniform values (the lobe's t),
-      // only those within 1/16 ULP of a midpoint either way (1 in 8) or near underflow call.
-      const size_t uniform_calls = reference::exact_pow(xs.data(), p, got.data(), kUniform);
-      if (p == std::floor(p) && p <= 64) {
-        EXPECT_LT(static_cast<double>(uniform_calls) / kUniform, 0.14)
-            << hwy::TargetName(t) << " p = " << p;
-      } else {
-        EXPECT_EQ(calls, xs.size()) << hwy::TargetName(t) << " p = " << p;
-      }
     }
   }
   hwy::SetSupportedTargetsForTest(0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/lobe_power.h"
 #include "model/texture_sampling.h"
 
 namespace lt::model {
@@ -10,7 +11,7 @@ namespace lt::model {
 double lobe(double t, double p) {
   if (p == 0) return 1.0;  // 0^0 := 1: the lobe is flat, t plays no part
   if (t <= 0) return 0.0;
-  return std::pow(t, p);
+  return lobe_power(t, p);
 }
 
 LightSample sample_light(const Light& light, const glm::dvec3& P, const glm::dvec3& N) {

@@ -20,8 +20,9 @@ inline constexpr double kMinNormalLength = 1e-6;
 // gives a large finite value (1e6), never Inf. Validation guarantees kc + kl + kq > 0.
 inline constexpr double kMinAttenuationDenominator = 1e-6;
 
-// t^p with 0^0 := 1 and t^p := 0 for t = 0, p > 0. Underflow for huge p is a plain 0, not a
-// denormal soup: std::pow does that already in double.
+// t^p with 0^0 := 1 and t^p := 0 for t = 0, p > 0; otherwise lobe_power(t, p) (lobe_power.h: a
+// whole p correctly rounded, others std::pow). Underflow for huge p is a plain 0, not a denormal
+// soup: std::pow does that already in double.
 double lobe(double t, double p);
 
 // Unit light direction (towards the light) and attenuation for one light at world point P.

@@ -30,7 +30,8 @@ class ReferencePath final : public CpuShadedPath {
 const PathInfo& reference_path_info() {
   static const SingleVariantInfo<ReferencePath> info(
       "reference", "double precision on the CPU over a float G-buffer: the ground truth",
-      {"exact", "std::pow in double; the only variant"}, PathRole::GroundTruth);
+      {"exact", "double precision, a whole power of t correctly rounded; the only variant"},
+      PathRole::GroundTruth);
   return info;
 }
 

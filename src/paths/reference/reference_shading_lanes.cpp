@@ -12,10 +12,10 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "model/lobe_power-inl.h"
 #include "model/texture_sampling.h"
 #include "model/translucency.h"
 #include "paths/reference/bilinear_lanes-inl.h"
-#include "paths/reference/exact_pow-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace lt::reference::HWY_NAMESPACE {
@@ -156,7 +156,7 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
       }
       V t = dot(view, neg(H));
       t = hn::IfThenElse(hn::Lt(t, zero), zero, hn::IfThenElse(hn::Lt(k(1.0), t), k(1.0), t));
-      // material_lobe: the ramp at t, or lobe(t, p) (0^0 := 1, t <= 0 -> 0, else std::pow).
+      // material_lobe: the ramp at t, or lobe(t, p) (0^0 := 1, t <= 0 -> 0, else lobe_power).
       V3 lobe3;
       if (tr->ramp) {
         alignas(64) double ts[kPixelRunCapacity];
@@ -165,12 +165,11 @@ V3 shade_lanes(const Scene& scene, const Material& material, const PixelRun& run
       } else if (tr->power == 0) {
         lobe3 = {k(1.0), k(1.0), k(1.0)};
       } else {
-        // std::pow's value only where lobe() calls it: a lane whose t <= 0 takes 0 below
-        // whatever stands in it (a NaN t, which is not <= 0, still goes through std::pow as in
-        // lobe()). Most lanes of a whole power skip the call (exact_pow-inl.h says why their
-        // value is std::pow's).
+        // lobe_power only where lobe() calls it: a lane whose t <= 0 takes 0 below whatever
+        // stands in it (a NaN t, which is not <= 0, still goes through lobe_power as in lobe()).
         const auto positive = hn::Not(hn::Le(t, zero));
-        const V lobe = hn::IfThenElseZero(positive, ExactPow(D(), t, tr->power, positive));
+        const V lobe = hn::IfThenElseZero(
+            positive, model::HWY_NAMESPACE::LobePower(D(), t, tr->power, positive));
         lobe3 = {lobe, lobe, lobe};
       }
       // term += att * (lobe * scale + ambient) * T.
@@ -201,19 +200,6 @@ void ShadeRun(const Scene& scene, const Material& material, const PixelRun& run,
   }
 }
 
-size_t ExactPowArray(const double* x, double p, double* out, size_t n) {
-  const D d;
-  size_t calls = 0;
-  size_t i = 0;
-  for (; i + hn::Lanes(d) <= n; i += hn::Lanes(d))
-    hn::StoreU(ExactPow(d, hn::LoadU(d, x + i), p, hn::FirstN(d, hn::Lanes(d)), &calls), d,
-               out + i);
-  const hn::CappedTag<double, 1> d1;
-  for (; i < n; ++i)
-    hn::StoreU(ExactPow(d1, hn::LoadU(d1, x + i), p, hn::FirstN(d1, 1), &calls), d1, out + i);
-  return calls;
-}
-
 void SampleBilinearArray(const model::Texture& texture, const double* u, const double* v,
                          double* rgb, size_t n) {
   const hn::CappedTag<double, 1> d1;
@@ -241,16 +227,11 @@ HWY_AFTER_NAMESPACE();
 namespace lt::reference {
 
 HWY_EXPORT(ShadeRun);
-HWY_EXPORT(ExactPowArray);
 HWY_EXPORT(SampleBilinearArray);
 
 void sample_bilinear(const model::Texture& texture, const double* u, const double* v, double* rgb,
                      size_t n) {
   HWY_DYNAMIC_DISPATCH(SampleBilinearArray)(texture, u, v, rgb, n);
-}
-
-size_t exact_pow(const double* x, double p, double* out, size_t n) {
-  return HWY_DYNAMIC_DISPATCH(ExactPowArray)(x, p, out, n);
 }
 
 void shade_run(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out) {

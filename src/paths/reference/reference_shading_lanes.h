@@ -2,8 +2,9 @@
 // lanes (Highway): model::shade (model/translucency.h) operation for operation, one pixel a lane,
 // so every lane's result is model::shade's to the bit (tests/reference_lanes_test.cpp holds the
 // two equal). What has no vector form that is the scalar one to the bit stays per lane: a lobe
-// ramp's sample (model::sample_ramp), std::pow for the lobe where the lanes cannot certify their
-// own power's value (exact_pow-inl.h), and a map's texel loads (bilinear_lanes-inl.h).
+// ramp's sample (model::sample_ramp), std::pow for the lobe where model::lobe_power takes it
+// (a fractional power; model/lobe_power-inl.h is the whole power's lanes), and a map's texel loads
+// (bilinear_lanes-inl.h).
 //
 // One binary for every x86-64 machine: each Highway target is compiled and the best the CPU runs
 // is chosen at the first call (HWY_DYNAMIC_DISPATCH). The lanes use + - * / sqrt and compares
@@ -21,10 +22,6 @@ namespace lt::reference {
 // G-buffer values widened to double and V = model::view_vector(scene.camera, P). `scene`'s
 // light positions are camera-relative, as the G-buffer's.
 void shade_run(const Scene& scene, const Material& material, const PixelRun& run, ShadedRun& out);
-
-// out[i] = std::pow(x[i], p) for i < n, through the lobe's lanes (exact_pow-inl.h) on the best
-// target the CPU runs; returns how many of the n went through std::pow itself.
-size_t exact_pow(const double* x, double p, double* out, size_t n);
 
 // model::sample_bilinear(texture, (u[i], v[i])) for i < n through the maps' lanes
 // (bilinear_lanes-inl.h): channel c of sample i in rgb[c * n + i].
