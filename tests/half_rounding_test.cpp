@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "core/simd_target.h"
 #include "paths/half/half_shading_lanes.h"
 
 namespace lt {
@@ -106,12 +107,13 @@ TEST(HalfRounding, EveryTargetRoundsSeededProductsAndSumsAsImath) {
 }
 
 // The dispatch follows the target the test sets, so the loops above reach every target's code
-// (F16C and the float-arithmetic rounding alike) and not the best one five times.
+// (F16C and the float-arithmetic rounding alike) and not the best one five times: every
+// HWY_DYNAMIC_DISPATCH table (simd_target's among them) chooses from the targets set.
 TEST(HalfRounding, DispatchRunsTheTargetSet) {
   const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
   for (std::int64_t t : targets) {
     hwy::SetSupportedTargetsForTest(t);
-    EXPECT_EQ(fp16::simd_target(), hwy::TargetName(t));
+    EXPECT_EQ(simd_target(), hwy::TargetName(t));
   }
   hwy::SetSupportedTargetsForTest(0);
   // Both kinds of rounding are among them on any x86-64 machine with AVX2.

@@ -4,6 +4,7 @@
 #include <bit>
 
 #include "core/error.h"
+#include "core/simd_target.h"
 #include "core/stopwatch.h"
 #include "image/image.h"
 #include "paths/common/nothing_drawn.h"
@@ -283,7 +284,10 @@ class GxPath final : public Path {
                "float attribute planes, as Dolphin's software renderer",
          "cpu", ""});
     out.push_back(
-        {"depth test, texture unit, TEV and EFB per pixel on the CPU (integer)", "cpu", ""});
+        {"depth test, texture unit, TEV and EFB per pixel on the CPU (integer; the raster "
+         "values and the TEV in " +
+             simd_target() + " vector lanes)",
+         "cpu", ""});
     return out;
   }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/simd_target.h"
 #include "paths/common/cpu_shaded_path.h"
 #include "paths/half/half_shading.h"
 #include "paths/half/half_shading_lanes.h"
@@ -19,7 +20,7 @@ class HalfPath final : public CpuShadedPath {
  public:
   HalfPath(const PathContext& ctx, fp16::PowMode mode)
       : CpuShadedPath(ctx, "the half path's G-buffer",
-                      "fp16 emulation in " + fp16::simd_target() + " vector lanes"),
+                      "fp16 emulation in " + simd_target() + " vector lanes"),
         mode_(mode) {
     // The shader sees the G-buffer's camera-relative space, so its light positions are too.
     const Scene relative = camera_relative_lights(ctx);

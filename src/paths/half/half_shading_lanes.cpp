@@ -269,10 +269,6 @@ void SampleOne(const TextureH& texture, glm::dvec2 uv, bool guarded, float* rgb)
   rgb[2] = hn::GetLane(s.z);
 }
 
-int64_t Target() {
-  return HWY_TARGET;
-}
-
 }  // namespace lt::fp16::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -282,7 +278,6 @@ namespace lt::fp16 {
 HWY_EXPORT(ShadeRun);
 HWY_EXPORT(RoundToHalfArray);
 HWY_EXPORT(SampleOne);
-HWY_EXPORT(Target);
 
 Vec3h sample_half(const TextureH& texture, glm::dvec2 uv, bool guarded) {
   float rgb[3];
@@ -297,10 +292,6 @@ void shade_run(const SceneH& scene, const MaterialH& material, PowMode mode, con
 
 void round_to_half(const float* in, float* out, std::size_t n) {
   HWY_DYNAMIC_DISPATCH(RoundToHalfArray)(in, out, n);
-}
-
-std::string simd_target() {
-  return hwy::TargetName(HWY_DYNAMIC_DISPATCH(Target)());
 }
 
 }  // namespace lt::fp16

@@ -27,7 +27,4 @@ void shade_run(const SceneH& scene, const MaterialH& material, PowMode mode, con
 // bit against Imath's half, and what bench/ times.
 void round_to_half(const float* in, float* out, std::size_t n);
 
-// The Highway target shade_run runs on here ("AVX3", "AVX2", "SSE4", ...), for `info`.
-std::string simd_target();
-
 }  // namespace lt::fp16

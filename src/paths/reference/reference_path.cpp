@@ -1,5 +1,6 @@
 #include "paths/reference/reference_path.h"
 
+#include "core/simd_target.h"
 #include "paths/common/cpu_shaded_path.h"
 #include "paths/reference/reference_shading_lanes.h"
 
@@ -10,7 +11,8 @@ namespace {
 class ReferencePath final : public CpuShadedPath {
  public:
   explicit ReferencePath(const PathContext& ctx)
-      : CpuShadedPath(ctx, "the reference G-buffer", "model::shade in double vector lanes"),
+      : CpuShadedPath(ctx, "the reference G-buffer",
+                      "model::shade in double " + simd_target() + " vector lanes"),
         relative_scene_(camera_relative_lights(ctx)) {}
 
  private:
