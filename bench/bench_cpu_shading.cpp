@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/build_paths.h"
+#include "core/simd_target.h"
 #include "load/load_scene.h"
 #include "model/lobe_power.h"
 #include "model/texture_sampling.h"
@@ -68,7 +69,7 @@ void BM_HalfShadeRun(benchmark::State& state) {
     benchmark::DoNotOptimize(out.rgb[0][0]);
   }
   count(state, sphere_run().count);
-  state.SetLabel(lt::fp16::simd_target());
+  state.SetLabel(lt::simd_target());
 }
 BENCHMARK(BM_HalfShadeRun)->ArgName("mode")->Arg(0)->Arg(1)->Arg(2);
 
@@ -198,7 +199,7 @@ void BM_RoundToHalf(benchmark::State& state) {
   }
   state.counters["values"] = benchmark::Counter(static_cast<double>(state.iterations() * in.size()),
                                                 benchmark::Counter::kIsRate);
-  state.SetLabel(lt::fp16::simd_target());
+  state.SetLabel(lt::simd_target());
 }
 BENCHMARK(BM_RoundToHalf);
 

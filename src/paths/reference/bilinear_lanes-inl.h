@@ -1,8 +1,7 @@
 // model::sample_bilinear (model/texture_sampling.h, the definition) in double vector lanes, a
 // pixel's (u, v) a lane: the taps' positions, weights and wrapped indices in the lanes with the
-// scalar's operations in its order (the wrap's modulo exact in double), the texel loads a lane
-// at a time, the filter in the lanes in its order, so every lane is model::sample_bilinear's
-// value to the bit.
+// scalar's operations in its order (the wrap's modulo exact in double), the texels gathered, the
+// filter in the lanes in its order, so every lane is model::sample_bilinear's value to the bit.
 // Included once per Highway target by a file compiled through hwy/foreach_target.h, so it has
 // Highway's per-target include guard instead of #pragma once. tests/reference_lanes_test.cpp
 // holds it to model::sample_bilinear on every target.
@@ -16,7 +15,9 @@
 #include <hwy/highway.h>
 
 #include <cstddef>
+#include <cstdint>
 
+#include "core/error.h"
 #include "model/texture_sampling.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -66,45 +67,36 @@ HWY_INLINE AxisTapsLanes<D> AxisTaps(D d, hn::Vec<D> coordinate, int size, model
           hn::IfThenElse(clamped, fc, hn::Sub(x, lower))};
 }
 
-// model::sample_bilinear(texture, (u[i], v[i])) for every lane i.
+// model::sample_bilinear(texture, (u[i], v[i])) for every lane i. The four texels of a lane are
+// gathered channel by channel (float texels widened, as texel() does) at the first float of each,
+// (y * width + x) * 3: whole numbers below 2^31, so exact in double and in int32 lanes (a map is
+// at most kMaxImagePixels = 4096^2 texels, 50 M floats; the check guards a texture made in code).
 template <class D>
 HWY_INLINE void SampleBilinear(D d, const model::Texture& texture, hn::Vec<D> u, hn::Vec<D> v,
                                hn::Vec<D> (&rgb)[3]) {
-  constexpr size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+  LT_CHECK(texture.texels.size() <= 0x7fffffffu, "a texture's floats are indexed in int32 lanes");
   const AxisTapsLanes<D> tx = AxisTaps(d, u, texture.width, texture.wrap_s);
   const AxisTapsLanes<D> ty = AxisTaps(d, v, texture.height, texture.wrap_t);
-  alignas(HWY_MAX_BYTES) double x0[kMaxLanes], x1[kMaxLanes], y0[kMaxLanes], y1[kMaxLanes];
-  alignas(HWY_MAX_BYTES) double fx[kMaxLanes], fy[kMaxLanes];
-  hn::Store(tx.i0, d, x0);
-  hn::Store(tx.i1, d, x1);
-  hn::Store(ty.i0, d, y0);
-  hn::Store(ty.i1, d, y1);
-  hn::Store(tx.f, d, fx);
-  hn::Store(ty.f, d, fy);
-  const size_t n = hn::Lanes(d);
-  // The four texels of each lane, channel by channel (float texels widened, as texel() does).
-  alignas(HWY_MAX_BYTES) double t00[3][kMaxLanes], t10[3][kMaxLanes], t01[3][kMaxLanes],
-      t11[3][kMaxLanes];
-  const size_t w = static_cast<size_t>(texture.width);
+  const hn::Rebind<float, D> df;
+  const hn::Rebind<int32_t, D> di;
+  const auto width = hn::Set(d, static_cast<double>(texture.width));
+  const auto three = hn::Set(d, 3.0);
+  const auto first_float = [&](hn::Vec<D> x, hn::Vec<D> y) {
+    return hn::DemoteTo(di, hn::Mul(hn::Add(hn::Mul(y, width), x), three));
+  };
+  const auto i00 = first_float(tx.i0, ty.i0), i10 = first_float(tx.i1, ty.i0);
+  const auto i01 = first_float(tx.i0, ty.i1), i11 = first_float(tx.i1, ty.i1);
   const float* const texels = texture.texels.data();
-  for (size_t i = 0; i < n; ++i) {
-    const auto at = [&](double x, double y) {
-      return texels + (static_cast<size_t>(y) * w + static_cast<size_t>(x)) * 3;
-    };
-    const float *p00 = at(x0[i], y0[i]), *p10 = at(x1[i], y0[i]);
-    const float *p01 = at(x0[i], y1[i]), *p11 = at(x1[i], y1[i]);
-    for (int c = 0; c < 3; ++c) {
-      t00[c][i] = p00[c], t10[c][i] = p10[c], t01[c][i] = p01[c], t11[c][i] = p11[c];
-    }
-  }
+  const auto texel = [&](int c, hn::Vec<decltype(di)> i) {
+    return hn::PromoteTo(d, hn::GatherIndex(df, texels + c, i));
+  };
   // (1 - fy) ((1 - fx) t00 + fx t10) + fy ((1 - fx) t01 + fx t11), glm's order.
   const auto one = hn::Set(d, 1.0);
-  const auto wx = hn::Load(d, fx), wy = hn::Load(d, fy);
-  const auto ux = hn::Sub(one, wx), uy = hn::Sub(one, wy);
+  const auto ux = hn::Sub(one, tx.f), uy = hn::Sub(one, ty.f);
   for (int c = 0; c < 3; ++c) {
-    const auto bottom = hn::Add(hn::Mul(ux, hn::Load(d, t00[c])), hn::Mul(wx, hn::Load(d, t10[c])));
-    const auto top = hn::Add(hn::Mul(ux, hn::Load(d, t01[c])), hn::Mul(wx, hn::Load(d, t11[c])));
-    rgb[c] = hn::Add(hn::Mul(uy, bottom), hn::Mul(wy, top));
+    const auto bottom = hn::Add(hn::Mul(ux, texel(c, i00)), hn::Mul(tx.f, texel(c, i10)));
+    const auto top = hn::Add(hn::Mul(ux, texel(c, i01)), hn::Mul(tx.f, texel(c, i11)));
+    rgb[c] = hn::Add(hn::Mul(uy, bottom), hn::Mul(ty.f, top));
   }
 }
 
