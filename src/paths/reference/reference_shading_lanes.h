@@ -2,9 +2,9 @@
 // lanes (Highway): model::shade (model/translucency.h) operation for operation, one pixel a lane,
 // so every lane's result is model::shade's to the bit (tests/reference_lanes_test.cpp holds the
 // two equal). What has no vector form that is the scalar one to the bit stays per lane: a lobe
-// ramp's sample (model::sample_ramp), std::pow for the lobe where model::lobe_power takes it
-// (a fractional power; model/lobe_power-inl.h is the whole power's lanes), and a map's texel loads
-// (bilinear_lanes-inl.h).
+// ramp's sample (model::sample_ramp) and std::pow for the lobe where model::lobe_power takes it
+// (a fractional power; model/lobe_power-inl.h is the whole power's lanes). A map's sample is in
+// the lanes, its texels gathered (bilinear_lanes-inl.h).
 //
 // One binary for every x86-64 machine: each Highway target is compiled and the best the CPU runs
 // is chosen at the first call (HWY_DYNAMIC_DISPATCH). The lanes use + - * / sqrt and compares
