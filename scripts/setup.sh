@@ -10,6 +10,7 @@ packages=(
   libosmesa6-dev mesa-common-dev libgl-dev   # OSMesa offscreen context + legacy GL headers
   libglm-dev                                 # vector maths
   libopenmesh-dev                            # mesh I/O and processing
+  libmeshoptimizer-dev                       # vertex-cache order and triangle strips (the Wii port)
   libopenimageio-dev                         # image I/O
   libimath-dev                               # half (binary16) for the fp16 path
   libhwy-dev                                 # Highway: the CPU paths' vector lanes
