@@ -1,12 +1,16 @@
 #include "paths/gx/gx_budget.h"
 
 #include <bitset>
+#include <map>
 #include <set>
 
 #include "core/error.h"
 #include "core/find_named.h"
+#include "mesh/triangle_strips.h"
+#include "paths/gx/fifo/cp_registers.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/program/parser.h"
+#include "paths/gx/vertex_stage.h"
 
 namespace lt::gx {
 
@@ -91,6 +95,64 @@ budget::Report report_of(const std::vector<std::vector<PassProgram>>& by_materia
   return r;
 }
 
+
+// What pass `pass` sends of an object's mesh, as floats before storage: the mesh as a port
+// stores it, in world space (the position matrix places it), not ltrender's camera-relative
+// stream; normals, colours, UVs and the pass's light's t as the stream has them.
+VertexAttributeData pass_vertex_data(const TriangleMesh& mesh, const VertexStream& stream,
+                                     const VertexDescriptor& sent, const TexCoordFormats& formats,
+                                     size_t pass) {
+  VertexAttributeData d;
+  for (const glm::dvec3& p : mesh.positions) d.position.emplace_back(p);
+  if (sent.has(kVaNrm)) d.normal = stream.normal;
+  if (sent.has(kVaClr0)) d.color[0] = stream.color;
+  if (sent.has(kVaClr1)) d.color[1] = stream.color;
+  const std::vector<float>* t =
+      pass < stream.t_per_light.size() ? &stream.t_per_light[pass] : nullptr;
+  for (int n = 0; n < kMaxTexGens; ++n) {
+    if (!sent.has(kVaTex0 + n)) continue;
+    const auto i = static_cast<size_t>(n);
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+      if (formats.kind[i] == TexCoordFormats::ST)
+        d.texcoord[i].push_back(v < stream.uv.size() ? stream.uv[v] : glm::vec2(0.0f));
+      else
+        d.texcoord[i].emplace_back(t ? (*t)[v] : 0.0f, 0.0f);
+    }
+    if (formats.kind[i] != TexCoordFormats::ST) d.texcoord_components[i] = 1;
+  }
+  return d;
+}
+
+// The vertex cost details of a scene's budget: F32 immediate mode and kBudgetVertexStorage,
+// indexed, stripped, in display lists (docs/budget.md).
+void add_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs) {
+  FrameVertexCost c;
+  try {
+    c = frame_vertex_cost(scene, programs, parse_vertex_storage(kBudgetVertexStorage, ""), "");
+  } catch (const InputError& e) {
+    r.notes.push_back(std::string("vertex storage ") + kBudgetVertexStorage +
+                      " not counted: " + e.where() + ": " + e.what_only());
+    return;
+  }
+  auto add = [&](const std::string& key, std::size_t v) {
+    r.details.push_back({key, "", static_cast<int>(v)});
+  };
+  add("f32_vertex_bytes", c.immediate.vertex_bytes);
+  add("f32_fifo_bytes", c.immediate.fifo_bytes);
+  add("f32_xf_vertices", c.immediate.vertices);
+  add("f32_triangles", c.immediate.triangles);
+  r.details.push_back({"stored_vertex_storage", kBudgetVertexStorage, std::nullopt});
+  add("stored_vertex_bytes", c.display_list.vertex_bytes);
+  add("stored_array_bytes", c.display_list.array_bytes);
+  add("stored_refreshed_array_bytes", c.refreshed_array_bytes);
+  add("stored_display_list_bytes", c.display_list.display_list_bytes);
+  add("stored_fifo_bytes", c.display_list.fifo_bytes);
+  add("stored_xf_vertices", c.display_list.vertices);
+  add("stored_triangles", c.display_list.triangles);
+  r.notes.push_back(
+      "vertex figures are exact counts a frame (bytes, vertices, triangles), not time: no public "
+      "source states how long the console takes");
+}
 }  // namespace
 
 GxCounts count_program(const GxState& st) {
@@ -150,6 +212,7 @@ budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
   r.file = scene.file.string();
   r.input = "scene";
   r.variant = to_string(v);
+  add_vertex_cost(r, scene, programs);
   return r;
 }
 
@@ -168,6 +231,61 @@ budget::Report gx_budget_file(const std::string& program_file, const std::string
   r.file = program_file;
   r.input = "program";
   return r;
+}
+
+}  // namespace lt::gx
+
+namespace lt::gx {
+
+FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& programs,
+                                  const VertexStorage& storage, const std::string& origin) {
+  FrameVertexCost cost;
+  const SceneView view = SceneView::of(scene);
+  std::map<size_t, VertexStream> streams;
+  std::map<size_t, std::vector<u32>> strips;
+  std::set<std::pair<size_t, int>> arrays_placed;                 // (object, array) in MEM1
+  std::set<std::pair<size_t, std::array<u32, 2>>> lists_placed;  // (object, VCD)
+  for (const MaterialDraw& d : programs.draws(scene)) {
+    const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
+    const VertexDescriptor sent = fifo::sent_attributes(state);
+    const TexCoordFormats formats = fifo::sent_formats(state.texcoord_formats);
+    for (size_t object : d.objects) {
+      const TriangleMesh& mesh = scene.objects[object].mesh;
+      cost.immediate +=
+          immediate_list_cost(mesh.triangles.size(), fifo::vertex_size(sent, formats));
+      if (!streams.count(object)) {
+        streams.emplace(object, make_vertex_stream(scene, scene.objects[object], view));
+        std::vector<u32> list;
+        for (const glm::uvec3& tri : mesh.triangles) list.insert(list.end(), {tri.x, tri.y, tri.z});
+        strips[object] = triangle_strip(list, mesh.positions.size());
+      }
+      const VertexAttributeData data =
+          pass_vertex_data(mesh, streams.at(object), sent, formats, static_cast<size_t>(d.pass));
+      const VertexAttributeFormat format = storage_format(storage, data, origin);
+      const IndexedArrays arrays = index_attributes(quantise_attributes(data, format), origin);
+      const VertexInputs inputs = indexed_inputs(arrays);
+      const VertexLoader loader(inputs, format, origin);
+      DrawCost draw = display_list_strip_cost(strips[object].size(), loader.vertex_size(), arrays);
+      // MEM1 holds an object's arrays and lists once; a pass's t array is its own.
+      draw.array_bytes = 0;
+      for (int a : arrays.arrays) {
+        const auto i = static_cast<size_t>(a);
+        const bool per_pass =
+            a >= kArrayTexCoord0 && data.texcoord_components[i - kArrayTexCoord0] == 1;
+        const size_t bytes = cache_lines_bytes(arrays.bytes[i].size());
+        if (per_pass) {
+          draw.array_bytes += bytes;
+          cost.refreshed_array_bytes += bytes;
+        } else if (arrays_placed.insert({object, a}).second) {
+          draw.array_bytes += bytes;
+        }
+      }
+      if (!lists_placed.insert({object, pack_vertex_inputs(inputs)}).second)
+        draw.display_list_bytes = 0;
+      cost.display_list += draw;
+    }
+  }
+  return cost;
 }
 
 }  // namespace lt::gx

@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "gx/vertex_cost.h"
+#include "gx/vertex_storage.h"
 #include "paths/budget/report.h"
+#include "paths/gx/gx_path.h"
 #include "paths/gx/gx_state.h"
 #include "paths/gx/gx_variant.h"
 #include "scene/scene.h"
@@ -34,5 +37,29 @@ const std::vector<GxProfile>& gx_profiles();
 budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
                                const std::string& profile);
 budget::Report gx_budget_file(const std::string& program_file, const std::string& profile);
+
+// The frame's vertex cost on the console (gx/vertex_cost.h) for a scene's draws: every pass of
+// every material draws its objects, each with the attributes the pass sends
+// (fifo/cp_registers.h sent_attributes: what the FIFO log sends), once in ltrender's F32
+// immediate mode and once as a game ships the mesh: stored as `storage` says
+// (gx/vertex_storage.h), indexed, one strip a mesh (mesh/triangle_strips.h), in display lists.
+// - MEM1 arrays: an object's position, normal, colour and UV arrays once (every pass indexes
+//   them); the t of each pass's light (GX_TEX_S, t=vertex) an array of its own, which the CPU
+//   rewrites every frame.
+// - Display lists: one per object and vertex descriptor (passes that send the same attributes
+//   call the same list, with their own t array set).
+// - FIFO a frame: per draw, GX_SetArray for each array and GX_CallDispList.
+// Not counted (the same both ways): the state each pass loads (VCD, VAT, XF, BP registers).
+// Throws InputError(origin, storage key, ...) where `storage` cannot hold a mesh's values.
+struct FrameVertexCost {
+  DrawCost immediate;     // F32, GX_TRIANGLES, every frame (what ltrender sends today)
+  DrawCost display_list;  // `storage`, indexed, stripped, display lists
+  std::size_t refreshed_array_bytes = 0;  // the t arrays (part of display_list.array_bytes)
+};
+FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& programs,
+                                  const VertexStorage& storage, const std::string& origin);
+
+// The storage `budget --path gx` compares F32 immediate mode with (docs/budget.md).
+inline constexpr const char* kBudgetVertexStorage = "vtx=s16,nrm=s8,clr=rgb565,uv=s16";
 
 }  // namespace lt::gx
