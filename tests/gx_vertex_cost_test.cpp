@@ -6,8 +6,8 @@
 
 #include "gx/vertex_cost.h"
 #include "load/load_scene.h"
-#include "paths/gx/fifo/frame_recording.h"
-#include "paths/gx/fifo/stream_reader.h"
+#include "paths/gx/frame_recording.h"
+#include "gx/fifo/stream_reader.h"
 #include "paths/gx/gx_budget.h"
 #include "test_util.h"
 

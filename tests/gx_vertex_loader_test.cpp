@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "gx/vertex_loader.h"
-#include "paths/gx/fifo/cp_registers.h"
+#include "gx/fifo/cp_registers.h"
 
 namespace lt::gx {
 namespace {

@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <string>
 
-#include "paths/gx/gx_types.h"
+#include "gx/gx_types.h"
 
 namespace lt::gx {
 
