@@ -88,14 +88,16 @@ class VertexReader {
 // The x86-64 loader converts each integer to float and multiplies it by 2^-exponent (a power of
 // two: exact) [DHW VertexLoaderX64.cpp ReadVertex CVTDQ2PS, MULPS scale_factors]; floats pass
 // unchanged.
-template <size_t N>
-void read_components(std::span<const u8> bytes, ComponentType type, int count, float scale,
-                     std::array<float, N>& out, size_t first = 0) {
+std::array<float, 3> read_components(std::span<const u8> bytes, ComponentType type, int count,
+                                     float scale) {
+  std::array<float, 3> out{};
   const int size = component_bytes(type);
-  for (int i = 0; i < count; ++i) {
-    const float v = component_value(type, read_big_endian(bytes, static_cast<size_t>(i * size), size));
-    out[first + static_cast<size_t>(i)] = type == ComponentType::F32 ? v : v * scale;
+  for (int i = 0; i < count && i < 3; ++i) {
+    const float v =
+        component_value(type, read_big_endian(bytes, static_cast<size_t>(i * size), size));
+    out[static_cast<size_t>(i)] = type == ComponentType::F32 ? v : v * scale;
   }
+  return out;
 }
 
 // 2^-exponent as the loader's table holds it [DHW VertexLoaderX64.cpp scale_factors].
@@ -210,8 +212,8 @@ std::vector<LoadedVertex> VertexLoader::load(std::span<const u8> stream, size_t 
       }
       position = reader.element(kArrayPosition, index, 0, position_bytes);
     }
-    std::array<float, 3> xyz{};
-    read_components(position, p.type, p.components, coordinate_scale(p.frac), xyz);
+    const std::array<float, 3> xyz =
+        read_components(position, p.type, p.components, coordinate_scale(p.frac));
     vertex.position = {xyz[0], xyz[1], xyz[2]};
 
     if (inputs_.normal != AttributeInput::None) {
@@ -232,8 +234,7 @@ std::vector<LoadedVertex> VertexLoader::load(std::span<const u8> stream, size_t 
         const std::span<const u8> bytes =
             index3 ? attribute_bytes(inputs_.normal, kArrayNormal, vector_bytes, offset)
                    : all.subspan(offset, vector_bytes);
-        std::array<float, 3> c{};
-        read_components(bytes, n.type, 3, scale, c);
+        const std::array<float, 3> c = read_components(bytes, n.type, 3, scale);
         vertex.normal[static_cast<size_t>(k)] = {c[0], c[1], c[2]};
       }
     }
@@ -251,11 +252,10 @@ std::vector<LoadedVertex> VertexLoader::load(std::span<const u8> stream, size_t 
       const auto i = static_cast<size_t>(t);
       if (inputs_.texcoord[i] == AttributeInput::None) continue;
       const CoordinateFormat& f = format_.texcoord[i];
-      std::array<float, 2> st{};
-      read_components(attribute_bytes(inputs_.texcoord[i], kArrayTexCoord0 + t,
-                                      static_cast<size_t>(f.components * component_bytes(f.type)),
-                                      0),
-                      f.type, f.components, coordinate_scale(f.frac), st);
+      const std::array<float, 3> st = read_components(
+          attribute_bytes(inputs_.texcoord[i], kArrayTexCoord0 + t,
+                          static_cast<size_t>(f.components * component_bytes(f.type)), 0),
+          f.type, f.components, coordinate_scale(f.frac));
       vertex.texcoord[i] = {st[0], st[1]};
     }
     out.push_back(vertex);

@@ -46,6 +46,9 @@ u32 nearest_channel_code(u8 value, int bits) {
   return best;
 }
 
+// The largest element an array holds: an NBT of F32 normals, 3 x 3 x 4 bytes.
+constexpr size_t kLargestElement = 36;
+
 size_t coordinate_bytes(const CoordinateFormat& f) {
   return static_cast<size_t>(f.components * component_bytes(f.type));
 }
@@ -235,13 +238,17 @@ IndexedArrays index_attributes(const std::vector<AttributeElements>& elements,
     const auto a = static_cast<size_t>(e.array);
     out.arrays.push_back(e.array);
     out.stride[a] = static_cast<unsigned>(e.element_bytes);
-    std::map<std::vector<u8>, u32> seen;
+    // Elements as fixed-size keys, zero-padded (every element of an attribute has one size).
+    LT_CHECK(e.element_bytes <= kLargestElement, "an element larger than an NBT of floats");
+    std::map<std::array<u8, kLargestElement>, u32> seen;
     const size_t n = e.bytes.size() / e.element_bytes;
     for (size_t v = 0; v < n; ++v) {
       const auto begin = e.bytes.begin() + static_cast<long>(v * e.element_bytes);
-      std::vector<u8> element(begin, begin + static_cast<long>(e.element_bytes));
-      const auto [it, added] = seen.emplace(element, static_cast<u32>(seen.size()));
-      if (added) out.bytes[a].insert(out.bytes[a].end(), element.begin(), element.end());
+      const auto end = begin + static_cast<long>(e.element_bytes);
+      std::array<u8, kLargestElement> key{};
+      std::copy(begin, end, key.begin());
+      const auto [it, added] = seen.emplace(key, static_cast<u32>(seen.size()));
+      if (added) out.bytes[a].insert(out.bytes[a].end(), begin, end);
       out.element_of_vertex[a].push_back(it->second);
     }
     if (seen.size() > 65535) {
