@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/own_arguments.h"
 #include "core/child_process.h"
 #include "core/cpu_affinity.h"
 #include "core/error.h"
@@ -15,25 +16,6 @@
 namespace lt::cli {
 
 namespace {
-
-// This process's own command line, as the kernel keeps it (NUL-separated), without argv[0]: a
-// job parses exactly what its parent parsed, so no option has to be written out a second time.
-std::vector<std::string> own_arguments() {
-  std::ifstream in("/proc/self/cmdline", std::ios::binary);
-  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::vector<std::string> args;
-  std::string arg;
-  for (char c : all) {
-    if (c != '\0') {
-      arg += c;
-      continue;
-    }
-    args.push_back(arg);
-    arg.clear();
-  }
-  if (!args.empty()) args.erase(args.begin());
-  return args;
-}
 
 std::string read_log(const std::filesystem::path& log) {
   std::ifstream in(log);

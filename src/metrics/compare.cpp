@@ -119,6 +119,68 @@ std::string location_string(const ErrorStats& s) {
          kChannelNames[s.max_channel];
 }
 
+// Half an LSB: the floor of an 8-bit image against a float one. A pixel at or under it is no
+// edge and no shade, so its shift error is its error (and the neighbourhoods of the nearly every
+// pixel of a bench comparison need not be searched).
+constexpr double kShiftFloorLsb = 0.5;
+
+// A value as the error formula of metrics.md sees it, in LSB: an 8-bit value as its byte, a
+// float one as 255 x its clamped value (channel_error_lsb is the difference of two of these).
+double lsb_value(float v, TestEncoding encoding) {
+  return encoding == TestEncoding::kUnorm8 ? static_cast<double>(to_unorm8(v))
+                                           : clamp01(v) * 255.0;
+}
+
+// How far `value` (LSB) lies outside what `image` spans in the 3x3 neighbourhood of x, y, at its
+// worst channel: 0 when each channel is near its neighbours' range. A range, not one neighbour's
+// value: a silhouette moved by a fraction of a pixel leaves a value between its neighbours'
+// (coverage and the shading's interpolation). Widened by half its own width: a pixel a moved
+// silhouette newly covers takes a shade no neighbour had (a sphere's grazing rim is its
+// brightest), but only where the neighbourhood holds an edge; a flat one is not widened at all,
+// so a 2 LSB change in a flat interior stays shading. A neighbour off the image, or not
+// finite, is no candidate: a shape at the border does not wrap round.
+double outside_neighbourhood(const float* value, TestEncoding value_encoding, const Image& image,
+                             TestEncoding image_encoding, int x, int y) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int ny = std::max(0, y - 1); ny <= std::min(image.height - 1, y + 1); ++ny) {
+      for (int nx = std::max(0, x - 1); nx <= std::min(image.width - 1, x + 1); ++nx) {
+        const float* q = image.at(nx, ny);
+        if (!pixel_is_finite(q)) continue;
+        lo = std::min(lo, lsb_value(q[c], image_encoding));
+        hi = std::max(hi, lsb_value(q[c], image_encoding));
+      }
+    }
+    const double widen = (hi - lo) / 2.0;
+    lo -= widen;
+    hi += widen;
+    const double v = lsb_value(value[c], value_encoding);
+    worst = std::max(worst, v < lo ? lo - v : v > hi ? v - hi : 0.0);
+  }
+  return worst;
+}
+
+// Comparison::pixel_shift_error_lsb: for each pixel over the floor, how far the test's value is
+// outside what the reference spans around it, and the reference's outside what the test spans,
+// the larger of the two (one way is not enough: a line removed from the test leaves background
+// that the reference has beside the line, but the line is nowhere in the test).
+void fill_shift_errors(const Image& test, const Image& reference, TestEncoding encoding,
+                       TestEncoding reference_encoding, Comparison& out) {
+  out.pixel_shift_error_lsb = out.pixel_error_lsb;
+  for (int y = 0; y < test.height; ++y) {
+    for (int x = 0; x < test.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * test.width + x;
+      if (!(out.pixel_error_lsb[i] > kShiftFloorLsb)) continue;  // NaN stays NaN
+      const double forward =
+          outside_neighbourhood(test.at(x, y), encoding, reference, reference_encoding, x, y);
+      const double backward =
+          outside_neighbourhood(reference.at(x, y), reference_encoding, test, encoding, x, y);
+      out.pixel_shift_error_lsb[i] = std::min(out.pixel_error_lsb[i], std::max(forward, backward));
+    }
+  }
+}
+
 }  // namespace
 
 double channel_error_lsb(float test, float reference, TestEncoding encoding,
@@ -202,7 +264,24 @@ Comparison compare_images(const Image& test, const Image& reference, TestEncodin
   }
   out.covered = covered.finish();
   out.image = image.finish();
+  fill_shift_errors(test, reference, encoding, reference_encoding, out);
   return out;
+}
+
+EdgeShiftSplit split_edge_shifts(const Comparison& comparison, double threshold_lsb,
+                                 Region region) {
+  EdgeShiftSplit split;
+  for (size_t i = 0; i < comparison.pixel_error_lsb.size(); ++i) {
+    if (region == Region::kCovered && !comparison.covered_mask[i]) continue;
+    const double e = comparison.pixel_error_lsb[i];
+    if (!std::isfinite(e)) continue;
+    const bool over = e > threshold_lsb;
+    const bool shifted = over && comparison.pixel_shift_error_lsb[i] <= threshold_lsb;
+    split.edge_shift_pixels += shifted;
+    split.shading_pixels += over && !shifted;
+    if (!shifted) split.shading_max_lsb = std::max(split.shading_max_lsb, e);
+  }
+  return split;
 }
 
 Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance) {
@@ -211,37 +290,74 @@ Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance
       "tolerances must be >= 0 (the CLI rejects others as bad input)");
   Verdict v;
   const ErrorStats& stats = region_stats(comparison, tolerance.region);
+  const std::string where = to_string(tolerance.region);
+  const EdgeShiftSplit split =
+      split_edge_shifts(comparison, tolerance.fail_lsb, tolerance.region);
+  v.edge_shift_pixels = split.edge_shift_pixels;
+  v.shading_pixels = split.shading_pixels;
+  v.shading_max_lsb = split.shading_max_lsb;
+  const double edge_shift_percent =
+      stats.pixels > 0 ? 100.0 * static_cast<double>(split.edge_shift_pixels) /
+                             static_cast<double>(stats.pixels)
+                       : 0.0;
+  // Within its share, an edge shift is left out of every criterion below: the shading pixels
+  // stay held to the LSB bounds.
+  v.edge_shifts_excused =
+      tolerance.edge_shift_percent > 0.0 && edge_shift_percent <= tolerance.edge_shift_percent;
+  size_t judged_failing = 0, warning_pixels = 0, hard_warning_pixels = 0;
+  double judged_max = 0.0;
   for (size_t i = 0; i < comparison.pixel_error_lsb.size(); ++i) {
     if (tolerance.region == Region::kCovered && !comparison.covered_mask[i]) continue;
     const double e = comparison.pixel_error_lsb[i];
     if (!std::isfinite(e)) continue;  // counted as non-finite below, not as error
     if (e > tolerance.fail_lsb) ++v.failing_pixels;
+    if (v.edge_shifts_excused && e > tolerance.fail_lsb &&
+        comparison.pixel_shift_error_lsb[i] <= tolerance.fail_lsb)
+      continue;
+    judged_max = std::max(judged_max, e);
+    if (e > tolerance.fail_lsb) ++judged_failing;
     if (e > tolerance.hard_fail_lsb) ++v.hard_failing_pixels;
+    if (e > tolerance.warn_lsb) ++warning_pixels;
+    if (e > tolerance.hard_warn_lsb) ++hard_warning_pixels;
   }
+  auto percent_of_region = [&](size_t n) {
+    return stats.pixels > 0 ? 100.0 * static_cast<double>(n) / static_cast<double>(stats.pixels)
+                            : 0.0;
+  };
   // Percent of the region's finite pixels, the same denominator as the reported figures.
-  if (stats.pixels > 0) {
-    v.failing_percent =
-        100.0 * static_cast<double>(v.failing_pixels) / static_cast<double>(stats.pixels);
-  }
+  v.failing_percent = percent_of_region(v.failing_pixels);
+  const double judged_percent = percent_of_region(judged_failing);
+  const std::string excused =
+      v.edge_shifts_excused && split.edge_shift_pixels > 0
+          ? " (besides " + std::to_string(split.edge_shift_pixels) + " edge shifts)"
+          : "";
+  // The max a reason names: the largest error the criteria judged.
+  const std::string max_text =
+      v.edge_shifts_excused ? "shading max " + lsb_string(judged_max) + " LSB"
+                            : "max " + lsb_string(stats.max_lsb) + " LSB at " +
+                                  location_string(stats);
 
-  const std::string where = to_string(tolerance.region);
   if (comparison.test_non_finite > 0) {
     v.reasons.push_back(std::to_string(comparison.test_non_finite) +
                         " non-finite values (NaN/Inf) in the test image, in " +
                         std::to_string(comparison.test_non_finite_pixels) + " pixels");
   }
-  v.over_fail_percent = v.failing_percent > tolerance.fail_percent;
+  if (tolerance.edge_shift_percent > 0.0 && !v.edge_shifts_excused) {
+    v.reasons.push_back(format("%g", edge_shift_percent) + "% of " + where + " pixels (" +
+                        std::to_string(split.edge_shift_pixels) + ") are edge shifts, allowed " +
+                        format("%g", tolerance.edge_shift_percent) + "%");
+  }
+  v.over_fail_percent = judged_percent > tolerance.fail_percent;
   if (v.over_fail_percent) {
-    v.reasons.push_back(format("%g", v.failing_percent) + "% of " + where + " pixels (" +
-                        std::to_string(v.failing_pixels) + " of " + std::to_string(stats.pixels) +
-                        ") have error > " + format("%g", tolerance.fail_lsb) + " LSB, allowed " +
-                        format("%g", tolerance.fail_percent) + "%");
+    v.reasons.push_back(format("%g", judged_percent) + "% of " + where + " pixels (" +
+                        std::to_string(judged_failing) + " of " + std::to_string(stats.pixels) +
+                        ") have error > " + format("%g", tolerance.fail_lsb) + " LSB" + excused +
+                        ", allowed " + format("%g", tolerance.fail_percent) + "%");
   }
   if (v.hard_failing_pixels > 0) {
     v.reasons.push_back(std::to_string(v.hard_failing_pixels) + " " + where +
                         " pixels have error > " + format("%g", tolerance.hard_fail_lsb) +
-                        " LSB (max " + lsb_string(stats.max_lsb) + " LSB at " +
-                        location_string(stats) + ")");
+                        " LSB" + excused + " (" + max_text + ")");
   }
   if (comparison.coverage == Coverage::kBoth &&
       comparison.mismatch.percent() > tolerance.max_mismatch_percent) {
@@ -253,6 +369,21 @@ Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance
                         format("%g", tolerance.max_mismatch_percent) + "%");
   }
   v.pass = v.reasons.empty();
+  if (!v.pass) return v;
+  // idiff's order: a failure is only a failure; the warn tier speaks for what passes.
+  const double warning_percent = percent_of_region(warning_pixels);
+  if (warning_percent > tolerance.warn_percent) {
+    v.warnings.push_back(format("%g", warning_percent) + "% of " + where + " pixels (" +
+                         std::to_string(warning_pixels) + " of " + std::to_string(stats.pixels) +
+                         ") have error > " + format("%g", tolerance.warn_lsb) + " LSB" + excused +
+                         ", warn over " + format("%g", tolerance.warn_percent) + "%");
+  }
+  if (hard_warning_pixels > 0) {
+    v.warnings.push_back(std::to_string(hard_warning_pixels) + " " + where +
+                         " pixels have error > " + format("%g", tolerance.hard_warn_lsb) +
+                         " LSB" + excused + " (" + max_text + ")");
+  }
+  v.warn = !v.warnings.empty();
   return v;
 }
 
@@ -317,12 +448,22 @@ nlohmann::ordered_json to_json(const Comparison& comparison, const Tolerance& to
            {"hard_fail_lsb", number_or_null(tolerance.hard_fail_lsb)},
            {"region", to_string(tolerance.region)},
            {"max_mismatch_percent", tolerance.max_mismatch_percent},
+           {"warn_lsb", number_or_null(tolerance.warn_lsb)},
+           {"warn_percent", tolerance.warn_percent},
+           {"hard_warn_lsb", number_or_null(tolerance.hard_warn_lsb)},
+           {"edge_shift_percent", tolerance.edge_shift_percent},
        }},
       {"failing_pixels", verdict.failing_pixels},
       {"failing_percent", verdict.failing_percent},
       {"hard_failing_pixels", verdict.hard_failing_pixels},
+      {"edge_shift_pixels", verdict.edge_shift_pixels},
+      {"shading_pixels", verdict.shading_pixels},
+      {"shading_max_lsb", verdict.shading_max_lsb},
+      {"edge_shifts_excused", verdict.edge_shifts_excused},
       {"reasons", verdict.reasons},
       {"pass", verdict.pass},
+      {"warn", verdict.warn},
+      {"warnings", verdict.warnings},
   };
 }
 
@@ -363,8 +504,17 @@ std::string to_table(const Comparison& comparison, const Tolerance& tolerance,
               ? ", or any has error > " + format("%g", tolerance.hard_fail_lsb) + " LSB"
               : std::string()) +
          "\n";
-  out += "result: " + std::string(verdict.pass ? "PASS" : "FAIL") + "\n";
+  out += "over fail_lsb: " + std::to_string(verdict.failing_pixels) + " pixels, " +
+         std::to_string(verdict.edge_shift_pixels) + " edge shifts (each image holds the other's " +
+         "value within one pixel) and " + std::to_string(verdict.shading_pixels) +
+         " shading; shading max " + lsb_string(verdict.shading_max_lsb) + " LSB" +
+         (tolerance.edge_shift_percent > 0.0
+              ? ", edge shifts allowed on " + format("%g", tolerance.edge_shift_percent) + "%"
+              : std::string()) +
+         "\n";
+  out += "result: " + std::string(!verdict.pass ? "FAIL" : verdict.warn ? "WARN" : "PASS") + "\n";
   for (const auto& reason : verdict.reasons) out += "  " + reason + "\n";
+  for (const auto& warning : verdict.warnings) out += "  " + warning + "\n";
   return out;
 }
 

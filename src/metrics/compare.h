@@ -91,6 +91,13 @@ struct Comparison {
   // double, like the figures, so a threshold set to a reported max judges that max consistently.
   std::vector<double> pixel_error_lsb;
   std::vector<bool> covered_mask;
+  // Per pixel: the error left when each image may take its value from within one pixel (the
+  // 3x3 neighbourhood, clipped at the image's border), both ways: the larger of "how far the
+  // test's value here lies outside what the reference spans around the pixel" and "how far the
+  // reference's lies outside what the test spans", each at its worst channel (compare.cpp says
+  // why "spans"). Small where an edge moved, large where a shade changed (split_edge_shifts).
+  // At most pixel_error_lsb; equal to it at or under half an LSB; NaN where it is NaN.
+  std::vector<double> pixel_shift_error_lsb;
 };
 
 // Which pixels the thresholds judge.
@@ -106,12 +113,23 @@ enum class Region {
 // reference's covered pixels: a sample point a fraction of a pixel off moves a thin line of
 // silhouette pixels (the gx path: at most 0.142% on the demo scenes, docs/testing.md);
 // more than that is geometry missing or extra, which the covered region alone would not see.
+//
+// The warn tier between pass and fail is idiff's (-warn, -warnpercent, -hardwarn): a comparison
+// within the fail bounds still warns when more than `warn_percent` percent of the region's pixels
+// have error > `warn_lsb`, or any has error > `hard_warn_lsb`. Off unless set (infinite).
 struct Tolerance {
   double fail_lsb = 1.0;
   double fail_percent = 0.0;
   double hard_fail_lsb = std::numeric_limits<double>::infinity();
   Region region = Region::kCovered;
   double max_mismatch_percent = 5.0;
+  double warn_lsb = std::numeric_limits<double>::infinity();
+  double warn_percent = 0.0;
+  double hard_warn_lsb = std::numeric_limits<double>::infinity();
+  // Percent of the region's pixels that may be edge shifts (split_edge_shifts at fail_lsb)
+  // whatever their error: those pixels are then left out of the fail criteria above, which go on
+  // holding the shading pixels. 0: an edge shift is judged like any error.
+  double edge_shift_percent = 0.0;
 };
 
 struct Verdict {
@@ -121,6 +139,13 @@ struct Verdict {
   bool over_fail_percent = false;    // failing_percent > fail_percent: one of the reasons
   size_t hard_failing_pixels = 0;    // error > hard_fail_lsb in the region
   std::vector<std::string> reasons;  // one line per failed criterion; empty when pass
+  // The pixels over fail_lsb, classed (split_edge_shifts); their sum is failing_pixels.
+  size_t edge_shift_pixels = 0, shading_pixels = 0;
+  double shading_max_lsb = 0.0;  // the largest error of a pixel that is not an edge shift
+  bool edge_shifts_excused = false;  // within edge_shift_percent: left out of the criteria
+  // The warn tier, judged only when the comparison passes: one line per warn criterion met.
+  bool warn = false;
+  std::vector<std::string> warnings;
 };
 
 // Pure computation on in-memory images. Both must have the same size (LT_CHECK: callers that
@@ -131,6 +156,19 @@ Comparison compare_images(const Image& test, const Image& reference, TestEncodin
                           Coverage coverage = Coverage::kReference);
 
 Verdict apply_tolerance(const Comparison& comparison, const Tolerance& tolerance);
+
+// The pixels of a region whose error is over `threshold_lsb`, classed: an edge shift where each
+// image holds the other's value within one pixel, between its neighbours' values
+// (pixel_shift_error_lsb <= threshold_lsb: an edge or a silhouette moved, as a rasteriser
+// sampling elsewhere or a camera a pixel or part of one off moves it), shading otherwise (a value neither image has nearby: a changed shade, a line or a shape
+// that appeared or vanished). Vulkan CTS's position-deviation compare and pixelmatch's
+// anti-aliasing detection ask the same question.
+struct EdgeShiftSplit {
+  size_t edge_shift_pixels = 0, shading_pixels = 0;
+  double shading_max_lsb = 0.0;  // the largest error over the region's pixels but edge shifts
+};
+EdgeShiftSplit split_edge_shifts(const Comparison& comparison, double threshold_lsb,
+                                 Region region);
 
 // The encoding of an image file, from OpenImageIO's spec: 8-bit formats are kUnorm8, anything
 // wider is kFloat. Throws InputError naming the file if it cannot be opened.

@@ -11,32 +11,47 @@ namespace lt {
 
 namespace {
 
+// A case that never gave a verdict (its worker crashed or ran out of time) is a JUnit error, as
+// a test that threw is: the reporters show it apart from a failed comparison.
+bool is_error(CaseStatus s) {
+  return s == CaseStatus::kCrashed || s == CaseStatus::kTimedOut;
+}
+
 struct Counts {
-  size_t tests = 0, failures = 0, skipped = 0;
+  size_t tests = 0, failures = 0, errors = 0, skipped = 0;
   double seconds = 0;
   void add(const CaseResult& r) {
     ++tests;
-    failures += is_failure(r.status);
+    failures += is_failure(r.status) && !is_error(r.status);
+    errors += is_error(r.status);
     skipped += r.status == CaseStatus::kSkipped;
     seconds += r.seconds;
   }
   std::string attributes() const {
-    return "tests=\"" + std::to_string(tests) + "\" failures=\"" + std::to_string(failures) +
-           "\" errors=\"0\" skipped=\"" + std::to_string(skipped) + "\" time=\"" +
+ return "tests=\"" + std::to_string(tests) + "\" failures=\"" + std::to_string(failures) +
+           "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) + "\" time=\"" +
            lt::fixed(seconds, 3) + "\"";
   }
 };
 
-void write_testcase(std::ostringstream& x, const CaseResult& r) {
+void write_testcase(std::ostringstream& x, const CaseResult& r, const std::string& label) {
   const RegressCase& c = r.regress_case;
-  x << "    <testcase classname=\"regress." << markup_escape(c.scene) << "\" name=\""
+  x << "    <testcase classname=\"regress." << markup_escape(label.empty() ? "" : label + ".")
+    << markup_escape(c.scene) << "\" name=\""
     << markup_escape(c.path->name + ":" + c.variant) << "\" time=\"" << fixed(r.seconds, 3) << "\"";
-  if (!is_failure(r.status) && r.status != CaseStatus::kSkipped) {
+  if (!is_failure(r.status) && r.status != CaseStatus::kSkipped &&
+      r.status != CaseStatus::kWarn) {
     x << "/>\n";
     return;
   }
   x << ">\n";
-  if (r.status == CaseStatus::kSkipped) {
+  if (r.status == CaseStatus::kWarn) {
+    // JUnit has no warn: the reporters show a passing case's output, so the warning goes there.
+    x << "      <system-out>" << markup_escape("warn: " + r.message) << "</system-out>\n";
+  } else if (is_error(r.status)) {
+    x << "      <error type=\"" << to_string(r.status) << "\" message=\""
+      << markup_escape(r.message) << "\">" << markup_escape(r.details) << "</error>\n";
+  } else if (r.status == CaseStatus::kSkipped) {
     x << "      <skipped message=\"" << markup_escape(r.message) << "\"/>\n";
   } else {
     x << "      <failure type=\""
@@ -49,7 +64,7 @@ void write_testcase(std::ostringstream& x, const CaseResult& r) {
 
 }  // namespace
 
-std::string junit_xml(const RegressRun& run) {
+std::string junit_xml(const RegressRun& run, const std::string& label) {
   Counts all;
   std::map<std::string, Counts> per_scene;
   std::vector<std::string> scene_order;
@@ -61,16 +76,18 @@ std::string junit_xml(const RegressRun& run) {
   const std::string versions = markup_escape(tool_versions_line());
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-    << "<testsuites name=\"ltrender regress (shard " << run.shard.to_string() << ")\" "
+    << "<testsuites name=\"ltrender regress " << markup_escape(label.empty() ? "" : label + " ")
+    << "(shard " << run.shard.to_string() << ")\" "
     << all.attributes() << ">\n";
   for (const std::string& scene : scene_order) {
-    x << "  <testsuite name=\"" << markup_escape(scene) << "\" " << per_scene[scene].attributes()
+    x << "  <testsuite name=\"" << markup_escape(label.empty() ? scene : label + "/" + scene)
+      << "\" " << per_scene[scene].attributes()
       << ">\n";
     // In every suite: JUnit's schema has properties per testsuite, not per testsuites.
     x << "    <properties><property name=\"ltrender.versions\" value=\"" << versions
       << "\"/></properties>\n";
     for (const CaseResult& r : run.results) {
-      if (r.regress_case.scene == scene) write_testcase(x, r);
+      if (r.regress_case.scene == scene) write_testcase(x, r, label);
     }
     x << "  </testsuite>\n";
   }

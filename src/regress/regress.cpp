@@ -1,181 +1,20 @@
 #include "regress/regress.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "core/error.h"
-#include "core/fixed.h"
 #include "core/fs.h"
 #include "core/stopwatch.h"
-#include "metrics/heatmap.h"
-#include "render/evaluate.h"
-#include "render/session.h"
+#include "regress/regress_plan.h"
+#include "regress/regress_workers.h"
+#include "regress/run_case.h"
 
 namespace lt {
 
 namespace {
-
-// The figures, then the verdict's reasons. A reason states its own figures (the failing share,
-// the max and where it is), so the figures line leaves out what a reason states: each figure
-// once per line.
-std::string case_message(const ErrorStats& s, const Verdict& v) {
-  const bool max_in_reason = v.hard_failing_pixels > 0;
-  std::string line = max_in_reason ? "" : "max " + fixed(s.max_lsb, 2) + " LSB, ";
-  line += "mean " + fixed(s.mean_lsb, 3) + " LSB";
-  if (!v.over_fail_percent)
-    line += ", " + std::to_string(v.failing_pixels) + " pixels (" + fixed(v.failing_percent, 3) +
-            "%) over fail_lsb";
-  for (const std::string& reason : v.reasons) line += "; " + reason;
-  return line;
-}
-
-// A directory every output needs before any work: its parent must exist (as for every output
-// of ltrender) or be the report directory that -o creates (`-o out --junit out/junit.xml`), and
-// an output never names an input.
-void check_output_file(const fs::path& file, const std::vector<fs::path>& inputs,
-                       const fs::path& report_dir) {
-  if (file.empty()) return;
-  std::error_code ec;
-  const fs::path dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-  const bool in_report_dir =
-      !report_dir.empty() && dir.lexically_normal() == report_dir.lexically_normal();
-  if (!in_report_dir && !fs::is_directory(dir, ec))
-    throw InputError(file.string(), "", "its directory does not exist");
-  ensure_not_an_input(file, inputs);
-}
-
-void make_directory(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string(), "", "cannot create the directory: " + ec.message());
-}
-
-void copy_file_atomically(const fs::path& from, const fs::path& to) {
-  write_atomically(to, [&](const fs::path& tmp) {
-    std::error_code ec;
-    fs::copy_file(from, tmp, fs::copy_options::overwrite_existing, ec);
-    if (ec) throw InputError(to.string(), "", "cannot copy " + from.string() + ": " + ec.message());
-  });
-}
-
-// Everything a run needs, read and checked before the first render.
-struct Plan {
-  std::vector<fs::path> scene_files;
-  std::vector<Scene> scenes;
-  std::vector<RegressCase> cases;  // every shard's
-};
-
-// A scene a path cannot take at all (gx: two materials with one C name, a thickness map over
-// 1024 texels) is refused when the path is built: bad input like a bad scene. Every case's path
-// is built once here, at 1x1 (enough to build programs, as `info` does), every shard's cases,
-// so that the run stops before any golden is written. A variant that cannot be exact is a
-// skipped case instead (expand_cases).
-void check_every_path_builds(const Plan& plan) {
-  for (size_t s = 0; s < plan.scenes.size(); ++s) {
-    std::optional<RenderSession> session;
-    for (const RegressCase& c : plan.cases) {
-      if (c.scene_index != s || !c.skip_reason.empty()) continue;
-      if (!session) session.emplace(plan.scenes[s], 1, 1);
-      (void)session->build(*c.path, c.variant);
-    }
-  }
-}
-
-Plan make_plan(const RegressOptions& o) {
-  Plan plan;
-  plan.scene_files = collect_scene_files(o.inputs);
-  for (const fs::path& f : plan.scene_files) plan.scenes.push_back(load_scene(f, o.scene_options));
-  const std::vector<PathRequest> requests = parse_path_list(o.paths);
-  plan.cases = expand_cases(plan.scene_files, plan.scenes, requests);
-  // Every render's size before the first one: a scene too large to render is bad input, found
-  // before any golden is written.
-  const bool resized = o.width > 0 || o.height > 0;
-  for (const Scene& s : plan.scenes) {
-    check_image_size(o.width > 0 ? o.width : s.width, o.height > 0 ? o.height : s.height,
-                     resized ? "--width/--height" : s.file.string(), resized ? "" : "image");
-  }
-  std::vector<fs::path> inputs = plan.scene_files;
-  for (const Scene& s : plan.scenes) {
-    for (const SceneObject& obj : s.objects) inputs.push_back(obj.mesh_path);
-  }
-  check_output_file(o.junit_file, inputs, o.report_dir);
-  check_output_file(o.json_file, inputs, o.report_dir);
-  if (o.goldens.empty()) throw InputError("--goldens", "", "a folder of goldens is required");
-  std::error_code ec;
-  if (fs::exists(o.goldens, ec) && !fs::is_directory(o.goldens, ec))
-    throw InputError(o.goldens.string(), "", "--goldens must be a folder");
-  // Without --update a missing folder is a wrong path, not a dozen missing goldens; --update
-  // creates it (the first run of a new suite).
-  if (!o.update && !fs::exists(o.goldens, ec))
-    throw InputError(o.goldens.string(), "",
-                     "no such folder of goldens (--update creates it and writes them)");
-  check_every_path_builds(plan);
-  return plan;
-}
-
-// Renders one case in the scene's session, compares it with its golden and, with --update,
-// writes the golden. The report's images are written when there is a report dir.
-CaseResult run_case(const RegressOptions& o, const Plan& plan, RenderSession& session,
-                    const RegressCase& c) {
-  const auto t0 = SteadyClock::now();
-  CaseResult r;
-  r.regress_case = c;
-  r.golden = o.goldens / c.golden_name();
-  const Image render = render_frame(session, *c.path, c.variant);
-  r.width = render.width;
-  r.height = render.height;
-  const std::string stem = fs::path(c.golden_name()).stem().string();
-  if (!o.report_dir.empty()) {
-    r.image = "images/" + stem + ".png";
-    write_image(o.report_dir / r.image, render);
-  }
-
-  std::error_code ec;
-  const bool have_golden = fs::exists(r.golden, ec);
-  std::optional<Comparison> comparison;
-  std::string unreadable;
-  if (have_golden) {
-    try {
-      Image golden = read_image(r.golden);
-      if (golden.width != render.width || golden.height != render.height) {
-        r.message = "golden is " + std::to_string(golden.width) + "x" +
-                    std::to_string(golden.height) + ", the render " + std::to_string(render.width) +
-                    "x" + std::to_string(render.height);
-      } else {
-        comparison = compare_with_golden(render, std::move(golden));
-      }
-    } catch (const InputError& e) {
-      r.message = std::string("cannot read the golden: ") + e.what();
-    }
-  }
-  if (comparison) {
-    r.verdict = apply_tolerance(*comparison, c.tolerance);
-    r.figures = c.tolerance.region == Region::kCovered ? comparison->covered : comparison->image;
-    r.comparison_json = to_json(*comparison, c.tolerance, r.verdict);
-    r.details = to_table(*comparison, c.tolerance, r.verdict);
-    r.message = case_message(*r.figures, r.verdict);
-    if (!o.report_dir.empty()) {
-      r.golden_image = "images/" + stem + "__golden.png";
-      copy_file_atomically(r.golden, o.report_dir / r.golden_image);
-      r.heatmap = "images/" + stem + "__heatmap.png";
-      write_image(o.report_dir / r.heatmap, error_heatmap(*comparison));
-    }
-  }
-  const bool pass = comparison && r.verdict.pass;
-  if (o.update) {
-    r.status = pass ? CaseStatus::kKept : have_golden ? CaseStatus::kUpdated : CaseStatus::kCreated;
-    if (!pass) write_image(r.golden, render);
-    if (!have_golden) r.message = "wrote " + r.golden.string();
-  } else if (!have_golden) {
-    r.status = CaseStatus::kMissing;
-    r.message = "no golden " + r.golden.string() +
-                "; create it with: " + update_command(o, c, plan.scene_files[c.scene_index]);
-  } else {
-    r.status = pass ? CaseStatus::kPass : CaseStatus::kFail;
-  }
-  r.seconds = seconds_since(t0);
-  return r;
-}
 
 void print_case(const RegressOptions& o, const CaseResult& r) {
   if (o.quiet && !is_failure(r.status) && r.status != CaseStatus::kCreated &&
@@ -190,12 +29,59 @@ void print_case(const RegressOptions& o, const CaseResult& r) {
   std::fflush(stdout);
 }
 
+// The run's results as they come: each printed, kept in list order, and the JUnit and JSON
+// rewritten (each atomically) so that a run that is killed leaves both valid with every case
+// finished a moment before. Rewriting every file after every case would cost the square of the
+// case count; so a write waits at least half a second after the last, and ten times as long as
+// the last took, which keeps the writes under a tenth of the run whatever its size.
+class RunCollector {
+ public:
+  RunCollector(const RegressOptions& o, SteadyClock::time_point t0) : o_(o), t0_(t0) {}
+
+  void add(size_t position, CaseResult r) {
+    print_case(o_, r);
+    const auto at = std::upper_bound(positions_.begin(), positions_.end(), position);
+    run.results.insert(run.results.begin() + (at - positions_.begin()), std::move(r));
+    positions_.insert(at, position);
+    unwritten_ = true;
+    write_if_due();
+  }
+
+  void write_if_due() {
+    if (!unwritten_ || (o_.junit_file.empty() && o_.json_file.empty())) return;
+    const auto now = SteadyClock::now();
+    if (now - last_write_ < std::max(std::chrono::duration<double>(0.5), 10 * last_write_took_))
+      return;
+    run.seconds = seconds_since(t0_);
+    write_regress_junit_and_json(o_, run);
+    last_write_ = SteadyClock::now();
+    last_write_took_ = last_write_ - now;
+    unwritten_ = false;
+  }
+
+  RegressRun run;
+
+ private:
+  const RegressOptions& o_;
+  SteadyClock::time_point t0_;
+  std::vector<size_t> positions_;  // of run.results, ascending
+  bool unwritten_ = false;
+  SteadyClock::time_point last_write_{};
+  std::chrono::duration<double> last_write_took_{0};
+};
+
 }  // namespace
 
 const char* to_string(CaseStatus s) {
   switch (s) {
     case CaseStatus::kPass:
       return "pass";
+    case CaseStatus::kWarn:
+      return "warn";
+    case CaseStatus::kCrashed:
+      return "crashed";
+    case CaseStatus::kTimedOut:
+      return "timed out";
     case CaseStatus::kFail:
       return "fail";
     case CaseStatus::kMissing:
@@ -212,8 +98,17 @@ const char* to_string(CaseStatus s) {
   return "?";
 }
 
+CaseStatus case_status_from_string(const std::string& name, const std::string& file,
+                                   const std::string& where) {
+  for (CaseStatus s : kCaseStatuses) {
+    if (name == to_string(s)) return s;
+  }
+  throw InputError(file, where, "unknown case status '" + name + "'");
+}
+
 bool is_failure(CaseStatus s) {
-  return s == CaseStatus::kFail || s == CaseStatus::kMissing;
+  return s == CaseStatus::kFail || s == CaseStatus::kMissing || s == CaseStatus::kCrashed ||
+         s == CaseStatus::kTimedOut;
 }
 
 size_t RegressRun::count(CaseStatus s) const {
@@ -223,7 +118,8 @@ size_t RegressRun::count(CaseStatus s) const {
 }
 
 bool RegressRun::failed() const {
-  return count(CaseStatus::kFail) + count(CaseStatus::kMissing) > 0;
+  return std::any_of(results.begin(), results.end(),
+                     [](const CaseResult& r) { return is_failure(r.status); });
 }
 
 std::string update_command(const RegressOptions& o, const RegressCase& c,
@@ -238,45 +134,60 @@ std::string update_command(const RegressOptions& o, const RegressCase& c,
 
 RegressRun run_regress(const RegressOptions& o) {
   const auto t0 = SteadyClock::now();
-  const Plan plan = make_plan(o);
-  RegressRun run;
-  run.shard = o.shard;
-  run.total_cases = plan.cases.size();
-  // This shard's cases, grouped by scene so that each scene is set up once.
-  std::map<size_t, std::vector<const RegressCase*>> by_scene;
-  std::vector<const RegressCase*> mine;
+  const RegressPlan plan = make_regress_plan(o);
+  std::vector<size_t> mine;  // this shard's positions in the case list
   for (size_t i = 0; i < plan.cases.size(); ++i) {
-    if (o.shard.takes(i)) mine.push_back(&plan.cases[i]);
+    if (o.shard.takes(i)) mine.push_back(i);
   }
-  for (const RegressCase* c : mine) by_scene[c->scene_index].push_back(c);
   if (!o.report_dir.empty()) make_directory(o.report_dir / "images");
   if (o.update) make_directory(o.goldens);
 
-  std::map<const RegressCase*, CaseResult> done;
-  for (const auto& [scene_index, cases] : by_scene) {
-    const Scene& scene = plan.scenes[scene_index];
-    std::optional<RenderSession> session;
-    for (const RegressCase* c : cases) {
-      CaseResult r;
-      if (!c->skip_reason.empty()) {
-        r.regress_case = *c;
-        r.status = CaseStatus::kSkipped;
-        r.golden = o.goldens / c->golden_name();
-        r.message = c->skip_reason;
-      } else {
+  RunCollector collector(o, t0);
+  collector.run.shard = o.shard;
+  collector.run.total_cases = plan.cases.size();
+  collector.run.shard_cases = mine.size();
+  for (const fs::path& f : plan.scene_files) collector.run.scenes.push_back(f.stem().string());
+  for (const PathRequest& r : parse_path_list(o.paths)) {
+    for (const std::string& v : r.variants) collector.run.requested.push_back(r.path->name + ":" + v);
+  }
+  collector.run.width = o.width;
+  collector.run.height = o.height;
+  const auto done = [&](size_t position, CaseResult r) { collector.add(position, std::move(r)); };
+  if (o.worker_command.empty()) {
+    // In this process, a scene at a time, so that each scene is set up once.
+    std::map<size_t, std::vector<size_t>> by_scene;
+    for (size_t i : mine) by_scene[plan.cases[i].scene_index].push_back(i);
+    for (const auto& [scene_index, positions] : by_scene) {
+      const Scene& scene = plan.scenes[scene_index];
+      std::optional<RenderSession> session;
+      for (size_t i : positions) {
+        const RegressCase& c = plan.cases[i];
+        if (!c.skip_reason.empty()) {
+          done(i, skipped_case(o, c));
+          continue;
+        }
         if (!session) {
           session.emplace(scene, o.width > 0 ? o.width : scene.width,
                           o.height > 0 ? o.height : scene.height);
         }
-        r = run_case(o, plan, *session, *c);
+        done(i, run_case(o, plan.scene_files[scene_index], *session, c));
       }
-      print_case(o, r);
-      done.emplace(c, std::move(r));
     }
+  } else {
+    std::vector<size_t> rendered;
+    for (size_t i : mine) {
+      if (plan.cases[i].skip_reason.empty()) {
+        rendered.push_back(i);
+      } else {
+        done(i, skipped_case(o, plan.cases[i]));
+      }
+    }
+    run_in_workers(o, plan, rendered, done, [&] { collector.write_if_due(); });
   }
-  for (const RegressCase* c : mine) run.results.push_back(std::move(done.at(c)));
-  run.seconds = seconds_since(t0);
-  return run;
+  collector.run.complete = true;
+  collector.run.seconds = seconds_since(t0);
+  write_regress_junit_and_json(o, collector.run);
+  return std::move(collector.run);
 }
 
 }  // namespace lt

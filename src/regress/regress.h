@@ -23,17 +23,33 @@ struct RegressOptions {
   std::vector<std::filesystem::path> inputs;  // scene files and folders of scenes
   SceneOptions scene_options;                 // --lights
   std::filesystem::path goldens;
+  // The renderer's key (golden_key.h): its approved overrides are in goldens/KEY/. Empty: the
+  // shared goldens only.
+  std::string golden_key;
   std::string paths;  // the --paths list (regress_case.h); empty: every path but flat
   bool update = false;
   Shard shard;
   int width = 0, height = 0;  // > 0: render at this size instead of the scene's
   std::filesystem::path junit_file, json_file, report_dir;  // empty: not written
   bool quiet = false;                                       // no line per passing case
+  // Isolation (docs/regress.md "A case that crashes or hangs"): with a worker command, the cases
+  // run in `jobs` worker processes of it, each running many cases and replaced when one dies, so
+  // a crash or a case over `case_timeout_seconds` (0: none) is that case's failure. Without one
+  // (the library's own tests), in this process.
+  std::vector<std::string> worker_command;  // executable, then its arguments
+  // A platform's name (`--label`): in the JUnit's class names, so that two platforms' runs in
+  // one pipeline keep their cases apart, and in the JSON and the page.
+  std::string label;
+  int jobs = 1;
+  double case_timeout_seconds = 0;
 };
 
 enum class CaseStatus {
   kPass,
+  kWarn,     // within tolerance, but over the warn tier (idiff's -warn): the golden moved
   kFail,     // over tolerance, or a golden of another size
+  kCrashed,  // the worker process rendering it died (isolated runs)
+  kTimedOut,  // it ran past --case-timeout and its worker was stopped
   kMissing,  // no golden: the message holds the command that creates it
   kSkipped,  // the variant cannot be exact for this scene
   kCreated,  // --update: the golden was missing and is written
@@ -42,10 +58,14 @@ enum class CaseStatus {
 };
 // Every status, failures first (the order the summary lists them in).
 inline constexpr CaseStatus kCaseStatuses[] = {
-    CaseStatus::kFail,    CaseStatus::kMissing, CaseStatus::kPass, CaseStatus::kSkipped,
-    CaseStatus::kCreated, CaseStatus::kUpdated, CaseStatus::kKept};
+    CaseStatus::kFail,    CaseStatus::kCrashed, CaseStatus::kTimedOut, CaseStatus::kMissing,
+    CaseStatus::kWarn,    CaseStatus::kPass,    CaseStatus::kSkipped,  CaseStatus::kCreated,
+    CaseStatus::kUpdated, CaseStatus::kKept};
 const char* to_string(CaseStatus status);
-// kFail and kMissing: what makes the run exit 1.
+// Throws InputError(file, where, ...) for a name to_string does not give.
+CaseStatus case_status_from_string(const std::string& name, const std::string& file,
+                                   const std::string& where);
+// kFail, kCrashed, kTimedOut and kMissing: what makes the run exit 1.
 bool is_failure(CaseStatus status);
 
 struct CaseResult {
@@ -64,9 +84,15 @@ struct CaseResult {
 };
 
 struct RegressRun {
-  std::vector<CaseResult> results;  // this shard's cases, in list order
+  std::vector<CaseResult> results;  // this shard's finished cases, in list order
   size_t total_cases = 0;           // over every shard
+  size_t shard_cases = 0;           // this shard's, finished or not
+  bool complete = false;            // every case of the shard finished
   Shard shard;
+  // What the run is over, as the JSON states it: every shard of one run has the same, which
+  // `regress merge` checks. The scenes' names in order, each PATH:VARIANT asked, the size.
+  std::vector<std::string> scenes, requested;
+  int width = 0, height = 0;
   double seconds = 0;
   size_t count(CaseStatus status) const;
   bool failed() const;
@@ -79,7 +105,9 @@ struct RegressRun {
 RegressRun run_regress(const RegressOptions& options);
 
 // --junit, --json and the report page (-o), each written atomically; what the options name.
+// run_regress writes the JUnit and the JSON as the cases finish too (streamed_outputs.h).
 void write_regress_outputs(const RegressOptions& options, const RegressRun& run);
+void write_regress_junit_and_json(const RegressOptions& options, const RegressRun& run);
 
 // One line: how many cases passed, failed, ... and how long the run took.
 std::string regress_summary(const RegressOptions& options, const RegressRun& run);

@@ -3,6 +3,7 @@
 
 #include "core/fixed.h"
 #include "core/fs.h"
+#include "regress/case_record.h"
 #include "regress/junit.h"
 #include "regress/regress.h"
 #include "report/report_page.h"
@@ -11,11 +12,30 @@ namespace lt {
 
 namespace {
 
+fs::path relative_to_json(const RegressOptions& o) {
+  const fs::path base = fs::absolute(o.json_file).parent_path();
+  return fs::absolute(o.report_dir).lexically_normal().lexically_relative(base.lexically_normal());
+}
+
 nlohmann::ordered_json run_json(const RegressOptions& o, const RegressRun& run) {
   nlohmann::ordered_json j;
   j["goldens"] = o.goldens.string();
+  j["label"] = o.label;
+  j["run"] = {{"golden_key", o.golden_key},
+              {"scenes", run.scenes},
+              {"paths", run.requested},
+              {"width", run.width},
+              {"height", run.height}};
+  // Where this run's page is, from the JSON's folder (`regress merge` finds the images there).
+  j["report"] = o.report_dir.empty() || o.json_file.empty()
+                    ? nlohmann::ordered_json()
+                    : nlohmann::ordered_json(relative_to_json(o).string());
   j["shard"] = run.shard.to_string();
   j["total_cases"] = run.total_cases;
+  // While the run goes on the file holds the cases finished so far: "complete" says whether
+  // every case of the shard is in it.
+  j["complete"] = run.complete;
+  j["shard_cases"] = run.shard_cases;
   j["seconds"] = run.seconds;
   nlohmann::ordered_json counts;
   for (CaseStatus s : kCaseStatuses) {
@@ -24,19 +44,7 @@ nlohmann::ordered_json run_json(const RegressOptions& o, const RegressRun& run) 
   j["counts"] = counts;
   j["failed"] = run.failed();
   j["cases"] = nlohmann::ordered_json::array();
-  for (const CaseResult& r : run.results) {
-    const RegressCase& c = r.regress_case;
-    j["cases"].push_back({{"id", c.id()},
-                          {"scene", c.scene},
-                          {"path", c.path->name},
-                          {"variant", c.variant},
-                          {"status", nlohmann::ordered_json(to_string(r.status))},
-                          {"failed", is_failure(r.status)},
-                          {"golden", r.golden.string()},
-                          {"message", r.message},
-                          {"seconds", r.seconds},
-                          {"comparison", r.comparison_json}});
-  }
+  for (const CaseResult& r : run.results) j["cases"].push_back(case_record(r));
   return j;
 }
 
@@ -61,12 +69,16 @@ PageCard case_card(const CaseResult& r) {
                     {"p99", fixed(r.figures->p99_lsb, 2, " LSB")},
                     {"over fail_lsb", std::to_string(r.verdict.failing_pixels) + " px (" +
                                           fixed(r.verdict.failing_percent, 3, "%") + ")"},
+                    {"edge shifts", std::to_string(r.verdict.edge_shift_pixels) + " px"},
+                    {"shading", std::to_string(r.verdict.shading_pixels) + " px, max " +
+                                    fixed(r.verdict.shading_max_lsb, 2, " LSB")},
                     {"tolerance", fixed(c.tolerance.fail_lsb, 2) + " LSB on " +
                                       fixed(c.tolerance.fail_percent, 2) + "%, none over " +
                                       fixed(c.tolerance.hard_fail_lsb, 2)}};
   }
   card.figures.push_back({"time", fixed(r.seconds, 3, " s")});
   for (const std::string& reason : r.verdict.reasons) card.notes.push_back(reason);
+  for (const std::string& warning : r.verdict.warnings) card.notes.push_back("warn: " + warning);
   if (!r.figures && !r.message.empty()) card.notes.push_back(r.message);
   return card;
 }
@@ -74,8 +86,8 @@ PageCard case_card(const CaseResult& r) {
 }  // namespace
 
 std::string regress_summary(const RegressOptions& o, const RegressRun& run) {
-  std::string s = std::to_string(run.results.size()) + " cases against " + o.goldens.string() +
-                  " (shard " + run.shard.to_string() + " of " + std::to_string(run.total_cases) +
+ std::string s = std::to_string(run.results.size()) + " cases against " + o.goldens.string() +
+                  (o.golden_key.empty() ? "" : " (key " + o.golden_key + ")") + " (shard " + run.shard.to_string() + " of " + std::to_string(run.total_cases) +
                   " cases): ";
   bool first = true;
   for (CaseStatus st : kCaseStatuses) {
@@ -86,12 +98,16 @@ std::string regress_summary(const RegressOptions& o, const RegressRun& run) {
   return s + " in " + fixed(run.seconds, 1, " s");
 }
 
-void write_regress_outputs(const RegressOptions& o, const RegressRun& run) {
+void write_regress_junit_and_json(const RegressOptions& o, const RegressRun& run) {
   if (!o.json_file.empty()) write_text_file(o.json_file, run_json(o, run).dump(2) + "\n");
-  if (!o.junit_file.empty()) write_text_file(o.junit_file, junit_xml(run));
+  if (!o.junit_file.empty()) write_text_file(o.junit_file, junit_xml(run, o.label));
+}
+
+void write_regress_outputs(const RegressOptions& o, const RegressRun& run) {
+  write_regress_junit_and_json(o, run);
   if (!o.report_dir.empty()) {
     ReportPage page;
-    page.title = "ltrender regress";
+    page.title = o.label.empty() ? "ltrender regress" : "ltrender regress: " + o.label;
     page.summary = regress_summary(o, run);
     for (const CaseResult& r : run.results) page.cards.push_back(case_card(r));
     write_report_page(o.report_dir, page);

@@ -10,6 +10,9 @@ void apply(const ToleranceOverride& o, Tolerance& t) {
   if (o.fail_lsb) t.fail_lsb = *o.fail_lsb;
   if (o.fail_percent) t.fail_percent = *o.fail_percent;
   if (o.hard_fail_lsb) t.hard_fail_lsb = *o.hard_fail_lsb;
+  if (o.warn_lsb) t.warn_lsb = *o.warn_lsb;
+  if (o.warn_percent) t.warn_percent = *o.warn_percent;
+  if (o.hard_warn_lsb) t.hard_warn_lsb = *o.hard_warn_lsb;
   if (o.region) t.region = *o.region == "image" ? Region::kImage : Region::kCovered;
 }
 
@@ -18,13 +21,17 @@ void apply(const ToleranceOverride& o, Tolerance& t) {
 // value on a half-LSB boundary rounds the other way after a Mesa or compiler change), none by more
 // than 3. The CPU paths (reference, half, gx) shade over OSMesa's rasterised G-buffer, so a Mesa
 // change moves them too: they take the same default. Judged over the whole image, so geometry
-// that appears or vanishes fails.
+// that appears or vanishes fails. A case within those bounds that still differs from its golden
+// at all warns (idiff's default warn threshold is any difference too): it passes, and the
+// reviewer sees that the golden moved.
 Tolerance default_regress_tolerance() {
   Tolerance t;
   t.fail_lsb = 1.0;
   t.fail_percent = 0.5;
   t.hard_fail_lsb = 3.0;
   t.region = Region::kImage;
+  t.warn_lsb = 0.0;
+  t.warn_percent = 0.0;
   return t;
 }
 

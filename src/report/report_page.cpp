@@ -1,5 +1,6 @@
 #include "report/report_page.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -80,7 +81,14 @@ std::string legend_html() {
 
 // Whether a verdict counts as failing (sorted first, shown by the "failing" filter).
 bool is_failing_verdict(const std::string& verdict) {
-  return verdict == "fail" || verdict == "missing";
+  return verdict == "fail" || verdict == "missing" || verdict == "crashed" ||
+         verdict == "timed out";
+}
+
+// A verdict as a CSS class name: "timed out" is v-timed-out.
+std::string verdict_class(std::string verdict) {
+  std::replace(verdict.begin(), verdict.end(), ' ', '-');
+  return "v-" + verdict;
 }
 
 std::string card_html(const PageCard& c, size_t order) {
@@ -96,7 +104,8 @@ std::string card_html(const PageCard& c, size_t order) {
     << "\">\n<h3><span class=\"path\">" << esc(c.path) << "</span> <span "
     << "class=\"variant\">" << esc(c.variant) << "</span>";
   if (!c.verdict.empty())
-    s << " <span class=\"verdict v-" << esc(c.verdict) << "\">" << esc(c.verdict) << "</span>";
+    s << " <span class=\"verdict " << esc(verdict_class(c.verdict)) << "\">" << esc(c.verdict)
+      << "</span>";
   s << "</h3>\n";
   if (c.image.empty()) {
     s << "<div class=\"view no-image\"></div>\n";

@@ -89,6 +89,8 @@ struct SceneObject {
 // "paths" are checked by regress, which knows the paths (the scene does not).
 struct ToleranceOverride {
   std::optional<double> fail_lsb, fail_percent, hard_fail_lsb;
+  std::optional<double> warn_lsb, warn_percent, hard_warn_lsb;  // the warn tier (idiff's -warn)
+  std::optional<double> edge_shift_percent;  // pixels that may be edge shifts (compare.h)
   std::optional<std::string> region;  // "covered" or "image"
 };
 struct RegressBlock {

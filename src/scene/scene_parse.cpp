@@ -21,6 +21,11 @@ ToleranceOverride read_tolerance_override(ObjectReader& r) {
   if (r.has("fail_lsb")) t.fail_lsb = r.number("fail_lsb", {}, 0, 255);
   if (r.has("fail_percent")) t.fail_percent = r.number("fail_percent", {}, 0, 100);
   if (r.has("hard_fail_lsb")) t.hard_fail_lsb = r.number("hard_fail_lsb", {}, 0, 255);
+  if (r.has("warn_lsb")) t.warn_lsb = r.number("warn_lsb", {}, 0, 255);
+  if (r.has("warn_percent")) t.warn_percent = r.number("warn_percent", {}, 0, 100);
+  if (r.has("hard_warn_lsb")) t.hard_warn_lsb = r.number("hard_warn_lsb", {}, 0, 255);
+  if (r.has("edge_shift_percent"))
+    t.edge_shift_percent = r.number("edge_shift_percent", {}, 0, 100);
   if (r.has("region")) {
     t.region = r.string("region");
     if (t.region != "covered" && t.region != "image")
