@@ -14,7 +14,7 @@
 namespace lt::gx {
 namespace {
 
-TextureView view(TexFormat f, int w, int h, const std::vector<u8>& data) {
+TextureView texture_view(TexFormat f, int w, int h, const std::vector<u8>& data) {
   return {f, w, h, std::span<const u8>(data)};
 }
 
@@ -88,8 +88,8 @@ TEST(GxTextureDecoder, I4AndIA4UnpackNibbles) {
     for (int x = 0; x < w; ++x) {
       const u8 i = static_cast<u8>(((x * 3 + y * 5) & 15) * 17);
       const u8 a = static_cast<u8>(((x + 7 * y) & 15) * 17);
-      EXPECT_EQ(decode_texel(view(TexFormat::I4, w, h, i4), x, y), (Color8{i, i, i, i}));
-      EXPECT_EQ(decode_texel(view(TexFormat::IA4, w, h, ia4), x, y), (Color8{i, i, i, a}));
+      EXPECT_EQ(decode_texel(texture_view(TexFormat::I4, w, h, i4), x, y), (Color8{i, i, i, i}));
+      EXPECT_EQ(decode_texel(texture_view(TexFormat::IA4, w, h, ia4), x, y), (Color8{i, i, i, a}));
     }
 }
 
@@ -101,7 +101,7 @@ TEST(GxTextureDecoder, RGB5A3PicksItsModePerTexel) {
   d[1] = 0b011'11111;
   d[2] = 0b0'101'1100;
   d[3] = 0b0011'1111;
-  const TextureView t = view(TexFormat::RGB5A3, 4, 4, d);
+  const TextureView t = texture_view(TexFormat::RGB5A3, 4, 4, d);
   EXPECT_EQ(decode_texel(t, 0, 0), (Color8{173, 24, 255, 255}));  // 10101 -> 10101101 = 173
   EXPECT_EQ(decode_texel(t, 1, 0), (Color8{204, 51, 255, 182}));  // 12*17, 3*17, 15*17; a 5
   EXPECT_EQ(decode_texel(t, 2, 0), (Color8{0, 0, 0, 0}));          // all zero: transparent black
@@ -128,9 +128,9 @@ TEST(GxTextureDecoder, ColourIndexedTexelsLookUpTheirTlut) {
     for (int x = 0; x < 8; ++x) {
       const int k = (x + y) & 15;
       const u8 g = bits5_to_8(k);
-      EXPECT_EQ(decode_texel(view(TexFormat::CI4, 8, 8, ci4), x, y, &t565), (Color8{g, g, g, 255}));
+      EXPECT_EQ(decode_texel(texture_view(TexFormat::CI4, 8, 8, ci4), x, y, &t565), (Color8{g, g, g, 255}));
       const u8 i = static_cast<u8>(k * 10);
-      EXPECT_EQ(decode_texel(view(TexFormat::CI4, 8, 8, ci4), x, y, &tia),
+      EXPECT_EQ(decode_texel(texture_view(TexFormat::CI4, 8, 8, ci4), x, y, &tia),
                 (Color8{i, i, i, static_cast<u8>(255 - k)}));
     }
   // CI8 8x4: byte per texel; CI14X2 4x4: the big-endian u16's low 14 bits, the top two ignored.
@@ -143,11 +143,11 @@ TEST(GxTextureDecoder, ColourIndexedTexelsLookUpTheirTlut) {
   big[2 * 0x3FFE] = 0x00;
   big[2 * 0x3FFE + 1] = 0x1F;  // entry 0x3FFE = RGB565 pure blue
   const TlutView tl{TlutFormat::RGB565, tl256}, tb{TlutFormat::RGB565, big};
-  EXPECT_EQ(decode_texel(view(TexFormat::CI8, 8, 4, ci8), 1, 1, &tl), (Color8{255, 0, 0, 255}));
-  EXPECT_EQ(decode_texel(view(TexFormat::CI14X2, 4, 4, ci14), 1, 1, &tb),
+  EXPECT_EQ(decode_texel(texture_view(TexFormat::CI8, 8, 4, ci8), 1, 1, &tl), (Color8{255, 0, 0, 255}));
+  EXPECT_EQ(decode_texel(texture_view(TexFormat::CI14X2, 4, 4, ci14), 1, 1, &tb),
             (Color8{0, 0, 255, 255}));
-  EXPECT_EQ(largest_index(view(TexFormat::CI14X2, 4, 4, ci14)), 0x3FFE);
-  EXPECT_EQ(largest_index(view(TexFormat::CI4, 8, 8, ci4)), 14);
+  EXPECT_EQ(largest_index(texture_view(TexFormat::CI14X2, 4, 4, ci14)), 0x3FFE);
+  EXPECT_EQ(largest_index(texture_view(TexFormat::CI4, 8, 8, ci4)), 14);
 }
 
 // One CMPR block: endpoints c1, c2 big-endian, then one byte a row, texel 0 in the top bits.
@@ -166,7 +166,7 @@ TEST(GxTextureDecoder, CmprBlendsAtThreeAndFiveEighths) {
   std::vector<u8> d(32, 0);
   const u8 rows[4] = {0b00'01'10'11, 0b11'10'01'00, 0, 0};
   put_cmpr_block(d, 0, 0xF800, 0x001F, rows);
-  const TextureView t = view(TexFormat::CMPR, 8, 8, d);
+  const TextureView t = texture_view(TexFormat::CMPR, 8, 8, d);
   EXPECT_EQ(decode_texel(t, 0, 0), (Color8{255, 0, 0, 255}));
   EXPECT_EQ(decode_texel(t, 1, 0), (Color8{0, 0, 255, 255}));
   EXPECT_EQ(decode_texel(t, 2, 0), (Color8{159, 0, 95, 255}));
@@ -182,7 +182,7 @@ TEST(GxTextureDecoder, CmprThreeColourModeAveragesAndMakesTransparent) {
   const u8 rows[4] = {0b10'11'00'01, 0, 0, 0};
   // Put the block in the tile's bottom-right quarter (its fourth 8 bytes): texels (4..7, 4..7).
   put_cmpr_block(d, 24, 0x0821, 0xFFFF, rows);
-  const TextureView t = view(TexFormat::CMPR, 8, 8, d);
+  const TextureView t = texture_view(TexFormat::CMPR, 8, 8, d);
   EXPECT_EQ(decode_texel(t, 4, 4), (Color8{131, 129, 131, 255}));
   EXPECT_EQ(decode_texel(t, 5, 4), (Color8{131, 129, 131, 0}));
   EXPECT_EQ(decode_texel(t, 6, 4), (Color8{8, 4, 8, 255}));
@@ -199,7 +199,7 @@ TEST(GxTextureDecoder, CmprTilesAreEightByEightOfFourBlocks) {
   for (int k = 0; k < 8; ++k)
     put_cmpr_block(d, static_cast<size_t>(k) * 8, static_cast<u16>(k * 0x0800 + 1),
                    static_cast<u16>(k * 0x0800), ones);
-  const TextureView t = view(TexFormat::CMPR, 16, 8, d);
+  const TextureView t = texture_view(TexFormat::CMPR, 16, 8, d);
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 16; ++x) {
       const int block = (x / 8) * 4 + ((y % 8) / 4) * 2 + (x % 8) / 4;
@@ -225,7 +225,7 @@ TEST(GxTextureDecoder, TheFourFormatsOfTodaysTextureUnitDecodeByteIdentically) {
       old.data.resize(tiled_size(f.number, w, h));
       for (u8& b : old.data) b = static_cast<u8>(rng());
       ASSERT_EQ(level_bytes(f.format, w, h), old.data.size());
-      const TextureView t = view(f.format, w, h, old.data);
+      const TextureView t = texture_view(f.format, w, h, old.data);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
           ASSERT_EQ(decode_texel(t, x, y), texel_at(old, x, y))
