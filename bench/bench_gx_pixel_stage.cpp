@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "core/parallel_rows.h"
-#include "paths/gx/gx_state.h"
-#include "paths/gx/pixel_stage.h"
-#include "paths/gx/raster_run.h"
-#include "paths/gx/tev_plan.h"
-#include "paths/gx/texture_unit.h"
+#include "gx/gx_state.h"
+#include "gx/pixel_stage.h"
+#include "gx/raster_run.h"
+#include "gx/tev_plan.h"
+#include "gx/texture_unit.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include "arb_test_util.h"
 #include "load/load_scene.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
+#include "arb/arb_ir_counter.h"
 #include "render/session.h"
 
 namespace lt {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "paths/arbfp/arb_ir.h"
+#include "arb/arb_ir.h"
 
 namespace lt::test {
 

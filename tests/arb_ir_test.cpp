@@ -1,7 +1,7 @@
-// The ARB programs as instruction lists (paths/arbfp/arb_ir.h): printing, the checks against
+// The ARB programs as instruction lists (arb/arb_ir.h): printing, the checks against
 // what the specs reject, the counts of a program against those of its printed text parsed back
 // (arb_text_parser.h), and a dump of every generated program for byte-identity checks.
-#include "paths/arbfp/arb_ir.h"
+#include "arb/arb_ir.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 
 #include "arb_cases.h"
 #include "core/error.h"
-#include "paths/arbfp/arb_counter.h"
-#include "paths/arbfp/arb_ir_counter.h"
+#include "arb/arb_counter.h"
+#include "arb/arb_ir_counter.h"
 
 namespace lt {
 namespace {

@@ -16,7 +16,7 @@
 #include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
+#include "arb/arb_ir_counter.h"
 #include "paths/arbfp/arb_passes.h"
 #include "render/session.h"
 #include "test_util.h"

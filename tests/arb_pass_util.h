@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "arb/arb_ir_counter.h"
+#include "budget/arb_profiles.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
-#include "paths/arbfp/arb_profiles.h"
 #include "scene/scene.h"
 
 namespace lt::test {

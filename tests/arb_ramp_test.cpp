@@ -12,7 +12,7 @@
 #include "metrics/compare.h"
 #include "paths/arbfp/arb_budget.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
+#include "arb/arb_ir_counter.h"
 #include "paths/arbfp/arb_passes.h"
 #include "ramp_test_util.h"
 #include "render/session.h"

@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "gl/program.h"
 #include "load/load_scene.h"
-#include "paths/arbfp/arb_mesa_counts.h"
+#include "arb/arb_mesa_counts.h"
 #include "paths/path.h"
 #include "scene/scene.h"
 #include "test_util.h"

@@ -14,8 +14,8 @@
 #include "arb_text_cases.h"
 #include "core/error.h"
 #include "gl/context.h"
-#include "paths/arbfp/arb_counter.h"
-#include "paths/arbfp/arb_file_budget.h"
+#include "arb/arb_counter.h"
+#include "budget/arb_file_budget.h"
 #include "paths/arbfp/arb_generator.h"
 
 namespace lt {

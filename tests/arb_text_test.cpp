@@ -7,9 +7,9 @@
 
 #include "arb_text_cases.h"
 #include "gl/context.h"
-#include "paths/arbfp/arb_counter.h"
-#include "paths/arbfp/arb_mesa_counts.h"
-#include "paths/arbfp/arb_text_parser.h"
+#include "arb/arb_counter.h"
+#include "arb/arb_mesa_counts.h"
+#include "arb/arb_text_parser.h"
 
 namespace lt {
 namespace {

@@ -12,8 +12,8 @@
 #include "model/pow_curves.h"
 #include "model/translucency.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
-#include "paths/arbfp/arb_program.h"
+#include "arb/arb_ir_counter.h"
+#include "arb/arb_program.h"
 #include "paths/arbfp/arbfp_path.h"
 #include "render/session.h"
 

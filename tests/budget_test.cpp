@@ -10,10 +10,10 @@
 #include "arb_test_util.h"
 #include "gl/context.h"
 #include "paths/arbfp/arb_budget.h"
-#include "paths/arbfp/arb_counter.h"
+#include "arb/arb_counter.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
-#include "paths/arbfp/arb_program.h"
+#include "arb/arb_ir_counter.h"
+#include "arb/arb_program.h"
 #include "paths/arbfp/arbfp_path.h"
 
 namespace lt {

@@ -13,7 +13,7 @@
 #include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/combiners/combiner_budget.h"
-#include "paths/combiners/combiner_program.h"
+#include "combiner/combiner_program.h"
 #include "paths/combiners/combiners_path.h"
 #include "paths/combiners/texgen_matrix.h"
 #include "render/session.h"

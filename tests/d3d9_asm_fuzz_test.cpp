@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <random>
 
-#include "paths/arbfp/d3d9_asm_counter.h"
-#include "paths/arbfp/d3d9_asm_parser.h"
+#include "d3d9/d3d9_asm_counter.h"
+#include "d3d9/d3d9_asm_parser.h"
 #include "test_util.h"
 
 namespace lt {

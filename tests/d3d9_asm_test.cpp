@@ -1,13 +1,13 @@
-// The Direct3D 9 assembly reader and counter (paths/arbfp/d3d9_asm_*.h) on programs written for
+// The Direct3D 9 assembly reader and counter (d3d9/d3d9_asm_*.h) on programs written for
 // the test: each expected figure is summed by hand from the documentation's instruction tables
 // (the slots each comment names), never read back from the counter; and every refusal names its
 // line and column.
 #include <gtest/gtest.h>
 
-#include "paths/arbfp/arb_text_lexer.h"
-#include "paths/arbfp/d3d9_asm_counter.h"
-#include "paths/arbfp/d3d9_asm_parser.h"
-#include "paths/arbfp/d3d9_fxc_comment.h"
+#include "arb/arb_text_lexer.h"
+#include "d3d9/d3d9_asm_counter.h"
+#include "d3d9/d3d9_asm_parser.h"
+#include "d3d9/d3d9_fxc_comment.h"
 
 namespace lt {
 namespace {

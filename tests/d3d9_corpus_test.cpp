@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "core/fs.h"
-#include "paths/arbfp/d3d9_asm_counter.h"
-#include "paths/arbfp/d3d9_asm_parser.h"
+#include "d3d9/d3d9_asm_counter.h"
+#include "d3d9/d3d9_asm_parser.h"
 #include "test_util.h"
 
 namespace lt {

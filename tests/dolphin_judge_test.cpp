@@ -3,7 +3,7 @@
 // renders it becomes a Dolphin FIFO log, Dolphin's software renderer plays it (dolphin-emu-nogui
 // under a private Xvfb, judge/dolphin_player.h), and Dolphin's frame must be ltrender's own
 // picture of the console's output, `:out=xfb`, pixel for pixel: zero pixels differ. The gx path
-// rasterises as Dolphin's software renderer does (src/paths/gx/rasteriser.h, clipper.h), so
+// rasterises as Dolphin's software renderer does (src/gx/rasteriser.h, clipper.h), so
 // nothing is left to bound. docs/dolphin-judge.md has the table these tests print.
 //
 // One log a scene carries every variant as a frame of its own (one Dolphin start a scene).
@@ -19,7 +19,7 @@
 #include "gx_module_host/host_module.h"
 #include "judge/dolphin_player.h"
 #include "load/load_scene.h"
-#include "paths/gx/fifo/frame_recording.h"
+#include "paths/gx/frame_recording.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/module/module_exporter.h"
 #include "render/camera_path.h"

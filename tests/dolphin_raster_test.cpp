@@ -1,4 +1,4 @@
-// The gx path's transform unit, clipper, setup unit and rasteriser (src/paths/gx/rasteriser.h)
+// The gx path's transform unit, clipper, setup unit and rasteriser (src/gx/rasteriser.h)
 // held to Dolphin's software renderer on frames no demo scene contains (issue 38):
 // - DolphinRasterEdges: geometry placed on the rasteriser's own grid, where a rule decides the
 //   pixel: vertices on the sample points (the fill rule's ties), edges shared by two triangles,

@@ -10,7 +10,7 @@
 
 #include "image/image.h"
 #include "judge/dolphin_player.h"
-#include "paths/gx/fifo/frame_recording.h"
+#include "paths/gx/frame_recording.h"
 #include "paths/gx/gx_path.h"
 #include "paths/path.h"
 #include "render/session.h"

@@ -1,8 +1,8 @@
-// Bit-exact tests of the EFB end of the GX path (src/paths/gx/efb.h): the 8-bit store of the TEV
+// Bit-exact tests of the EFB end of the GX path (src/gx/efb.h): the 8-bit store of the TEV
 // output, the alpha test and the blend unit (gx-hardware.md §1.5; Dolphin SW EfbInterface).
 #include <gtest/gtest.h>
 
-#include "paths/gx/efb.h"
+#include "gx/efb.h"
 
 namespace lt::gx {
 namespace {

@@ -1,4 +1,4 @@
-// The gx path's frame as a Dolphin FIFO log (src/paths/gx/fifo/): register words against libogc's
+// The gx path's frame as a Dolphin FIFO log (src/gx/fifo/, recorded by src/paths/gx/frame_recording.h): register words against libogc's
 // own arithmetic worked by hand, every pass of every demo scene and gx variant decoded back to
 // the state the emulator runs, the whole frame walked as a command processor would, the
 // container read back, and `export gx --format dff`'s refusals.
@@ -8,16 +8,17 @@
 
 #include "core/error.h"
 #include "load/load_scene.h"
-#include "paths/gx/fifo/bp_registers.h"
-#include "paths/gx/fifo/cp_registers.h"
-#include "paths/gx/fifo/fifo_log.h"
-#include "paths/gx/fifo/frame_recording.h"
-#include "paths/gx/fifo/state_decoder.h"
-#include "paths/gx/fifo/stream_reader.h"
-#include "paths/gx/fifo/xf_registers.h"
+#include "gx/fifo/bp_registers.h"
+#include "gx/fifo/cp_registers.h"
+#include "gx/fifo/fifo_log.h"
+#include "paths/gx/camera_transform.h"
+#include "paths/gx/frame_recording.h"
+#include "gx/fifo/state_decoder.h"
+#include "gx/fifo/stream_reader.h"
+#include "gx/fifo/xf_registers.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/lobe_lut.h"
-#include "paths/gx/vertex_stage.h"
+#include "paths/gx/scene_vertices.h"
 #include "test_util.h"
 
 namespace lt::gx::fifo {
@@ -175,13 +176,13 @@ TEST(GxFifoBits, ProjectionClipsZToMinusWToZero) {
   Camera cam;
   cam.near = 0.5;
   cam.far = 10;
-  const auto p = projection_words(cam, {320, 240});
+  const auto p = projection_words(view_transform(glm::mat3(1.0f), cam, {320, 240}));
   auto z_over_w = [&](double z) { return (bits_float(p[4]) * z + bits_float(p[5])) / -z; };
   EXPECT_EQ(p[6], 0u);
   EXPECT_NEAR(z_over_w(-0.5), -1.0, 1e-6);
   EXPECT_NEAR(z_over_w(-10), 0.0, 1e-6);
   cam.projection = Camera::Projection::Orthographic;
-  const auto o = projection_words(cam, {320, 240});
+  const auto o = projection_words(view_transform(glm::mat3(1.0f), cam, {320, 240}));
   EXPECT_EQ(o[6], 1u);
   EXPECT_NEAR(bits_float(o[4]) * -0.5 + bits_float(o[5]), -1.0, 1e-6);
   EXPECT_NEAR(bits_float(o[4]) * -10 + bits_float(o[5]), 0.0, 1e-6);

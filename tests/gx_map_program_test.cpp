@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "load/load_scene.h"
-#include "paths/gx/texture_unit.h"
+#include "gx/texture_unit.h"
 #include "render/session.h"
 #include "scene/scene_parse.h"
 #include "test_util.h"

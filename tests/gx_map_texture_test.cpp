@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "paths/gx/rasteriser.h"
-#include "paths/gx/texture_unit.h"
+#include "gx/rasteriser.h"
+#include "gx/texture_unit.h"
 #include "paths/gx/thickness_texture.h"
 
 namespace lt::gx {

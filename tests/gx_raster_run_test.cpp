@@ -1,4 +1,4 @@
-// The rasteriser's values in vector lanes (src/paths/gx/raster_run.h) against the scalar
+// The rasteriser's values in vector lanes (src/gx/raster_run.h) against the scalar
 // functions they replace in the pixel stage (rasteriser.h raster_pixel, which
 // tests/dolphin_raster_test.cpp holds to Dolphin): over seeded random planes -- ordinary values,
 // and the cases the conversions must keep (NaN, infinities, values past 2^31, past 2^23 texture
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "paths/gx/raster_run.h"
+#include "gx/raster_run.h"
 
 namespace lt::gx {
 namespace {

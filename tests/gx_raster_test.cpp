@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "paths/gx/clipper.h"
-#include "paths/gx/pixel_stage.h"
-#include "paths/gx/rasteriser.h"
+#include "gx/clipper.h"
+#include "gx/pixel_stage.h"
+#include "gx/rasteriser.h"
 
 namespace lt::gx {
 namespace {

@@ -1,4 +1,4 @@
-// The pixel stage's TEV plan (src/paths/gx/tev_plan.h) against the interpreter it replaces in the
+// The pixel stage's TEV plan (src/gx/tev_plan.h) against the interpreter it replaces in the
 // per-pixel loop (tev.h run_tev, which tests/gx_tev_test.cpp holds to the hardware tests): over
 // seeded random register states -- every colour and alpha selector, konst selector, swap table,
 // channel, fetch pattern, regular and compare stage, scale, bias, clamp, destination, and fields
@@ -12,8 +12,8 @@
 #include <random>
 #include <vector>
 
-#include "paths/gx/tev.h"
-#include "paths/gx/tev_plan.h"
+#include "gx/tev.h"
+#include "gx/tev_plan.h"
 
 namespace lt::gx {
 namespace {

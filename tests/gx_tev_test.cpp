@@ -1,4 +1,4 @@
-// Bit-exact tests of the TEV model (src/paths/gx/tev.h) against gx-hardware.md §1: the worked
+// Bit-exact tests of the TEV model (src/gx/tev.h) against gx-hardware.md §1: the worked
 // vectors, the hardware-verified konst table, compare modes, operand widths, sequencing, and a
 // random-program comparison with an independent evaluator written below in a different style.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <initializer_list>
 
-#include "paths/gx/tev.h"
+#include "gx/tev.h"
 
 namespace lt::gx {
 namespace {

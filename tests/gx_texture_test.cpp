@@ -1,4 +1,4 @@
-// The gx texture unit (src/paths/gx/texture_unit.h, gx-hardware.md §3.2-3.4): GX tile order for
+// The gx texture unit (src/gx/texture_unit.h, gx-hardware.md §3.2-3.4): GX tile order for
 // I8 and IA8, the s17.7 texture coordinate and Dolphin's 7-bit bilinear filter with its wrap
 // modes. Expectations are worked out in the test from the documented formulas.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "paths/gx/rasteriser.h"
-#include "paths/gx/texture_unit.h"
+#include "gx/rasteriser.h"
+#include "gx/texture_unit.h"
 
 namespace lt::gx {
 namespace {

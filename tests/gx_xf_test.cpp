@@ -1,13 +1,13 @@
-// The XF units of the gx path: per-vertex lighting (src/paths/gx/xf_lighting.h, gx-hardware.md
-// §2.3-2.4) and texgens (src/paths/gx/xf_texgen.h, §3.1). Every expectation is worked out by
+// The XF units of the gx path: per-vertex lighting (src/gx/xf_lighting.h, gx-hardware.md
+// §2.3-2.4) and texgens (src/gx/xf_texgen.h, §3.1). Every expectation is worked out by
 // hand in the test from the documented formulas, never by calling the unit's helpers.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "paths/gx/xf_lighting.h"
-#include "paths/gx/xf_texgen.h"
+#include "gx/xf_lighting.h"
+#include "gx/xf_texgen.h"
 
 namespace lt::gx {
 namespace {

@@ -1,4 +1,4 @@
-// The console's output image (src/paths/gx/xfb_copy.h): the EFB copied to the XFB as YUYV 4:2:2
+// The console's output image (src/gx/xfb_copy.h): the EFB copied to the XFB as YUYV 4:2:2
 // and decoded again, as Dolphin 5.0-17995's software renderer does. Every expected value below was
 // worked out by hand from the formulas the code cites (EncodeXFB's integer BT.601 with its
 // round-half-up, the [1 2 1]/4 chroma filter, TexDecoder_DecodeXFB's float inverse truncated
@@ -10,7 +10,7 @@
 #include "core/error.h"
 #include "image/image.h"
 #include "load/load_scene.h"
-#include "paths/gx/xfb_copy.h"
+#include "gx/xfb_copy.h"
 #include "render/session.h"
 #include "test_util.h"
 

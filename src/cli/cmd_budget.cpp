@@ -1,12 +1,12 @@
 #include <iostream>
 #include <map>
 
+#include "budget/report.h"
 #include "cli/commands.h"
 #include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "load/load_scene.h"
-#include "paths/budget/report.h"
 #include "paths/path.h"
 
 namespace lt::cli {
@@ -93,7 +93,7 @@ struct Input {
 // what path P builds for it, counted against P's profile; for a program file, the file itself,
 // counted by the path whose files end that way (or start with its header) against that path's
 // profile. Each path owns its counter and profiles (PathInfo::budget, budget_file); all fill the
-// one report (paths/budget/report.h) this command prints. Options that cannot apply to the
+// one report (budget/report.h) this command prints. Options that cannot apply to the
 // inputs are refused before anything is counted. Every file is checked; then exit 2 if one was
 // not valid (each named on its own line, and a JSON error record each with --json), else 1 if
 // one is over, naming the file and the limit.

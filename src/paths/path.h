@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "budget/report.h"
 #include "gl/context.h"
 #include "gl/scene_geometry.h"
 #include "image/image.h"
-#include "paths/budget/report.h"
 #include "paths/frame_stats.h"
 #include "scene/scene.h"
 
@@ -152,9 +152,8 @@ class PathInfo {
   // to the path that has it); empty: the path counts nothing and has no budget().
   std::vector<std::string> budget_profiles;
   // `ltrender budget FILE`: a program file of this path's kind, recognised by its extension or,
-  // failing that, by the first characters of its text (after white space); see budget_file().
+  // failing that, by its text (reads_program_text); see budget_file().
   std::vector<std::string> program_extensions;
-  std::vector<std::string> program_headers;
   // Whether fifo_log() is there (paths that model a console).
   bool writes_fifo_log = false;
   // `ltrender export NAME`: what the path's exports are for ("libogc C for the Wii / GameCube")
@@ -173,14 +172,15 @@ class PathInfo {
   virtual std::string refusal(const Scene& scene, const std::string& variant) const;
   // `ltrender budget SCENE --path NAME`: counts what the path builds for the scene (under a
   // variant, "" = the default) against one of budget_profiles (empty: the default) into the one
-  // budget report (paths/budget/report.h), which the command prints. The path owns its counter
+  // budget report (budget/report.h), which the command prints. The path owns its counter
   // and profiles; the command names no path.
   virtual budget::Report budget(const Scene& scene, const std::string& variant,
                                 const std::string& profile) const;
-  // `ltrender budget FILE`: a program file of this path's kind, counted against a profile.
+  // `ltrender budget FILE`: a program file of this path's kind, counted against a profile by
+  // the budget (src/budget/ reads and counts every program language; the path only names it).
   virtual budget::Report budget_file(const std::string& file, const std::string& profile) const;
   // Whether `text` (a file's, whose extension no path claims) is a program of this path's kind.
-  // Default: it starts with one of program_headers after white space.
+  // Default: no (a path whose files are known by their text asks the budget's reader).
   virtual bool reads_program_text(const std::string& text) const;
   // `export --format dff` and `render --via dolphin`: one frame as a Dolphin FIFO log (the bytes
   // of a .dff file) encoded from exactly the state the path's emulator runs, for an

@@ -82,13 +82,7 @@ budget::Report PathInfo::budget_file(const std::string&, const std::string&) con
                "path " + name + " reads no program files (callers check program_extensions)");
 }
 
-bool PathInfo::reads_program_text(const std::string& text) const {
-  const size_t start = text.find_first_not_of(" \t\r\n");
-  for (const std::string& h : program_headers) {
-    if (start != std::string::npos && text.compare(start, h.size(), h) == 0) return true;
-  }
-  return false;
-}
+bool PathInfo::reads_program_text(const std::string&) const { return false; }
 
 std::vector<std::uint8_t> PathInfo::fifo_log(const Scene&, const std::string&, const PathOptions&,
                                              int, int) const {

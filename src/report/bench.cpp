@@ -16,6 +16,7 @@
 #include "render/evaluate.h"
 #include "render/session.h"
 #include "report/bench_progress.h"
+#include "report/ground_truth_image.h"
 
 namespace lt {
 
@@ -310,9 +311,9 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
     {
       RenderSession session(scene, scene.width, scene.height);
       ref_image = render_reference(session);
-      write_image(o.out_dir / "images" / (sname + "__reference.exr"), ref_image);
+      write_image(o.out_dir / ground_truth_image(sname, ".exr"), ref_image);
       // The same at 8 bits, for the report page (a browser shows no EXR): what each card flips to.
-      write_image(o.out_dir / "images" / (sname + "__reference.png"), ref_image);
+      write_image(o.out_dir / ground_truth_image(sname, ".png"), ref_image);
       for (const auto& [p, v] : planned[si]) {
         progress.step(sname + ", " + p->name + " " + v->name);
         BenchRow row;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "report/figure_pairs.h"
+#include "report/ground_truth_image.h"
 
 namespace lt {
 
@@ -15,7 +16,7 @@ using Column = std::pair<std::string, std::string>;  // path, variant
 // The reference's render of a scene: the float image, clamped when the sheet is drawn.
 std::filesystem::path reference_image(const std::filesystem::path& out_dir,
                                       const std::string& scene) {
-  return out_dir / "images" / (scene + "__reference.exr");
+  return out_dir / ground_truth_image(scene, ".exr");
 }
 
 // The reference, then each port's default variant the rows have, in the rows' order; with_baseline:

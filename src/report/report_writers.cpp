@@ -14,6 +14,7 @@
 #include "report/bench.h"
 #include "report/bench_contact_sheet.h"
 #include "report/bench_json.h"
+#include "report/ground_truth_image.h"
 #include "report/label_placement.h"
 #include "report/report_page.h"
 #include "report/tool_versions.h"
@@ -356,8 +357,8 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
     c.variant = r.variant;
     c.image = r.image;
     if (find_path(r.path).role != PathRole::GroundTruth) {
-      c.flip_image = "images/" + r.scene + "__reference.png";
-      c.flip_label = "reference";
+      c.flip_image = ground_truth_image(r.scene, ".png");
+      c.flip_label = ground_truth_label();
     }
     c.heatmap = r.heatmap;
     c.width = r.width;

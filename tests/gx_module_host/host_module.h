@@ -17,8 +17,8 @@
 #include "../test_util.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/module/runtime/ltrender_gx_runtime.h"
-#include "paths/gx/program/gx_name_table.h"
-#include "paths/gx/program/pass_programs.h"
+#include "gx/program/gx_name_table.h"
+#include "gx/program/pass_programs.h"
 #include "render/camera_path.h"
 #include "scene/scene.h"
 

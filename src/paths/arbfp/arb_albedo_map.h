@@ -5,7 +5,7 @@
 
 #include <glm/glm.hpp>
 
-#include "paths/arbfp/arb_ir.h"
+#include "arb/arb_ir.h"
 #include "scene/scene.h"
 
 namespace lt::arbfp {

@@ -4,9 +4,9 @@
 #include <set>
 #include <sstream>
 
+#include "arb/arb_ir_counter.h"
 #include "core/error.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_passes.h"
 #include "paths/path.h"
 

@@ -3,13 +3,13 @@
 // (arb_profiles.h), plus the translucency term's own cost per light: the program with the term
 // minus the same program without it, and the pass plan `render --profile` draws. It lives with
 // the path (no other folder includes the ARB generator) and fills the one budget report
-// (paths/budget/report.h).
+// (budget/report.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "paths/arbfp/arb_profiles.h"
+#include "budget/arb_profiles.h"
 #include "scene/scene.h"
 
 namespace lt::budget {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "paths/arbfp/arb_ir.h"
+#include "arb/arb_ir.h"
 #include "scene/scene.h"
 
 namespace lt::arbfp {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "arb/arb_ir.h"
 #include "model/power_lut.h"
-#include "paths/arbfp/arb_ir.h"
 #include "paths/arbfp/arb_key.h"
 #include "scene/scene.h"
 

@@ -2,9 +2,9 @@
 
 #include <utility>
 
+#include "arb/arb_ir_counter.h"
 #include "paths/arbfp/arb_emitters.h"
 #include "paths/arbfp/arb_fragment_program.h"
-#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_key.h"
 #include "paths/arbfp/arb_vertex_program.h"
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "arb/arb_ir.h"
 #include "model/power_lut.h"
 #include "paths/arbfp/arb_emitters.h"
-#include "paths/arbfp/arb_ir.h"
 #include "paths/arbfp/arb_variant.h"
 #include "scene/scene.h"
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "arb/arb_ir.h"
 #include "model/translucency.h"
-#include "paths/arbfp/arb_ir.h"
 
 namespace lt::arbfp {
 

@@ -4,8 +4,8 @@
 #include <map>
 #include <tuple>
 
+#include "arb/arb_ir_counter.h"
 #include "core/error.h"
-#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_pass_search.h"
 
 namespace lt::arbfp {

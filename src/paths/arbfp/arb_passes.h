@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "budget/arb_profiles.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_profiles.h"
 
 namespace lt::arbfp {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "paths/arbfp/arb_ir.h"
+#include "arb/arb_ir.h"
 #include "paths/arbfp/arb_key.h"
 
 namespace lt::arbfp {

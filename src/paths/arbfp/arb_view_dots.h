@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "paths/arbfp/arb_ir.h"
+#include "arb/arb_ir.h"
 
 namespace lt::arbfp {
 

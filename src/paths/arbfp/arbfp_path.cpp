@@ -2,20 +2,18 @@
 
 #include <algorithm>
 
+#include "arb/arb_ir_counter.h"
+#include "arb/arb_program.h"
+#include "budget/shader_model_file_budget.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "gl/map_texture.h"
 #include "paths/arbfp/arb_albedo_map.h"
 #include "paths/arbfp/arb_budget.h"
-#include "paths/arbfp/arb_file_budget.h"
 #include "paths/arbfp/arb_generator.h"
-#include "paths/arbfp/arb_ir_counter.h"
 #include "paths/arbfp/arb_lobe.h"
 #include "paths/arbfp/arb_passes.h"
-#include "paths/arbfp/arb_program.h"
 #include "paths/arbfp/arb_thickness_map.h"
-#include "paths/arbfp/d3d9_asm_parser.h"
-#include "paths/arbfp/d3d9_file_budget.h"
 #include "paths/common/first_frame_fragments.h"
 #include "paths/common/frame.h"
 
@@ -287,24 +285,13 @@ class ArbfpInfo final : public TypedPathInfo<arbfp::PowVariant> {
                         const std::string& profile) const override {
     return budget::run_budget(scene, v, profile);
   }
-  // Hand-written ARB_vertex_program / ARB_fragment_program text, checked by our counter and by
-  // Mesa (arb_file_budget.h); or Direct3D 9 assembly, the same shader model's other language,
-  // counted as fxc counts it against the same profiles (d3d9_file_budget.h).
+  // Hand-written ARB programs or Direct3D 9 assembly, the same shader model's two languages
+  // (budget/shader_model_file_budget.h).
   budget::Report budget_file(const std::string& file, const std::string& profile) const override {
-    if (is_d3d9_file(file)) return d3d9::budget_d3d9_file(file, profile);
-    return arbfp::budget_arb_file(file, profile);
+    return budget::budget_shader_model_file(file, profile);
   }
   bool reads_program_text(const std::string& text) const override {
-    return PathInfo::reads_program_text(text) || d3d9::starts_with_version(text);
-  }
-
- private:
-  // An ARB header wins; then a D3D9 extension or a version token on the first code line.
-  bool is_d3d9_file(const std::string& file) const {
-    const std::string text = read_text_file(file);
-    if (PathInfo::reads_program_text(text)) return false;
-    const std::string ext = fs::path(file).extension().string();
-    return ext == ".asm" || ext == ".vsh" || ext == ".psh" || d3d9::starts_with_version(text);
+    return budget::is_shader_model_program_text(text);
   }
 };
 
@@ -343,7 +330,6 @@ ArbfpInfo::ArbfpInfo() {
   for (const budget::Profile& p : budget::all_profiles()) budget_profiles.push_back(p.name);
   takes_profile = true;
   program_extensions = {".fp", ".vp", ".arb", ".asm", ".vsh", ".psh"};
-  program_headers = {"!!ARBfp1.0", "!!ARBvp1.0"};
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "paths/combiners/combiner_program.h"
+#include "combiner/combiner_program.h"
 #include "paths/path.h"
 
 namespace lt {

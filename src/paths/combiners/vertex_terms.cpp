@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "combiner/combiner_program.h"
 #include "model/translucency.h"
-#include "paths/combiners/combiner_program.h"
 #include "paths/combiners/map_stage.h"
 
 namespace lt {

@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "core/fixed.h"
 #include "core/fs.h"
-#include "paths/gx/program/printer.h"
+#include "gx/program/printer.h"
 
 namespace lt::gx {
 

@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
+#include "gx/program/program_file.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/pass_plan.h"
-#include "paths/gx/program/program_file.h"
 #include "scene/scene.h"
 
 namespace lt::gx {

@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "paths/gx/c_exporter.h"
-#include "paths/gx/fifo/frame_recording.h"
+#include "paths/gx/frame_recording.h"
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/module/module_exporter.h"
 
@@ -17,7 +17,7 @@ enum Format : std::size_t { kC, kModule, kDff };
 // tests' animation), each frame its own camera, lights and generated programs (the module's for
 // that frame: GxModule), as one log Dolphin dumps every frame of (for_dolphin_animation).
 std::vector<std::uint8_t> animation_fifo_log(const Scene& base, const std::vector<Scene>& scenes,
-                                             const GxVariant& v, fifo::FrameSize size) {
+                                             const GxVariant& v, FrameSize size) {
   std::vector<ScenePrograms> programs;
   for (const Scene& s : scenes) programs.push_back(scene_programs_for(s, v, ""));
   std::vector<fifo::FrameInput> inputs;
@@ -26,9 +26,9 @@ std::vector<std::uint8_t> animation_fifo_log(const Scene& base, const std::vecto
 }
 
 // `--format dff`: the frame as the console receives it, at the scene's size or --width x
-// --height (paths/gx/fifo/).
+// --height (gx/fifo/).
 std::string fifo_log_file(const PathInfo& gx, const ExportRequest& r, const ExportInput& in) {
-  const fifo::FrameSize size{r.width ? r.width : in.scene.width,
+  const FrameSize size{r.width ? r.width : in.scene.width,
                              r.height ? r.height : in.scene.height};
   fifo::check_frame_size(size, r.scene_file, r.width ? "--width" : "width",
                          r.height ? "--height" : "height");

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "paths/gx/gx_variant.h"
-#include "paths/gx/program/pass_programs.h"
+#include "paths/gx/scene_pass_programs.h"
 #include "paths/path.h"
 
 namespace lt::gx {

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "gx/xfb_copy.h"
 #include "model/translucency.h"
-#include "paths/gx/xfb_copy.h"
 
 namespace lt::gx {
 

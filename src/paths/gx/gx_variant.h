@@ -44,7 +44,7 @@
 #include <optional>
 #include <string>
 
-#include "paths/gx/gx_types.h"
+#include "gx/gx_types.h"
 #include "scene/scene.h"
 
 namespace lt::gx {

@@ -5,7 +5,7 @@
 // file loads none. One function, so the two can never differ.
 #pragma once
 
-#include "paths/gx/texture_unit.h"
+#include "gx/texture_unit.h"
 #include "scene/scene.h"
 
 namespace lt::gx {

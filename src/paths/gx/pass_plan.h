@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "paths/gx/gx_types.h"
-#include "paths/gx/program/gx_names.h"
+#include "gx/gx_types.h"
+#include "gx/program/gx_names.h"
 
 namespace lt::gx {
 

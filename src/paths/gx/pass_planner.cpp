@@ -5,14 +5,14 @@
 #include <optional>
 
 #include "core/error.h"
+#include "gx/texture_unit.h"
 #include "image/image.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/pass_plan_parts.h"
-#include "paths/gx/program/pass_programs.h"
-#include "paths/gx/texture_unit.h"
+#include "paths/gx/scene_pass_programs.h"
 #include "paths/gx/thickness_texture.h"
 
 namespace lt::gx {

@@ -11,9 +11,9 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "gx/texture_unit.h"
 #include "model/texture_sampling.h"
 #include "paths/gx/pass_plan_parts.h"
-#include "paths/gx/texture_unit.h"
 
 namespace lt::gx {
 

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "gx/texture_unit.h"
 #include "model/rational_fit.h"
 #include "model/translucency.h"
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/object_view.h"
 #include "paths/gx/pass_plan_parts.h"
-#include "paths/gx/texture_unit.h"
 
 namespace lt::gx {
 

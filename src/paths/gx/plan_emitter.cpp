@@ -1,8 +1,8 @@
 // emit_programs: the plan as libogc calls, in the order a porter reads a pass (vertex format,
 // lights, channels, texgens and textures, TEV, pixel engine). It chooses nothing: every value
 // comes from the plan, every constant is a GxConst checked at compile time.
+#include "gx/program/pass_programs.h"
 #include "paths/gx/generator.h"
-#include "paths/gx/program/pass_programs.h"
 
 namespace lt::gx {
 

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "paths/gx/program/pass_programs.h"
+#include "gx/program/pass_programs.h"
 
 namespace lt::gx {
 

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "paths/gx/texture_unit.h"
+#include "gx/texture_unit.h"
 #include "scene/scene.h"
 
 namespace lt::gx {

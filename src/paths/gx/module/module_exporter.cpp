@@ -7,9 +7,9 @@
 
 #include "core/embedded.h"
 #include "core/error.h"
+#include "gx/program/pass_programs.h"
+#include "gx/program/printer.h"
 #include "paths/gx/generator.h"
-#include "paths/gx/program/pass_programs.h"
-#include "paths/gx/program/printer.h"
 
 namespace lt::gx {
 

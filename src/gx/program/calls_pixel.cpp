@@ -1,0 +1,143 @@
+// The pixel engine, texture object, vertex format and cache calls.
+#include "gx/program/machine.h"
+
+namespace lt::gx::interp {
+
+void add_pixel_calls(CallTable& table) {
+  using K = ParamKind;
+  using G = NameGroup;
+  const Param tex_p = of(K::TexRef);
+  table.insert({
+      // --- Pixel engine [OGC gx.h L2810, L2882, L3106] ---
+      {"GX_SetAlphaCompare",
+       {{integer(G::Compare, 0, 7), integer(G::Number, 0, 255), integer(G::AlphaOp, 0, 3),
+         integer(G::Compare, 0, 7), integer(G::Number, 0, 255)},
+        [](Machine& m) {
+          m.state.alpha_compare = {m.u(0), m.u(1), m.u(2), m.u(3), m.u(4)};
+        }}},
+      {"GX_SetBlendMode",
+       {{integer(G::BlendMode, 0, 3), integer(G::BlendFactor, 0, 7), integer(G::BlendFactor, 0, 7),
+         integer(G::LogicOp, 0, 15)},
+        [](Machine& m) {
+          m.state.blend = {m.u(0), m.u(1), m.u(2), m.u(3)};
+        }}},
+      // The colour formats Dolphin's software renderer stores (efb.h); the others keep no colour
+      // (Z24) or are the YUV copies' formats, which the emulator does not model.
+      {"GX_SetPixelFmt",
+       {{integer(G::PixelFormat, 0, 7), integer(G::ZFormat, 0, 3)},
+        [](Machine& m) {
+          if (m.u(0) > kPixelRgb565Z16)
+            m.fail_arg(0,
+                       "pixel format not modelled (GX_PF_RGB8_Z24, GX_PF_RGBA6_Z24 and "
+                       "GX_PF_RGB565_Z16 are)");
+          m.state.pixel_format = {m.u(0), m.u(1)};
+        }}},
+      {"GX_SetDither", {{integer(G::Bool, 0, 1)}, [](Machine& m) { m.state.dither = m.b(0); }}},
+      // Every mode is modelled: the rasteriser culls as the setup unit does (gx_state.h).
+      {"GX_SetCullMode",
+       {{integer(G::CullMode, 0, 3)},
+        [](Machine& m) {
+          m.state.cull_mode = m.u(0);
+          m.state.cull_mode_line = m.line();  // named when the mode culls a whole pass
+        }}},
+      // Visibility comes from one depth buffer shared by every pass (the first pass's depth, as
+      // an EQUAL/LEQUAL test without update gives on hardware), so only those modes are modelled.
+      {"GX_SetZMode",
+       {{integer(G::Bool, 0, 1), integer(G::Compare, 0, 7), integer(G::Bool, 0, 1)},
+        [](Machine& m) {
+          if (!m.b(0) || (m.i(1) != 1 && m.i(1) != 2 && m.i(1) != 3))
+            m.fail_call(
+                "only an enabled depth test with GX_LESS, GX_EQUAL or GX_LEQUAL is "
+                "modelled (passes resolve visibility on one shared depth buffer)");
+          m.state.z = {m.b(0), m.u(1), m.b(2)};
+        }}},
+      // --- Textures [OGC gx.h L4174-4459] ---
+      {"GX_InitTexObj",
+       {{tex_p, of(K::ArrayName), integer(G::Number, 1, 1024), integer(G::Number, 1, 1024),
+         integer(G::TexFormat, 0, 14), integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2),
+         integer(G::Bool, 0, 1)},
+        [](Machine& m) {
+          if (!is_modelled_format(m.u(4)))
+            m.fail_arg(4,
+                       "texture format not modelled (GX_TF_I8, GX_TF_IA8, GX_TF_RGB565 and "
+                       "GX_TF_RGBA8 are)");
+          if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
+          TexObject& t = m.tex(0);
+          t.array = m.name(1);
+          t.texture.width = static_cast<int>(m.i(2));
+          t.texture.height = static_cast<int>(m.i(3));
+          t.texture.format = m.u(4);
+          t.texture.wrap_s = m.u(5);
+          t.texture.wrap_t = m.u(6);
+          t.texture.linear = true;  // mipmap GX_FALSE: linear min and mag [OGC gx.c L3236]
+          t.initialised = true;
+          const size_t need = tiled_size(t.texture.format, t.texture.width, t.texture.height);
+          if (m.bytes(1).size() < need)
+            m.fail_arg(1, m.name(1) + " holds " + std::to_string(m.bytes(1).size()) +
+                              " bytes, the texture needs " + std::to_string(need));
+        }}},
+      {"GX_InitTexObjWrapMode",
+       {{tex_p, integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2)},
+        [](Machine& m) {
+          m.tex(0).texture.wrap_s = m.u(1);
+          m.tex(0).texture.wrap_t = m.u(2);
+        }}},
+      {"GX_InitTexObjFilterMode",
+       {{tex_p, integer(G::TexFilter, 0, 5), integer(G::TexFilter, 0, 1)},
+        [](Machine& m) {
+          // Without mipmaps the sampler never minifies differently from magnifying a LUT here.
+          if (m.i(1) != m.i(2))
+            m.fail_call("different min and mag filters are not modelled (no mipmaps)");
+          m.tex(0).texture.linear = m.i(2) == 1;
+        }}},
+      {"GX_LoadTexObj",
+       {{tex_p, integer(G::TexMap, 0, 7)},
+        [](Machine& m) {
+          TexObject& t = m.tex(0);
+          if (!t.initialised) m.fail_arg(0, m.name(0) + " was never given to GX_InitTexObj");
+          TextureObject loaded = t.texture;
+          const std::vector<u8>& src = m.bytes_of(t.array);
+          loaded.data.assign(src.begin(),
+                             src.begin() + static_cast<std::ptrdiff_t>(tiled_size(
+                                               loaded.format, loaded.width, loaded.height)));
+          m.state.textures[m.u(1)] = std::move(loaded);
+        }}},
+      // Cache maintenance: the emulator's memory is always coherent, so these change nothing;
+      // they are accepted because code for the console must call them (gx-hardware.md §3.4).
+      {"GX_InvalidateTexAll", {{}, [](Machine&) {}}},
+      {"DCFlushRange", {{of(K::ArrayName), integer(G::Number, 0, 1 << 24)}, [](Machine&) {}}},
+      // --- Vertex format [OGC gx.h L1781, L1955, L1985] ---
+      {"GX_ClearVtxDesc", {{}, [](Machine& m) { m.state.vertex = VertexDescriptor{}; }}},
+      {"GX_SetVtxDesc",
+       {{integer(G::VtxAttr, 9, 20), integer(G::VtxAttrType, 0, 3)},
+        [](Machine& m) {
+          if (m.i(1) > 1)
+            m.fail_arg(1, "indexed vertex data is not modelled (the scene sends GX_DIRECT)");
+          if (m.i(0) == kVaClr1) m.fail_arg(0, "the scene has one vertex colour (GX_VA_CLR0)");
+          m.state.vertex.type[m.u(0)] = m.u(1);
+        }}},
+      {"GX_SetVtxAttrFmt",
+       {{integer(G::VtxFmt, 0, 7), integer(G::VtxAttr, 9, 20), integer(G::CompCount, 0, 2),
+         integer(G::CompType, 0, 5), integer(G::Number, 0, 31)},
+        [](Machine& m) {
+          // The emulator feeds what the scene has, in one format: check that the program
+          // declares that format, so exported code matches what was emulated.
+          const long long attr = m.i(1), cnt = m.i(2), type = m.i(3);
+          const bool texcoord = attr >= kVaTex0 && attr <= kVaTex7;
+          const bool ok = (attr == kVaPos && cnt == 1 && type == 4) ||
+                          (attr == kVaNrm && cnt == 0 && type == 4) ||
+                          (attr == kVaClr0 && (type == 5 || type == 1)) || (texcoord && type == 4);
+          if (!ok || (texcoord && cnt > 1))
+            m.fail_call(
+                "the scene sends positions and normals as GX_F32 XYZ, colours as "
+                "GX_RGBA8/GX_RGB8 and texture coordinates as GX_F32 GX_TEX_S or GX_TEX_ST");
+          // GX_TEX_S (0) carries the CPU's t, GX_TEX_ST (1) the mesh's UV (gx_state.h). The
+          // scene draws with GX_VTXFMT0, so only that format's choice is what it sends.
+          if (texcoord && m.i(0) == 0)
+            m.state.texcoord_formats.kind[static_cast<size_t>(attr - kVaTex0)] =
+                cnt == 0 ? TexCoordFormats::S : TexCoordFormats::ST;
+        }}},
+  });
+}
+
+}  // namespace lt::gx::interp

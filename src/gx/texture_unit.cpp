@@ -1,0 +1,306 @@
+// The texture unit (gx-hardware.md §3.2-3.4) for the formats the path uses, I8 and IA8 (the
+// LUT) and RGB565 and RGBA8 (a colour thickness map): GX tile order, the s17.7 fixed-point
+// coordinate and Dolphin's software sampler [DSW TextureSampler.cpp SampleMip, WrapCoord] [DHW
+// TextureDecoder_Common.cpp TexDecoder_DecodeTexel].
+#include "gx/texture_unit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+#include "core/error.h"
+
+namespace lt::gx {
+
+namespace {
+
+constexpr u8 kClamp = 0, kRepeat = 1, kMirror = 2;  // GX_CLAMP/REPEAT/MIRROR [OGC gx.h L420-422]
+
+// Tile geometry [DHW TextureDecoder_Common.cpp TexDecoder_GetBlockWidthInTexels / Height,
+// TexDecoder_GetTexelSizeInNibbles]: I8 8x4 texels of 1 byte, IA8 and RGB565 4x4 texels of 2
+// bytes (32 bytes a tile); RGBA8 4x4 texels of 4 bytes, 64 bytes a tile, stored as two 32-byte
+// halves of 2 bytes a texel (Dolphin: `base = tile << 5` then `offset = (base + texel) << 1`, the
+// comment "shift by 5 is correct", and the second half at offset + 32).
+struct TileShape {
+  int width, height;
+  int bytes_per_texel;  // within one 32-byte half
+  int halves;           // 32-byte halves a tile: 2 for RGBA8, else 1
+  // log2 of width and height: both are powers of two, and texel indices are never negative
+  // (wrap() returns 0..size-1), so a shift and a mask stand for the divide and the remainder
+  // (the sampler computes four offsets a pixel; a divide by a variable is slow).
+  int width_shift, height_shift;
+};
+
+TileShape tile_shape(u8 format) {
+  switch (format) {
+    case kTexFormatI8:
+      return {8, 4, 1, 1, 3, 2};
+    case kTexFormatIA8:
+    case kTexFormatRGB565:
+      return {4, 4, 2, 1, 2, 2};
+    case kTexFormatRGBA8:
+      return {4, 4, 2, 2, 2, 2};
+    default:
+      break;
+  }
+  LT_CHECK(false, "texture format must be GX_TF_I8, GX_TF_IA8, GX_TF_RGB565 or GX_TF_RGBA8");
+  return {};
+}
+
+// Bytes of one row-major texel (texture_unit.h): I8 1, IA8 2, RGB565 2, RGBA8 4.
+int row_major_bytes(u8 format) {
+  const TileShape s = tile_shape(format);
+  return s.bytes_per_texel * s.halves;
+}
+
+void check_size(int width, int height) {
+  // 1..1024 per side: the size registers hold width - 1 and height - 1 in 10 bits [HWT
+  // gxtest/BPMemory.h L1073-1079] [OGC gx.h L4263-4264].
+  LT_CHECK(width >= 1 && width <= kMaxTextureSize && height >= 1 && height <= kMaxTextureSize,
+           "texture size must be 1..1024 per side");
+}
+
+int tiles_across(const TileShape& shape, int width) {
+  return (width + shape.width - 1) >> shape.width_shift;
+}
+
+// Byte offset of texel (x, y)'s first byte (in the first half of an RGBA8 tile). Tiles are stored
+// row-major, texels row-major inside a tile; rows of tiles are ceil(W / tile width) tiles long.
+// Dolphin writes the count as ((W - 1) >> 3) + 1 for I8 and ((W - 1) >> 2) + 1 for the 4x4
+// formats [DHW TexDecoder_DecodeTexel], the same number. For I8 this is
+// ((y>>2)*ceil(W/8) + (x>>3))*32 + (y&3)*8 + (x&7) (§3.4).
+size_t texel_offset(const TileShape& shape, int width, int x, int y) {
+  const int tile =
+      (y >> shape.height_shift) * tiles_across(shape, width) + (x >> shape.width_shift);
+  const int in_tile = (y & (shape.height - 1)) * shape.width + (x & (shape.width - 1));
+  return static_cast<size_t>(tile) * 32 * static_cast<size_t>(shape.halves) +
+         static_cast<size_t>(in_tile * shape.bytes_per_texel);
+}
+
+// One texel, decoded [DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel]:
+// - I8 replicates its one byte into every component.
+// - IA8 stores alpha in the first byte and intensity in the second: Dolphin reads the two bytes
+//   as a little-endian u16 and takes `a = val & 0xFF` (first byte), `i = val >> 8` (second)
+//   [DecodePixel_IA8]; the same order as RGBA8's AR half (A at the lower address).
+// - RGB565 is a big-endian u16 (Dolphin byte-swaps it, `Common::swap16(val)`), r in bits 15..11,
+//   g 10..5, b 4..0, each expanded by bit replication; alpha 255 [DecodePixel_RGB565].
+// - RGBA8: a = byte 0, r = byte 1 of the texel's pair in the first half, g = byte 0 and b = byte
+//   1 of its pair in the second half (offset + 32).
+// Always inlined: the bilinear sampler calls it four times a pixel.
+// Texel (x, y) of a texture of format Format (tile_shape has refused the formats not modelled).
+template <u8 Format>
+[[gnu::always_inline]] inline Color8 fetch(const TextureObject& tex, const TileShape& shape, int x,
+                                           int y) {
+  const size_t o = texel_offset(shape, tex.width, x, y);
+  const u8* d = tex.data.data();
+  if constexpr (Format == kTexFormatI8) {
+    return {d[o], d[o], d[o], d[o]};
+  } else if constexpr (Format == kTexFormatIA8) {
+    return {d[o + 1], d[o + 1], d[o + 1], d[o]};
+  } else if constexpr (Format == kTexFormatRGB565) {
+    const int v = (d[o] << 8) | d[o + 1];
+    return {static_cast<u8>(expand5((v >> 11) & 0x1f)), static_cast<u8>(expand6((v >> 5) & 0x3f)),
+            static_cast<u8>(expand5(v & 0x1f)), 255};
+  } else {
+    static_assert(Format == kTexFormatRGBA8);
+    return {d[o + 1], d[o + 32], d[o + 33], d[o]};
+  }
+}
+
+// A tap's index wrapped by `mode` (checked by the caller: check_texture).
+[[gnu::always_inline]] inline std::int64_t wrap(std::int64_t i, u8 mode, int size) {
+  if (mode == kRepeat) return i & (size - 1);
+  if (mode == kMirror) {
+    // An odd repeat (bit `size` set) is reflected: ~i = -1 - i, so for a power-of-two size
+    // i = size..2*size-1 maps to 2*size-1-i and i = -1..-size to 0..size-1.
+    if ((i & size) != 0) i = ~i;
+    return i & (size - 1);
+  }
+  return std::clamp<std::int64_t>(i, 0, size - 1);
+}
+
+}  // namespace
+
+bool is_modelled_format(u8 format) {
+  return format == kTexFormatI8 || format == kTexFormatIA8 || format == kTexFormatRGB565 ||
+         format == kTexFormatRGBA8;
+}
+
+int expand5(int v) {
+  return (v << 3) | (v >> 2);
+}
+int expand6(int v) {
+  return (v << 2) | (v >> 4);
+}
+
+namespace {
+
+// The field value (0 .. 2^bits - 1) whose expansion is nearest to 255 v; ties to the lower one.
+int nearest_field(double v, int bits) {
+  const int top = (1 << bits) - 1;
+  const double target = std::clamp(v, 0.0, 1.0) * 255.0;
+  int best = 0;
+  for (int q = 1; q <= top; ++q) {
+    const int e = bits == 5 ? expand5(q) : expand6(q);
+    const int b = bits == 5 ? expand5(best) : expand6(best);
+    if (std::abs(e - target) < std::abs(b - target)) best = q;
+  }
+  return best;
+}
+
+}  // namespace
+
+u16 nearest_rgb565(double r, double g, double b) {
+  return static_cast<u16>((nearest_field(r, 5) << 11) | (nearest_field(g, 6) << 5) |
+                          nearest_field(b, 5));
+}
+
+size_t tiled_size(u8 format, int width, int height) {
+  const TileShape shape = tile_shape(format);
+  check_size(width, height);
+  const int rows = (height + shape.height - 1) >> shape.height_shift;
+  return static_cast<size_t>(tiles_across(shape, width)) * static_cast<size_t>(rows) * 32 *
+         static_cast<size_t>(shape.halves);
+}
+
+namespace {
+
+// Where the k-th byte of a row-major texel lives relative to the texel's offset in the tiles:
+// the inverse of fetch's reading order.
+size_t tile_byte(u8 format, int k) {
+  switch (format) {
+    case kTexFormatIA8:  // row-major (i, a) -> tile (a, i)
+      return k == 0 ? 1 : 0;
+    case kTexFormatRGBA8: {  // row-major (r, g, b, a) -> (a, r) at +0, (g, b) at +32
+      constexpr size_t where[4] = {1, 32, 33, 0};
+      return where[k];
+    }
+    default:  // I8, and RGB565 whose two bytes are stored as given (high byte first)
+      return static_cast<size_t>(k);
+  }
+}
+
+}  // namespace
+
+std::vector<u8> to_tiles(u8 format, int width, int height, const std::vector<u8>& row_major) {
+  const TileShape shape = tile_shape(format);
+  const int bytes = row_major_bytes(format);
+  std::vector<u8> tiles(tiled_size(format, width, height), 0);  // padding texels are zero
+  LT_CHECK(row_major.size() == static_cast<size_t>(width) * static_cast<size_t>(height) *
+                                   static_cast<size_t>(bytes),
+           "row-major texel data has the wrong size");
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t src = (static_cast<size_t>(y) * width + x) * static_cast<size_t>(bytes);
+      const size_t dst = texel_offset(shape, width, x, y);
+      for (int k = 0; k < bytes; ++k) tiles[dst + tile_byte(format, k)] = row_major[src + k];
+    }
+  }
+  return tiles;
+}
+
+std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u8>& tiles) {
+  const TileShape shape = tile_shape(format);
+  const int bytes = row_major_bytes(format);
+  LT_CHECK(tiles.size() == tiled_size(format, width, height), "tile data has the wrong size");
+  std::vector<u8> row_major(static_cast<size_t>(width) * static_cast<size_t>(height) *
+                            static_cast<size_t>(bytes));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t dst = (static_cast<size_t>(y) * width + x) * static_cast<size_t>(bytes);
+      const size_t src = texel_offset(shape, width, x, y);
+      for (int k = 0; k < bytes; ++k) row_major[dst + k] = tiles[src + tile_byte(format, k)];
+    }
+  }
+  return row_major;
+}
+
+namespace {
+
+// What every sample of a texture relies on, checked once per call of sample_texture_at rather
+// than per texel.
+void check_texture(const TextureObject& texture) {
+  LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
+           "texture data must hold the whole tiles of its size");
+  for (u8 mode : {texture.wrap_s, texture.wrap_t})
+    LT_CHECK(mode == kClamp || mode == kRepeat || mode == kMirror || mode == 3,
+             "wrap mode must be GX_CLAMP, GX_REPEAT, GX_MIRROR (or 3)");
+}
+
+// One texture's format, picked once for a run of pixels.
+template <class Body>
+void with_format(u8 format, Body&& body) {
+  switch (format) {
+    case kTexFormatI8:
+      return body(std::integral_constant<u8, kTexFormatI8>{});
+    case kTexFormatIA8:
+      return body(std::integral_constant<u8, kTexFormatIA8>{});
+    case kTexFormatRGB565:
+      return body(std::integral_constant<u8, kTexFormatRGB565>{});
+    default:  // RGBA8 (tile_shape refuses the rest)
+      return body(std::integral_constant<u8, kTexFormatRGBA8>{});
+  }
+}
+
+template <u8 Format>
+Color8 sample_one(const TextureObject& texture, const TileShape& shape, s32 u, s32 v) {
+  const int w = texture.width, h = texture.height;
+  if (!texture.linear) {
+    // Nearest: the texel containing (u, v), u >> 7 (flooring) [DSW SampleMip].
+    const int x = static_cast<int>(wrap(std::int64_t{u} >> 7, texture.wrap_s, w));
+    const int y = static_cast<int>(wrap(std::int64_t{v} >> 7, texture.wrap_t, h));
+    return fetch<Format>(texture, shape, x, y);
+  }
+  // Bilinear [DSW SampleMip]: the -64 (half a texel) moves the sample to texel centres; the
+  // arithmetic shift floors negative coordinates; 7-bit weights, products summed in 14
+  // fractional bits and truncated, each component on its own (I8's replicated intensity gives
+  // the same value in every component).
+  const std::int64_t us = std::int64_t{u} - 64, vs = std::int64_t{v} - 64;
+  const int fs = static_cast<int>(us & 127), ft = static_cast<int>(vs & 127);
+  const int x0 = static_cast<int>(wrap(us >> 7, texture.wrap_s, w));
+  const int x1 = static_cast<int>(wrap((us >> 7) + 1, texture.wrap_s, w));
+  const int y0 = static_cast<int>(wrap(vs >> 7, texture.wrap_t, h));
+  const int y1 = static_cast<int>(wrap((vs >> 7) + 1, texture.wrap_t, h));
+  const Color8 t00 = fetch<Format>(texture, shape, x0, y0);
+  const Color8 t10 = fetch<Format>(texture, shape, x1, y0);
+  const Color8 t01 = fetch<Format>(texture, shape, x0, y1);
+  const Color8 t11 = fetch<Format>(texture, shape, x1, y1);
+  const int w00 = (128 - fs) * (128 - ft), w10 = fs * (128 - ft);
+  const int w01 = (128 - fs) * ft, w11 = fs * ft;
+  Color8 out;
+  for (int c = 0; c < 4; ++c)
+    out[c] = static_cast<u8>((t00[c] * w00 + t10[c] * w10 + t01[c] * w01 + t11[c] * w11) >> 14);
+  return out;
+}
+
+}  // namespace
+
+Color8 texel_at(const TextureObject& texture, int x, int y) {
+  LT_CHECK(x >= 0 && x < texture.width && y >= 0 && y < texture.height, "texel out of range");
+  LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
+           "texture data must hold the whole tiles of its size");
+  const TileShape shape = tile_shape(texture.format);
+  Color8 out;
+  with_format(texture.format,
+              [&](auto format) { out = fetch<decltype(format)::value>(texture, shape, x, y); });
+  return out;
+}
+
+void sample_texture_at(const TextureObject& texture, const s32* u, const s32* v, int n,
+                       Color8* out) {
+  const TileShape shape = tile_shape(texture.format);
+  check_texture(texture);
+  with_format(texture.format, [&](auto format) {
+    for (int k = 0; k < n; ++k)
+      out[k] = sample_one<decltype(format)::value>(texture, shape, u[k], v[k]);
+  });
+}
+
+Color8 sample_texture(const TextureObject& texture, s32 u, s32 v) {
+  Color8 out;
+  sample_texture_at(texture, &u, &v, 1, &out);
+  return out;
+}
+
+}  // namespace lt::gx

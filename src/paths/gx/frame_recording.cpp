@@ -1,0 +1,194 @@
+#include "paths/gx/frame_recording.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "gx/fifo/cp_registers.h"
+#include "gx/fifo/xf_registers.h"
+#include "image/image.h"
+#include "paths/gx/camera_transform.h"
+#include "paths/gx/lobe_lut.h"
+#include "paths/gx/scene_vertices.h"
+
+namespace lt::gx::fifo {
+
+namespace {
+
+constexpr int kEfbWidth = 640, kEfbHeight = 528;
+
+// The textures of one frame at their addresses: each distinct texture once.
+class TextureMemory {
+ public:
+  explicit TextureMemory(const std::string& file) : file_(file) {}
+  // The address of `t`, and whether it is new to the frame (its bytes must be sent).
+  std::pair<u32, bool> place_texture(const TextureObject& t) {
+    for (const auto& [texture, address] : placed_)
+      if (texture->data == t.data) return {address, false};
+    const u32 address = next_;
+    const size_t bytes = (t.data.size() + 31) & ~size_t{31};
+    if (bytes > kTextureEnd - next_)
+      throw InputError(file_, "textures",
+                       "the frame's textures need more than the " +
+                           std::to_string((kTextureEnd - kTextureBase) >> 20) +
+                           " MiB the FIFO log's memory map has for them");
+    next_ += static_cast<u32>(bytes);
+    placed_.emplace_back(&t, address);
+    return {address, true};
+  }
+
+ private:
+  std::string file_;
+  u32 next_ = kTextureBase;
+  std::vector<std::pair<const TextureObject*, u32>> placed_;
+};
+
+// The vertices of one object as the pass's descriptor sends them (vertex_stage.h: what the
+// emulator's XF reads), triangles expanded, in draws of at most 65,535 vertices (a multiple
+// of 3, so no triangle is split).
+void draw_object(CommandStream& out, const GxState& s, const VertexStream& stream,
+                 const TriangleMesh& mesh, size_t pass) {
+  const VertexDescriptor v = sent_attributes(s);
+  const TexCoordFormats f = sent_formats(s.texcoord_formats);
+  const std::vector<float>* t =
+      pass < stream.t_per_light.size() ? &stream.t_per_light[pass] : nullptr;
+  std::vector<u32> indices;
+  for (const glm::uvec3& tri : mesh.triangles)
+    for (int c = 0; c < 3; ++c) indices.push_back(tri[c]);
+  static_assert(kMaxDrawVertices % 3 == 0);
+  for (size_t start = 0; start < indices.size(); start += kMaxDrawVertices) {
+    const size_t n = std::min(kMaxDrawVertices, indices.size() - start);
+    out.begin(kPrimitiveTriangles, 0, static_cast<u16>(n));
+    for (size_t k = start; k < start + n; ++k) {
+      const u32 i = indices[k];
+      auto vec3 = [&](const glm::vec3& p) {
+        for (int c = 0; c < 3; ++c) out.put_f32(p[c]);
+      };
+      auto color = [&](const Color8& c) {
+        for (int ch = 0; ch < 4; ++ch) out.put_u8(c[ch]);
+      };
+      vec3(stream.position[i]);
+      if (v.has(kVaNrm)) vec3(stream.normal[i]);
+      if (v.has(kVaClr0)) color(stream.color[i]);
+      if (v.has(kVaClr1)) color(stream.color[i]);
+      for (int n_ = 0; n_ < kMaxTexGens; ++n_) {
+        if (!v.has(kVaTex0 + n_)) continue;
+        if (f.kind[static_cast<size_t>(n_)] == TexCoordFormats::ST) {
+          const glm::vec2 uv = i < stream.uv.size() ? stream.uv[i] : glm::vec2(0.0f);
+          out.put_f32(uv.x);
+          out.put_f32(uv.y);
+        } else {
+          out.put_f32(t ? (*t)[i] : 0.0f);
+        }
+      }
+    }
+  }
+}
+
+void write_gx_init(CommandStream& out, FrameSize size) {
+  write_gx_init_bp(out, size);
+  write_gx_init_xf(out);
+}
+
+}  // namespace
+
+void check_frame_size(FrameSize size, const std::string& file, const std::string& width_key,
+                      const std::string& height_key) {
+  if (size.width < 16 || size.width > kEfbWidth || size.width % 16 != 0)
+    throw InputError(file, width_key,
+                     std::to_string(size.width) +
+                         ": the XFB copy needs a width that is a multiple of 16 from 16 to " +
+                         std::to_string(kEfbWidth) + " (the EFB's width)");
+  if (size.height < 1 || size.height > kEfbHeight)
+    throw InputError(file, height_key,
+                     std::to_string(size.height) + ": the EFB holds 1 to " +
+                         std::to_string(kEfbHeight) + " rows");
+}
+
+FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& frames,
+                      FrameSize size) {
+  check_frame_size(size, first_scene.file.string());
+  FifoLog log;
+  {
+    // The header snapshot: GX_Init's registers, then GxState{}'s, then the camera.
+    CommandStream init;
+    write_gx_init(init, size);
+    const GxState gx_init;
+    write_pass_cp(init, gx_init);
+    write_pass_xf(init, gx_init);
+    write_pass_bp(init, gx_init, {}, {});
+    write_copy_clear(init, Color8{64, 64, 64, 255});  // GX_DEFAULT_BG [OGC gx.c L66]
+    log.bp = init.bp;
+    // BP 0xFE, the mask of the next BP write, reads all ones: the hardware resets it after every
+    // write [DHW BPMemory.h BPMEM_BP_MASK].
+    log.bp[0xfe] = 0xffffff;
+    log.cp = init.cp;
+    log.xf_memory = init.xf_memory;
+    log.xf_registers = init.xf_registers;
+  }
+  for (const FrameInput& in : frames) {
+    const Scene& scene = in.scene ? *in.scene : first_scene;
+    if (scene.objects.size() != first_scene.objects.size() ||
+        scene.materials.size() != first_scene.materials.size())
+      throw InputError(first_scene.file.string(), "frames",
+                       "a frame's scene has other objects or materials than the first's");
+    // The vertices as this frame's view sends them (eye-relative positions, per-light t).
+    const SceneView view = SceneView::of(scene);
+    std::vector<VertexStream> streams;
+    for (const SceneObject& o : scene.objects)
+      streams.push_back(make_vertex_stream(scene, o, view));
+    const glm::dvec3 bg = scene.background;
+    const Color8 background{to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
+    const ScenePrograms& programs = *in.programs;
+    std::vector<TextureObject> luts;  // GX_TEXMAP0's fallback (gx.md §1), as the emulator's
+    for (const Material& m : scene.materials) luts.push_back(lobe_lut(m, in.variant.lut_size));
+    CommandStream out;
+    FifoFrame frame;
+    TextureMemory memory(scene.file.string());
+    write_gx_init(out, size);
+    write_view_xf(out, view_transform(glm::mat3(view.view), scene.camera, size), size);
+    // The frame's pixel format before its clearing copy, as a game sets it once at start-up:
+    // the clear then stores the background in the format the draws read it in (gx_path.h
+    // ScenePrograms::pixel_format; efb.h).
+    const PixelFormat format = programs.pixel_format(scene);
+    if (!(format == PixelFormat{})) out.load_bp(bp::kPixelControl, pixel_control(format));
+    write_copy_clear(out, background);
+    write_clearing_texture_copy(out, size, kClearCopyAddress);
+    for (const MaterialDraw& d : programs.draws(scene)) {
+      const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
+      std::array<const TextureObject*, kMaxTexMaps> textures{};
+      std::array<u32, kMaxTexMaps> addresses{};
+      for (size_t map = 0; map < kMaxTexMaps; ++map) {
+        const auto& t = state.textures[map];
+        textures[map] = t ? &*t : (map == 0 ? &luts[d.material] : nullptr);
+        if (!textures[map]) continue;
+        const auto [address, is_new] = memory.place_texture(*textures[map]);
+        addresses[map] = address;
+        if (is_new)
+          frame.updates.push_back({static_cast<u32>(out.position()), address, kMemoryUpdateTexture,
+                                   textures[map]->data});
+      }
+      write_pass_cp(out, state);
+      write_pass_xf(out, state);
+      write_pass_bp(out, state, textures, addresses);
+      for (size_t i : d.objects)
+        draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(d.pass));
+    }
+    write_display_copy(out, size, kXfbAddress);
+    frame.fifo = out.bytes();
+    log.frames.push_back(std::move(frame));
+  }
+  return log;
+}
+
+FifoLog for_dolphin(FifoLog log) {
+  for (int i = 0; i < kDolphinTrailingCopies && !log.frames.empty(); ++i)
+    log.frames.push_back(log.frames.back());
+  return log;
+}
+
+FifoLog for_dolphin_animation(FifoLog log) {
+  if (!log.frames.empty()) log.frames.insert(log.frames.begin(), log.frames.front());
+  return for_dolphin(std::move(log));
+}
+
+}  // namespace lt::gx::fifo
