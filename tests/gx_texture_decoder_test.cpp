@@ -1,7 +1,7 @@
 // The GX texture decoders (src/gx/texture_decoder.h): every format's bits and tile addressing
 // worked out in the test from the hardware rules (docs/spec/gx-hardware.md §3.4), CMPR's two
 // modes with hand-computed colours, TLUT lookups, and the four formats the texture unit decodes
-// today (paths/gx/texture_unit.h) byte-identical through both.
+// today (gx/texture_unit.h) byte-identical through both.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -9,7 +9,7 @@
 
 #include "gx/texture_decoder.h"
 #include "gx/texture_format.h"
-#include "paths/gx/texture_unit.h"
+#include "gx/texture_unit.h"
 
 namespace lt::gx {
 namespace {

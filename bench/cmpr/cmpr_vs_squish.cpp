@@ -33,7 +33,7 @@ struct Errors {
   int max = 0;
 };
 
-Errors measure(const Rgba8Image& image, const std::vector<u8>& cmpr) {
+Errors cmpr_errors(const Rgba8Image& image, const std::vector<u8>& cmpr) {
   const lt::gx::TextureView view{lt::gx::TexFormat::CMPR, image.width, image.height, cmpr};
   const std::vector<Color8> decoded = lt::gx::decode_texture(view);
   double sum = 0, sum2 = 0;
@@ -105,8 +105,8 @@ int main(int argc, char** argv) {
       Rgba8Image image = lt::gx::rgba8_of(lt::read_image(argv[i], format));
       while (image.width > lt::gx::kMaxTextureSize || image.height > lt::gx::kMaxTextureSize)
         image = lt::gx::box_filter_half(image);
-      const Errors ours = measure(image, lt::gx::encode_cmpr(image).data);
-      const Errors theirs = measure(image, squish_cmpr(image));
+      const Errors ours = cmpr_errors(image, lt::gx::encode_cmpr(image).data);
+      const Errors theirs = cmpr_errors(image, squish_cmpr(image));
       worse = worse || ours.mean > theirs.mean;
       std::printf("| %s | %dx%d | %.3f | %d | %.3f | %.3f | %d | %.3f |\n", argv[i], image.width,
                   image.height, ours.mean, ours.max, ours.rms, theirs.mean, theirs.max, theirs.rms);

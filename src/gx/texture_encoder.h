@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "gx/texture_format.h"
-#include "paths/gx/gx_types.h"
+#include "gx/gx_types.h"
 
 namespace lt::gx {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string_view>
 
-#include "paths/gx/gx_types.h"
+#include "gx/gx_types.h"
 
 namespace lt::gx {
 
