@@ -224,7 +224,6 @@ TEST(GxTextureDecoder, TheFourFormatsOfTodaysTextureUnitDecodeByteIdentically) {
       old.height = h;
       old.data.resize(tiled_size(f.number, w, h));
       for (u8& b : old.data) b = static_cast<u8>(rng());
-      ASSERT_EQ(level_bytes(f.format, w, h), old.data.size());
       const TextureView t = texture_view(f.format, w, h, old.data);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -232,6 +231,34 @@ TEST(GxTextureDecoder, TheFourFormatsOfTodaysTextureUnitDecodeByteIdentically) {
               << format_info(f.format).name << " " << w << "x" << h << " at " << x << "," << y;
     }
   }
+}
+
+TEST(GxTextureDecoder, TheTextureUnitSamplesEveryOtherFormatThroughIt) {
+  // I4 8x8: texel (0, 0) = 3 (51), (1, 0) = 12 (204). Bilinear halfway between their centres
+  // (u = 128, v = 64: fs = 64, ft = 0) is (51 * 64 + 204 * 64) >> 7 = 127 in every component.
+  TextureObject i4;
+  i4.format = static_cast<u8>(TexFormat::I4);
+  i4.width = i4.height = 8;
+  i4.data.assign(32, 0);
+  i4.data[0] = 0x3C;
+  EXPECT_EQ(sample_texture(i4, 128, 64), (Color8{127, 127, 127, 127}));
+  // CI8 8x4 with an RGB5A3 TLUT: nearest sampling at each texel's centre is the decoder's texel.
+  TextureObject ci8;
+  ci8.format = static_cast<u8>(TexFormat::CI8);
+  ci8.width = 8;
+  ci8.height = 4;
+  ci8.linear = false;
+  ci8.data.resize(32);
+  for (size_t k = 0; k < 32; ++k) ci8.data[k] = static_cast<u8>(k % 3);
+  ci8.tlut_format = static_cast<u8>(TlutFormat::RGB5A3);
+  ci8.tlut = {0x80, 0x1F, 0x7F, 0x00, 0x30, 0xF0};  // opaque blue; a 7 r15; a 3 g15
+  const TlutView tlut{TlutFormat::RGB5A3, ci8.tlut};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 8; ++x)
+      EXPECT_EQ(sample_texture(ci8, x * 128 + 64, y * 128 + 64),
+                decode_texel(texture_view(TexFormat::CI8, 8, 4, ci8.data), x, y, &tlut));
+  EXPECT_EQ(sample_texture(ci8, 64, 64), (Color8{0, 0, 255, 255}));
+  EXPECT_EQ(tiled_size(static_cast<u8>(TexFormat::CMPR), 13, 5), 64u);
 }
 
 }  // namespace
