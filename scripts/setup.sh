@@ -26,6 +26,7 @@ packages=(
                                              # our FIFO logs under a private X server
   gcc-powerpc-linux-gnu libc6-dev-powerpc-cross  # compiling gx exports (with libogc's headers)
   assimp-testmodels                          # real glTF assets in the tests
+  libsquish-dev                              # a PC DXT1 encoder the CMPR encoder is measured against
 )
 missing=()
 for p in "${packages[@]}"; do

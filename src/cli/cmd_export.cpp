@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/export_texture.h"
 #include "cli/lights_option.h"
 #include "core/error.h"
 #include "core/fs.h"
@@ -82,16 +83,28 @@ Action add_export(CLI::App& app) {
   auto scene_options = std::make_shared<SceneOptions>();
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
-  sub->add_option("TARGET", *target, exporters([](const PathInfo& p) {
-                    return p.name + " (" + p.export_target + ")";
-                  }))
+  sub->add_option("TARGET", *target,
+                  exporters([](const PathInfo& p) { return p.name + " (" + p.export_target + ")"; }) +
+                      ", or texture (one image as a GX texture in a libogc TPL file)")
       ->required();
-  sub->add_option("SCENE", r->scene_file, "Scene file (JSON, .gltf or .glb)")->required();
+  sub->add_option("SCENE", r->scene_file,
+                  "Scene file (JSON, .gltf or .glb); for texture, the image (PNG, EXR, JPEG)")
+      ->required();
+  auto texture = std::make_shared<TextureExportRequest>();
+  sub->add_flag("--mipmaps", texture->mipmaps,
+                "texture: the whole mip chain down to 1x1, each level a 2x2 box filter of the last");
+  sub->add_option("--rounding", texture->rounding,
+                  "texture: nearest (default: each field's nearest expansion) or truncate "
+                  "(gxtexconv's v >> (8 - bits))");
+  sub->add_option("--tlut", texture->tlut,
+                  "texture: the palette format of CI4, CI8, CI14X2: IA8, RGB565 (default), RGB5A3");
   sub->add_option("--variant", r->variant, exporters([](const PathInfo& p) {
                     return "The " + p.name + " variant (default " + p.variants.front().name + ")";
                   }));
   const CLI::Option* format_option =
-      sub->add_option("--format", *format, exporters(formats_help, "; "));
+      sub->add_option("--format", *format, exporters(formats_help, "; ") +
+                                     "; texture: I4, I8, IA4, IA8, RGB565, RGB5A3, RGBA8, CI4, "
+                                     "CI8, CI14X2 or CMPR");
   sub->add_option("--width", r->width, "dff: frame width (default: the scene's)");
   sub->add_option("--height", r->height, "dff: frame height (default: the scene's)");
   sub->add_option("--program", r->program_file,
@@ -107,6 +120,13 @@ Action add_export(CLI::App& app) {
   sub->add_option("-o,--output", *output, outputs_help())->required();
   add_lights_option(sub, *scene_options);
   return [=]() -> int {
+    if (*target == "texture") {
+      texture->image = r->scene_file;
+      texture->format = *format;
+      texture->format_given = format_option->count() > 0;
+      texture->output = *output;
+      return export_texture(*texture);
+    }
     const PathInfo& info = export_path(*target);
     r->format = export_format(info, *format_option, *format);
     const std::string extension = info.export_formats[r->format].extension;

@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 
 #include "core/error.h"
+#include "gx/texture_decoder.h"
+#include "gx/texture_format.h"
 
 namespace lt::gx {
 
@@ -108,6 +111,23 @@ template <u8 Format>
   }
 }
 
+// Every other format: the decoder's texel (gx/texture_decoder.h), TLUT included. The four above
+// are its rules inlined for the pixel stage's speed (GxTextureDecoder.TheFourFormatsOfTodays-
+// TextureUnitDecodeByteIdentically holds them to it).
+constexpr u8 kAnyFormat = 0xff;
+template <>
+[[gnu::always_inline]] inline Color8 fetch<kAnyFormat>(const TextureObject& tex, const TileShape&,
+                                                       int x, int y) {
+  const TextureView view{static_cast<TexFormat>(tex.format), tex.width, tex.height, tex.data};
+  const TlutView tlut{static_cast<TlutFormat>(tex.tlut_format), tex.tlut};
+  return decode_texel(view, x, y, &tlut);
+}
+
+// The tile shape of the four inlined formats; the decoder finds every other format's itself.
+TileShape shape_for_sampling(u8 format) {
+  return is_modelled_format(format) ? tile_shape(format) : TileShape{};
+}
+
 // A tap's index wrapped by `mode` (checked by the caller: check_texture).
 [[gnu::always_inline]] inline std::int64_t wrap(std::int64_t i, u8 mode, int size) {
   if (mode == kRepeat) return i & (size - 1);
@@ -157,11 +177,10 @@ u16 nearest_rgb565(double r, double g, double b) {
 }
 
 size_t tiled_size(u8 format, int width, int height) {
-  const TileShape shape = tile_shape(format);
+  const std::optional<TexFormat> f = tex_format_from_number(format);
+  LT_CHECK(f.has_value(), "texture format must be a GX_TF_* format");
   check_size(width, height);
-  const int rows = (height + shape.height - 1) >> shape.height_shift;
-  return static_cast<size_t>(tiles_across(shape, width)) * static_cast<size_t>(rows) * 32 *
-         static_cast<size_t>(shape.halves);
+  return level_bytes(*f, width, height);
 }
 
 namespace {
@@ -238,8 +257,10 @@ void with_format(u8 format, Body&& body) {
       return body(std::integral_constant<u8, kTexFormatIA8>{});
     case kTexFormatRGB565:
       return body(std::integral_constant<u8, kTexFormatRGB565>{});
-    default:  // RGBA8 (tile_shape refuses the rest)
+    case kTexFormatRGBA8:
       return body(std::integral_constant<u8, kTexFormatRGBA8>{});
+    default:  // every other GX_TF_* format (check_texture refused the rest)
+      return body(std::integral_constant<u8, kAnyFormat>{});
   }
 }
 
@@ -280,7 +301,7 @@ Color8 texel_at(const TextureObject& texture, int x, int y) {
   LT_CHECK(x >= 0 && x < texture.width && y >= 0 && y < texture.height, "texel out of range");
   LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
            "texture data must hold the whole tiles of its size");
-  const TileShape shape = tile_shape(texture.format);
+  const TileShape shape = shape_for_sampling(texture.format);
   Color8 out;
   with_format(texture.format,
               [&](auto format) { out = fetch<decltype(format)::value>(texture, shape, x, y); });
@@ -289,7 +310,7 @@ Color8 texel_at(const TextureObject& texture, int x, int y) {
 
 void sample_texture_at(const TextureObject& texture, const s32* u, const s32* v, int n,
                        Color8* out) {
-  const TileShape shape = tile_shape(texture.format);
+  const TileShape shape = shape_for_sampling(texture.format);
   check_texture(texture);
   with_format(texture.format, [&](auto format) {
     for (int k = 0; k < n; ++k)

@@ -19,16 +19,24 @@ struct TextureObject {
   u8 wrap_s = 0, wrap_t = 0;  // GX_CLAMP 0, GX_REPEAT 1, GX_MIRROR 2
   bool linear = true;         // GX_LINEAR min/mag filter (GX_InitTexObj with mipmap GX_FALSE
                               // selects linear [OGC gx.c L3236-3247]); false: GX_NEAR
+  // The palette of a colour-indexed format (GX_TF_CI4, CI8, CI14), as GX_LoadTlut leaves it in
+  // TMEM: 2 bytes an entry in memory order, `tlut_format` GX_TL_IA8 0, RGB565 1, RGB5A3 2
+  // (gx/texture_decoder.h TlutView). Empty for the other formats.
+  std::vector<u8> tlut;
+  u8 tlut_format = 1;
   bool operator==(const TextureObject&) const = default;
 };
 
 inline constexpr u8 kTexFormatI8 = 1, kTexFormatIA8 = 3, kTexFormatRGB565 = 4,
                     kTexFormatRGBA8 = 6;  // GX_TF_* [OGC gx.h L291-297]
+// The formats users' programs may declare today (the program reader refuses the others until it
+// reads TLUTs); the sampler takes every GX_TF_* format (gx/texture_format.h).
 bool is_modelled_format(u8 format);
 
-// Bytes a format's tiles take for a width x height image: I8 8x4-texel tiles of 32 bytes, IA8 and
-// RGB565 4x4-texel tiles of 32 bytes, RGBA8 4x4-texel tiles of 64 bytes, rows and columns padded
-// to whole tiles [OGC gx.c L3226-3300] [DHW TextureDecoder_Common.cpp block sizes].
+// Bytes a format's tiles take for a width x height image, rows and columns padded to whole tiles
+// (gx/texture_format.h level_bytes): I8 8x4-texel tiles of 32 bytes, IA8 and RGB565 4x4-texel
+// tiles of 32 bytes, RGBA8 4x4-texel tiles of 64 bytes, and so on for every GX_TF_* format
+// [OGC gx.c L3226-3300] [DHW TextureDecoder_Common.cpp block sizes].
 size_t tiled_size(u8 format, int width, int height);
 
 // Texels in row-major order to GX tile order and back. Row-major texels are, per format: I8 one
@@ -43,8 +51,9 @@ std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u
 // The filtered texel at fixed-point (u, v) (s17.7, the rasteriser's: rasteriser.h raster_texcoord):
 // bilinear with 7-bit weights and truncation, or nearest (u >> 7), with each tap's index wrapped
 // [DSW TextureSampler.cpp SampleMip, WrapCoord]. I8: (i, i, i, i); IA8: (i, i, i, a); RGB565: (r,
-// g, b, 255) expanded to 8 bits by bit replication; RGBA8: (r, g, b, a). Every component is
-// filtered on its own.
+// g, b, 255) expanded to 8 bits by bit replication; RGBA8: (r, g, b, a); every other GX_TF_*
+// format as gx/texture_decoder.h decodes it (colour-indexed ones through `tlut`). Every
+// component is filtered on its own.
 Color8 sample_texture(const TextureObject& texture, s32 u, s32 v);
 // sample_texture at n pixels: out[k] is the texel at (u[k], v[k]). The texture's format, tile
 // shape and checks are decoded once for all of them (the pixel stage's runs of pixels).

@@ -11,8 +11,10 @@
 //
 // A float (EXR) map gets the same formats: GX has no float texture format (GX_TF_* are I4..RGBA8,
 // the colour-indexed and CMPR ones), so each texel is quantised to the nearest 1/255 of `scale`
-// (I8, RGBA8; at most 0.5/255 of it off) or to RGB565's nearest expansion, exactly as a porter's
-// texture converter would store it.
+// (I8, RGBA8; at most 0.5/255 of it off) or to RGB565's nearest expansion: the least error each
+// format allows (gx/texture_encoder.h's `nearest` rounding). A porter's converter may store less:
+// devkitPro's gxtexconv truncates RGB565 fields (`r >> 3`, `g >> 2`, after an error diffusion),
+// up to a whole step off where nearest is half a step (docs/textures.md "Encoding").
 //
 // Orientation: the map's texels are stored bottom row first (v = 0, OpenGL's convention, as
 // model/texture_sampling.h keeps them), and GX's t = 0 is the first row in memory, so with the
