@@ -51,7 +51,9 @@ TEST_P(Golden, MatchesWithinTolerance) {
   const RegressRun run = run_regress(o);
   ASSERT_EQ(run.results.size(), 1u);
   const CaseResult& r = run.results.front();
-  EXPECT_EQ(r.status, CaseStatus::kPass)
+  // Within the tolerance is a pass or, where the render differs from its golden at all (arbfp's
+  // are 1 LSB off on a few pixels, as they were before the warn tier), regress's warn; else fail.
+  EXPECT_TRUE(r.status == CaseStatus::kPass || r.status == CaseStatus::kWarn)
       << to_string(r.status) << ": " << r.message << "\n"
       << r.details << "(scripts/update_goldens.sh rewrites the goldens that fail)";
 }
