@@ -96,8 +96,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s IMAGE...\n", argv[0]);
     return 2;
   }
-  std::printf("| image | size | ours mean | ours max | ours RMS | squish mean | squish max | "
-              "squish RMS |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| image | size | ours mean | ours max | ours RMS | squish mean | squish max | "
+      "squish RMS |\n|---|---|---|---|---|---|---|---|\n");
   bool worse = false;
   for (int i = 1; i < argc; ++i) {
     try {

@@ -84,15 +84,17 @@ Action add_export(CLI::App& app) {
   auto* sub =
       app.add_subcommand("export", "Write a path's generated programs as code for the target");
   sub->add_option("TARGET", *target,
-                  exporters([](const PathInfo& p) { return p.name + " (" + p.export_target + ")"; }) +
-                      ", or texture (one image as a GX texture in a libogc TPL file)")
+                  exporters([](const PathInfo& p) {
+                    return p.name + " (" + p.export_target + ")";
+                  }) + ", or texture (one image as a GX texture in a libogc TPL file)")
       ->required();
   sub->add_option("SCENE", r->scene_file,
                   "Scene file (JSON, .gltf or .glb); for texture, the image (PNG, EXR, JPEG)")
       ->required();
   auto texture = std::make_shared<TextureExportRequest>();
-  sub->add_flag("--mipmaps", texture->mipmaps,
-                "texture: the whole mip chain down to 1x1, each level a 2x2 box filter of the last");
+  sub->add_flag(
+      "--mipmaps", texture->mipmaps,
+      "texture: the whole mip chain down to 1x1, each level a 2x2 box filter of the last");
   sub->add_option("--rounding", texture->rounding,
                   "texture: nearest (default: each field's nearest expansion) or truncate "
                   "(gxtexconv's v >> (8 - bits))");
@@ -102,9 +104,10 @@ Action add_export(CLI::App& app) {
                     return "The " + p.name + " variant (default " + p.variants.front().name + ")";
                   }));
   const CLI::Option* format_option =
-      sub->add_option("--format", *format, exporters(formats_help, "; ") +
-                                     "; texture: I4, I8, IA4, IA8, RGB565, RGB5A3, RGBA8, CI4, "
-                                     "CI8, CI14X2 or CMPR");
+      sub->add_option("--format", *format,
+                      exporters(formats_help, "; ") +
+                          "; texture: I4, I8, IA4, IA8, RGB565, RGB5A3, RGBA8, CI4, "
+                          "CI8, CI14X2 or CMPR");
   sub->add_option("--width", r->width, "dff: frame width (default: the scene's)");
   sub->add_option("--height", r->height, "dff: frame height (default: the scene's)");
   sub->add_option("--program", r->program_file,

@@ -26,7 +26,8 @@ std::string valid_formats() {
 
 int export_texture(const TextureExportRequest& request) {
   if (!request.format_given)
-    throw InputError("export", "--format", "export texture needs --format (" + valid_formats() + ")");
+    throw InputError("export", "--format",
+                     "export texture needs --format (" + valid_formats() + ")");
   const std::optional<gx::TexFormat> format = gx::tex_format_from_name(request.format);
   if (!format)
     throw InputError("export", "--format",
@@ -65,7 +66,8 @@ int export_texture(const TextureExportRequest& request) {
   const std::vector<gx::u8> bytes = gx::write_tpl({t});
   write_atomically(request.output, [&](const fs::path& tmp) {
     std::ofstream out(tmp, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
     if (!out) throw InputError(request.output, "", "could not be written");
   });
   return 0;

@@ -8,8 +8,8 @@
 namespace lt::cli {
 
 struct TextureExportRequest {
-  std::string image;        // PNG, EXR, JPEG ... through the image layer
-  std::string format;       // I4 .. CMPR (texture_format.h names; GX_TF_ prefix allowed)
+  std::string image;   // PNG, EXR, JPEG ... through the image layer
+  std::string format;  // I4 .. CMPR (texture_format.h names; GX_TF_ prefix allowed)
   bool format_given = false;
   std::string rounding = "nearest";  // or "truncate" (gxtexconv's)
   std::string tlut = "RGB565";       // CI4, CI8, CI14X2: IA8, RGB565 or RGB5A3

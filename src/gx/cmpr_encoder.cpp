@@ -49,7 +49,8 @@ struct Scored {
 
 // The block's squared RGB error decoded as the console decodes it; `indices` (optional) gets
 // each opaque texel's colour number.
-long long score_endpoints(const CmprBlockTexels& block, u16 c1, u16 c2, std::array<u8, 16>* indices) {
+long long score_endpoints(const CmprBlockTexels& block, u16 c1, u16 c2,
+                          std::array<u8, 16>* indices) {
   const std::array<Color8, 4> palette = cmpr_palette(c1, c2);
   const int choices = c1 > c2 ? 4 : 3;  // colour 3 of the three-colour mode is transparent
   long long total = 0;
@@ -59,7 +60,8 @@ long long score_endpoints(const CmprBlockTexels& block, u16 c1, u16 c2, std::arr
     for (int i = 0; i < choices; ++i) {
       long long e = 0;
       for (int c = 0; c < 3; ++c) {
-        const int d = palette[static_cast<size_t>(i)][c] - block.rgb[static_cast<size_t>(k)][static_cast<size_t>(c)];
+        const int d = palette[static_cast<size_t>(i)][c] -
+                      block.rgb[static_cast<size_t>(k)][static_cast<size_t>(c)];
         e += d * d;
       }
       if (e < best_error) {
@@ -73,7 +75,8 @@ long long score_endpoints(const CmprBlockTexels& block, u16 c1, u16 c2, std::arr
   return total;
 }
 
-void consider_endpoints(const CmprBlockTexels& block, const Fields& p, const Fields& q, bool three_only, Scored& best) {
+void consider_endpoints(const CmprBlockTexels& block, const Fields& p, const Fields& q,
+                        bool three_only, Scored& best) {
   for (Mode mode : {Mode::Four, Mode::Three}) {
     if (three_only && mode == Mode::Four) continue;
     const auto [c1, c2] = ordered_for_mode(p, q, mode);
@@ -120,11 +123,13 @@ const SingleTables& single_tables() {
             const int average = std::abs((ex(a) + ex(b)) / 2 - v);
             if (blend < best_blend) {
               best_blend = blend;
-              t.blend[static_cast<size_t>(w)][static_cast<size_t>(v)] = {static_cast<u8>(a), static_cast<u8>(b)};
+              t.blend[static_cast<size_t>(w)][static_cast<size_t>(v)] = {static_cast<u8>(a),
+                                                                         static_cast<u8>(b)};
             }
             if (average < best_average) {
               best_average = average;
-              t.average[static_cast<size_t>(w)][static_cast<size_t>(v)] = {static_cast<u8>(a), static_cast<u8>(b)};
+              t.average[static_cast<size_t>(w)][static_cast<size_t>(v)] = {static_cast<u8>(a),
+                                                                           static_cast<u8>(b)};
             }
           }
       }
@@ -136,12 +141,13 @@ const SingleTables& single_tables() {
 
 // Endpoints solving least squares for fixed colour numbers: texel k is w_k c1 + (1 - w_k) c2
 // with the console's weights (1, 0, 5/8, 3/8; the three-colour mode 1, 0, 1/2).
-bool least_squares(const CmprBlockTexels& block, const std::array<u8, 16>& idx, Mode mode, Fields& p,
-                   Fields& q) {
+bool least_squares(const CmprBlockTexels& block, const std::array<u8, 16>& idx, Mode mode,
+                   Fields& p, Fields& q) {
   const double four[4] = {1.0, 0.0, 5.0 / 8.0, 3.0 / 8.0}, three[3] = {1.0, 0.0, 0.5};
   double aa = 0, ab = 0, bb = 0, ax[3] = {}, bx[3] = {};
   for (int k = 0; k < block.opaque; ++k) {
-    const double w = mode == Mode::Four ? four[idx[static_cast<size_t>(k)]] : three[std::min<int>(idx[static_cast<size_t>(k)], 2)];
+    const double w = mode == Mode::Four ? four[idx[static_cast<size_t>(k)]]
+                                        : three[std::min<int>(idx[static_cast<size_t>(k)], 2)];
     aa += w * w;
     ab += w * (1 - w);
     bb += (1 - w) * (1 - w);
@@ -184,8 +190,9 @@ void cluster_fit(const CmprBlockTexels& block, const double axis[3], const doubl
       t += (block.rgb[static_cast<size_t>(k)][static_cast<size_t>(c)] - mean[c]) * axis[c];
     along[static_cast<size_t>(k)] = t;
   }
-  std::sort(order.begin(), order.begin() + n,
-            [&](int p, int q) { return along[static_cast<size_t>(p)] > along[static_cast<size_t>(q)]; });
+  std::sort(order.begin(), order.begin() + n, [&](int p, int q) {
+    return along[static_cast<size_t>(p)] > along[static_cast<size_t>(q)];
+  });
   // prefix[i][c]: the sum of the first i ordered texels' channel c.
   std::array<std::array<double, 3>, 17> prefix{};
   for (int i = 0; i < n; ++i)
@@ -194,7 +201,8 @@ void cluster_fit(const CmprBlockTexels& block, const double axis[3], const doubl
           prefix[static_cast<size_t>(i)][static_cast<size_t>(c)] +
           block.rgb[static_cast<size_t>(order[static_cast<size_t>(i)])][static_cast<size_t>(c)];
   const auto run = [&](int from, int to, int c) {
-    return prefix[static_cast<size_t>(to)][static_cast<size_t>(c)] - prefix[static_cast<size_t>(from)][static_cast<size_t>(c)];
+    return prefix[static_cast<size_t>(to)][static_cast<size_t>(c)] -
+           prefix[static_cast<size_t>(from)][static_cast<size_t>(c)];
   };
   // Runs [0, i) weight 1, [i, j) w2, [j, k) w3, [k, n) weight 0 (three colours: j == k).
   const double w2 = mode == Mode::Four ? 5.0 / 8.0 : 0.5, w3 = 3.0 / 8.0;
@@ -216,7 +224,8 @@ void cluster_fit(const CmprBlockTexels& block, const double axis[3], const doubl
           split.b[c] = std::clamp((aa * bx - ab * ax) / det, 0.0, 255.0);
           // The squared error less the constant sum of x^2.
           split.error += split.a[c] * split.a[c] * aa + split.b[c] * split.b[c] * bb +
-                         2 * split.a[c] * split.b[c] * ab - 2 * split.a[c] * ax - 2 * split.b[c] * bx;
+                         2 * split.a[c] * split.b[c] * ab - 2 * split.a[c] * ax -
+                         2 * split.b[c] * bx;
         }
         out.push_back(split);
       }
@@ -251,7 +260,8 @@ Scored search_endpoints(const CmprBlockTexels& block) {
   double tmin = 0, tmax = 0;
   for (int k = 0; k < block.opaque; ++k) {
     double t = 0;
-    for (int c = 0; c < 3; ++c) t += (block.rgb[static_cast<size_t>(k)][static_cast<size_t>(c)] - mean[c]) * axis[c];
+    for (int c = 0; c < 3; ++c)
+      t += (block.rgb[static_cast<size_t>(k)][static_cast<size_t>(c)] - mean[c]) * axis[c];
     tmin = std::min(tmin, t);
     tmax = std::max(tmax, t);
   }
@@ -282,10 +292,12 @@ Scored search_endpoints(const CmprBlockTexels& block) {
     splits.clear();
     cluster_fit(block, axis, mean, mode, splits);
     const size_t keep = std::min<size_t>(4, splits.size());
-    std::partial_sort(splits.begin(), splits.begin() + static_cast<std::ptrdiff_t>(keep), splits.end(),
+    std::partial_sort(splits.begin(), splits.begin() + static_cast<std::ptrdiff_t>(keep),
+                      splits.end(),
                       [](const Split& x, const Split& y) { return x.error < y.error; });
     for (size_t k = 0; k < keep; ++k)
-      consider_endpoints(block, nearest_fields(splits[k].a), nearest_fields(splits[k].b), three_only, best);
+      consider_endpoints(block, nearest_fields(splits[k].a), nearest_fields(splits[k].b),
+                         three_only, best);
   }
   // Least squares for the best candidate's colour numbers, twice.
   for (int round = 0; round < 2; ++round) {
@@ -293,7 +305,8 @@ Scored search_endpoints(const CmprBlockTexels& block) {
     const auto [c1, c2] = ordered_for_mode(best.p, best.q, best.mode);
     score_endpoints(block, c1, c2, &idx);
     Fields p, q;
-    if (least_squares(block, idx, best.mode, p, q)) consider_endpoints(block, p, q, three_only, best);
+    if (least_squares(block, idx, best.mode, p, q))
+      consider_endpoints(block, p, q, three_only, best);
   }
   // Hill climbing: one endpoint field by one step, while the error falls.
   for (int step = 0; step < 64 && best.error > 0; ++step) {
@@ -301,8 +314,8 @@ Scored search_endpoints(const CmprBlockTexels& block) {
     // Moves of one endpoint's field (dp or dq zero) or of both endpoints' same field; none off
     // a field's range.
     for (int c = 0; c < 3; ++c)
-      for (const auto& [dp, dq] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, 1},
-                                   {-1, 1}, {1, -1}}) {
+      for (const auto& [dp, dq] :
+           {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, 1}, {-1, 1}, {1, -1}}) {
         Fields p = start.p, q = start.q;
         int& fp = p[static_cast<size_t>(c)];
         int& fq = q[static_cast<size_t>(c)];

@@ -12,9 +12,12 @@ namespace lt::gx {
 
 u16 encode_tlut_entry(const Color8& c, TlutFormat format, Rounding rounding) {
   switch (format) {
-    case TlutFormat::IA8: return static_cast<u16>(c.a << 8 | intensity_of(c, rounding));
-    case TlutFormat::RGB565: return encode_rgb565(c, rounding);
-    case TlutFormat::RGB5A3: return encode_rgb5a3(c, rounding, c.a == 255);
+    case TlutFormat::IA8:
+      return static_cast<u16>(c.a << 8 | intensity_of(c, rounding));
+    case TlutFormat::RGB565:
+      return encode_rgb565(c, rounding);
+    case TlutFormat::RGB5A3:
+      return encode_rgb5a3(c, rounding, c.a == 255);
   }
   LT_CHECK(false, "not a GX TLUT format");
   return 0;
@@ -28,7 +31,8 @@ struct MedianCutBox {
   int channel = 0, extent = 0;  // the channel with the largest max - min, and that difference
 };
 
-void measure_box(MedianCutBox& box, const std::vector<int>& order, const std::vector<Color8>& texels) {
+void measure_box(MedianCutBox& box, const std::vector<int>& order,
+                 const std::vector<Color8>& texels) {
   std::array<int, 4> lo{255, 255, 255, 255}, hi{0, 0, 0, 0};
   for (size_t k = box.begin; k < box.end; ++k) {
     const Color8& c = texels[static_cast<size_t>(order[k])];
@@ -45,7 +49,8 @@ void measure_box(MedianCutBox& box, const std::vector<int>& order, const std::ve
     }
 }
 
-Color8 mean_colour(const MedianCutBox& box, const std::vector<int>& order, const std::vector<Color8>& texels) {
+Color8 mean_colour(const MedianCutBox& box, const std::vector<int>& order,
+                   const std::vector<Color8>& texels) {
   std::array<long long, 4> sum{};
   for (size_t k = box.begin; k < box.end; ++k)
     for (int ch = 0; ch < 4; ++ch) sum[ch] += texels[static_cast<size_t>(order[k])][ch];
@@ -73,8 +78,9 @@ Palette make_palette(const Rgba8Image& image, int max_entries, TlutFormat format
   measure_box(boxes[0], order, texels);
   while (static_cast<int>(boxes.size()) < max_entries) {
     // The box with the longest side (the first such); none splittable when all are one colour.
-    auto widest = std::max_element(boxes.begin(), boxes.end(),
-                                   [](const MedianCutBox& a, const MedianCutBox& b) { return a.extent < b.extent; });
+    auto widest = std::max_element(
+        boxes.begin(), boxes.end(),
+        [](const MedianCutBox& a, const MedianCutBox& b) { return a.extent < b.extent; });
     if (widest->extent <= 0) break;
     MedianCutBox& box = *widest;
     const int ch = box.channel;
@@ -102,7 +108,8 @@ Palette make_palette(const Rgba8Image& image, int max_entries, TlutFormat format
   for (size_t b = 0; b < boxes.size(); ++b) {
     const u16 entry = encode_tlut_entry(mean_colour(boxes[b], order, texels), format, rounding);
     palette.entries.push_back(entry);
-    decoded.push_back(decode_tlut_entry(format, static_cast<u8>(entry >> 8), static_cast<u8>(entry)));
+    decoded.push_back(
+        decode_tlut_entry(format, static_cast<u8>(entry >> 8), static_cast<u8>(entry)));
     for (size_t k = boxes[b].begin; k < boxes[b].end; ++k)
       palette.indices[static_cast<size_t>(order[k])] = static_cast<int>(b);
   }

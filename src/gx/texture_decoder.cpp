@@ -37,9 +37,12 @@ Color8 decode_tlut_entry(TlutFormat format, u8 first, u8 second) {
   // big-endian value first [DHW DecodePixel_Paletted].
   const u16 value = static_cast<u16>((first << 8) | second);
   switch (format) {
-    case TlutFormat::IA8: return decode_ia8(first, second);
-    case TlutFormat::RGB565: return decode_rgb565(value);
-    case TlutFormat::RGB5A3: return decode_rgb5a3(value);
+    case TlutFormat::IA8:
+      return decode_ia8(first, second);
+    case TlutFormat::RGB565:
+      return decode_rgb565(value);
+    case TlutFormat::RGB5A3:
+      return decode_rgb5a3(value);
   }
   LT_CHECK(false, "not a GX TLUT format");
   return {};
@@ -74,9 +77,10 @@ TexelAddress texel_address(TexFormat format, int width, int x, int y) {
   // ((W - 1) >> 3) + 1 or ((W - 1) >> 2) + 1 (its `imageWidth` is the size register, W - 1)
   // [DHW TexDecoder_DecodeTexel, every case's widthBlks].
   const TexFormatInfo& info = format_info(format);
-  const std::size_t across = static_cast<std::size_t>((width + info.tile_width - 1) / info.tile_width);
-  const std::size_t tile =
-      static_cast<std::size_t>(y / info.tile_height) * across + static_cast<std::size_t>(x / info.tile_width);
+  const std::size_t across =
+      static_cast<std::size_t>((width + info.tile_width - 1) / info.tile_width);
+  const std::size_t tile = static_cast<std::size_t>(y / info.tile_height) * across +
+                           static_cast<std::size_t>(x / info.tile_width);
   const std::size_t base = tile * static_cast<std::size_t>(info.tile_bytes);
   const int tx = x % info.tile_width, ty = y % info.tile_height;
   switch (format) {
@@ -103,7 +107,8 @@ u16 big_endian16(const u8* p) {
 
 Color8 tlut_lookup(const TlutView* tlut, int index) {
   LT_CHECK(tlut != nullptr, "a colour-indexed texture needs its TLUT");
-  LT_CHECK(static_cast<std::size_t>(index) < tlut->size(), "TLUT too small for the texture's index");
+  LT_CHECK(static_cast<std::size_t>(index) < tlut->size(),
+           "TLUT too small for the texture's index");
   return decode_tlut_entry(tlut->format, tlut->entries[2 * static_cast<std::size_t>(index)],
                            tlut->entries[2 * static_cast<std::size_t>(index) + 1]);
 }
@@ -112,18 +117,22 @@ Color8 tlut_lookup(const TlutView* tlut, int index) {
 int raw_index(const TextureView& t, const TexelAddress& at) {
   const u8* d = t.data.data() + at.byte;
   switch (t.format) {
-    case TexFormat::CI4: return at.high_nibble ? d[0] >> 4 : d[0] & 0xf;
-    case TexFormat::CI8: return d[0];
+    case TexFormat::CI4:
+      return at.high_nibble ? d[0] >> 4 : d[0] & 0xf;
+    case TexFormat::CI8:
+      return d[0];
     // The big-endian u16's low 14 bits [DHW case C14X2: `swap16(...) & 0x3FFF`].
-    case TexFormat::CI14X2: return big_endian16(d) & 0x3fff;
-    default: return 0;
+    case TexFormat::CI14X2:
+      return big_endian16(d) & 0x3fff;
+    default:
+      return 0;
   }
 }
 
 void check_view(const TextureView& t) {
-  LT_CHECK(t.width >= 1 && t.width <= kMaxTextureSize && t.height >= 1 &&
-               t.height <= kMaxTextureSize,
-           "texture size must be 1..1024 per side");
+  LT_CHECK(
+      t.width >= 1 && t.width <= kMaxTextureSize && t.height >= 1 && t.height <= kMaxTextureSize,
+      "texture size must be 1..1024 per side");
   LT_CHECK(t.data.size() >= level_bytes(t.format, t.width, t.height),
            "texture data must hold the whole tiles of its size");
 }
@@ -136,21 +145,26 @@ Color8 decode_unchecked(const TextureView& t, int x, int y, const TlutView* tlut
       const u8 i = bits4_to_8(at.high_nibble ? d[0] >> 4 : d[0] & 0xf);
       return {i, i, i, i};
     }
-    case TexFormat::I8: return {d[0], d[0], d[0], d[0]};
+    case TexFormat::I8:
+      return {d[0], d[0], d[0], d[0]};
     case TexFormat::IA4: {  // alpha the high nibble, intensity the low [DHW case IA4]
       const u8 i = bits4_to_8(d[0] & 0xf);
       return {i, i, i, bits4_to_8(d[0] >> 4)};
     }
-    case TexFormat::IA8: return decode_ia8(d[0], d[1]);
-    case TexFormat::RGB565: return decode_rgb565(big_endian16(d));
-    case TexFormat::RGB5A3: return decode_rgb5a3(big_endian16(d));
+    case TexFormat::IA8:
+      return decode_ia8(d[0], d[1]);
+    case TexFormat::RGB565:
+      return decode_rgb565(big_endian16(d));
+    case TexFormat::RGB5A3:
+      return decode_rgb5a3(big_endian16(d));
     case TexFormat::RGBA8:
       // A and R in the tile's first 32 bytes, G and B at the same place in the next 32 [DHW case
       // RGBA8: `dst[3] = offset, dst[0] = offset + 1, dst[1] = offset + 32, dst[2] = offset + 33`].
       return {d[1], d[32], d[33], d[0]};
     case TexFormat::CI4:
     case TexFormat::CI8:
-    case TexFormat::CI14X2: return tlut_lookup(tlut, raw_index(t, at));
+    case TexFormat::CI14X2:
+      return tlut_lookup(tlut, raw_index(t, at));
     case TexFormat::CMPR: {
       // Endpoints big-endian; one byte a row of the block, texel 0 in the top two bits
       // [DHW case CMPR: `lines[tt]`, `rs = 6 - (ss << 1)`].
@@ -186,8 +200,8 @@ int largest_index(const TextureView& texture) {
   int largest = 0;
   for (int y = 0; y < texture.height; ++y)
     for (int x = 0; x < texture.width; ++x)
-      largest = std::max(largest,
-                         raw_index(texture, texel_address(texture.format, texture.width, x, y)));
+      largest =
+          std::max(largest, raw_index(texture, texel_address(texture.format, texture.width, x, y)));
   return largest;
 }
 

@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
-#include "gx/texture_format.h"
 #include "gx/gx_types.h"
+#include "gx/texture_format.h"
 
 namespace lt::gx {
 
@@ -32,10 +32,18 @@ struct TlutView {
 
 // Bit replication of an n-bit field to 8 bits, the high bits repeated into the low ones
 // [DHW LookUpTables.h Convert3To8, Convert4To8, Convert5To8, Convert6To8].
-constexpr u8 bits3_to_8(int v) { return static_cast<u8>((v << 5) | (v << 2) | (v >> 1)); }
-constexpr u8 bits4_to_8(int v) { return static_cast<u8>((v << 4) | v); }
-constexpr u8 bits5_to_8(int v) { return static_cast<u8>((v << 3) | (v >> 2)); }
-constexpr u8 bits6_to_8(int v) { return static_cast<u8>((v << 2) | (v >> 4)); }
+constexpr u8 bits3_to_8(int v) {
+  return static_cast<u8>((v << 5) | (v << 2) | (v >> 1));
+}
+constexpr u8 bits4_to_8(int v) {
+  return static_cast<u8>((v << 4) | v);
+}
+constexpr u8 bits5_to_8(int v) {
+  return static_cast<u8>((v << 3) | (v >> 2));
+}
+constexpr u8 bits6_to_8(int v) {
+  return static_cast<u8>((v << 2) | (v >> 4));
+}
 
 // 16-bit texels and palette entries, the value as a big-endian u16 (its first byte the high one).
 Color8 decode_rgb565(u16 value);
