@@ -68,7 +68,7 @@ const double kNaN = std::nan("");
 // N = V = +Z everywhere (orthographic camera, quad facing it). Half values of the constants:
 // 0.2 -> 0.199951171875, 0.1 -> 0.0999755859375, 0.9 -> 0.89990234375, 0.8 -> 0.7998046875,
 // 0.05 -> 0.04998779296875, 1.4427 -> 1.4423828125.
-const HalfQuadCase kCases[] = {
+const HalfQuadCase kHalfQuadCases[] = {
     // Where half rounding shows (reference_test's backlit_p4, whose double answer is 0.41364):
     // L = (0,0,-1). H.z = -1 + 1*0.19995 = -0.80004883, exactly halfway between two halves:
     // ties to even give -0.7998046875, so t = 0.7998046875 (not 0.8). log2(t) = -0.322265625,
@@ -132,7 +132,7 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Analytic, HalfQuad, ::testing::ValuesIn(kCases),
+INSTANTIATE_TEST_SUITE_P(Analytic, HalfQuad, ::testing::ValuesIn(kHalfQuadCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).

@@ -52,7 +52,7 @@ std::string quad_scene(const QuadCase& c) {
 }
 
 // The quad's normal is +Z and the orthographic view vector V is +Z everywhere.
-const QuadCase kCases[] = {
+const QuadCase kQuadCases[] = {
     // Backlit: L = (0,0,-1), diffuse 0; H = L + N*0.2 = (0,0,-0.8); t = 0.8; 0.8^4 = 0.4096.
     // trans = (0.4096*2 + 0.1) * T(0.5) = 0.9192 * 0.5 = 0.4596; c = albedo 0.9 * 0.4596 = 0.41364.
     {"backlit_p4",
@@ -193,7 +193,7 @@ TEST_P(ReferenceQuad, EveryCoveredPixelHasTheHandComputedColour) {
   EXPECT_EQ(covered, 32u * 32u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Analytic, ReferenceQuad, ::testing::ValuesIn(kCases),
+INSTANTIATE_TEST_SUITE_P(Analytic, ReferenceQuad, ::testing::ValuesIn(kQuadCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Model, LobeConventions) {

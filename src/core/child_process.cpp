@@ -11,6 +11,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -87,6 +89,29 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
   const int error = errno;
   [[maybe_unused]] const auto written = ::write(error_fd, &error, sizeof error);
   ::_exit(127);
+}
+
+// Whether a process of group `pgid` is still alive (neither a zombie nor dead), from
+// /proc/PID/stat: its state is the field after the command's closing parenthesis, the group the
+// third after it [proc(5)]. The command may itself hold spaces and parentheses, hence the last ')'.
+bool group_has_a_live_process(pid_t pgid) {
+  std::error_code error;
+  for (std::filesystem::directory_iterator it("/proc", error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in(it->path() / "stat");
+    std::string stat;
+    if (!std::getline(in, stat)) continue;  // it ended while we looked
+    const std::size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream fields(stat.substr(close + 1));
+    char state = 0;
+    long ppid = 0, group = 0;
+    if (!(fields >> state >> ppid >> group)) continue;
+    if (group == pgid && state != 'Z' && state != 'X') return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -201,6 +226,13 @@ void ChildProcess::stop(int polite_signal, std::chrono::milliseconds grace) {
     wait_until(Clock::now() + grace);
   }
   ::kill(-pid_, SIGKILL);
+  // kill() returns before the group has died: a member not yet scheduled since is still running
+  // (and still reads its files) for a moment, longer on a loaded machine. So wait until every
+  // member is dead, before reaping the leader, whose zombie keeps the group id from being
+  // reused meanwhile. SIGKILL cannot be caught: the bound is only against the unforeseen.
+  const auto bound = Clock::now() + std::chrono::seconds(5);
+  while (group_has_a_live_process(pid_) && Clock::now() < bound)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
   status_ = reap(pid_);
   reaped_ = true;
 }

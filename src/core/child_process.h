@@ -49,8 +49,9 @@ class ChildProcess {
   // Waits until the program has ended (not reaped yet) or `deadline` passes; true if it ended.
   bool wait_until(Clock::time_point deadline);
   // Sends `polite_signal` to the group, gives the program `grace` to end, then kills what is
-  // left of the group and reaps the program. Also right after the program ended by itself:
-  // that kills anything it left running in its group. Idempotent.
+  // left of the group, waits until all of it is dead (bounded) and reaps the program. Also
+  // right after the program ended by itself: that kills anything it left running in its group.
+  // Idempotent.
   void stop(int polite_signal, std::chrono::milliseconds grace);
   // After stop(): the wait status, for describe_wait_status().
   int wait_status() const { return status_; }

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The core, the command layer and the test binaries are unity builds (CMakeLists.txt): eight .cpp
-files compiled as one translation unit. There, two files' functions of one name with internal linkage (anonymous
+"""The core, the command layer and the test binaries are unity builds (CMakeLists.txt): sixteen or
+thirty-two .cpp files compiled as one translation unit. There, two files' functions of one name with internal linkage (anonymous
 namespace or `static`) are overloads of each other, and a call can resolve to the other file's
 without a word from the compiler -- the one way a unity build changes behaviour silently (two
 definitions of one signature, or of one type or variable, are compile errors instead). So no
