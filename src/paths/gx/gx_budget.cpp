@@ -1,10 +1,12 @@
 #include "paths/gx/gx_budget.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
 #include "core/error.h"
 #include "gx/fifo/cp_registers.h"
+#include "gx/texture_format.h"
 #include "mesh/triangle_strips.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/scene_vertices.h"
@@ -70,6 +72,13 @@ void add_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms&
       "vertex figures are exact counts a frame (bytes, vertices, triangles), not time: no public "
       "source states how long the console takes");
 }
+void add_texture_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs) {
+  const FrameTextureCost c = frame_texture_cost(scene, programs);
+  r.details.push_back({"textures", "", static_cast<int>(c.textures)});
+  r.details.push_back({"texture_bytes", "", static_cast<int>(c.texture_bytes)});
+  r.details.push_back({"tlut_bytes", "", static_cast<int>(c.tlut_bytes)});
+}
+
 }  // namespace
 
 budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
@@ -83,7 +92,30 @@ budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
   r.input = "scene";
   r.variant = to_string(v);
   add_vertex_cost(r, scene, programs);
+  add_texture_cost(r, scene, programs);
   return r;
+}
+
+FrameTextureCost frame_texture_cost(const Scene& scene, const ScenePrograms& programs) {
+  std::vector<const TextureObject*> loaded;
+  for (const MaterialDraw& d : programs.draws(scene)) {
+    const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
+    for (const auto& t : state.textures) {
+      if (!t) continue;
+      const bool seen = std::any_of(loaded.begin(), loaded.end(), [&](const TextureObject* u) {
+        return u->format == t->format && u->width == t->width && u->height == t->height &&
+               u->data == t->data && u->tlut == t->tlut;
+      });
+      if (!seen) loaded.push_back(&*t);
+    }
+  }
+  FrameTextureCost cost;
+  cost.textures = loaded.size();
+  for (const TextureObject* t : loaded) {
+    cost.texture_bytes += level_bytes(static_cast<TexFormat>(t->format), t->width, t->height);
+    cost.tlut_bytes += (t->tlut.size() + 31) & ~std::size_t{31};
+  }
+  return cost;
 }
 
 FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& programs,
@@ -92,7 +124,7 @@ FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& progr
   const SceneView view = SceneView::of(scene);
   std::map<size_t, VertexStream> streams;
   std::map<size_t, std::vector<u32>> strips;
-  std::set<std::pair<size_t, int>> arrays_placed;                 // (object, array) in MEM1
+  std::set<std::pair<size_t, int>> arrays_placed;                // (object, array) in MEM1
   std::set<std::pair<size_t, std::array<u32, 2>>> lists_placed;  // (object, VCD)
   for (const MaterialDraw& d : programs.draws(scene)) {
     const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;

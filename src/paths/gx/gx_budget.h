@@ -1,6 +1,6 @@
 // The gx path's budget (`ltrender budget SCENE --path gx`): the pass programs it generates for a
 // scene, counted and checked as any GX program is (budget/gx_program_budget.h), and what the
-// frame's vertices cost the console (frame_vertex_cost).
+// frame's vertices and textures cost the console (frame_vertex_cost, frame_texture_cost).
 #pragma once
 
 #include <string>
@@ -37,6 +37,18 @@ struct FrameVertexCost {
 };
 FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& programs,
                                   const VertexStorage& storage, const std::string& origin);
+
+// The textures a scene's frame loads, as MEM1 holds them: each distinct texture once (passes and
+// materials that load the same texels share one copy), its bytes by GX_GetTexBufferSize's rule
+// (gx/texture_format.h level_bytes: whole tiles), and a colour-indexed texture's palette (2 bytes
+// an entry, from a 32-byte boundary, as GX_InitTlutObj's memory must be). Not counted: the TMEM
+// a texture occupies while drawn (a cache region of GX_Init's, not the texture's size).
+struct FrameTextureCost {
+  std::size_t textures = 0;
+  std::size_t texture_bytes = 0;
+  std::size_t tlut_bytes = 0;
+};
+FrameTextureCost frame_texture_cost(const Scene& scene, const ScenePrograms& programs);
 
 // The storage `budget --path gx` compares F32 immediate mode with (docs/budget.md).
 inline constexpr const char* kBudgetVertexStorage = "vtx=s16,nrm=s8,clr=rgb565,uv=s16";
