@@ -3,12 +3,14 @@
 // merge` giving the merged run the same annotations and attachments as the unsharded run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 
 #include "regress/github_actions.h"
+#include "regress/golden_key.h"
 #include "regress/regress.h"
 #include "regress_fixture.h"
 #include "test_util.h"
@@ -143,14 +145,19 @@ TEST_F(RegressCi, MergeAnnotatesAndAttachesAsTheUnshardedRun) {
   const auto whole =
       test::run_ltrender(run_args() + " --json whole.json --junit whole.xml -o whole");
   ASSERT_EQ(whole.exit_code, 1) << whole.err;
-  unsetenv("GITHUB_ACTIONS");  // the shards of a run: no annotations of their own
+  // The shards, as examples/ci/ runs them (each JSON beside its page's folder), in this process:
+  // the command's records are the same (RegressMerge and RegressIsolation check it).
   for (int i = 1; i <= 2; ++i) {
-    const std::string n = std::to_string(i);
-    // As examples/ci/ runs a shard: its JSON beside its page's folder.
-    ASSERT_EQ(
-        test::run_ltrender(run_args() + " --shard " + n + "/2 --json s" + n + ".json -o s" + n)
-            .exit_code,
-        i == 1 ? 1 : 0);  // shard 1 has cases 0, 2, 4: quad_b/glsl is 4
+    RegressOptions o;
+    o.inputs = {"quad_a.json", "quad_b.json"};
+    o.goldens = "goldens";
+    o.golden_key = renderer_golden_key();
+    o.paths = "reference,glsl,combiners";
+    o.quiet = true;
+    o.shard = Shard{i, 2};
+    o.json_file = "s" + std::to_string(i) + ".json";
+    o.report_dir = "s" + std::to_string(i);
+    write_regress_outputs(o, run_regress(o));
   }
   const std::string before_merge = test::read_file(summary);
   const auto merged =
@@ -181,11 +188,17 @@ TEST_F(RegressCi, MergeAnnotatesAndAttachesAsTheUnshardedRun) {
   EXPECT_EQ(paths.size(), 6u);
 }
 
-TEST_F(RegressCi, ABadArtifactsOrCiValueIsOneLine) {
+// Refused before any scene is read or any golden looked for: one line, exit 2, nothing written.
+TEST(RegressCiOptions, ABadArtifactsOrCiValueIsOneLine) {
+  test::TempDir dir;
+  test::write_quad_scene(dir.path(), "quad_a", 4);
   for (const std::string& bad : {" --artifacts some", " --ci jenkins"}) {
-    const auto r = test::run_ltrender(run_args() + bad + " --json bad.json");
+    const auto r = test::run_ltrender("regress " + (dir / "quad_a.json").string() + " --goldens " +
+                                      (dir / "goldens").string() + bad + " --json " +
+                                      (dir / "bad.json").string());
     EXPECT_EQ(r.exit_code, 2) << bad;
-    EXPECT_NE(r.err.find("ltrender: error: --"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.rfind("ltrender: error: --", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(dir / "bad.json"));
   }
 }
