@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "advise/advise_page.h"
@@ -182,11 +183,27 @@ TEST(AdviseCli, BadInputExits2) {
 // variant of the path gets under 1 LSB max, so advise exits 1 naming the closest candidate.
 TEST(AdviseCli, NoCandidateExits1NamingTheClosest) {
   test::TempDir dir;
-  const test::RunResult r = test::run_ltrender("advise " + demo("baked_blob").string() +
-                                               " --target gl13-2units --max-lsb 1 --width 48 -o " +
-                                               (dir / "out").string());
+  const test::RunResult r = test::run_ltrender(
+      "advise " + demo("baked_blob").string() + " --target gl13-2units --max-lsb 1 --width 48 -o " +
+      (dir / "out").string() + " --json " + (dir / "advise.json").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("closest t=vertex"), std::string::npos) << r.err;
+  // Beside each error, its pixels over 1 LSB classed (edge shifts, shading): the shading max is
+  // the max of the pixels that are not edge shifts, so the max itself where there is none.
+  EXPECT_NE((r.out + r.err).find(" edge shifts > 1 LSB)"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(test::read_file(dir / "advise.json"));
+  size_t rendered = 0;
+  for (const auto& c : j.at("materials").at(0).at("candidates")) {
+    if (c.at("error").is_null()) continue;
+    ++rendered;
+    const auto& e = c.at("error");
+    EXPECT_LE(e.at("shading_max").get<double>(), e.at("max").get<double>());
+    if (e.at("edge_shift_pixels").get<size_t>() == 0)
+      EXPECT_EQ(e.at("shading_max").get<double>(), e.at("max").get<double>());
+    if (e.at("max").get<double>() > 1.0)
+      EXPECT_GT(e.at("shading_pixels").get<size_t>() + e.at("edge_shift_pixels").get<size_t>(), 0u);
+  }
+  EXPECT_GT(rendered, 0u);
   // The page is written whether or not a pick exists; no program without a pick.
   EXPECT_TRUE(fs::exists(dir / "out" / "index.html"));
   EXPECT_FALSE(fs::exists(dir / "out" / "skin_0.comb"));

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/fixed.h"
 #include "load/load_scene.h"
 #include "render/session.h"
 #include "test_util.h"
@@ -128,7 +129,8 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
                       0),
             0u);
   EXPECT_NE(csv.find(",cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
-                     "work_vertex_ops,settling_frames\n"),
+                     "work_vertex_ops,settling_frames,edge_shift_pixels,shading_pixels,"
+                     "shading_max_lsb\n"),
             std::string::npos);
   for (size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& r = rows[i];
@@ -149,6 +151,28 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
       EXPECT_NE(md.find("M stage-pixels"), std::string::npos);
     }
     if (r.path == "reference") EXPECT_GT(j["rows"][i]["stats"]["shading_mpixels_per_s"], 0);
+    // The error's pixels over 1 LSB, classed: edge shifts and shading add up to the share
+    // `% > 1 LSB` counts (figured apart, by the error's own statistics); with no edge shift the
+    // shading max is the max. The JSON carries the three, the page shows them on each card.
+    if (r.error) {
+      ASSERT_TRUE(r.edge_split) << r.path;
+      const auto& e = j["rows"][i]["error"];
+      const std::size_t edge = e.at("edge_shift_pixels"), shading = e.at("shading_pixels");
+      EXPECT_EQ(edge, r.edge_split->edge_shift_pixels);
+      EXPECT_NEAR(static_cast<double>(edge + shading),
+                  r.error->percent_over_1_lsb * static_cast<double>(r.error->pixels) / 100.0, 1e-6)
+          << r.path << " " << r.variant;
+      EXPECT_LE(e.at("shading_max_lsb").get<double>(), r.error->max_lsb);
+      if (edge == 0) EXPECT_EQ(e.at("shading_max_lsb").get<double>(), r.error->max_lsb);
+      EXPECT_NE(html.find("<dt>shading max</dt><dd>" + fixed(r.edge_split->shading_max_lsb, 2) +
+                          " LSB</dd><dt>edge "
+                          "shifts</dt><dd>" +
+                          std::to_string(edge) + " px &gt; 1 LSB</dd>"),
+                std::string::npos)
+          << r.path << " " << r.variant;
+    } else {
+      EXPECT_FALSE(j["rows"][i].contains("error"));
+    }
     // The work axis: every path that counts has a figure (GLSL says why it has none); where a
     // path also counts as it draws (gx, the CPU paths' covered pixels), the two agree.
     if (r.path == "glsl") {

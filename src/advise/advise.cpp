@@ -9,6 +9,7 @@
 
 #include "advise/hard_cases.h"
 #include "advise/material_error.h"
+#include "metrics/reference_edge_split.h"
 #include "advise/mesh_refinement.h"
 #include "advise/target.h"
 #include "core/error.h"
@@ -159,6 +160,7 @@ RefinementStep measure_refined(const Scene& scene, const PathInfo& path, const s
   const Comparison c = compare_material(built->result(), reference, test_encoding(*built),
                                         material_of_pixel, static_cast<int>(m));
   step.error = c.covered;
+  step.edge_split = reference_edge_split(c);
   step.non_finite = non_finite_pixels(c);
   return step;
 }
@@ -287,6 +289,7 @@ Advice run_advise(const AdviseOptions& o) {
     r.candidate = cand;
     r.cost.assign(nm, {});
     r.error.assign(nm, {});
+    r.edge_split.assign(nm, {});
     r.non_finite.assign(nm, 0);
     r.hard.assign(nm, std::nullopt);
     r.refused = path.refusal(scene, cand.variant);
@@ -346,6 +349,7 @@ Advice run_advise(const AdviseOptions& o) {
         const Comparison cmp = compare_material(image, reference, test_encoding(*built[i]),
                                                 material_of_pixel, static_cast<int>(m));
         c.error[m] = cmp.covered;
+        c.edge_split[m] = reference_edge_split(cmp);
         c.non_finite[m] = non_finite_pixels(cmp);
       }
       c.rendered = true;

@@ -61,6 +61,9 @@ struct CandidateResult {
   bool rendered = false;
   std::vector<Cost> cost;                                    // per material (scene.materials order)
   std::vector<ErrorStats> error;                             // per material, when rendered
+  // Per material, when rendered: its pixels over 1 LSB as edge shifts and shading
+  // (reference_edge_split.h), shown beside `error`.
+  std::vector<EdgeShiftSplit> edge_split;
   std::vector<size_t> non_finite;                            // per material, when rendered
   std::vector<std::optional<std::vector<HardResult>>> hard;  // per material, once checked
   // For `material`: a choice (built, within the profile, rendered, finite on the scene and on
@@ -74,6 +77,7 @@ struct CandidateResult {
 struct RefinementStep {
   std::size_t vertices = 0;  // of the material's objects
   ErrorStats error;          // the material's pixels
+  EdgeShiftSplit edge_split;  // its pixels over 1 LSB classed (reference_edge_split.h)
   std::size_t non_finite = 0;
 };
 

@@ -20,9 +20,12 @@ std::string cost_text(const Cost& c) {
          (c.texture_bytes > 0 ? " + " + fixed(c.texture_bytes, 0) + " B" : "");
 }
 
-std::string error_text(const ErrorStats& e) {
+// The figures, then the pixels over 1 LSB split: a max that is edge shifts (a silhouette the
+// reference's rasteriser places elsewhere) reads apart from a shading error.
+std::string error_text(const ErrorStats& e, const EdgeShiftSplit& split) {
   return "max " + fixed(e.max_lsb, 2) + ", p99 " + fixed(e.p99_lsb, 2) + ", mean " +
-         fixed(e.mean_lsb, 2);
+         fixed(e.mean_lsb, 2) + " (shading max " + fixed(split.shading_max_lsb, 2) + ", " +
+         std::to_string(split.edge_shift_pixels) + " edge shifts > 1 LSB)";
 }
 
 // How the pick compares with the path's default for one material.
@@ -36,12 +39,18 @@ std::string against_default(const Advice& a, size_t m, size_t pick) {
   const double saved = d.cost[m].ops - p.cost[m].ops;
   const double pct = d.cost[m].ops > 0 ? 100.0 * saved / d.cost[m].ops : 0.0;
   return "default " + a.default_variant + ": " + cost_text(d.cost[m]) + ", " +
-         error_text(d.error[m]) + "; the pick saves " + fixed(saved, 0) + " ops (" + fixed(pct, 1) +
-         "%) and " + fixed(d.cost[m].texture_bytes - p.cost[m].texture_bytes, 0) + " texture bytes";
+         error_text(d.error[m], d.edge_split[m]) + "; the pick saves " + fixed(saved, 0) +
+         " ops (" + fixed(pct, 1) + "%) and " +
+         fixed(d.cost[m].texture_bytes - p.cost[m].texture_bytes, 0) + " texture bytes";
 }
 
-nlohmann::ordered_json error_summary_json(const ErrorStats& e) {
-  return {{"max", e.max_lsb}, {"p99", e.p99_lsb}, {"mean", e.mean_lsb}};
+nlohmann::ordered_json error_summary_json(const ErrorStats& e, const EdgeShiftSplit& split) {
+  return {{"max", e.max_lsb},
+          {"p99", e.p99_lsb},
+          {"mean", e.mean_lsb},
+          {"shading_max", split.shading_max_lsb},
+          {"edge_shift_pixels", split.edge_shift_pixels},
+          {"shading_pixels", split.shading_pixels}};
 }
 
 // The program files one kind of built stage is written as.
@@ -76,11 +85,12 @@ std::string to_text(const Advice& a) {
     if (ma.pick) {
       const CandidateResult& p = a.candidates[*ma.pick];
       out << "  pick: " << p.candidate.variant << ": " << cost_text(p.cost[m]) << ", "
-          << error_text(p.error[m]) << "\n  " << against_default(a, m, *ma.pick) << "\n";
+          << error_text(p.error[m], p.edge_split[m]) << "\n  " << against_default(a, m, *ma.pick)
+          << "\n";
     } else if (ma.closest) {
       const CandidateResult& c = a.candidates[*ma.closest];
       out << "  no candidate within the budget; closest: " << c.candidate.variant << ": "
-          << cost_text(c.cost[m]) << ", " << error_text(c.error[m]) << "\n";
+          << cost_text(c.cost[m]) << ", " << error_text(c.error[m], c.edge_split[m]) << "\n";
     } else {
       out << "  no candidate within the budget, and none renders without a non-finite pixel\n";
     }
@@ -100,14 +110,15 @@ std::string to_text(const Advice& a) {
             << "\n";
       if (r.holds_at) {
         out << "  pick: " << a.candidates[r.candidate].candidate.variant << " on a refined mesh, +"
-            << r.vertices_added() << " vertices: " << error_text(r.pick_step().error) << "\n";
+            << r.vertices_added()
+            << " vertices: " << error_text(r.pick_step().error, r.pick_step().edge_split) << "\n";
       }
     }
     out << "  front (cost against " << to_string(o.stat) << " error):\n";
     for (size_t i : ma.front) {
       const CandidateResult& c = a.candidates[i];
       out << "    " << (ma.pick && *ma.pick == i ? "* " : "  ") << c.candidate.variant << ": "
-          << cost_text(c.cost[m]) << ", " << error_text(c.error[m]) << "\n";
+          << cost_text(c.cost[m]) << ", " << error_text(c.error[m], c.edge_split[m]) << "\n";
     }
     std::string hard;
     for (const HardCase& h : ma.hard_cases)
@@ -188,7 +199,7 @@ nlohmann::ordered_json to_json(const Advice& a) {
         nlohmann::ordered_json out = nlohmann::ordered_json::array();
         for (const RefinementStep& s : v)
           out.push_back({{"vertices", s.vertices},
-                         {"error", error_summary_json(s.error)},
+                         {"error", error_summary_json(s.error, s.edge_split)},
                          {"non_finite_pixels", s.non_finite}});
         return out;
       };
@@ -213,7 +224,8 @@ nlohmann::ordered_json to_json(const Advice& a) {
       jc["ops"] = c.cost[m].ops;
       jc["texture_bytes"] = c.cost[m].texture_bytes;
       jc["rendered"] = c.rendered;
-      jc["error"] = c.rendered ? error_summary_json(c.error[m]) : nlohmann::ordered_json(nullptr);
+      jc["error"] = c.rendered ? error_summary_json(c.error[m], c.edge_split[m])
+                               : nlohmann::ordered_json(nullptr);
       jc["non_finite_pixels"] = c.non_finite[m];
       jc["refused"] = c.refused;
       jc["over_profile"] = c.over_profile;

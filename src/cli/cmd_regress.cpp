@@ -9,6 +9,7 @@
 #include "cli/own_arguments.h"
 #include "cli/threads_option.h"
 #include "core/error.h"
+#include "regress/github_actions.h"
 #include "regress/golden_key.h"
 #include "regress/merge.h"
 #include "regress/regress.h"
@@ -69,6 +70,16 @@ Action add_regress(CLI::App& app) {
                   "A platform's name for the JUnit's class names (regress.LABEL.SCENE), the JSON "
                   "and the page: two platforms' cases stay apart in one pipeline");
   add_lights_option(sub, o->scene_options);
+  auto artifacts = std::make_shared<std::string>("all");
+  sub->add_option("--artifacts", *artifacts,
+                  "Whose images the report folder (-o) keeps: all, failures (failing and warned "
+                  "cases), none")
+      ->capture_default_str();
+  auto ci = std::make_shared<std::string>("auto");
+  sub->add_option("--ci", *ci,
+                  "github: ::error/::warning annotations per failing/warned case and a table "
+                  "appended to $GITHUB_STEP_SUMMARY; none; auto: github when GITHUB_ACTIONS=true")
+      ->capture_default_str();
 
   auto m = std::make_shared<MergeOptions>();
   auto merge_label = std::make_shared<std::string>();
@@ -81,15 +92,20 @@ Action add_regress(CLI::App& app) {
   merge->add_option("--json", m->json_file, "Write the merged JSON");
   auto* label_option =
       merge->add_option("--label", *merge_label, "A platform's name, instead of the shards' own");
+  auto merge_ci = std::make_shared<std::string>("auto");
+  merge->add_option("--ci", *merge_ci, "As regress's --ci, for the merged run")
+      ->capture_default_str();
   add_threads_option(sub);
   return [o, inputs, shard, goldens, junit, json, report, worker_fd, m, merge, merge_label,
-          label_option, golden_key]() -> int {
+          label_option, golden_key, artifacts, ci, merge_ci]() -> int {
     if (merge->parsed()) {
       if (label_option->count() > 0) m->label = *merge_label;
+      const bool github = github_ci_wanted(*merge_ci);
       RegressOptions as_run;
       const RegressRun run = merge_regress_shards(*m, as_run);
       write_regress_outputs(as_run, run);
       std::printf("regress merge: %s\n", regress_summary(as_run, run).c_str());
+      if (github) report_to_github(as_run, run);
       return run.failed() ? 1 : 0;
     }
     if (inputs->empty()) throw InputError("SCENE_OR_DIR", "", "no scene given");
@@ -107,7 +123,9 @@ Action add_regress(CLI::App& app) {
     o->json_file = *json;
     o->report_dir = *report;
     o->shard = parse_shard(*shard);
+    o->artifacts = parse_artifacts(*artifacts);
     if (*worker_fd >= 0) return run_regress_worker(*o, *worker_fd);
+    const bool github = github_ci_wanted(*ci);
     if (o->jobs > 0) {
       o->worker_command = {std::filesystem::read_symlink("/proc/self/exe").string()};
       for (const std::string& a : own_arguments()) o->worker_command.push_back(a);
@@ -117,6 +135,7 @@ Action add_regress(CLI::App& app) {
     std::printf("regress: %s\n", regress_summary(*o, run).c_str());
     if (!o->report_dir.empty())
       std::printf("regress: report page %s\n", (o->report_dir / "index.html").c_str());
+    if (github) report_to_github(*o, run);
     return run.failed() ? 1 : 0;
   };
 }

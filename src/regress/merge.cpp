@@ -121,6 +121,7 @@ RegressRun merge_regress_shards(const MergeOptions& m, RegressOptions& o) {
   const auto& identity = first.json.at("run");
   try {
     run.scenes = identity.at("scenes").get<std::vector<std::string>>();
+    run.scene_files = identity.at("scene_files").get<std::vector<std::string>>();
     run.requested = identity.at("paths").get<std::vector<std::string>>();
     run.width = identity.at("width").get<int>();
     o.golden_key = identity.at("golden_key").get<std::string>();

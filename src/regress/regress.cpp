@@ -106,6 +106,13 @@ CaseStatus case_status_from_string(const std::string& name, const std::string& f
   throw InputError(file, where, "unknown case status '" + name + "'");
 }
 
+RegressOptions::Artifacts parse_artifacts(const std::string& value) {
+  if (value == "all") return RegressOptions::Artifacts::kAll;
+  if (value == "failures") return RegressOptions::Artifacts::kFailures;
+  if (value == "none") return RegressOptions::Artifacts::kNone;
+  throw InputError("--artifacts", value, "must be all, failures or none");
+}
+
 bool is_failure(CaseStatus s) {
   return s == CaseStatus::kFail || s == CaseStatus::kMissing || s == CaseStatus::kCrashed ||
          s == CaseStatus::kTimedOut;
@@ -146,7 +153,10 @@ RegressRun run_regress(const RegressOptions& o) {
   collector.run.shard = o.shard;
   collector.run.total_cases = plan.cases.size();
   collector.run.shard_cases = mine.size();
-  for (const fs::path& f : plan.scene_files) collector.run.scenes.push_back(f.stem().string());
+  for (const fs::path& f : plan.scene_files) {
+    collector.run.scenes.push_back(f.stem().string());
+    collector.run.scene_files.push_back(f.string());
+  }
   for (const PathRequest& r : parse_path_list(o.paths)) {
     for (const std::string& v : r.variants) collector.run.requested.push_back(r.path->name + ":" + v);
   }

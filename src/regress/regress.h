@@ -42,7 +42,14 @@ struct RegressOptions {
   std::string label;
   int jobs = 1;
   double case_timeout_seconds = 0;
+  // --artifacts: whose images the report folder keeps (render, golden copy, heatmap): every
+  // case's (the default), failing and warned cases' only, or none (the page has the figures).
+  enum class Artifacts { kAll, kFailures, kNone };
+  Artifacts artifacts = Artifacts::kAll;
 };
+
+// --artifacts all|failures|none; throws InputError naming --artifacts for another value.
+RegressOptions::Artifacts parse_artifacts(const std::string& value);
 
 enum class CaseStatus {
   kPass,
@@ -92,6 +99,7 @@ struct RegressRun {
   // What the run is over, as the JSON states it: every shard of one run has the same, which
   // `regress merge` checks. The scenes' names in order, each PATH:VARIANT asked, the size.
   std::vector<std::string> scenes, requested;
+  std::vector<std::string> scene_files;  // as given, in the scenes' order (CI annotations)
   int width = 0, height = 0;
   double seconds = 0;
   size_t count(CaseStatus status) const;

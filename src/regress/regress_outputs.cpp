@@ -23,6 +23,7 @@ nlohmann::ordered_json run_json(const RegressOptions& o, const RegressRun& run) 
   j["label"] = o.label;
   j["run"] = {{"golden_key", o.golden_key},
               {"scenes", run.scenes},
+              {"scene_files", run.scene_files},
               {"paths", run.requested},
               {"width", run.width},
               {"height", run.height}};
@@ -100,7 +101,7 @@ std::string regress_summary(const RegressOptions& o, const RegressRun& run) {
 
 void write_regress_junit_and_json(const RegressOptions& o, const RegressRun& run) {
   if (!o.json_file.empty()) write_text_file(o.json_file, run_json(o, run).dump(2) + "\n");
-  if (!o.junit_file.empty()) write_text_file(o.junit_file, junit_xml(run, o.label));
+  if (!o.junit_file.empty()) write_text_file(o.junit_file, junit_xml(run, o.label, o.report_dir));
 }
 
 void write_regress_outputs(const RegressOptions& o, const RegressRun& run) {

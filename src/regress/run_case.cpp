@@ -78,6 +78,20 @@ Candidate held_to(const fs::path& file, const Image& render, const RegressCase& 
   return k;
 }
 
+// --artifacts: whether the report folder keeps this case's images.
+bool keeps_images(const RegressOptions& o, CaseStatus status) {
+  if (o.report_dir.empty()) return false;
+  switch (o.artifacts) {
+    case RegressOptions::Artifacts::kAll:
+      return true;
+    case RegressOptions::Artifacts::kFailures:
+      return is_failure(status) || status == CaseStatus::kWarn;
+    case RegressOptions::Artifacts::kNone:
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 CaseResult skipped_case(const RegressOptions& o, const RegressCase& c) {
@@ -100,11 +114,6 @@ CaseResult run_case(const RegressOptions& o, const fs::path& scene_file, RenderS
   const Image render = render_frame(session, *c.path, c.variant);
   r.width = render.width;
   r.height = render.height;
-  const std::string stem = fs::path(c.golden_name()).stem().string();
-  if (!o.report_dir.empty()) {
-    r.image = "images/" + stem + ".png";
-    write_image(o.report_dir / r.image, render);
-  }
 
   // The approved images: this renderer's override (docs/regress.md "Goldens per renderer"),
   // then the shared golden. The case passes against either.
@@ -136,12 +145,6 @@ CaseResult run_case(const RegressOptions& o, const fs::path& scene_file, RenderS
       r.comparison_json = to_json(*chosen->comparison, c.tolerance, r.verdict);
       r.details = to_table(*chosen->comparison, c.tolerance, r.verdict);
       r.message = case_message(*r.figures, r.verdict);
-      if (!o.report_dir.empty()) {
-        r.golden_image = "images/" + stem + "__golden.png";
-        copy_file_atomically(r.golden, o.report_dir / r.golden_image);
-        r.heatmap = "images/" + stem + "__heatmap.png";
-        write_image(o.report_dir / r.heatmap, error_heatmap(*chosen->comparison));
-      }
     }
   }
   // A failure names every image it was held to.
@@ -156,19 +159,35 @@ CaseResult run_case(const RegressOptions& o, const fs::path& scene_file, RenderS
     r.message += "; held to " + held;
     r.details = "held to " + held + "\n" + r.details;
   }
+  // The page's images, once the status says whether --artifacts keeps them: the render, and
+  // with a comparison the golden it was held to (before --update replaces it) and the heatmap.
+  const auto write_page_images = [&] {
+    if (!keeps_images(o, r.status)) return;
+    const std::string stem = fs::path(c.golden_name()).stem().string();
+    r.image = "images/" + stem + ".png";
+    write_image(o.report_dir / r.image, render);
+    if (chosen && chosen->comparison) {
+      r.golden_image = "images/" + stem + "__golden.png";
+      copy_file_atomically(chosen->file, o.report_dir / r.golden_image);
+      r.heatmap = "images/" + stem + "__heatmap.png";
+      write_image(o.report_dir / r.heatmap, error_heatmap(*chosen->comparison));
+    }
+  };
   const bool have_shared = candidates.back().exists;
   if (o.update) {
     // The shared golden is written only where there is none; where it fails, this renderer's
     // override is (so another renderer's approved image is never replaced).
     if (pass) {
       r.status = CaseStatus::kKept;
+      write_page_images();
     } else {
       const bool to_override = have_shared && !o.golden_key.empty();
       r.golden = to_override ? candidates.front().file : shared;
       const bool existed = to_override ? candidates.front().exists : have_shared;
+      r.status = existed ? CaseStatus::kUpdated : CaseStatus::kCreated;
+      write_page_images();
       if (to_override) make_directory(r.golden.parent_path());
       write_image(r.golden, render);
-      r.status = existed ? CaseStatus::kUpdated : CaseStatus::kCreated;
       if (!existed) r.message = "wrote " + r.golden.string();
     }
   } else if (existing == 0) {
@@ -178,6 +197,7 @@ CaseResult run_case(const RegressOptions& o, const fs::path& scene_file, RenderS
   } else {
     r.status = !pass ? CaseStatus::kFail : r.verdict.warn ? CaseStatus::kWarn : CaseStatus::kPass;
   }
+  if (!o.update) write_page_images();
   r.seconds = seconds_since(t0);
   return r;
 }

@@ -12,6 +12,7 @@
 #include "core/fs.h"
 #include "core/stopwatch.h"
 #include "metrics/heatmap.h"
+#include "metrics/reference_edge_split.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
 #include "render/session.h"
@@ -333,6 +334,7 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
           const Comparison cmp = compare_images(img, ref_image, test_encoding(*path),
                                                 TestEncoding::kFloat, Coverage::kBoth);
           row.error = cmp.covered;
+          row.edge_split = reference_edge_split(cmp);
           row.heatmap = "images/" + base + "__heatmap.png";
           write_image(o.out_dir / row.heatmap, error_heatmap(cmp));
         }

@@ -73,6 +73,10 @@ struct BenchRow {
       0;           // flat frames run untimed after a path frame (interleaved_timing.h)
   int rounds = 0;  // sessions the row was timed in at 1280x720 (flat: those of its scene)
   std::optional<ErrorStats> error;  // covered pixels against the reference (none for flat)
+  // Its pixels over 1 LSB classed (metrics' split_edge_shifts, as `compare` and `regress` class
+  // them): a silhouette two rasterisers place differently reads as edge shifts, a wrong shade
+  // as shading, so a large max is told from a broken shade. With `error`.
+  std::optional<EdgeShiftSplit> edge_split;
   FrameStats stats;                 // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
   std::string cost;                             // Path::cost(): instructions or stages

@@ -124,6 +124,12 @@ nlohmann::json bench_row_to_json(const BenchRow& r) {
     x["work"] = {{"not_counted", r.work_not_counted}};
   }
   if (r.error) x["error"] = error_json(*r.error);
+  if (r.error && r.edge_split) {
+    // Beside the figures: the pixels over 1 LSB classed (reference_edge_split.h).
+    x["error"]["edge_shift_pixels"] = r.edge_split->edge_shift_pixels;
+    x["error"]["shading_pixels"] = r.edge_split->shading_pixels;
+    x["error"]["shading_max_lsb"] = r.edge_split->shading_max_lsb;
+  }
   return x;
 }
 
@@ -168,7 +174,18 @@ BenchRow bench_row_from_json(const nlohmann::json& j, const std::string& file,
     w.vertex_operation = in.get<std::string>(work, "vertex_operation", "/work");
     r.work = w;
   }
-  if (j.contains("error")) r.error = error_from_json(in, j.at("error"));
+  if (j.contains("error")) {
+    const nlohmann::json& e = j.at("error");
+    r.error = error_from_json(in, e);
+    // A report written before the split has none.
+    if (e.contains("edge_shift_pixels")) {
+      EdgeShiftSplit split;
+      split.edge_shift_pixels = in.get<std::size_t>(e, "edge_shift_pixels", "/error");
+      split.shading_pixels = in.get<std::size_t>(e, "shading_pixels", "/error");
+      split.shading_max_lsb = in.get<double>(e, "shading_max_lsb", "/error");
+      r.edge_split = split;
+    }
+  }
   return r;
 }
 

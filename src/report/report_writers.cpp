@@ -28,6 +28,13 @@ std::string fmt(double v, int prec = 2) {
   return fixed(v, prec);
 }
 
+// The error's pixels over 1 LSB as shading and edge shifts: "0.98 / 12 px".
+std::string split_cell(const BenchRow& r) {
+  if (!r.edge_split) return "-";
+  return fmt(r.edge_split->shading_max_lsb) + " / " +
+         std::to_string(r.edge_split->edge_shift_pixels) + " px";
+}
+
 std::string error_cell(const BenchRow& r, bool max) {
   if (!r.error) return "-";
   return fmt(max ? r.error->max_lsb : r.error->mean_lsb, max ? 2 : 3);
@@ -109,12 +116,16 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
        "order statistics, marked *wide* beyond +-10%. Cores: "
     << o.pinning << "; llvmpipe threads: " << o.llvmpipe_threads
     << "; CPU paths' threads: " << o.cpu_threads
-    << ". Error: covered pixels against the reference, in LSB (1/255).\n\n"
+    << ". Error: covered pixels against the reference, in LSB (1/255); of the pixels over 1 LSB, "
+       "`edge shifts` are those where each image holds the other's value within one pixel (a "
+       "silhouette or edge placed differently, as two rasterisers do) and `shading max` is the "
+       "largest error of the rest (a changed shade): a large max with a small shading max is "
+       "edges, not a broken shader (docs/regress.md, 'Edge shifts and shading').\n\n"
     << "| scene | path | variant | ms (scene size) median / min | ms (" << o.wide_width << "x"
     << o.wide_height
     << ") median / min | ratio to flat | 95% interval | max LSB | mean LSB | p99 LSB | "
-       "% > 1 LSB | cost | work (M ops) | notes |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "% > 1 LSB | shading max LSB / edge shifts | cost | work (M ops) | notes |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
     const std::string notes = stats_note(r);
     s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | "
@@ -122,8 +133,8 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
       << fmt(r.at_wide.median_ms) << " / " << fmt(r.at_wide.min_ms) << " | " << fmt(r.ratio_to_flat)
       << " | " << interval_cell(r.ratio) << " | " << error_cell(r, true) << " | "
       << error_cell(r, false) << " | " << (r.error ? fmt(r.error->p99_lsb) : "-") << " | "
-      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << r.cost << " | "
-      << work_cell(r) << " | " << notes << " |\n";
+      << (r.error ? fmt(r.error->percent_over_1_lsb, 3) : "-") << " | " << split_cell(r) << " | "
+      << r.cost << " | " << work_cell(r) << " | " << notes << " |\n";
   }
   s << "\n`work`: the operations a frame executes at " << o.wide_width << "x" << o.wide_height
     << ", counted from the built programs and the pixels and vertices drawn (the same on every "
@@ -143,7 +154,7 @@ std::string csv(const std::vector<BenchRow>& rows) {
   s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
        "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
        "shading_mpixels_per_s,cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
-       "work_vertex_ops,settling_frames\n";
+       "work_vertex_ops,settling_frames,edge_shift_pixels,shading_pixels,shading_max_lsb\n";
   for (const BenchRow& r : rows) {
     s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
       << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
@@ -163,7 +174,13 @@ std::string csv(const std::vector<BenchRow>& rows) {
       s << r.work->total() << "," << r.work->pixel_ops << "," << r.work->vertex_ops;
     else
       s << ",,";
-    s << "," << r.settling_frames << "\n";
+    s << "," << r.settling_frames << ",";
+    if (r.edge_split)
+      s << r.edge_split->edge_shift_pixels << "," << r.edge_split->shading_pixels << ","
+        << r.edge_split->shading_max_lsb;
+    else
+      s << ",,";
+    s << "\n";
   }
   return s.str();
 }
@@ -370,6 +387,11 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
       c.figures.push_back({"mean", fmt(r.error->mean_lsb, 3) + " LSB"});
       c.figures.push_back({"p99", fmt(r.error->p99_lsb) + " LSB"});
       c.figures.push_back({"% > 1 LSB", fmt(r.error->percent_over_1_lsb, 3)});
+    }
+    if (r.edge_split) {
+      c.figures.push_back({"shading max", fmt(r.edge_split->shading_max_lsb) + " LSB"});
+      c.figures.push_back(
+          {"edge shifts", std::to_string(r.edge_split->edge_shift_pixels) + " px > 1 LSB"});
     }
     if (!r.cost.empty()) c.figures.push_back({"cost", r.cost});
     if (const std::string notes = stats_note(r); !notes.empty()) c.notes.push_back(notes);

@@ -3,11 +3,12 @@
 
 Usage: ci_examples_test.py SOURCE_DIR BUILD_DIR
 
-For each CI file of examples/ci/ (GitLab's `script:` items, GitHub Actions' `run:` steps), the
-commands that start with `ltrender` run as written, through bash, from a studio's repository
-(installed.make_studio, its goldens written once by the `--update` run docs/regress.md
-prescribes), with an installed prefix's bin/ first on PATH and the source and build trees
-unreadable. Each exits 0; budget.json holds an ltrender-budget-2 record of the shader; junit.xml
+For each CI file of examples/ci/ (its *.yml: GitLab's `script:` items, GitHub Actions' `run:`
+steps), the commands that start with `ltrender` run as written, through bash, from a studio's
+repository (installed.make_studio, its goldens written once by the `--update` run
+docs/regress.md prescribes), with an installed prefix's bin/ first on PATH and the source and
+build trees unreadable, as one shard of one (CI_NODE_INDEX, SHARD and their totals 1). Each
+exits 0; budget.json holds an ltrender-budget-2 record of the shader; junit.xml
 has a passing testcase for the glsl and the gx path and the ltrender.versions property.
 """
 import json
@@ -49,13 +50,19 @@ def check_outputs(studio, ci_file):
 
 def run_each_ci_file(source, build, work, hidden):
     folder = os.path.join(source, "examples", "ci")
-    commands = {f: commands_of(os.path.join(folder, f)) for f in sorted(os.listdir(folder))}
+    commands = {f: commands_of(os.path.join(folder, f)) for f in sorted(os.listdir(folder))
+                if f.endswith(".yml")}
     if len(commands) < 2:
         raise Failure("examples/ci/ holds %d CI files, expected GitLab's and GitHub's" %
                       len(commands))
     prefix = os.path.join(work, "prefix")
     installed.install(build, prefix)
-    env = dict(os.environ, PATH=os.path.join(prefix, "bin") + ":" + os.environ["PATH"])
+    # One shard of one, as the CI files' own variables say it (GitLab's parallel: N, the GitHub
+    # matrix); GitHub's own variables unset, so no annotations.
+    env = dict(os.environ, PATH=os.path.join(prefix, "bin") + ":" + os.environ["PATH"],
+               CI_NODE_INDEX="1", CI_NODE_TOTAL="1", SHARD="1", SHARDS="1")
+    for variable in ("GITHUB_ACTIONS", "GITHUB_STEP_SUMMARY"):
+        env.pop(variable, None)
     for ci_file, ci_commands in commands.items():
         studio = os.path.join(work, ci_file)
         installed.make_studio(studio, os.path.join(prefix, "share", "ltrender"))
