@@ -1,4 +1,5 @@
-# Embeds the shader and combiner program files, and the report page's HTML, CSS and JavaScript,
+# Embeds the shader and combiner program files, the report page's HTML, CSS and JavaScript, the
+# paths' error bounds (src/paths/bounds/),
 # and the GX module's runtime (the C that `export gx --format module` writes into every module),
 # into the binary, so `ltrender` runs from any directory while they stay readable files of their
 # own in legacy_shaders/, combiners/, src/report/page/ and src/paths/gx/module/runtime/.
@@ -8,7 +9,7 @@ function(lt_embed_sources out_file)
   string(APPEND body "#include <map>\n#include <string>\nnamespace lt::embedded {\n")
   string(APPEND body "const std::map<std::string, std::string>& sources() {\n")
   string(APPEND body "  static const std::map<std::string, std::string> table = {\n")
-  foreach(dir legacy_shaders combiners src/report/page src/paths/gx/module/runtime)
+  foreach(dir legacy_shaders combiners src/report/page src/paths/gx/module/runtime src/paths/bounds)
     file(GLOB_RECURSE files RELATIVE ${CMAKE_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/${dir}/*)
     list(SORT files)
     foreach(f ${files})

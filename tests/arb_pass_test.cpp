@@ -1,5 +1,5 @@
 // Issue 10's light packing and pass splitting for the arbfp path: the packed programs meet the
-// issue's ALU goals and render like the reference within the arbfp rows of tests/bounds.json; a
+// issue's ALU goals and render like the reference within the arbfp rows of path_bounds.json; a
 // scene over ps_2_0 renders in passes whose programs each fit (counted by the counter and by
 // Mesa), within a derived bound of the one-pass render; a scene that fits renders byte for byte
 // as without a profile; a light that fits no pass is refused.
@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "arb/arb_ir_counter.h"
 #include "arb_ir_query.h"
 #include "arb_pass_util.h"
 #include "arb_test_util.h"
@@ -16,8 +17,8 @@
 #include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/arbfp/arb_generator.h"
-#include "arb/arb_ir_counter.h"
 #include "paths/arbfp/arb_passes.h"
+#include "paths/path_bounds.h"
 #include "render/session.h"
 #include "test_util.h"
 
@@ -60,17 +61,6 @@ TEST(ArbPacking, FourPointLightsArePackedIntoOneGroup) {
   EXPECT_TRUE(test::declares_param(fp, "color_r0"));
 }
 
-// The arbfp rows of tests/bounds.json that apply to a scene without rows of its own.
-nlohmann::json bounds_row(const std::string& variant) {
-  std::ifstream in(test::source_dir() / "tests" / "bounds.json");
-  const nlohmann::json j = nlohmann::json::parse(in);
-  for (const nlohmann::json& row : j["bounds"]) {
-    if (row["path"] == "arbfp" && row["variant"] == variant && row["scene"] == "*") return row;
-  }
-  ADD_FAILURE() << "no arbfp " << variant << " * row in tests/bounds.json";
-  return {};
-}
-
 // The packed programs against the reference, held to the bounds every demo scene is held to.
 TEST(ArbPacking, PackedScenesRenderWithinTheArbfpBounds) {
   for (const char* file :
@@ -78,11 +68,13 @@ TEST(ArbPacking, PackedScenesRenderWithinTheArbfpBounds) {
     const Scene scene = test::load_test_scene(file);
     const Image ref = render_scene(scene, "reference", "", 160, 120);
     for (const char* variant : {"pow=mul", "pow=exact"}) {
-      const nlohmann::json row = bounds_row(variant);
+      // The arbfp row that applies to a scene without rows of its own (paths/path_bounds.h).
+      const PathBound* row = general_path_bound("arbfp", variant);
+      ASSERT_NE(row, nullptr) << "no arbfp " << variant << " * row";
       const Image img = render_scene(scene, "arbfp", variant, 160, 120);
       const Comparison c = compare_images(img, ref, TestEncoding::kUnorm8);
-      EXPECT_LE(c.covered.max_lsb, row["max"].get<double>()) << file << " " << variant;
-      EXPECT_LE(c.covered.mean_lsb, row["mean"].get<double>()) << file << " " << variant;
+      EXPECT_LE(c.covered.max_lsb, row->max_lsb) << file << " " << variant;
+      EXPECT_LE(c.covered.mean_lsb, row->mean_lsb) << file << " " << variant;
     }
   }
 }
@@ -98,12 +90,13 @@ TEST(ArbPacking, APackedGroupKeepsTheDistanceZeroGuard) {
       arbfp::generate_arb(scene, scene.materials.front(), arbfp::parse_variant("pow=mul"));
   EXPECT_TRUE(test::declares_param(p.fragment_program, "pos_x0")) << "the lights are packed";
   EXPECT_EQ(test::count_op(p.fragment_program, arbfp::ir::Op::CMP), 4) << "L = N, 1/dist = 1";
-  const nlohmann::json row = bounds_row("pow=mul");
+  const PathBound* row = general_path_bound("arbfp", "pow=mul");
+  ASSERT_NE(row, nullptr);
   const Image ref = render_scene(scene, "reference", "", 160, 120);
   const Comparison c =
       compare_images(render_scene(scene, "arbfp", "", 160, 120), ref, TestEncoding::kUnorm8);
-  EXPECT_LE(c.covered.max_lsb, row["max"].get<double>());
-  EXPECT_LE(c.covered.mean_lsb, row["mean"].get<double>());
+  EXPECT_LE(c.covered.max_lsb, row->max_lsb);
+  EXPECT_LE(c.covered.mean_lsb, row->mean_lsb);
 }
 
 const char kOver[] = "scenes/budget/twelve_mixed.json";

@@ -251,7 +251,7 @@ void PrintTo(const VariantCase& c, std::ostream* os) {
   *os << c.scene << " " << c.variant;
 }
 
-// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
 
 // Every variant on every hard scene: finite everywhere (POW of 0 through LG2/EX2 is NaN unless
 // guarded, RSQ(0) is inf, a light at distance 0 divides by 0). The 8-bit framebuffer would hide a

@@ -301,7 +301,7 @@ Comparison against_reference(const Scene& scene, const std::string& variant, int
   return compare_images(img, ref, TestEncoding::kUnorm8);
 }
 
-// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
 
 // Hard cases (model.md) through the default variant: finite everywhere (paths_test checks that
 // too) and within bounds measured on the per-vertex sampling, set a little above. Cases not

@@ -174,7 +174,7 @@ TEST_P(GxDemoScene, ExportRoundTripIsBitExact) {
   EXPECT_EQ(differ, 0u);
 }
 
-// Every variant on every demo scene against the reference: tests/bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_files("scenes")),
                          [](const auto& info) { return test::scene_param_name(info.param); });
@@ -182,7 +182,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_fil
 // One dim directional light and no ambient: no scale is needed, so only the truncations remain
 // (measured 0.79 mean, p99 1.97 LSB). The max is not theirs: at a few silhouette pixels the
 // console's rasteriser (1/16-pixel snapping, samples at 9/16) sees a back face where GL's sees
-// the front one (measured 12.64 LSB there; tests/bounds.json holds the max).
+// the front one (measured 12.64 LSB there; src/paths/bounds/path_bounds.json holds the max).
 TEST(GxPath, OneDimLightIsWithinTruncationOfTheReference) {
   Scene scene = load_scene(test::source_dir() / "scenes/backlit_sphere.json");
   scene.lights.resize(1);

@@ -41,7 +41,7 @@ void expect_glsl_matches(const Scene& scene, const Image& ref) {
   EXPECT_LE(cf.covered.mean_lsb, kGlslF32MeanLsb);
 }
 
-// The demo scenes: tests/bounds.json (bounds_test.cpp).
+// The demo scenes: src/paths/bounds/path_bounds.json (bounds_test.cpp).
 
 class HardSceneGlsl : public ::testing::TestWithParam<std::string> {};
 
