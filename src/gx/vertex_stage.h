@@ -2,8 +2,10 @@
 // channel colours and its generated texture coordinates, per vertex. The inputs are what the
 // port sends as the vertex stream (gx.md §2: the scene supplies geometry, normals, vertex colours
 // and matrices; paths/gx/scene_vertices.h makes a scene object's): camera-relative positions and
-// world-space normals as GX_F32, the mesh's colour as GX_RGBA8 CLR0, and in its texture coordinates the pass's t (GX_TEX_S) or the
-// mesh's UV (GX_TEX_ST), as the program's vertex format names them (gx_state.h TexCoordFormats).
+// world-space normals as GX_F32, the mesh's colour as GX_RGBA8 CLR0, and in its texture
+// coordinates the pass's t (GX_TEX_S) or the mesh's UV (GX_TEX_ST), as the program's vertex
+// format names them (gx_state.h TexCoordFormats); or, for a stored mesh, what the vertex loader
+// read of each object's own coordinates, with the object's matrices (ObjectMatrices).
 #pragma once
 
 #include <array>
