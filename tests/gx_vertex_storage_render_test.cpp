@@ -25,24 +25,6 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-struct FrameDifference {
-  size_t differ = 0;
-  int max = 0;
-};
-// Pixels whose colour differs by at least 1 LSB (8-bit), and the largest difference.
-FrameDifference frame_difference(const Image& a, const Image& b) {
-  FrameDifference d;
-  for (size_t i = 0; i < a.pixel_count(); ++i) {
-    int m = 0;
-    for (size_t ch = 0; ch < 3; ++ch)
-      m = std::max(m, std::abs(static_cast<int>(std::lround(a.rgba[i * 4 + ch] * 255.0f)) -
-                               static_cast<int>(std::lround(b.rgba[i * 4 + ch] * 255.0f))));
-    if (m > 0) ++d.differ;
-    d.max = std::max(d.max, m);
-  }
-  return d;
-}
-
 const Scene& cubes() {
   static const Scene scene = load_scene(test::source_dir() / "scenes/coloured_cubes.json");
   return scene;
@@ -138,10 +120,10 @@ TEST(GxVertexStorageRender, TheEmulatorReceivesEachPositionRoundedToItsStepInObj
 
 TEST(GxVertexStorageRender, AFineStorageMovesLittleAndACoarseOneMore) {
   const Image f32 = render_scene(cubes(), "gx", "t=vertex", kWidth, kHeight);
-  const FrameDifference fine = frame_difference(
+  const test::PictureDifference fine = test::picture_difference(
       f32,
       render_scene(cubes(), "gx", "t=vertex:vtx=s16/auto:nrm=s16:uv=s16/auto", kWidth, kHeight));
-  const FrameDifference coarse = frame_difference(
+  const test::PictureDifference coarse = test::picture_difference(
       f32, render_scene(cubes(), "gx", "t=vertex:vtx=s8/auto:nrm=s8:clr=rgba4:uv=s8/auto", kWidth,
                         kHeight));
   std::printf("fine: %zu pixels, max %d LSB; coarse: %zu pixels, max %d LSB\n", fine.differ,
