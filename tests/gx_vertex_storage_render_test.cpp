@@ -6,15 +6,22 @@
 //   step (computed here with std::round, not the quantiser), within half a step of it, and the
 //   object's matrix takes it to where the F32 stream has it (to the step);
 // - a fine storage (s16/auto) moves a few pixels by little, a coarse one (s8/auto) moves more;
+// - the FIFO log's draws, read back through the VCD and VAT they declare by the vertex loader,
+//   are the vertices the emulator received, under the object's matrices;
 // - a bad value names the variant key.
 // Dolphin's judgement of the same frames is tests/dolphin_vertex_storage_test.cpp.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 
 #include "core/error.h"
+#include "gx/fifo/stream_reader.h"
+#include "gx/fifo/xf_registers.h"
 #include "gx/transform_unit.h"
 #include "load/load_scene.h"
+#include "paths/gx/frame_recording.h"
+#include "paths/gx/gx_path.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/scene_vertices.h"
 #include "render/session.h"
@@ -116,6 +123,61 @@ TEST(GxVertexStorageRender, TheEmulatorReceivesEachPositionRoundedToItsStepInObj
     for (size_t l = 0; l < s.t_per_light.size(); ++l)
       EXPECT_EQ(s.t_per_light[l], f32.t_per_light[l]);
   }
+}
+
+TEST(GxVertexStorageRender, TheFifoLogsStoredBytesLoadAsTheEmulatorsVertices) {
+  const Scene& scene = cubes();
+  const GxVariant v = parse_gx_variant("t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s8/auto");
+  const ScenePrograms programs = scene_programs_for(scene, v, "");
+  const SceneView view = SceneView::of(scene);
+  std::vector<VertexStream> streams;
+  for (const SceneObject& o : scene.objects)
+    streams.push_back(stored_vertex_stream(scene, o, view, v.storage, "test"));
+  // The draws in the order the frame sends them: (object, pass), one draw each (small meshes).
+  std::vector<std::pair<size_t, size_t>> expected;
+  for (const MaterialDraw& d : programs.draws(scene))
+    for (size_t i : d.objects) expected.emplace_back(i, static_cast<size_t>(d.pass));
+  const fifo::FifoLog log = fifo::record_frames(scene, {{v, &programs}}, {kWidth, kHeight});
+  const std::vector<u8>& bytes = log.frames.at(0).fifo;
+  size_t draw = 0, checked = 0;
+  fifo::RegisterFile regs;
+  fifo::read_stream(
+      bytes, regs, "frame", [&](const fifo::RegisterFile& r, const fifo::StreamDraw& d) {
+        ASSERT_LT(draw, expected.size());
+        const auto [object, pass] = expected[draw++];
+        const VertexStream& s = streams[object];
+        const VertexLoader loader(unpack_vertex_inputs(r.cp[0x50], r.cp[0x60]),
+                                  unpack_vertex_format(r.cp[0x70], r.cp[0x80], r.cp[0x90]),
+                                  "frame");
+        ASSERT_EQ(loader.vertex_size(), d.vertex_size);
+        EXPECT_EQ(loader.format().position.type, ComponentType::S16);
+        EXPECT_EQ(loader.format().normal.type, ComponentType::S8);
+        EXPECT_EQ(loader.format().color[0].type, ColorType::Rgb565);
+        EXPECT_TRUE(loader.format().byte_dequant);
+        for (size_t k = 0; k < 12; ++k)
+          EXPECT_EQ(std::bit_cast<float>(r.xf_memory[fifo::xf::kPositionMatrices + k]),
+                    s.object_matrices->position[k]);
+        const std::vector<LoadedVertex> loaded =
+            loader.load(std::span(bytes).subspan(d.offset), d.count, VertexArrays{});
+        const TriangleMesh& mesh = scene.objects[object].mesh;
+        ASSERT_EQ(loaded.size(), 3 * mesh.triangles.size());
+        for (size_t k = 0; k < loaded.size(); ++k) {
+          const u32 i = mesh.triangles[k / 3][static_cast<int>(k % 3)];
+          ASSERT_EQ(loaded[k].position, s.position[i]) << k;
+          if (loader.inputs().normal != AttributeInput::None) {
+            ASSERT_EQ(loaded[k].normal[0], s.normal[i]) << k;
+          }
+          if (loader.inputs().color[0] != AttributeInput::None) {
+            ASSERT_EQ(loaded[k].color[0], s.color[i]) << k;
+          }
+          if (loader.inputs().texcoord[0] != AttributeInput::None) {
+            ASSERT_EQ(loaded[k].texcoord[0].x, s.t_per_light[pass][i]) << k;
+          }
+          ++checked;
+        }
+      });
+  EXPECT_EQ(draw, expected.size());
+  EXPECT_GT(checked, 0u);
 }
 
 TEST(GxVertexStorageRender, AFineStorageMovesLittleAndACoarseOneMore) {
