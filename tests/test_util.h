@@ -177,4 +177,33 @@ inline size_t covered_pixels(const Image& img) {
   return n;
 }
 
+// Pixels whose 8-bit RGB differ between two pictures of one size, and the largest difference.
+struct PictureDifference {
+  size_t differ = 0;
+  int max = 0;
+  int first_x = -1, first_y = -1;
+};
+inline PictureDifference picture_difference(const Image& a, const Image& b) {
+  PictureDifference d;
+  if (a.width != b.width || a.height != b.height) {
+    ADD_FAILURE() << "pictures of " << a.width << "x" << a.height << " and " << b.width << "x"
+                  << b.height;
+    d.differ = a.pixel_count();
+    return d;
+  }
+  for (size_t i = 0; i < a.pixel_count(); ++i) {
+    int m = 0;
+    for (size_t ch = 0; ch < 3; ++ch)
+      m = std::max(m, std::abs(static_cast<int>(std::lround(a.rgba[i * 4 + ch] * 255.0f)) -
+                               static_cast<int>(std::lround(b.rgba[i * 4 + ch] * 255.0f))));
+    if (m == 0) continue;
+    if (d.differ++ == 0) {
+      d.first_x = static_cast<int>(i % static_cast<size_t>(a.width));
+      d.first_y = static_cast<int>(i / static_cast<size_t>(a.width));
+    }
+    d.max = std::max(d.max, m);
+  }
+  return d;
+}
+
 }  // namespace lt::test

@@ -14,13 +14,21 @@ Viewport frame_viewport(FrameSize size) {
   return {w * 0.5f, -h * 0.5f, kZMax, w * 0.5f + offset, h * 0.5f + offset, kZMax};
 }
 
-glm::vec4 clip_position(const ViewTransform& t, const glm::vec3& p) {
+glm::vec3 eye_position(const std::array<float, 12>& m, const glm::vec3& p) {
   // Every product and sum is its own float operation, left to right: what Dolphin's x86-64 build
   // computes (no FMA: the core is compiled with -ffp-contract=off, CMakeLists.txt).
-  const auto& m = t.position;
-  const float x = m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3];
-  const float y = m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7];
-  const float z = m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11];
+  return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+          m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
+}
+
+glm::vec3 eye_normal(const std::array<float, 9>& m, const glm::vec3& n) {
+  return {m[0] * n.x + m[1] * n.y + m[2] * n.z, m[3] * n.x + m[4] * n.y + m[5] * n.z,
+          m[6] * n.x + m[7] * n.y + m[8] * n.z};
+}
+
+glm::vec4 clip_position(const ViewTransform& t, const glm::vec3& p) {
+  const glm::vec3 eye = eye_position(t.position, p);
+  const float x = eye.x, y = eye.y, z = eye.z;
   const auto& q = t.projection;
   if (t.orthographic) return {q[0] * x + q[1], q[2] * y + q[3], q[4] * z + q[5], 1.0f};
   // "result.z = (proj[4] * vec.z + proj[5]) * (1.0f - (float)1e-7)" [DSW MultipleVec3Perspective]:

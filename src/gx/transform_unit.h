@@ -31,6 +31,14 @@ struct ViewTransform {
 // its camera (paths/gx/camera_transform.h loads the camera's matrices beside it).
 Viewport frame_viewport(FrameSize size);
 
+// The eye-space position the XF computes with a 3x4 position matrix: each row's products summed
+// left to right, then its fourth column [DSW TransformUnit.cpp MultiplyVec3Mat34]. The software
+// renderer lights from this (its mvPosition) [DSW TransformUnit.cpp TransformColor].
+glm::vec3 eye_position(const std::array<float, 12>& matrix, const glm::vec3& position);
+// The eye-space normal with a 3x3 normal matrix, rows summed left to right [DSW TransformUnit.cpp
+// MultiplyVec3Mat33, TransformNormal]; the lighting normalises it (xf_lighting.h).
+glm::vec3 eye_normal(const std::array<float, 9>& matrix, const glm::vec3& normal);
+
 // The clip-space (x, y, z, w) of a position as the XF computes it: the 3x4 position matrix,
 // rows summed left to right, then the projection; perspective z is scaled by (1 - 1e-7) and
 // w = -z_eye [DSW TransformUnit.cpp MultipleVec3Perspective]; orthographic w = 1.

@@ -2,8 +2,9 @@
 // the stream carries and how (the vertex descriptor, VCD: GX_SetVtxDesc), how each attribute is
 // encoded (one of eight vertex attribute formats, VAT: GX_SetVtxAttrFmt), and where indexed
 // attributes find their data (GX_SetArray). The vertex loader (vertex_loader.h) reads a vertex
-// stream through these; pack_* give the CP registers they are (the FIFO log still encodes its F32
-// stream with fifo/cp_registers.h; GxVertexLoader.PackedRegisters* holds the two equal).
+// stream through these; pack_* give the CP registers they are (the FIFO log encodes its F32
+// stream with fifo/cp_registers.h, GxVertexLoader.PackedRegisters* holds the two equal, and a
+// stored mesh's VAT with pack_vertex_format: paths/gx/frame_recording.cpp).
 //
 // Field layouts are Dolphin's [DHW CPMemory.h TVtxDesc, UVAT_group0..2], which libogc writes
 // [OGC gx.c __SETVCDATTR L2295-2367, __SETVCDFMT L2533-2620, GX_SetArray L2283-2293]. Enum values

@@ -96,6 +96,36 @@ int resolved_fraction(const CoordinateStorage& c, const ValueBounds& bounds, std
 
 }  // namespace
 
+void set_vertex_storage(VertexStorage& s, std::string_view name, std::string_view value,
+                        const std::string& origin) {
+  if (name == "vtx") {
+    s.position = parse_coordinate(name, value, origin);
+  } else if (name == "uv") {
+    s.texcoord = parse_coordinate(name, value, origin);
+  } else if (name == "nrm") {
+    const std::optional<ComponentType> t = component_named(value);
+    if (!t || (*t != ComponentType::F32 && *t != ComponentType::S16 && *t != ComponentType::S8)) {
+      throw InputError(origin, "nrm",
+                       "'" + std::string(value) + "' is not a normal type (f32, s16, s8)");
+    }
+    s.normal = *t;
+  } else if (name == "clr") {
+    size_t c = std::size(kColorNames);
+    for (size_t i = 0; i < std::size(kColorNames); ++i) {
+      if (kColorNames[i] == value) c = i;
+    }
+    if (c == std::size(kColorNames)) {
+      throw InputError(
+          origin, "clr",
+          "'" + std::string(value) + "' is not a colour type (" + join_names(kColorNames) + ")");
+    }
+    s.color = static_cast<ColorType>(c);
+  } else {
+    throw InputError(origin, std::string(name),
+                     "not a vertex storage key (" + join_names(kVertexStorageKeys) + ")");
+  }
+}
+
 VertexStorage parse_vertex_storage(std::string_view key, const std::string& origin) {
   VertexStorage s;
   std::array<bool, std::size(kVertexStorageKeys)> seen{};
@@ -119,39 +149,27 @@ VertexStorage parse_vertex_storage(std::string_view key, const std::string& orig
     }
     if (seen[which]) throw InputError(origin, std::string(name), "given twice");
     seen[which] = true;
-    const std::string_view value = item.substr(eq + 1);
-    if (name == "vtx") s.position = parse_coordinate(name, value, origin);
-    if (name == "uv") s.texcoord = parse_coordinate(name, value, origin);
-    if (name == "nrm") {
-      const std::optional<ComponentType> t = component_named(value);
-      if (!t || (*t != ComponentType::F32 && *t != ComponentType::S16 && *t != ComponentType::S8)) {
-        throw InputError(origin, "nrm",
-                         "'" + std::string(value) + "' is not a normal type (f32, s16, s8)");
-      }
-      s.normal = *t;
-    }
-    if (name == "clr") {
-      size_t c = std::size(kColorNames);
-      for (size_t i = 0; i < std::size(kColorNames); ++i) {
-        if (kColorNames[i] == value) c = i;
-      }
-      if (c == std::size(kColorNames)) {
-        throw InputError(origin, "clr",
-                         "'" + std::string(value) + "' is not a colour type (" +
-                             join_names(kColorNames) + ")");
-      }
-      s.color = static_cast<ColorType>(c);
-    }
+    set_vertex_storage(s, name, item.substr(eq + 1), origin);
     if (comma == key.size()) break;
   }
   return s;
 }
 
+std::string vertex_storage_value(const VertexStorage& s, std::string_view name) {
+  if (name == "vtx") return coordinate_key(s.position);
+  if (name == "uv") return coordinate_key(s.texcoord);
+  if (name == "nrm") return std::string(kComponentNames[static_cast<size_t>(s.normal)]);
+  LT_CHECK(name == "clr", "not a vertex storage key");
+  return std::string(kColorNames[static_cast<size_t>(s.color)]);
+}
+
 std::string vertex_storage_key(const VertexStorage& s) {
-  return "vtx=" + coordinate_key(s.position) + ",nrm=" +
-         std::string(kComponentNames[static_cast<size_t>(s.normal)]) +
-         ",clr=" + std::string(kColorNames[static_cast<size_t>(s.color)]) +
-         ",uv=" + coordinate_key(s.texcoord);
+  std::string key;
+  for (std::string_view name : kVertexStorageKeys) {
+    if (!key.empty()) key += ',';
+    key.append(name).append("=").append(vertex_storage_value(s, name));
+  }
+  return key;
 }
 
 VertexAttributeFormat storage_format(const VertexStorage& s, const VertexAttributeData& data,
@@ -181,7 +199,7 @@ VertexAttributeFormat storage_format(const VertexStorage& s, const VertexAttribu
     const auto i = static_cast<size_t>(t);
     f.texcoord[i] = {data.texcoord_components[i], s.texcoord.type,
                      resolved_fraction(s.texcoord, bounds.texcoord[i], "uv",
-                                       "texture coordinates", origin)};
+                                       "texture coordinates (t and UVs)", origin)};
   }
   return f;
 }

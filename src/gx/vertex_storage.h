@@ -44,6 +44,14 @@ inline constexpr std::string_view kVertexStorageKeys[] = {"vtx", "nrm", "clr", "
 // throws InputError(origin, the key, what) (e.g. `nrm`: "u8 is not a normal type (f32, s16,
 // s8)").
 VertexStorage parse_vertex_storage(std::string_view key, const std::string& origin);
+// One attribute of a storage key: sets `name`'s (one of kVertexStorageKeys) attribute of `s` from
+// `value` ("s16/8", "rgb565"), or throws InputError as parse_vertex_storage does. The gx variant
+// takes each attribute as an axis of its own (`:vtx=s16/8:nrm=s8`) through this, so the values
+// have one parser.
+void set_vertex_storage(VertexStorage& s, std::string_view name, std::string_view value,
+                        const std::string& origin);
+// The value of attribute `name` in `s`, as set_vertex_storage reads it ("s16/auto", "rgb565").
+std::string vertex_storage_value(const VertexStorage& s, std::string_view name);
 // The key that parses back to `storage`, every attribute named: "vtx=s16/8,nrm=s8,clr=rgb565,
 // uv=f32" (auto as "s16/auto").
 std::string vertex_storage_key(const VertexStorage& storage);

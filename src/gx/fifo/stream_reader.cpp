@@ -5,23 +5,40 @@
 namespace lt::gx::fifo {
 
 namespace {
+// Bytes of a position, normal or texture coordinate component of VAT type `type`: GX_U8, GX_S8
+// 1, GX_U16, GX_S16 2, GX_F32 4 [OGC gx.h L93-97] [DHW VertexLoader_Position.cpp].
+size_t stream_component_bytes(u32 type) {
+  return type <= 1 ? 1 : type <= 3 ? 2 : 4;
+}
+// Bytes of a direct vertex colour of VAT type `type`: RGB565 2, RGB8 3, RGBX8 4, RGBA4 2, RGBA6
+// 3, RGBA8 4 [OGC gx.h L98-103] [DHW VertexLoader_Color.cpp].
+size_t stream_color_bytes(u32 type) {
+  constexpr size_t kSizes[] = {2, 3, 4, 2, 3, 4};
+  return type < 6 ? kSizes[type] : 4;
+}
+
 // The bytes one vertex takes under the CP registers' descriptor and VAT 0 (direct attributes
-// only; POS/NRM F32 XYZ, CLRn RGBA8, TEXn F32 S or ST - what the stream uses).
+// only, as the stream sends them: F32 by default, a stored mesh's types otherwise; no NBT).
 size_t stream_vertex_size(const RegisterFile& r) {
   const u32 lo = r.cp[0x50], hi = r.cp[0x60];
   const u32 vat_a = r.cp[0x70], vat_b = r.cp[0x80], vat_c = r.cp[0x90];
   size_t n = 0;
-  if (field(lo, 9, 2)) n += 12;
-  if (field(lo, 11, 2)) n += 12;
-  if (field(lo, 13, 2)) n += 4;
-  if (field(lo, 15, 2)) n += 4;
-  // Each TEXn's element count bit: VAT A 21; VAT B 0, 9, 18, 27; VAT C 5, 14, 23
-  // [DHW CPMemory.h UVAT_group0..2].
-  const bool st[8] = {field(vat_a, 21, 1) != 0, field(vat_b, 0, 1) != 0,  field(vat_b, 9, 1) != 0,
-                      field(vat_b, 18, 1) != 0, field(vat_b, 27, 1) != 0, field(vat_c, 5, 1) != 0,
-                      field(vat_c, 14, 1) != 0, field(vat_c, 23, 1) != 0};
-  for (int t = 0; t < 8; ++t)
-    if (field(hi, 2 * t, 2)) n += st[t] ? 8 : 4;
+  // VAT A: position count bit 0 (XY, XYZ) and type 1-3, normal type 10-12, colour types 14-16
+  // and 18-20 [DHW CPMemory.h UVAT_group0].
+  if (field(lo, 9, 2))
+    n += (field(vat_a, 0, 1) ? 3 : 2) * stream_component_bytes(field(vat_a, 1, 3));
+  if (field(lo, 11, 2)) n += 3 * stream_component_bytes(field(vat_a, 10, 3));
+  if (field(lo, 13, 2)) n += stream_color_bytes(field(vat_a, 14, 3));
+  if (field(lo, 15, 2)) n += stream_color_bytes(field(vat_a, 18, 3));
+  // Each TEXn's element count bit: VAT A 21; VAT B 0, 9, 18, 27; VAT C 5, 14, 23; its type the
+  // three bits above it [DHW CPMemory.h UVAT_group0..2].
+  const u32 vat[8] = {vat_a, vat_b, vat_b, vat_b, vat_b, vat_c, vat_c, vat_c};
+  const int count_bit[8] = {21, 0, 9, 18, 27, 5, 14, 23};
+  for (size_t t = 0; t < 8; ++t) {
+    if (!field(hi, 2 * static_cast<int>(t), 2)) continue;
+    const bool st = field(vat[t], count_bit[t], 1) != 0;
+    n += (st ? 2 : 1) * stream_component_bytes(field(vat[t], count_bit[t] + 1, 3));
+  }
   return n;
 }
 }  // namespace

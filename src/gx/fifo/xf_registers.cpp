@@ -92,14 +92,20 @@ void write_pass_xf(CommandStream& out, const GxState& s) {
   for (u32 id = 30; id <= 60; id += 3) load_floats(out, 4 * id, rows(t.matrices[id / 3], 3));
 }
 
+void write_matrices_xf(CommandStream& out, const std::array<float, 12>& position,
+                       const std::array<float, 9>& normal) {
+  // GX_LoadPosMtxImm's 3x4 rows and GX_LoadNrmMtxImm's 3x3 [OGC gx.c GX_LoadPosMtxImm,
+  // GX_LoadNrmMtxImm].
+  load_floats(out, xf::kPositionMatrices, std::vector<float>(position.begin(), position.end()));
+  load_floats(out, xf::kNormalMatrices, std::vector<float>(normal.begin(), normal.end()));
+}
+
 void write_view_xf(CommandStream& out, const ViewTransform& t, FrameSize size) {
-  // The position and normal matrices are the same rotation: GX_LoadPosMtxImm's 3x4 rows and
-  // GX_LoadNrmMtxImm's 3x3 [OGC gx.c GX_LoadPosMtxImm, GX_LoadNrmMtxImm].
-  std::vector<float> position(t.position.begin(), t.position.end()), normal;
+  // The position and normal matrices are the same rotation.
+  std::array<float, 9> normal{};
   for (size_t i = 0; i < 3; ++i)
-    for (size_t j = 0; j < 3; ++j) normal.push_back(t.position[4 * i + j]);
-  load_floats(out, xf::kPositionMatrices, position);
-  load_floats(out, xf::kNormalMatrices, normal);
+    for (size_t j = 0; j < 3; ++j) normal[3 * i + j] = t.position[4 * i + j];
+  write_matrices_xf(out, t.position, normal);
   out.load_xf(xf::kViewport, viewport_words(size));
   out.load_xf(xf::kProjection, projection_words(t));
 }

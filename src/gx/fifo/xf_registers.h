@@ -50,6 +50,10 @@ std::array<u32, 6> viewport_words(FrameSize size);
 // controls), the 8 lights, texgens (count, rows, post-transform rows), texture matrices.
 void write_pass_xf(CommandStream& out, const GxState& state);
 
+// GX_PNMTX0 (3 rows of 4) and its normal matrix (3 rows of 3): the camera's (write_view_xf) or an
+// object's, for a mesh sent in its own coordinates (paths/gx/scene_vertices.h ObjectSpaceMesh).
+void write_matrices_xf(CommandStream& out, const std::array<float, 12>& position,
+                       const std::array<float, 9>& normal);
 // The frame's camera: GX_LoadPosMtxImm / GX_LoadNrmMtxImm(GX_PNMTX0) - the scene's positions
 // arrive camera-relative, so the position matrix is the world-to-eye rotation with no
 // translation (paths/gx/scene_vertices.h) - the viewport and the projection.

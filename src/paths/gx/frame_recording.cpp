@@ -5,6 +5,8 @@
 #include "core/error.h"
 #include "gx/fifo/cp_registers.h"
 #include "gx/fifo/xf_registers.h"
+#include "gx/vertex_format.h"
+#include "gx/vertex_quantiser.h"
 #include "image/image.h"
 #include "paths/gx/camera_transform.h"
 #include "paths/gx/lobe_lut.h"
@@ -42,6 +44,14 @@ class TextureMemory {
   std::vector<std::pair<const TextureObject*, u32>> placed_;
 };
 
+// The triangles of `mesh` expanded to a vertex list.
+std::vector<u32> triangle_vertices(const TriangleMesh& mesh) {
+  std::vector<u32> indices;
+  for (const glm::uvec3& tri : mesh.triangles)
+    for (int c = 0; c < 3; ++c) indices.push_back(tri[c]);
+  return indices;
+}
+
 // The vertices of one object as the pass's descriptor sends them (vertex_stage.h: what the
 // emulator's XF reads), triangles expanded, in draws of at most 65,535 vertices (a multiple
 // of 3, so no triangle is split).
@@ -51,9 +61,7 @@ void draw_object(CommandStream& out, const GxState& s, const VertexStream& strea
   const TexCoordFormats f = sent_formats(s.texcoord_formats);
   const std::vector<float>* t =
       pass < stream.t_per_light.size() ? &stream.t_per_light[pass] : nullptr;
-  std::vector<u32> indices;
-  for (const glm::uvec3& tri : mesh.triangles)
-    for (int c = 0; c < 3; ++c) indices.push_back(tri[c]);
+  const std::vector<u32> indices = triangle_vertices(mesh);
   static_assert(kMaxDrawVertices % 3 == 0);
   for (size_t start = 0; start < indices.size(); start += kMaxDrawVertices) {
     const size_t n = std::min(kMaxDrawVertices, indices.size() - start);
@@ -81,6 +89,30 @@ void draw_object(CommandStream& out, const GxState& s, const VertexStream& strea
         }
       }
     }
+  }
+}
+
+// One object of a variant with a vertex storage (scene_vertices.h): its matrices (it arrives in
+// its own coordinates), the pass's VAT for the storage (GX_SetVtxAttrFmt of every attribute the
+// pass sends, ByteDequant set as libogc leaves it: vertex_format.h pack_vertex_format), and the
+// stored bytes of each vertex sent directly, triangles expanded as draw_object's.
+void draw_stored_object(CommandStream& out, const GxState& s, const VertexStream& f32,
+                        const ObjectSpaceMesh& mesh, const TriangleMesh& triangles,
+                        const VertexStorage& storage, size_t pass) {
+  const VertexAttributeData data = pass_vertex_data(
+      mesh.position, mesh.normal, f32, sent_attributes(s), sent_formats(s.texcoord_formats), pass);
+  const VertexAttributeFormat format = storage_format(storage, data, "--variant");
+  write_matrices_xf(out, mesh.matrices.position, mesh.matrices.normal);
+  const std::array<u32, 3> vat = pack_vertex_format(format);
+  out.load_cp(cp::kVatA, vat[0]);
+  out.load_cp(cp::kVatB, vat[1]);
+  out.load_cp(cp::kVatC, vat[2]);
+  const std::vector<AttributeElements> elements = quantise_attributes(data, format);
+  const std::vector<u32> indices = triangle_vertices(triangles);
+  for (size_t start = 0; start < indices.size(); start += kMaxDrawVertices) {
+    const size_t n = std::min(kMaxDrawVertices, indices.size() - start);
+    out.begin(kPrimitiveTriangles, 0, static_cast<u16>(n));
+    for (u8 b : direct_vertex_stream(elements, std::span(indices).subspan(start, n))) out.put_u8(b);
   }
 }
 
@@ -136,6 +168,11 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     std::vector<VertexStream> streams;
     for (const SceneObject& o : scene.objects)
       streams.push_back(make_vertex_stream(scene, o, view));
+    // A stored mesh (a vertex storage axis) is sent in each object's own coordinates.
+    const bool stored = !in.variant.storage.is_default();
+    std::vector<ObjectSpaceMesh> object_meshes;
+    for (const SceneObject& o : scene.objects)
+      if (stored) object_meshes.push_back(object_space_mesh(o, view));
     const glm::dvec3 bg = scene.background;
     const Color8 background{to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
     const ScenePrograms& programs = *in.programs;
@@ -170,8 +207,13 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
       write_pass_cp(out, state);
       write_pass_xf(out, state);
       write_pass_bp(out, state, textures, addresses);
-      for (size_t i : d.objects)
-        draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(d.pass));
+      for (size_t i : d.objects) {
+        if (stored)
+          draw_stored_object(out, state, streams[i], object_meshes[i], scene.objects[i].mesh,
+                             in.variant.storage, static_cast<size_t>(d.pass));
+        else
+          draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(d.pass));
+      }
     }
     write_display_copy(out, size, kXfbAddress);
     frame.fifo = out.bytes();

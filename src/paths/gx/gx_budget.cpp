@@ -15,33 +15,6 @@ namespace lt::gx {
 
 namespace {
 
-// What pass `pass` sends of an object's mesh, as floats before storage: the mesh as a port
-// stores it, in world space (the position matrix places it), not ltrender's camera-relative
-// stream; normals, colours, UVs and the pass's light's t as the stream has them.
-VertexAttributeData pass_vertex_data(const TriangleMesh& mesh, const VertexStream& stream,
-                                     const VertexDescriptor& sent, const TexCoordFormats& formats,
-                                     size_t pass) {
-  VertexAttributeData d;
-  for (const glm::dvec3& p : mesh.positions) d.position.emplace_back(p);
-  if (sent.has(kVaNrm)) d.normal = stream.normal;
-  if (sent.has(kVaClr0)) d.color[0] = stream.color;
-  if (sent.has(kVaClr1)) d.color[1] = stream.color;
-  const std::vector<float>* t =
-      pass < stream.t_per_light.size() ? &stream.t_per_light[pass] : nullptr;
-  for (int n = 0; n < kMaxTexGens; ++n) {
-    if (!sent.has(kVaTex0 + n)) continue;
-    const auto i = static_cast<size_t>(n);
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
-      if (formats.kind[i] == TexCoordFormats::ST)
-        d.texcoord[i].push_back(v < stream.uv.size() ? stream.uv[v] : glm::vec2(0.0f));
-      else
-        d.texcoord[i].emplace_back(t ? (*t)[v] : 0.0f, 0.0f);
-    }
-    if (formats.kind[i] != TexCoordFormats::ST) d.texcoord_components[i] = 1;
-  }
-  return d;
-}
-
 // The vertex cost details of a scene's budget: F32 immediate mode and kBudgetVertexStorage,
 // indexed, stripped, in display lists (docs/budget.md).
 void add_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs) {
@@ -123,6 +96,7 @@ FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& progr
   FrameVertexCost cost;
   const SceneView view = SceneView::of(scene);
   std::map<size_t, VertexStream> streams;
+  std::map<size_t, ObjectSpaceMesh> object_meshes;  // what a game stores: object space
   std::map<size_t, std::vector<u32>> strips;
   std::set<std::pair<size_t, int>> arrays_placed;                // (object, array) in MEM1
   std::set<std::pair<size_t, std::array<u32, 2>>> lists_placed;  // (object, VCD)
@@ -136,12 +110,15 @@ FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& progr
           immediate_list_cost(mesh.triangles.size(), fifo::vertex_size(sent, formats));
       if (!streams.count(object)) {
         streams.emplace(object, make_vertex_stream(scene, scene.objects[object], view));
+        object_meshes.emplace(object, object_space_mesh(scene.objects[object], view));
         std::vector<u32> list;
         for (const glm::uvec3& tri : mesh.triangles) list.insert(list.end(), {tri.x, tri.y, tri.z});
         strips[object] = triangle_strip(list, mesh.positions.size());
       }
+      const ObjectSpaceMesh& stored = object_meshes.at(object);
       const VertexAttributeData data =
-          pass_vertex_data(mesh, streams.at(object), sent, formats, static_cast<size_t>(d.pass));
+          pass_vertex_data(stored.position, stored.normal, streams.at(object), sent, formats,
+                           static_cast<size_t>(d.pass));
       const VertexAttributeFormat format = storage_format(storage, data, origin);
       const IndexedArrays arrays = index_attributes(quantise_attributes(data, format), origin);
       const VertexInputs inputs = indexed_inputs(arrays);

@@ -20,8 +20,9 @@ budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
 // The frame's vertex cost on the console (gx/vertex_cost.h) for a scene's draws: every pass of
 // every material draws its objects, each with the attributes the pass sends
 // (fifo/cp_registers.h sent_attributes: what the FIFO log sends), once in ltrender's F32
-// immediate mode and once as a game ships the mesh: stored as `storage` says
-// (gx/vertex_storage.h), indexed, one strip a mesh (mesh/triangle_strips.h), in display lists.
+// immediate mode and once as a game ships the mesh: in each object's own coordinates
+// (scene_vertices.h object_space_mesh), stored as `storage` says (gx/vertex_storage.h), indexed,
+// one strip a mesh (mesh/triangle_strips.h), in display lists.
 // - MEM1 arrays: an object's position, normal, colour and UV arrays once (every pass indexes
 //   them); the t of each pass's light (GX_TEX_S, t=vertex) an array of its own, which the CPU
 //   rewrites every frame.

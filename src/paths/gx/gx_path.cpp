@@ -146,9 +146,13 @@ class GxPath final : public Path {
     viewport_ = view.viewport;
     scissor_ = {0, 0, ctx.width, ctx.height};
     for (const SceneObject& o : s.objects) {
-      streams_.push_back(make_vertex_stream(s, o, view_));
+      streams_.push_back(object_vertex_stream(s, o, view_, variant_));
+      // A stored mesh is in object space: its own position matrix places it (scene_vertices.h).
+      ViewTransform placed = view;
+      if (streams_.back().object_matrices)
+        placed.position = streams_.back().object_matrices->position;
       std::vector<glm::vec4> clip;
-      for (const glm::vec3& p : streams_.back().position) clip.push_back(clip_position(view, p));
+      for (const glm::vec3& p : streams_.back().position) clip.push_back(clip_position(placed, p));
       clip_.push_back(std::move(clip));
     }
     // Per pass and material, the state and its textures (resolved once: the scene is static).

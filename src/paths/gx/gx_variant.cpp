@@ -17,13 +17,20 @@ const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
     ":lights=round-each, :map=rgb565, :base=tev (or :base=xf), :out=xfb (or :out=efb), "
-    ":coverage=console (or :coverage=dolphin) and :light-range=D (D >= 0)";
+    ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0) and the vertex storage "
+    ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto)";
 
 // Whether all of `text` reads as one number into `out`.
 template <class T>
 bool parses_whole(const std::string& text, T& out) {
   const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
   return r.ec == std::errc() && r.ptr == text.data() + text.size();
+}
+
+bool is_storage_key(const std::string& key) {
+  for (std::string_view k : kVertexStorageKeys)
+    if (k == key) return true;
+  return false;
 }
 
 }  // namespace
@@ -88,6 +95,12 @@ GxVariant parse_gx_variant(const std::string& text) {
       v.light_range = d;
     } else if (key == "view" && first) {
       v.view_object = either("object", "exact") == "object";
+    } else if (is_storage_key(key) && first) {
+      try {
+        set_vertex_storage(v.storage, key, value, "--variant");
+      } catch (const InputError& e) {
+        bad(key + "=" + value + ": " + e.what_only());
+      }
     } else {
       bad("'" + key + "' is not a gx variant axis, or is given twice");
     }
@@ -125,6 +138,12 @@ std::string to_string(const GxVariant& v) {
     const auto r = std::to_chars(buf, buf + sizeof buf, *v.light_range);
     s += ":light-range=" + std::string(buf, r.ptr);
   }
+  // Each attribute stored otherwise than the default F32 stream, in the storage key's order.
+  const VertexStorage f32;
+  for (std::string_view k : kVertexStorageKeys) {
+    const std::string value = vertex_storage_value(v.storage, k);
+    if (value != vertex_storage_value(f32, k)) s += ":" + std::string(k) + "=" + value;
+  }
   return s;
 }
 
@@ -141,6 +160,12 @@ std::string refusal(const Scene& scene, const GxVariant& v) {
                "'s lobe is a ramp (a table): use t=vertex or t=texgen";
     }
   }
+  // A stored mesh sends its normals in object space (scene_vertices.h); t=texgen's texture
+  // matrix is built for the world-space normals of the F32 stream.
+  if (!v.storage.is_default() && v.lobe == GxVariant::Lobe::Lut &&
+      v.t == GxVariant::TexCoord::Texgen)
+    return "t=texgen reads the normal through a texture matrix for world-space normals; a stored "
+           "mesh (:vtx=, :nrm=, :clr=, :uv=) sends them in object space: use t=vertex";
   if (v.lobe == GxVariant::Lobe::Lut && v.t == GxVariant::TexCoord::Vertex) return "";
   for (const Material& m : scene.materials) {
     // view=object makes V and L constant per object whatever the camera and lights; a

@@ -35,6 +35,13 @@
 //                       for any scene (the attenuation at the light itself, 1 / kc). The scan
 //                       is gone from the CPU's frame (the module's setup); the cost is in the
 //                       image (docs/porting-to-the-wii.md).
+// Four axes store the mesh as a port does (docs/porting-to-the-wii.md "Vertex storage"), one
+// attribute each, with the values of a storage key (gx/vertex_storage.h, its one parser):
+//   :vtx=s16/8  positions (f32 | u8, s8, u16, s16 with /N fractional bits or /auto),
+//   :nrm=s8     normals (f32 | s16 | s8), :clr=rgb565 colours (rgba8 | rgbx8 | rgb8 | rgba6 |
+//   rgba4 | rgb565), :uv=u16/auto texture coordinates (the pass's t and the mesh's UVs);
+// e.g. `t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto`. Default f32 / rgba8: the F32
+// direct stream. A stored mesh goes through the console's vertex loader (scene_vertices.h).
 // One axis picks which image the path returns (xfb_copy.h):
 //   :out=xfb            what the TV shows: the EFB copied to the XFB as YUYV 4:2:2 and decoded
 //                       again, as Dolphin's software renderer dumps it (default :out=efb, the
@@ -45,6 +52,7 @@
 #include <string>
 
 #include "gx/gx_types.h"
+#include "gx/vertex_storage.h"
 #include "scene/scene.h"
 
 namespace lt::gx {
@@ -69,6 +77,10 @@ struct GxVariant {
   // :light-range=D: the declared closest distance of a point light to a lit vertex; unset: the
   // visible vertices are scanned (pass_planner.cpp light_stats).
   std::optional<double> light_range;
+  // :vtx=, :nrm=, :clr=, :uv=: how the port stores the mesh's vertices (gx/vertex_storage.h);
+  // default F32 positions, normals and texture coordinates, RGBA8 colours, sent as ltrender
+  // always has (scene_vertices.h).
+  VertexStorage storage;
 
   bool operator==(const GxVariant&) const = default;
 };

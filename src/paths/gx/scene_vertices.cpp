@@ -1,5 +1,10 @@
 #include "paths/gx/scene_vertices.h"
 
+#include <glm/glm.hpp>
+
+#include "core/error.h"
+#include "gx/transform_unit.h"
+#include "gx/vertex_loader.h"
 #include "image/image.h"
 #include "model/translucency.h"
 
@@ -40,6 +45,115 @@ VertexStream make_vertex_stream(const Scene& scene, const SceneObject& object,
     s.t_per_light.push_back(std::move(t));
   }
   return s;
+}
+
+ObjectSpaceMesh object_space_mesh(const SceneObject& object, const SceneView& view) {
+  const glm::dmat4 m = object.transform.matrix();
+  const glm::dmat4 to_object = glm::inverse(m);
+  const glm::dmat3 a(m), a_transpose = glm::transpose(a);
+  ObjectSpaceMesh o;
+  for (const glm::dvec3& p : object.mesh.positions)
+    o.position.emplace_back(glm::dvec3(to_object * glm::dvec4(p, 1.0)));
+  for (const glm::dvec3& n : object.mesh.normals)
+    o.normal.emplace_back(glm::normalize(a_transpose * n));
+  // Rows of R [A | t - eye] and R A^-T (glm matrices are column-major: row r, column c is
+  // [c][r]).
+  const glm::dmat3 linear = view.view * a;
+  const glm::dvec3 move = view.view * (glm::dvec3(m[3]) - view.eye);
+  const glm::dmat3 normal = view.view * glm::transpose(glm::inverse(a));
+  for (int r = 0; r < 3; ++r) {
+    const auto row = static_cast<size_t>(r);
+    for (int c = 0; c < 3; ++c) {
+      o.matrices.position[4 * row + static_cast<size_t>(c)] = static_cast<float>(linear[c][r]);
+      o.matrices.normal[3 * row + static_cast<size_t>(c)] = static_cast<float>(normal[c][r]);
+    }
+    o.matrices.position[4 * row + 3] = static_cast<float>(move[r]);
+  }
+  return o;
+}
+
+namespace {
+
+// `data`'s vertices 0..n-1 stored as `storage` says, sent directly and read back by the
+// console's vertex loader.
+std::vector<LoadedVertex> load_stored(const VertexAttributeData& data, const VertexStorage& storage,
+                                      const std::string& origin) {
+  const VertexAttributeFormat format = storage_format(storage, data, origin);
+  std::vector<u32> order(data.vertex_count());
+  for (size_t v = 0; v < order.size(); ++v) order[v] = static_cast<u32>(v);
+  const std::vector<u8> bytes = direct_vertex_stream(quantise_attributes(data, format), order);
+  const VertexLoader loader(sent_inputs(data, AttributeInput::Direct), format, origin);
+  std::vector<LoadedVertex> loaded = loader.load(bytes, order.size(), VertexArrays{});
+  LT_CHECK(loaded.size() == order.size(), "a direct stream drops no vertex");
+  return loaded;
+}
+
+}  // namespace
+
+VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
+                                  const SceneView& view, const VertexStorage& storage,
+                                  const std::string& origin) {
+  const VertexStream f32 = make_vertex_stream(scene, object, view);
+  const ObjectSpaceMesh mesh = object_space_mesh(object, view);
+  VertexStream s;
+  s.object_matrices = mesh.matrices;
+  // The attributes every pass shares (the UVs in slot 1, as a GX_TEX_ST slot sends them)...
+  VertexAttributeData shared;
+  shared.position = mesh.position;
+  shared.normal = mesh.normal;
+  shared.color[0] = f32.color;
+  if (!f32.uv.empty()) shared.texcoord[1] = f32.uv;
+  for (const LoadedVertex& v : load_stored(shared, storage, origin)) {
+    s.position.push_back(v.position);
+    s.normal.push_back(v.normal[0]);
+    s.color.push_back(v.color[0]);
+    if (!f32.uv.empty()) s.uv.push_back(v.texcoord[1]);
+    s.eye_position.push_back(eye_position(mesh.matrices.position, v.position));
+    s.eye_normal.push_back(eye_normal(mesh.matrices.normal, v.normal[0]));
+  }
+  // ... and each light's t, a GX_TEX_S slot with the fraction its own values allow.
+  for (const std::vector<float>& t : f32.t_per_light) {
+    VertexAttributeData pass;
+    pass.position = mesh.position;
+    for (float x : t) pass.texcoord[0].emplace_back(x, 0.0f);
+    pass.texcoord_components[0] = 1;
+    std::vector<float> stored;
+    for (const LoadedVertex& v : load_stored(pass, storage, origin))
+      stored.push_back(v.texcoord[0].x);
+    s.t_per_light.push_back(std::move(stored));
+  }
+  return s;
+}
+
+VertexStream object_vertex_stream(const Scene& scene, const SceneObject& object,
+                                  const SceneView& view, const GxVariant& variant) {
+  if (variant.storage.is_default()) return make_vertex_stream(scene, object, view);
+  return stored_vertex_stream(scene, object, view, variant.storage, "--variant");
+}
+
+VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,
+                                     std::span<const glm::vec3> normals, const VertexStream& stream,
+                                     const VertexDescriptor& sent, const TexCoordFormats& formats,
+                                     size_t pass) {
+  VertexAttributeData d;
+  d.position.assign(positions.begin(), positions.end());
+  if (sent.has(kVaNrm)) d.normal.assign(normals.begin(), normals.end());
+  if (sent.has(kVaClr0)) d.color[0] = stream.color;
+  if (sent.has(kVaClr1)) d.color[1] = stream.color;
+  const std::vector<float>* t =
+      pass < stream.t_per_light.size() ? &stream.t_per_light[pass] : nullptr;
+  for (int n = 0; n < kMaxTexGens; ++n) {
+    if (!sent.has(kVaTex0 + n)) continue;
+    const auto i = static_cast<size_t>(n);
+    for (size_t v = 0; v < positions.size(); ++v) {
+      if (formats.kind[i] == TexCoordFormats::ST)
+        d.texcoord[i].push_back(v < stream.uv.size() ? stream.uv[v] : glm::vec2(0.0f));
+      else
+        d.texcoord[i].emplace_back(t ? (*t)[v] : 0.0f, 0.0f);
+    }
+    if (formats.kind[i] != TexCoordFormats::ST) d.texcoord_components[i] = 1;
+  }
+  return d;
 }
 
 }  // namespace lt::gx

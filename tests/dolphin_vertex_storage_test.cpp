@@ -1,0 +1,39 @@
+// A stored mesh judged by Dolphin (issue 46 step 3): the FIFO log declares each attribute's
+// storage in the VAT (GX_SetVtxAttrFmt's type, count and fraction, ByteDequant as libogc sets
+// it), sends each object's vertices in those types in its own coordinates with the object's
+// position and normal matrices, and Dolphin's vertex loader reads the very bytes. Its frame must
+// be ltrender's `:out=xfb` picture, pixel for pixel. Two demo scenes (a sphere with UVs and an
+// albedo map: GX_TEX_ST beside t; two cubes moved, turned and scaled, so the object matrices
+// matter) x two storages (positions s16, normals s8, RGB565, s16 texture coordinates; and s8
+// positions, s16 normals, RGBA4, s8 texture coordinates), one Dolphin start a scene. Not u8/u16: t
+// = dot(V, -H) is signed, so an unsigned texture coordinate cannot hold it, and the demo meshes'
+// positions are centred on their origin.
+#include <gtest/gtest.h>
+
+#include "dolphin_util.h"
+#include "load/load_scene.h"
+
+namespace lt {
+namespace {
+
+class DolphinVertexStorage : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DolphinVertexStorage, DolphinsFramesOfAStoredMeshAreLtrendersXfbPictures) {
+  const Scene scene = load_scene(test::source_dir() / GetParam());
+  const std::vector<test::JudgedFrame> frames{
+      {"t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto", ""},
+      {"t=vertex:vtx=s8/auto:nrm=s16:clr=rgba4:uv=s8/auto", ""}};
+  const std::vector<test::JudgedRow> rows =
+      test::expect_dolphins_pictures(scene, frames, GetParam());
+  for (size_t k = 0; k < rows.size(); ++k)
+    EXPECT_GT(rows[k].covered, static_cast<size_t>(test::kDolphinWidth * test::kDolphinHeight / 50))
+        << frames[k].variant << ": the scene covers almost nothing";
+}
+
+INSTANTIATE_TEST_SUITE_P(DemoScenes, DolphinVertexStorage,
+                         ::testing::Values("scenes/albedo_checker.json",
+                                           "scenes/coloured_cubes.json"),
+                         [](const auto& info) { return test::scene_param_name(info.param); });
+
+}  // namespace
+}  // namespace lt
