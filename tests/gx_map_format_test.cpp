@@ -108,8 +108,8 @@ TEST(GxMapFormat, TheFormatsOfEarlierFramesMatchTheTreesEncoder) {
   std::vector<float> rgb;
   Rgba8Image image{16, 4, {}};
   for (int i = 0; i < 64; ++i) {
-    const Color8 c{static_cast<u8>(i * 4), static_cast<u8>(255 - i * 3), static_cast<u8>(i * 37 % 256),
-                   255};
+    const Color8 c{static_cast<u8>(i * 4), static_cast<u8>(255 - i * 3),
+                   static_cast<u8>(i * 37 % 256), 255};
     image.texels.push_back(c);
     for (int ch = 0; ch < 3; ++ch) rgb.push_back(static_cast<float>(c[ch] / 255.0));
   }

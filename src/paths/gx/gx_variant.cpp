@@ -18,7 +18,8 @@ namespace {
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
-    ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4), :base=tev (or :base=xf), :out=xfb (or :out=efb), "
+    ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4), "
+    ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
     ":coverage=console (or :coverage=dolphin) and :light-range=D (D >= 0)";
 
 // The :map= values and the formats they name (gx_variant.h).
@@ -88,7 +89,8 @@ GxVariant parse_gx_variant(const std::string& text) {
       const auto named = std::find_if(std::begin(kMapFormats), std::end(kMapFormats),
                                       [&](const MapFormatName& m) { return value == m.name; });
       if (named == std::end(kMapFormats))
-        bad("map=" + value + " is not a map format (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4)");
+        bad("map=" + value +
+            " is not a map format (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4)");
       if (named->format != TexFormat::RGBA8 && named->format != TexFormat::I8)
         v.map_format = named->format;
     } else if (key == "out" && first) {
