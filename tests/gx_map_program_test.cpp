@@ -170,9 +170,9 @@ TEST(GxMapProgram, AnUnloadedTexmap1AndAnUnmodelledFormatAreRefused) {
   std::string unloaded = p;
   unloaded.replace(unloaded.find("GX_LoadTexObj(&tex, GX_TEXMAP1);"), 32, "");
   expect_program_refused(unloaded, true, "TEV stage 0 fetches GX_TEXMAP1, which holds no texture");
-  std::string cmpr = p;
-  cmpr.replace(cmpr.find("GX_TF_RGBA8"), 11, "GX_TF_CMPR");
-  expect_program_refused(cmpr, true, "texture format not modelled");
+  std::string indexed = p;
+  indexed.replace(indexed.find("GX_TF_RGBA8"), 11, "GX_TF_CI8");
+  expect_program_refused(indexed, true, "texture format not modelled");
 }
 
 }  // namespace

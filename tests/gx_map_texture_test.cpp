@@ -169,8 +169,8 @@ std::vector<float> map_of(const std::vector<int>& bytes_rgb) {
 TEST(GxMapTexture, GreyMapIsI8AndExactForEightBitTexels) {
   // 2 x 2, r = g = b: row 0 (the image's bottom row, v = 0) = {10, 200}, row 1 = {60, 250}.
   const ThicknessTexture tt = thickness_texture(
-      2, 2, map_of({10, 10, 10, 200, 200, 200, 60, 60, 60, 250, 250, 250}), true, false);
-  EXPECT_STREQ(tt.format_name, "GX_TF_I8");
+      2, 2, map_of({10, 10, 10, 200, 200, 200, 60, 60, 60, 250, 250, 250}), TexFormat::I8);
+  EXPECT_EQ(tt.format_name, "GX_TF_I8");
   EXPECT_EQ(tt.texture.format, kTexFormatI8);
   EXPECT_EQ(tt.scale, 1.0);
   EXPECT_EQ(tt.texture.data.size(), 32u);
@@ -186,8 +186,8 @@ TEST(GxMapTexture, GreyMapIsI8AndExactForEightBitTexels) {
 
 TEST(GxMapTexture, ColourMapIsRgba8AndExactForEightBitTexels) {
   const ThicknessTexture tt =
-      thickness_texture(3, 1, map_of({255, 0, 7, 1, 128, 254, 90, 91, 92}), false, false);
-  EXPECT_STREQ(tt.format_name, "GX_TF_RGBA8");
+      thickness_texture(3, 1, map_of({255, 0, 7, 1, 128, 254, 90, 91, 92}), TexFormat::RGBA8);
+  EXPECT_EQ(tt.format_name, "GX_TF_RGBA8");
   EXPECT_EQ(tt.texture.format, kTexFormatRGBA8);
   EXPECT_EQ(tt.texture.wrap_s, 0);  // GX_CLAMP, as the reference's CLAMP_TO_EDGE
   EXPECT_EQ(texel_at(tt.texture, 0, 0), (Color8{255, 0, 7, 255}));
@@ -199,8 +199,9 @@ TEST(GxMapTexture, Rgb565MapStoresTheNearestExpansion) {
   // 0.2 = 51/255: r, b fields 6 -> 49 (57 from 7 is further); g field 13 -> 52 (48 from 12 is
   // further). 1 and 0 are exact.
   const ThicknessTexture tt =
-      thickness_texture(3, 1, {0.2f, 0.2f, 0.2f, 1.0f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f}, false, true);
-  EXPECT_STREQ(tt.format_name, "GX_TF_RGB565");
+      thickness_texture(3, 1, {0.2f, 0.2f, 0.2f, 1.0f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f},
+                        TexFormat::RGB565);
+  EXPECT_EQ(tt.format_name, "GX_TF_RGB565");
   EXPECT_EQ(texel_at(tt.texture, 0, 0), (Color8{49, 52, 49, 255}));
   EXPECT_EQ(texel_at(tt.texture, 1, 0), (Color8{255, 0, 255, 255}));
   EXPECT_EQ(texel_at(tt.texture, 2, 0), (Color8{0, 255, 0, 255}));
@@ -220,7 +221,7 @@ TEST(GxMapTexture, Rgb565MapStoresTheNearestExpansion) {
 TEST(GxMapTexture, FloatMapOverOneIsNormalisedToItsLargestTexel) {
   // Texels 0.5, 1, 2 (an EXR map): 255 stands for 2, so 1 -> round(127.5) = 128, 0.5 -> 64.
   const ThicknessTexture tt =
-      thickness_texture(3, 1, {0.5f, 0.5f, 0.5f, 1, 1, 1, 2, 2, 2}, true, false);
+      thickness_texture(3, 1, {0.5f, 0.5f, 0.5f, 1, 1, 1, 2, 2, 2}, TexFormat::I8);
   EXPECT_EQ(tt.scale, 2.0);
   EXPECT_EQ(texel_at(tt.texture, 0, 0).r, 64);
   EXPECT_EQ(texel_at(tt.texture, 1, 0).r, 128);

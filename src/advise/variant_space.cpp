@@ -1,5 +1,8 @@
 #include "advise/variant_space.h"
 
+#include <optional>
+#include <vector>
+
 #include "core/error.h"
 #include "paths/arbfp/arb_variant.h"
 #include "paths/combiners/cube_lobe.h"
@@ -71,14 +74,17 @@ VariantSpace arbfp_space() {
 }
 
 // t=vertex and t=texgen, each with every LUT width, and lobe=xf-spec (no texture); with a
-// colour thickness map, each also with :map=rgb565 (half the map's bytes).
+// colour thickness map, each also with :map=rgb565 (half the map's bytes) and :map=cmpr (an
+// eighth), with a grey one :map=i4 (half). The formats that cost as much as one of these and
+// keep fewer bits (rgb5a3, ia8, ia4) are left out.
 VariantSpace gx_space(const Scene& scene) {
   VariantSpace s;
-  double colour_map_texels = 0;
+  double colour_map_texels = 0, grey_map_texels = 0;
   for (const Material& m : scene.materials) {
-    if (m.translucency && m.translucency->thickness_map && !m.translucency->thickness_map->grey) {
+    if (m.translucency && m.translucency->thickness_map) {
       const auto& t = m.translucency->thickness_map->texture;
-      colour_map_texels = std::max(colour_map_texels, static_cast<double>(t.width) * t.height);
+      double& texels = m.translucency->thickness_map->grey ? grey_map_texels : colour_map_texels;
+      texels = std::max(texels, static_cast<double>(t.width) * t.height);
     }
   }
   std::vector<gx::GxVariant> keys;
@@ -110,20 +116,33 @@ VariantSpace gx_space(const Scene& scene) {
   // The default (t=vertex, 256 texels) first.
   std::stable_partition(keys.begin(), keys.end(),
                         [](const gx::GxVariant& v) { return v == gx::GxVariant{}; });
-  for (const bool rgb565 : {false, true}) {
-    if (rgb565 && colour_map_texels == 0) break;
+  std::vector<std::optional<gx::TexFormat>> map_formats{std::nullopt};
+  if (colour_map_texels > 0) {
+    map_formats.push_back(gx::TexFormat::RGB565);
+    map_formats.push_back(gx::TexFormat::CMPR);
+  }
+  if (grey_map_texels > 0) map_formats.push_back(gx::TexFormat::I4);
+  // The bytes a texel of the map takes in that format (texture_format.h).
+  auto map_bytes = [](const gx::GxVariant& v, bool grey, double texels) {
+    return texels * gx::format_info(gx::map_texture_format(v, grey)).bits_per_texel / 8.0;
+  };
+  for (const std::optional<gx::TexFormat>& format : map_formats) {
     for (gx::GxVariant v : keys) {
-      v.map_rgb565 = rgb565;
+      v.map_format = format;
       Candidate c;
       c.variant = gx::to_string(v);
-      // GX_TF_I8 LUT [OGC gx.h GX_TF_I8]; a colour map GX_TF_RGBA8 (4 bytes) or RGB565 (2).
+      // GX_TF_I8 LUT [OGC gx.h GX_TF_I8]; the maps in their formats.
       c.texture_bytes = (v.lobe == gx::GxVariant::Lobe::Lut ? v.lut_size : 0) +
-                        colour_map_texels * (rgb565 ? 2 : 4);
+                        map_bytes(v, false, colour_map_texels) +
+                        map_bytes(v, true, grey_map_texels);
       s.candidates.push_back(c);
     }
   }
   if (colour_map_texels == 0)
-    s.left_out.push_back(":map=rgb565: no material has a colour thickness map (the same image)");
+    s.left_out.push_back(
+        ":map=rgb565, :map=cmpr: no material has a colour thickness map (the same image)");
+  if (grey_map_texels == 0)
+    s.left_out.push_back(":map=i4: no material has a grey thickness map (the same image)");
   s.left_out.push_back(
       ":colors=round, :lights=round-each: which of Dolphin's two emulations models the console "
       "(gx-hardware.md §2.4, §2.5), not a choice a port makes");

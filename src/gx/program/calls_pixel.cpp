@@ -1,6 +1,10 @@
 // The pixel engine, texture object, vertex format and cache calls.
 #include "gx/program/machine.h"
 
+#include <optional>
+
+#include "gx/texture_format.h"
+
 namespace lt::gx::interp {
 
 void add_pixel_calls(CallTable& table) {
@@ -57,10 +61,13 @@ void add_pixel_calls(CallTable& table) {
          integer(G::TexFormat, 0, 14), integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2),
          integer(G::Bool, 0, 1)},
         [](Machine& m) {
-          if (!is_modelled_format(m.u(4)))
+          // Every direct format is decoded (texture_decoder.h); a colour-indexed one needs
+          // GX_InitTexObjCI and a TLUT load, which the reader does not take yet.
+          const std::optional<TexFormat> format = tex_format_from_number(static_cast<int>(m.u(4)));
+          if (!format || is_indexed(*format))
             m.fail_arg(4,
-                       "texture format not modelled (GX_TF_I8, GX_TF_IA8, GX_TF_RGB565 and "
-                       "GX_TF_RGBA8 are)");
+                       "texture format not modelled (GX_TF_I4, GX_TF_I8, GX_TF_IA4, GX_TF_IA8, "
+                       "GX_TF_RGB565, GX_TF_RGB5A3, GX_TF_RGBA8 and GX_TF_CMPR are)");
           if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
           TexObject& t = m.tex(0);
           t.array = m.name(1);

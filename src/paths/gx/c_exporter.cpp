@@ -69,7 +69,8 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
         "gx: the exported program would be " + std::to_string(out.str().size() >> 20) +
             " MiB, over the " + std::to_string(cap >> 20) +
             " MiB a program file may be, so --program could not read it back "
-            "(a smaller thickness map, or --variant ...:map=rgb565, halves its array)");
+            "(a smaller thickness map, or --variant ...:map=rgb565, half its array, or "
+            ":map=cmpr, an eighth)");
   return out.str();
 }
 

@@ -428,8 +428,9 @@ GxInfo::GxInfo() {
       "t=vertex | t=texgen with :lut=N (2..1024), or lobe=xf-spec; t=texgen and lobe=xf-spec with "
       ":view=object (V and L per object: any camera and lights); the LUT variants with :base=tev "
       "(a directional light's translucency base as a TEV konst colour, COLOR0 unlit); any with "
-      ":colors=round, :lights=round-each, :map=rgb565, :out=xfb (the XFB the TV shows instead of "
-      "the EFB), :coverage=console (the console's sample point, not Dolphin's)";
+      ":colors=round, :lights=round-each, :map=FMT (the maps' texture format: rgb565, rgb5a3, "
+      "cmpr; ia8, ia4, i4), :out=xfb (the XFB the TV shows instead of the EFB), "
+      ":coverage=console (the console's sample point, not Dolphin's)";
   variants = {
       {"t=vertex",
        "t per vertex on the CPU as GX_VA_TEX0, 256-texel I8 LUT, 3 TEV stages a light (any "

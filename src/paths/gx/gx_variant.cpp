@@ -1,6 +1,8 @@
 #include "paths/gx/gx_variant.h"
 
+#include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -16,9 +18,20 @@ namespace {
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
-    ":lights=round-each, :map=rgb565, :base=tev (or :base=xf), :out=xfb (or :out=efb), "
+    ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4), "
+    ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
     ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0) and the vertex storage "
     ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto)";
+
+// The :map= values and the formats they name (gx_variant.h).
+struct MapFormatName {
+  const char* name;
+  TexFormat format;
+};
+constexpr MapFormatName kMapFormats[] = {
+    {"rgba8", TexFormat::RGBA8}, {"rgb565", TexFormat::RGB565}, {"rgb5a3", TexFormat::RGB5A3},
+    {"cmpr", TexFormat::CMPR},   {"i8", TexFormat::I8},         {"ia8", TexFormat::IA8},
+    {"ia4", TexFormat::IA4},     {"i4", TexFormat::I4}};
 
 // Whether all of `text` reads as one number into `out`.
 template <class T>
@@ -80,7 +93,13 @@ GxVariant parse_gx_variant(const std::string& text) {
     } else if (key == "lights" && first) {
       v.round_each_light = either("round-each", "sum") == "round-each";
     } else if (key == "map" && first) {
-      v.map_rgb565 = either("rgba8", "rgb565") == "rgb565";
+      const auto named = std::find_if(std::begin(kMapFormats), std::end(kMapFormats),
+                                      [&](const MapFormatName& m) { return value == m.name; });
+      if (named == std::end(kMapFormats))
+        bad("map=" + value +
+            " is not a map format (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4)");
+      if (named->format != TexFormat::RGBA8 && named->format != TexFormat::I8)
+        v.map_format = named->format;
     } else if (key == "out" && first) {
       v.out = either("efb", "xfb") == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
     } else if (key == "coverage" && first) {
@@ -129,7 +148,10 @@ std::string to_string(const GxVariant& v) {
   if (v.base_in_tev) s += ":base=tev";
   if (v.round_colors) s += ":colors=round";
   if (v.round_each_light) s += ":lights=round-each";
-  if (v.map_rgb565) s += ":map=rgb565";
+  if (v.map_format) {
+    for (const MapFormatName& m : kMapFormats)
+      if (m.format == *v.map_format) s += std::string(":map=") + m.name;
+  }
   if (v.out == GxVariant::Output::Xfb) s += ":out=xfb";
   if (v.coverage == CoverageRule::Console) s += ":coverage=console";
   if (v.light_range) {
@@ -145,6 +167,16 @@ std::string to_string(const GxVariant& v) {
     if (value != vertex_storage_value(f32, k)) s += ":" + std::string(k) + "=" + value;
   }
   return s;
+}
+
+bool is_grey_map_format(TexFormat format) {
+  return format == TexFormat::I4 || format == TexFormat::IA4 || format == TexFormat::I8 ||
+         format == TexFormat::IA8;
+}
+
+TexFormat map_texture_format(const GxVariant& v, bool grey_map) {
+  if (v.map_format && is_grey_map_format(*v.map_format) == grey_map) return *v.map_format;
+  return grey_map ? TexFormat::I8 : TexFormat::RGBA8;
 }
 
 std::string refusal(const Scene& scene, const GxVariant& v) {

@@ -20,9 +20,17 @@
 //                       the hwtests measured (default :coverage=dolphin: 9/16 from vertices
 //                       rounded to 1/16, Dolphin's software renderer); attributes, depth and
 //                       clipping stay Dolphin's (rasteriser.h console_subpixels)
-// One axis picks the texture format of a colour thickness map (a grey map is always GX_TF_I8):
-//   :map=rgb565         GX_TF_RGB565, 16 bits a texel (default :map=rgba8, GX_TF_RGBA8, 32 bits:
-//                       the map's 8 bits kept, as the vertex colours it replaces keep theirs)
+// One axis picks the texture format of the maps (thickness and albedo; docs/textures.md "A
+// map's format"). A colour format applies to colour maps, a grey format to grey maps (r = g = b
+// in every texel); the maps of the other kind keep their default, so one variant fits every
+// scene and `:map=rgb565` means what it always meant:
+//   :map=rgb565         colour maps GX_TF_RGB565, 16 bits a texel (default :map=rgba8,
+//                       GX_TF_RGBA8, 32 bits: the map's 8 bits kept, as the vertex colours it
+//                       replaces keep theirs)
+//   :map=rgb5a3         colour maps GX_TF_RGB5A3 (opaque: RGB555), 16 bits a texel
+//   :map=cmpr           colour maps GX_TF_CMPR, 4 bits a texel (gx/cmpr_encoder.h)
+//   :map=ia8, :map=ia4, :map=i4   grey maps GX_TF_IA8 (16 bits), IA4 (8), I4 (4) (default
+//                       :map=i8, GX_TF_I8, 8 bits)
 // One axis picks where a directional light's translucency base (light x albedo x tint x (a + s))
 // is multiplied in (docs/advise.md, "What the gx error is made of"):
 //   :base=tev           in the TEV, as a konst colour folded into the LUT stage, with COLOR0 the
@@ -52,6 +60,7 @@
 #include <string>
 
 #include "gx/gx_types.h"
+#include "gx/texture_format.h"
 #include "gx/vertex_storage.h"
 #include "scene/scene.h"
 
@@ -66,7 +75,10 @@ struct GxVariant {
   int lut_size = 256;
   bool round_colors = false;
   bool round_each_light = false;
-  bool map_rgb565 = false;  // colour thickness maps as GX_TF_RGB565 instead of GX_TF_RGBA8
+  // The maps' format when it is not the default (unset: colour maps GX_TF_RGBA8, grey maps
+  // GX_TF_I8); never RGBA8 or I8 (the parser keeps the default unset, so equal images compare
+  // equal).
+  std::optional<TexFormat> map_format;
   Output out = Output::Efb;
   CoverageRule coverage = CoverageRule::Dolphin;
   // A directional light's translucency base as a TEV konst colour instead of an XF light.
@@ -91,6 +103,11 @@ inline constexpr int kDefaultLutSize = 256;
 GxVariant parse_gx_variant(const std::string& text);
 // The canonical spelling ("t=vertex", "t=vertex:lut=64", "lobe=xf-spec").
 std::string to_string(const GxVariant& v);
+
+// The format a map of this kind (grey: r = g = b in every texel) is stored in under `v`.
+TexFormat map_texture_format(const GxVariant& v, bool grey_map);
+// Whether `format` is one a grey map takes under :map= (I4, IA4, I8, IA8), else a colour map's.
+bool is_grey_map_format(TexFormat format);
 
 // Why the variant cannot be exact for this scene (empty when it can): t=texgen and lobe=xf-spec
 // need t affine in the normal, so every light directional, an orthographic camera and H not

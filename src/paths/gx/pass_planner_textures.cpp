@@ -34,6 +34,24 @@ model::RationalFit lobe_fit(const SceneView& view, const Translucency& tr, const
       std::abs(d));
 }
 
+// How a map's format lays its texels out, for the array's comment (texture_format.h).
+std::string tile_order_note(TexFormat format) {
+  const TexFormatInfo& f = format_info(format);
+  const std::string tiles = std::to_string(f.tile_width) + "x" + std::to_string(f.tile_height) +
+                            " tiles of " + std::to_string(f.tile_bytes) + " bytes";
+  switch (format) {
+    case TexFormat::RGBA8: return tiles + ": 16 (a, r) pairs, then 16 (g, b) pairs";
+    case TexFormat::RGB565: return tiles + ", big-endian r5 g6 b5";
+    case TexFormat::RGB5A3: return tiles + ", big-endian 1 r5 g5 b5 (opaque)";
+    case TexFormat::CMPR:
+      return tiles + ", four 4x4 blocks of two RGB565 colours and 2-bit indices";
+    case TexFormat::IA8: return tiles + ", (alpha, intensity) byte pairs";
+    case TexFormat::IA4: return tiles + ", alpha in the high nibble, intensity in the low";
+    case TexFormat::I4: return tiles + ", two texels a byte, the first in the high nibble";
+    default: return tiles;
+  }
+}
+
 }  // namespace
 
 // The lobe LUT as a texture of one row in GX tile order (lobe_lut.h): t^p, or the material's
@@ -104,7 +122,8 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
                          "x" + std::to_string(texels.height) +
                          " texels; a GX texture is at most 1024 a side (resize the map)");
   const ThicknessTexture tex =
-      thickness_texture(texels.width, texels.height, *texels.rgb, texels.grey, variant_.map_rgb565);
+      thickness_texture(texels.width, texels.height, *texels.rgb,
+                        map_texture_format(variant_, texels.grey));
   const TextureObject& o = tex.texture;
   MapTexture m;
   m.scale = tex.scale;
@@ -118,14 +137,11 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
   t.map = role.map;
   t.bytes = o.data.size();
   t.what = std::string("The ") + role.what + ": " + t.format.name() + ", linear, clamped";
-  const bool i8 = o.format == kTexFormatI8, rgba8 = o.format == kTexFormatRGBA8;
   mp.arrays.push_back(
       {t.array, std::vector<u8>(o.data.begin(), o.data.end()),
        std::string(role.title) + " of material " + mat.name + ": " + std::to_string(o.width) + "x" +
            std::to_string(o.height) + " texels " + t.format.name() + " in GX tile order (" +
-           (i8      ? "8x4 tiles of 32 bytes"
-            : rgba8 ? "4x4 tiles of 64 bytes: 16 (a, r) pairs, then 16 (g, b) pairs"
-                    : "4x4 tiles of 32 bytes, big-endian r5 g6 b5") +
+           tile_order_note(static_cast<TexFormat>(o.format)) +
            "),\nrows from the image's bottom row up (v = 0 first), so the identity texgen's "
            "t = v reads the\ntexel a GL path samples at (u, v); a converter that stores the "
            "top row first needs\nt = 1 - v (a texture matrix with row 1 = (0, -1, 0, 1)). A "

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "gx/texture_encoder.h"
 #include "image/image.h"
 
 namespace lt::gx {
@@ -15,10 +16,22 @@ u8 to_byte(double v, double scale) {
   return to_unorm8(v / scale);
 }
 
+// The map as 8-bit RGBA (alpha 255) for the tree's encoders, memory row 0 its bottom row.
+Rgba8Image map_image(int width, int height, const std::vector<float>& rgb, double scale) {
+  Rgba8Image image;
+  image.width = width;
+  image.height = height;
+  image.texels.reserve(rgb.size() / 3);
+  for (size_t i = 0; i < rgb.size(); i += 3)
+    image.texels.push_back({to_byte(rgb[i], scale), to_byte(rgb[i + 1], scale),
+                            to_byte(rgb[i + 2], scale), 255});
+  return image;
+}
+
 }  // namespace
 
-ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb, bool grey,
-                                   bool rgb565) {
+ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb,
+                                   TexFormat format) {
   LT_CHECK(width >= 1 && width <= kMaxTextureSize && height >= 1 && height <= kMaxTextureSize,
            "the caller refuses thickness maps over 1024 texels a side");
   const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
@@ -26,8 +39,23 @@ ThicknessTexture thickness_texture(int width, int height, const std::vector<floa
   ThicknessTexture out;
   const float top = rgb.empty() ? 0.0f : *std::max_element(rgb.begin(), rgb.end());
   out.scale = top > 1.0f ? static_cast<double>(top) : 1.0;
-  const u8 format = grey ? kTexFormatI8 : rgb565 ? kTexFormatRGB565 : kTexFormatRGBA8;
-  out.format_name = grey ? "GX_TF_I8" : rgb565 ? "GX_TF_RGB565" : "GX_TF_RGBA8";
+  LT_CHECK(!is_indexed(format), "a map's format is a direct one (gx_variant.h)");
+  out.format_name = std::string("GX_TF_") + format_info(format).name;
+  TextureObject& tex = out.texture;
+  tex.width = width;
+  tex.height = height;
+  tex.format = static_cast<u8>(format);
+  tex.wrap_s = tex.wrap_t = 0;  // GX_CLAMP, as the reference's CLAMP_TO_EDGE
+  tex.linear = true;
+  const bool grey = format == TexFormat::I8, rgb565 = format == TexFormat::RGB565;
+  if (!grey && !rgb565 && format != TexFormat::RGBA8) {
+    // Every other format through the tree's encoders; I8, RGB565 and RGBA8 keep the loop below,
+    // whose bytes the frames made before :map=FMT hold (RGB565 from the float texel itself).
+    tex.data = encode_level(map_image(width, height, rgb, out.scale), format,
+                            EncodeOptions{Rounding::Nearest, TlutFormat::RGB565})
+                   .data;
+    return out;
+  }
   std::vector<u8> row_major;
   row_major.reserve(n * (grey ? 1 : rgb565 ? 2 : 4));
   // Texel i of `rgb` is memory row y = i / W: bottom row first, so t = v (the header).
@@ -44,13 +72,7 @@ ThicknessTexture thickness_texture(int width, int height, const std::vector<floa
       row_major.push_back(255);
     }
   }
-  TextureObject& tex = out.texture;
-  tex.width = width;
-  tex.height = height;
-  tex.format = format;
-  tex.wrap_s = tex.wrap_t = 0;  // GX_CLAMP, as the reference's CLAMP_TO_EDGE
-  tex.linear = true;
-  tex.data = to_tiles(format, width, height, row_major);
+  tex.data = to_tiles(tex.format, width, height, row_major);
   return out;
 }
 

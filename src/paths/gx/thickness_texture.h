@@ -7,7 +7,11 @@
 // is GX_TF_RGBA8 by default: 32 bits a texel, the 8 bits of an 8-bit map kept exactly, as the
 // vertex colours it replaces keep theirs (GX_RGBA8 CLR0); alpha is unused (255). `rgb565` picks
 // GX_TF_RGB565 instead: half the memory, 5/6/5 bits, each field expanded to 8 by bit
-// replication, so a texel moves by up to 4 (r, b) or 2 (g) of 255.
+// replication, so a texel moves by up to 4 (r, b) or 2 (g) of 255. The variant's `:map=` picks
+// the other formats (gx_variant.h map_texture_format): RGB5A3 and CMPR for a colour map, IA8,
+// IA4 and I4 for a grey one; their texels are the map's 8-bit texels (below) encoded by
+// gx/texture_encoder.h with `nearest` rounding (CMPR by gx/cmpr_encoder.h), alpha 255 (an IA
+// format's alpha and RGB5A3's opaque RGB555: the alpha is unused).
 //
 // A float (EXR) map gets the same formats: GX has no float texture format (GX_TF_* are I4..RGBA8,
 // the colour-indexed and CMPR ones), so each texel is quantised to the nearest 1/255 of `scale`
@@ -37,14 +41,16 @@ struct ThicknessTexture {
   // stored exactly), else the largest texel component (a float map over 1: the texels are
   // normalised to it and the generator moves it into the light's magnitude).
   double scale = 1;
-  const char* format_name = "GX_TF_I8";  // the GX_TF_* name for the program
+  std::string format_name = "GX_TF_I8";  // the GX_TF_* name for the program
 };
 
 // `rgb` holds width x height texels of three floats, row 0 the image's bottom row; every value
 // is finite and >= 0 (the scene checked it). Width and height are 1..1024 (the caller refuses
-// larger maps with the scene key).
-ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb, bool grey,
-                                   bool rgb565);
+// larger maps with the scene key). `format` is any non-indexed format (the caller picks it by
+// `grey`: gx_variant.h map_texture_format); a colour map in a grey format stores
+// the encoder's intensity (the mean of r, g and b).
+ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb,
+                                   TexFormat format);
 
 // A material's thickness map as the scene loaded it (load/thickness_map.h): float rgb texels,
 // row 0 the image's bottom row; empty when the material's thickness is not a map.

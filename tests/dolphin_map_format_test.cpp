@@ -1,0 +1,75 @@
+// Every map format `:map=FMT` offers (gx_variant.h) judged by Dolphin: the map scenes' colour
+// map (scenes/maps/sphere_rgb_ramp.json) as RGB565, RGB5A3 and CMPR, their grey map
+// (scenes/maps/sphere_map.json) as IA8, IA4 and I4, the six frames in one FIFO log (one Dolphin
+// start: dolphin_util.h dolphin_pictures with a scene a frame), each frame's texture in its
+// format in the log's memory and TexImage0 (frame_recording.cpp, bp_registers.cpp). Dolphin's
+// software renderer decodes them ([DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel]), and
+// its picture must be ltrender's `:out=xfb` one, pixel for pixel. The defaults (RGBA8, I8) are
+// judged by dolphin_judge_test.cpp's demo scenes.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <utility>
+
+#include "dolphin_util.h"
+#include "load/load_scene.h"
+#include "paths/gx/frame_recording.h"
+#include "paths/gx/gx_path.h"
+#include "render/session.h"
+#include "scene/scene.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+struct MapFrame {
+  const char* scene;
+  const char* variant;
+};
+
+TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
+  const MapFrame cases[] = {{"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=rgb565"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=rgb5a3"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ia8"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ia4"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4"}};
+  constexpr size_t kFrames = std::size(cases);
+  std::vector<Scene> scenes;
+  for (const MapFrame& c : cases) {
+    scenes.push_back(load_scene(test::source_dir() / c.scene));
+    scenes.back().width = test::kDolphinWidth;
+    scenes.back().height = test::kDolphinHeight;
+  }
+  std::vector<gx::ScenePrograms> programs;
+  for (size_t k = 0; k < kFrames; ++k)
+    programs.push_back(
+        gx::scene_programs_for(scenes[k], gx::parse_gx_variant(cases[k].variant), ""));
+  std::vector<gx::fifo::FrameInput> inputs;
+  for (size_t k = 0; k < kFrames; ++k)
+    inputs.push_back({gx::parse_gx_variant(cases[k].variant), &programs[k], &scenes[k]});
+  const std::vector<Image> dolphin = test::dolphin_pictures(scenes[0], inputs);
+  ASSERT_EQ(dolphin.size(), kFrames);
+  // The formats change the picture, so matching each frame means Dolphin decoded that frame's
+  // format, not one format six times: RGB565, RGB5A3 and CMPR differ from each other, IA8 from
+  // IA4. IA4 and I4 hold the same 4-bit intensity (the alpha is unused), so they draw one
+  // picture from different tiles (8x4 of bytes, 8x8 of nibbles: a wrong format reads others).
+  const std::pair<size_t, size_t> differing[] = {{0, 1}, {0, 2}, {1, 2}, {3, 4}, {3, 5}};
+  for (const auto& [k, j] : differing)
+    EXPECT_GT(test::picture_difference(dolphin[k], dolphin[j]).differ, 0u)
+        << cases[k].variant << " and " << cases[j].variant << " draw the same picture";
+  for (size_t k = 0; k < kFrames; ++k) {
+    const Image ours = render_scene(scenes[k], "gx", std::string(cases[k].variant) + ":out=xfb",
+                                    test::kDolphinWidth, test::kDolphinHeight);
+    const test::PictureDifference d = test::picture_difference(ours, dolphin[k]);
+    std::printf("| %s | %s | %zu | %zu | %d |\n", cases[k].scene, cases[k].variant,
+                test::covered_pixels(ours), d.differ, d.max);
+    EXPECT_GT(test::covered_pixels(ours), static_cast<size_t>(ours.pixel_count() / 50))
+        << cases[k].variant << ": the scene covers almost nothing";
+    EXPECT_EQ(d.differ, 0u) << cases[k].scene << " " << cases[k].variant << ": first at "
+                            << d.first_x << "," << d.first_y << ", max " << d.max << " LSB";
+  }
+}
+
+}  // namespace
+}  // namespace lt
