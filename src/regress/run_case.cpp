@@ -94,11 +94,11 @@ bool keeps_images(const RegressOptions& o, CaseStatus status) {
 }
 
 // Whether the first golden of `c` is within its path's bound against the ground truth
-// (paths/path_bounds.h; a recorded image is not yet a reference): what `path` (its frame drawn)
+// (paths/path_bounds.h; a recorded image is not yet a reference): what `render`, `path`'s frame,
 // breaks of it, or empty. `note` says when it is within, or that the path has no bound for any
 // scene (its error depends on the scene: every gx variant) and the golden is unchecked.
-std::string outside_path_bound(RenderSession& session, Path& path, const RegressCase& c,
-                               std::string& note) {
+std::string outside_path_bound(RenderSession& session, const Path& path, const Image& render,
+                               const RegressCase& c, std::string& note) {
   const std::string name = c.path->name + ":" + c.variant;
   const PathBound* bound = general_path_bound(c.path->name, c.variant);
   if (!bound) {
@@ -106,7 +106,8 @@ std::string outside_path_bound(RenderSession& session, Path& path, const Regress
            " has a bound on the demo scenes only (its error depends on the scene)";
     return "";
   }
-  const Comparison error = compare_with_reference(path, render_reference(session));
+  const TestEncoding encoding = test_encoding(path);  // before the reference is drawn
+  const Comparison error = compare_with_reference(render, encoding, render_reference(session));
   std::string broken;
   for (const std::string& b : pixel_bound_violations(*bound, error))
     broken += (broken.empty() ? "" : ", ") + b;
@@ -213,7 +214,8 @@ CaseResult run_case(const RegressOptions& o, const fs::path& scene_file, RenderS
       r.golden = to_override ? candidates.front().file : shared;
       const bool existed = to_override ? candidates.front().exists : have_shared;
       std::string note;
-      const std::string outside = have_shared ? "" : outside_path_bound(session, *path, c, note);
+      const std::string outside =
+          have_shared ? "" : outside_path_bound(session, *path, render, c, note);
       // Outside the bound the golden is still written, but warned: the bound table was measured
       // on the demo scenes, and a scene of another kind (a texture filtered at another size, a
       // power past what a LUT holds) may be right outside it; the reviewer decides.

@@ -21,8 +21,12 @@ TestEncoding test_encoding(const Path& path) {
 }
 
 Comparison compare_with_reference(Path& path, const Image& reference) {
-  return compare_images(path.result(), reference, test_encoding(path), TestEncoding::kFloat,
-                        Coverage::kBoth);
+  return compare_with_reference(path.result(), test_encoding(path), reference);
+}
+
+Comparison compare_with_reference(const Image& render, TestEncoding encoding,
+                                  const Image& reference) {
+  return compare_images(render, reference, encoding, TestEncoding::kFloat, Coverage::kBoth);
 }
 
 Comparison compare_with_golden(const Image& render, Image golden) {

@@ -26,6 +26,11 @@ TestEncoding test_encoding(const Path& path);
 
 // The error of `path`'s last frame (frame() already run) against `reference`.
 Comparison compare_with_reference(Path& path, const Image& reference);
+// The same for a frame already read back (`render`, encoded as test_encoding(path) says): a GL
+// path's result() reads the framebuffer, which another path drawn since (the reference's
+// G-buffer) has overwritten.
+Comparison compare_with_reference(const Image& render, TestEncoding encoding,
+                                  const Image& reference);
 
 // The error of `render` against `golden`, an image of the same size read from an 8-bit file:
 // both compared as their bytes (the render as the 8-bit image it would be written as). A PNG
