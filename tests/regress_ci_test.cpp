@@ -24,15 +24,7 @@ namespace {
 class RegressCi : public ::testing::Test {
  protected:
   void SetUp() override {
-    test::write_quad_scene(dir.path(), "quad_a", 4);
-    test::write_quad_scene(dir.path(), "quad_b", 16);
-    RegressOptions o;
-    o.inputs = {dir / "quad_a.json", dir / "quad_b.json"};
-    o.goldens = dir / "goldens";
-    o.paths = "reference,glsl,combiners";
-    o.update = true;
-    o.quiet = true;
-    ASSERT_EQ(run_regress(o).count(CaseStatus::kCreated), 6u);
+    ASSERT_EQ(test::write_two_quads_with_goldens(dir.path(), "reference,glsl,combiners"), 6u);
     test::push_pixel(dir / "goldens" / "quad_b__glsl.png", 20, 15, 9);
     test::push_pixel(dir / "goldens" / "quad_a__reference.png", 10, 10, 1);
     cwd = fs::current_path();

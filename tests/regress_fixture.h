@@ -5,6 +5,7 @@
 #include <string>
 
 #include "image/image.h"
+#include "regress/regress.h"
 #include "test_util.h"
 
 namespace lt::test {
@@ -24,6 +25,21 @@ inline void write_quad_scene(const fs::path& dir, const std::string& name, doubl
     "lights": [{"type": "directional", "direction": [0.3, 0.2, 1], "translucency_scale": 2}],
     "objects": [{"mesh": "quad.obj", "material": "m"}])" +
                                          (extra.empty() ? "" : ", " + extra) + "}");
+}
+
+// Two quad scenes in `dir` (quad_a at power 4, quad_b at 16) and their goldens in dir/goldens
+// through `paths`, written by a `regress --update` run in this process: where the regress tests
+// that run the command start. Returns how many goldens it created.
+inline size_t write_two_quads_with_goldens(const fs::path& dir, const std::string& paths) {
+  write_quad_scene(dir, "quad_a", 4);
+  write_quad_scene(dir, "quad_b", 16);
+  RegressOptions o;
+  o.inputs = {dir / "quad_a.json", dir / "quad_b.json"};
+  o.goldens = dir / "goldens";
+  o.paths = paths;
+  o.update = true;
+  o.quiet = true;
+  return run_regress(o).count(CaseStatus::kCreated);
 }
 
 // Adds `lsb` to the red channel of one pixel of an 8-bit PNG (a golden), in place.

@@ -36,15 +36,7 @@ class HookScope {
 class RegressIsolation : public ::testing::Test {
  protected:
   void SetUp() override {
-    test::write_quad_scene(dir.path(), "quad_a", 4);
-    test::write_quad_scene(dir.path(), "quad_b", 16);
-    RegressOptions o;
-    o.inputs = {dir / "quad_a.json", dir / "quad_b.json"};
-    o.goldens = dir / "goldens";
-    o.paths = "reference,glsl";
-    o.update = true;
-    o.quiet = true;
-    ASSERT_EQ(run_regress(o).count(CaseStatus::kCreated), 4u);
+    ASSERT_EQ(test::write_two_quads_with_goldens(dir.path(), "reference,glsl"), 4u);
   }
   std::string command() const {
     return "regress " + (dir / "quad_a.json").string() + " " + (dir / "quad_b.json").string() +
