@@ -9,12 +9,12 @@
 
 #include "advise/hard_cases.h"
 #include "advise/material_error.h"
-#include "metrics/reference_edge_split.h"
 #include "advise/mesh_refinement.h"
 #include "advise/target.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "load/load_scene.h"
+#include "metrics/reference_edge_split.h"
 #include "paths/common/gbuffer.h"
 #include "render/evaluate.h"
 #include "render/session.h"

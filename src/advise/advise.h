@@ -59,8 +59,8 @@ struct CandidateResult {
   std::string over_profile;  // the budget's first overrun; not rendered
   std::string pruned;        // why it was not rendered (empty when it was)
   bool rendered = false;
-  std::vector<Cost> cost;                                    // per material (scene.materials order)
-  std::vector<ErrorStats> error;                             // per material, when rendered
+  std::vector<Cost> cost;         // per material (scene.materials order)
+  std::vector<ErrorStats> error;  // per material, when rendered
   // Per material, when rendered: its pixels over 1 LSB as edge shifts and shading
   // (reference_edge_split.h), shown beside `error`.
   std::vector<EdgeShiftSplit> edge_split;
@@ -75,8 +75,8 @@ struct CandidateResult {
 
 // One mesh density of a material's objects, rendered with the refinement's variant.
 struct RefinementStep {
-  std::size_t vertices = 0;  // of the material's objects
-  ErrorStats error;          // the material's pixels
+  std::size_t vertices = 0;   // of the material's objects
+  ErrorStats error;           // the material's pixels
   EdgeShiftSplit edge_split;  // its pixels over 1 LSB classed (reference_edge_split.h)
   std::size_t non_finite = 0;
 };

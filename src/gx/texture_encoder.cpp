@@ -26,11 +26,16 @@ namespace {
 // The expansion the decoder applies to a field of `bits` bits (texture_decoder.h).
 int expand(int field, int bits) {
   switch (bits) {
-    case 3: return bits3_to_8(field);
-    case 4: return bits4_to_8(field);
-    case 5: return bits5_to_8(field);
-    case 6: return bits6_to_8(field);
-    default: return field;  // 8
+    case 3:
+      return bits3_to_8(field);
+    case 4:
+      return bits4_to_8(field);
+    case 5:
+      return bits5_to_8(field);
+    case 6:
+      return bits6_to_8(field);
+    default:
+      return field;  // 8
   }
 }
 
@@ -61,16 +66,15 @@ u16 encode_rgb565(const Color8& c, Rounding rounding) {
 }
 
 u16 encode_rgb5a3(const Color8& c, Rounding rounding, bool opaque_image) {
-  const bool opaque = rounding == Rounding::Truncate ? opaque_image
-                                                     : quantise_component(c.a, 3, rounding) == 7;
+  const bool opaque =
+      rounding == Rounding::Truncate ? opaque_image : quantise_component(c.a, 3, rounding) == 7;
   if (opaque)
     return static_cast<u16>(0x8000 | quantise_component(c.r, 5, rounding) << 10 |
                             quantise_component(c.g, 5, rounding) << 5 |
                             quantise_component(c.b, 5, rounding));
-  return static_cast<u16>(quantise_component(c.a, 3, rounding) << 12 |
-                          quantise_component(c.r, 4, rounding) << 8 |
-                          quantise_component(c.g, 4, rounding) << 4 |
-                          quantise_component(c.b, 4, rounding));
+  return static_cast<u16>(
+      quantise_component(c.a, 3, rounding) << 12 | quantise_component(c.r, 4, rounding) << 8 |
+      quantise_component(c.g, 4, rounding) << 4 | quantise_component(c.b, 4, rounding));
 }
 
 namespace {
@@ -87,8 +91,12 @@ void store_texel(EncodedLevel& out, int x, int y, int value) {
     case 4:
       out.data[at.byte] |= static_cast<u8>(at.high_nibble ? value << 4 : value);
       break;
-    case 8: out.data[at.byte] = static_cast<u8>(value); break;
-    default: put16(out.data, at.byte, static_cast<u16>(value)); break;
+    case 8:
+      out.data[at.byte] = static_cast<u8>(value);
+      break;
+    default:
+      put16(out.data, at.byte, static_cast<u16>(value));
+      break;
   }
 }
 
@@ -127,8 +135,8 @@ std::vector<EncodedLevel> encode_chain(const std::vector<Rgba8Image>& levels, Te
   for (const Rgba8Image& level : levels)
     all.texels.insert(all.texels.end(), level.texels.begin(), level.texels.end());
   all.width = static_cast<int>(all.texels.size());
-  const Palette palette = make_palette(all, format_info(format).tlut_entries, options.tlut_format,
-                                       options.rounding);
+  const Palette palette =
+      make_palette(all, format_info(format).tlut_entries, options.tlut_format, options.rounding);
   size_t first = 0;
   for (const Rgba8Image& level : levels) {
     out.push_back(indexed_level(level, format, palette, first, options.tlut_format));
@@ -147,8 +155,9 @@ EncodedLevel encode_level(const Rgba8Image& image, TexFormat format, const Encod
   const Rounding r = options.rounding;
   if (is_indexed(format))
     return indexed_level(
-        image, format, make_palette(image, format_info(format).tlut_entries, options.tlut_format, r),
-        0, options.tlut_format);
+        image, format,
+        make_palette(image, format_info(format).tlut_entries, options.tlut_format, r), 0,
+        options.tlut_format);
   EncodedLevel out;
   out.format = format;
   out.width = image.width;
@@ -160,17 +169,26 @@ EncodedLevel encode_level(const Rgba8Image& image, TexFormat format, const Encod
     for (int x = 0; x < image.width; ++x) {
       const Color8& c = image.at(x, y);
       switch (format) {
-        case TexFormat::I4: store_texel(out, x, y, quantise_component(intensity_of(c, r), 4, r)); break;
-        case TexFormat::I8: store_texel(out, x, y, intensity_of(c, r)); break;
+        case TexFormat::I4:
+          store_texel(out, x, y, quantise_component(intensity_of(c, r), 4, r));
+          break;
+        case TexFormat::I8:
+          store_texel(out, x, y, intensity_of(c, r));
+          break;
         case TexFormat::IA4:  // alpha the high nibble
-          store_texel(out, x, y,
-                quantise_component(c.a, 4, r) << 4 | quantise_component(intensity_of(c, r), 4, r));
+          store_texel(
+              out, x, y,
+              quantise_component(c.a, 4, r) << 4 | quantise_component(intensity_of(c, r), 4, r));
           break;
         case TexFormat::IA8:  // alpha the first byte
           store_texel(out, x, y, c.a << 8 | intensity_of(c, r));
           break;
-        case TexFormat::RGB565: store_texel(out, x, y, encode_rgb565(c, r)); break;
-        case TexFormat::RGB5A3: store_texel(out, x, y, encode_rgb5a3(c, r, opaque_image)); break;
+        case TexFormat::RGB565:
+          store_texel(out, x, y, encode_rgb565(c, r));
+          break;
+        case TexFormat::RGB5A3:
+          store_texel(out, x, y, encode_rgb5a3(c, r, opaque_image));
+          break;
         case TexFormat::RGBA8: {  // (a, r) in the tile's first half, (g, b) 32 bytes on
           const TexelAddress at = texel_address(format, image.width, x, y);
           out.data[at.byte] = c.a;
@@ -179,7 +197,9 @@ EncodedLevel encode_level(const Rgba8Image& image, TexFormat format, const Encod
           out.data[at.byte + 33] = c.b;
           break;
         }
-        default: LT_CHECK(false, "format handled above"); break;
+        default:
+          LT_CHECK(false, "format handled above");
+          break;
       }
     }
   }

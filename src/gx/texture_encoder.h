@@ -12,12 +12,12 @@
 // CMPR has its own encoder (cmpr_encoder.h), fitted to the console's 3/8-5/8 palette.
 #pragma once
 
-#include <string_view>
 #include <optional>
+#include <string_view>
 #include <vector>
 
-#include "gx/texture_format.h"
 #include "gx/gx_types.h"
+#include "gx/texture_format.h"
 
 namespace lt::gx {
 

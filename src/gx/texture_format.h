@@ -31,7 +31,7 @@ enum class TexFormat : u8 {
 enum class TlutFormat : u8 { IA8 = 0, RGB565 = 1, RGB5A3 = 2 };
 
 inline constexpr TexFormat kAllTexFormats[] = {
-    TexFormat::I4,     TexFormat::I8,    TexFormat::IA4, TexFormat::IA8,
+    TexFormat::I4,     TexFormat::I8,     TexFormat::IA4,   TexFormat::IA8,
     TexFormat::RGB565, TexFormat::RGB5A3, TexFormat::RGBA8, TexFormat::CI4,
     TexFormat::CI8,    TexFormat::CI14X2, TexFormat::CMPR};
 inline constexpr TlutFormat kAllTlutFormats[] = {TlutFormat::IA8, TlutFormat::RGB565,

@@ -75,7 +75,8 @@ std::vector<u8> write_tpl(const std::vector<TplTexture>& textures) {
       put_u16(out, palette_header, static_cast<u32>(t.tlut.size() / 2));
       put_u32(out, palette_header + 4, static_cast<u32>(t.tlut_format));
       put_u32(out, palette_header + 8, static_cast<u32>(tlut_at[k]));
-      std::copy(t.tlut.begin(), t.tlut.end(), out.begin() + static_cast<std::ptrdiff_t>(tlut_at[k]));
+      std::copy(t.tlut.begin(), t.tlut.end(),
+                out.begin() + static_cast<std::ptrdiff_t>(tlut_at[k]));
       palette_header += kPaletteHeaderBytes;
     }
   }
@@ -94,8 +95,9 @@ struct Reader {
   }
   void need(size_t offset, size_t count, const char* what) const {
     if (offset > bytes.size() || count > bytes.size() - offset)
-      fail(offset, std::string(what) + " (" + std::to_string(count) + " bytes) runs past the end of the file (" +
-                       std::to_string(bytes.size()) + " bytes): truncated TPL");
+      fail(offset, std::string(what) + " (" + std::to_string(count) +
+                       " bytes) runs past the end of the file (" + std::to_string(bytes.size()) +
+                       " bytes): truncated TPL");
   }
   u32 u16_at(size_t offset) const { return u32{bytes[offset]} << 8 | bytes[offset + 1]; }
   u32 u32_at(size_t offset) const { return u16_at(offset) << 16 | u16_at(offset + 2); }
@@ -108,7 +110,8 @@ TplTexture read_texture(const Reader& r, size_t descriptor) {
   TplTexture t;
   t.height = static_cast<int>(r.u16_at(ih));
   t.width = static_cast<int>(r.u16_at(ih + 2));
-  const std::optional<TexFormat> format = tex_format_from_number(static_cast<int>(r.u32_at(ih + 4)));
+  const std::optional<TexFormat> format =
+      tex_format_from_number(static_cast<int>(r.u32_at(ih + 4)));
   if (!format) r.fail(ih + 4, "unknown texture format " + std::to_string(r.u32_at(ih + 4)));
   t.format = *format;
   if (t.width < 1 || t.width > kMaxTextureSize || t.height < 1 || t.height > kMaxTextureSize)
@@ -117,11 +120,16 @@ TplTexture read_texture(const Reader& r, size_t descriptor) {
   t.wrap_s = r.u32_at(ih + 12);
   t.wrap_t = r.u32_at(ih + 16);
   for (size_t at : {ih + 12, ih + 16})
-    if (r.u32_at(at) > 2) r.fail(at, "wrap mode " + std::to_string(r.u32_at(at)) + " is not GX_CLAMP, GX_REPEAT or GX_MIRROR");
+    if (r.u32_at(at) > 2)
+      r.fail(at, "wrap mode " + std::to_string(r.u32_at(at)) +
+                     " is not GX_CLAMP, GX_REPEAT or GX_MIRROR");
   t.min_filter = r.u32_at(ih + 20);
   t.mag_filter = r.u32_at(ih + 24);
-  if (t.min_filter > 5) r.fail(ih + 20, "min filter " + std::to_string(t.min_filter) + " is not GX_NEAR .. GX_LIN_MIP_LIN");
-  if (t.mag_filter > 1) r.fail(ih + 24, "mag filter " + std::to_string(t.mag_filter) + " is not GX_NEAR or GX_LINEAR");
+  if (t.min_filter > 5)
+    r.fail(ih + 20,
+           "min filter " + std::to_string(t.min_filter) + " is not GX_NEAR .. GX_LIN_MIP_LIN");
+  if (t.mag_filter > 1)
+    r.fail(ih + 24, "mag filter " + std::to_string(t.mag_filter) + " is not GX_NEAR or GX_LINEAR");
   t.lod_bias = std::bit_cast<float>(r.u32_at(ih + 28));
   t.edge_lod = r.bytes[ih + 32];
   t.min_lod = r.bytes[ih + 33];
@@ -136,7 +144,9 @@ TplTexture read_texture(const Reader& r, size_t descriptor) {
   t.data.assign(r.bytes.begin() + static_cast<std::ptrdiff_t>(data),
                 r.bytes.begin() + static_cast<std::ptrdiff_t>(data + size));
   if (is_indexed(t.format)) {
-    if (ph == 0) r.fail(descriptor + 4, std::string("a ") + format_info(t.format).name + " texture without a palette");
+    if (ph == 0)
+      r.fail(descriptor + 4,
+             std::string("a ") + format_info(t.format).name + " texture without a palette");
     r.need(ph, kPaletteHeaderBytes, "the palette header");
     const size_t entries = r.u16_at(ph);
     if (entries == 0 || entries > static_cast<size_t>(format_info(t.format).tlut_entries))

@@ -1,8 +1,7 @@
 // The pixel engine, texture object, vertex format and cache calls.
-#include "gx/program/machine.h"
-
 #include <optional>
 
+#include "gx/program/machine.h"
 #include "gx/texture_format.h"
 
 namespace lt::gx::interp {
