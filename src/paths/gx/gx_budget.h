@@ -42,8 +42,9 @@ FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& progr
 // The textures a scene's frame loads, as MEM1 holds them: each distinct texture once (passes and
 // materials that load the same texels share one copy), its bytes by GX_GetTexBufferSize's rule
 // (gx/texture_format.h level_bytes: whole tiles), and a colour-indexed texture's palette (2 bytes
-// an entry, from a 32-byte boundary, as GX_InitTlutObj's memory must be). Not counted: the TMEM
-// a texture occupies while drawn (a cache region of GX_Init's, not the texture's size).
+// an entry, from a 32-byte boundary: GX_InitTlutObj keeps the palette's address shifted right by
+// 5 [OGC gx.c GX_InitTlutObj]). Not counted: the TMEM a texture occupies while drawn (a cache
+// region of GX_Init's, not the texture's size).
 struct FrameTextureCost {
   std::size_t textures = 0;
   std::size_t texture_bytes = 0;
