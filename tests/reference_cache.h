@@ -5,7 +5,7 @@
 // its scene: half of their work, about a third of the suite (issue 28 measured it). The
 // reference is deterministic, so it is rendered once per scene per ctest run.
 //
-// Only under ctest: the fixture test BoundsReferenceCache.Clear (tests/slow_tests.cmake) empties
+// Only under ctest: the fixture test BoundsReferenceCache.Clear (tests/schedule.json) empties
 // the folder at the start of every run and names it in LT_TEST_REFERENCE_CACHE for the bounds
 // tests, so an image never outlives the build and the scene files it was rendered from. A test
 // run without that variable renders its own reference, as before.
