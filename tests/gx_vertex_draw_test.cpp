@@ -19,6 +19,7 @@
 #include "gx/fifo/stream_reader.h"
 #include "load/load_scene.h"
 #include "paths/gx/frame_recording.h"
+#include "paths/gx/gx_budget.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/indexed_recording.h"
@@ -220,6 +221,27 @@ TEST(GxVertexDraw, TheVariantsBudgetIsWhatItsFifoLogSends) {
       EXPECT_EQ(cost.draw.array_bytes > 0, std::string(draw) != "direct") << name;
     }
   }
+}
+
+// The budget's details for a variant: its own figures beside the F32 immediate and the stored
+// display list ones; the default variant's are the F32 immediate figures, a stored display
+// list's those of the same storage as a list.
+TEST(GxVertexDraw, TheBudgetGivesTheVariantsOwnFigures) {
+  auto details = [](const std::string& variant) {
+    std::map<std::string, int> out;
+    for (const budget::Detail& d : gx_budget_scene(draw_cubes(), variant, "").details)
+      if (d.number) out[d.key] = *d.number;
+    return out;
+  };
+  const auto f32 = details("t=vertex");
+  for (const char* k : {"vertex_bytes", "fifo_bytes", "xf_vertices", "triangles"})
+    EXPECT_EQ(f32.at(k), f32.at(std::string("f32_") + k)) << k;
+  EXPECT_EQ(f32.at("array_bytes"), 0);
+  EXPECT_EQ(f32.at("display_list_bytes"), 0);
+  const auto list = details("t=vertex:vtx=s16:nrm=s8:clr=rgb565:uv=s16:draw=list");
+  for (const char* k : {"vertex_bytes", "array_bytes", "refreshed_array_bytes",
+                        "display_list_bytes", "fifo_bytes", "xf_vertices", "triangles"})
+    EXPECT_EQ(list.at(k), list.at(std::string("stored_") + k)) << k;
 }
 
 // A cube of 24 vertices (4 a face, so each face has its own normal) and 12 triangles, drawn
