@@ -34,8 +34,7 @@ TEST_P(DolphinVertexDraw, DolphinsFramesOfIndexedStripsAndListsAreLtrendersXfbPi
 }
 
 INSTANTIATE_TEST_SUITE_P(DemoScenes, DolphinVertexDraw,
-                         ::testing::Values("scenes/albedo_checker.json",
-                                           "scenes/baked_blob.json"),
+                         ::testing::Values("scenes/albedo_checker.json", "scenes/baked_blob.json"),
                          [](const auto& info) { return test::scene_param_name(info.param); });
 
 }  // namespace

@@ -19,9 +19,9 @@
 #include "paths/gx/frame_recording.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_budget.h"
-#include "paths/gx/object_draw.h"
 #include "paths/gx/gx_export.h"
 #include "paths/gx/lobe_lut.h"
+#include "paths/gx/object_draw.h"
 #include "paths/gx/program_check.h"
 #include "paths/gx/scene_vertices.h"
 
