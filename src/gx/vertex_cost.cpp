@@ -51,8 +51,7 @@ DrawCost immediate_list_cost(std::size_t triangles, std::size_t vertex_bytes) {
   return c;
 }
 
-DrawCost display_list_strip_cost(std::size_t strip_vertices, std::size_t vertex_bytes,
-                                 const IndexedArrays& arrays) {
+DrawCost immediate_strip_cost(std::size_t strip_vertices, std::size_t vertex_bytes) {
   DrawCost c;
   c.vertex_bytes = vertex_bytes;
   for (std::size_t n : strip_draw_counts(strip_vertices)) {
@@ -61,10 +60,26 @@ DrawCost display_list_strip_cost(std::size_t strip_vertices, std::size_t vertex_
     c.triangles += n - 2;
     c.command_bytes += kGxBeginBytes + n * vertex_bytes;
   }
-  for (int a : arrays.arrays) c.array_bytes += cache_lines_bytes(arrays.bytes[static_cast<size_t>(a)].size());
-  c.display_list_bytes = cache_lines_bytes(c.command_bytes);
-  c.fifo_bytes = kCallDisplayListBytes + 2 * kCpLoadBytes * arrays.arrays.size();
+  c.fifo_bytes = c.command_bytes;
   return c;
+}
+
+DrawCost indexed_cost(DrawCost c, const IndexedArrays& arrays) {
+  for (int a : arrays.arrays)
+    c.array_bytes += cache_lines_bytes(arrays.bytes[static_cast<size_t>(a)].size());
+  c.fifo_bytes += 2 * kCpLoadBytes * arrays.arrays.size();
+  return c;
+}
+
+DrawCost in_display_list(DrawCost c) {
+  c.display_list_bytes = cache_lines_bytes(c.command_bytes);
+  c.fifo_bytes = c.fifo_bytes - c.command_bytes + kCallDisplayListBytes;
+  return c;
+}
+
+DrawCost display_list_strip_cost(std::size_t strip_vertices, std::size_t vertex_bytes,
+                                 const IndexedArrays& arrays) {
+  return indexed_cost(in_display_list(immediate_strip_cost(strip_vertices, vertex_bytes)), arrays);
 }
 
 }  // namespace lt::gx

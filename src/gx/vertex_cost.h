@@ -48,6 +48,15 @@ std::vector<std::size_t> strip_draw_counts(std::size_t vertices);
 
 // `triangles` triangles sent in immediate mode, `vertex_bytes` bytes a vertex.
 DrawCost immediate_list_cost(std::size_t triangles, std::size_t vertex_bytes);
+// A strip of `strip_vertices` vertices sent in immediate mode (GX_TRIANGLESTRIP draws of
+// strip_draw_counts), `vertex_bytes` bytes a vertex.
+DrawCost immediate_strip_cost(std::size_t strip_vertices, std::size_t vertex_bytes);
+// `draw` (of index-only vertices) over `arrays`: their MEM1 bytes, and the GX_SetArray of each
+// array the frame sends before the draw.
+DrawCost indexed_cost(DrawCost draw, const IndexedArrays& arrays);
+// `draw` (of index-only vertices) recorded in a display list: the list's MEM1 bytes, and the
+// frame sends GX_CallDispList instead of the draw's commands.
+DrawCost in_display_list(DrawCost draw);
 // A strip of `strip_vertices` vertices of `vertex_bytes` (index) bytes in a display list, over
 // `arrays`: the frame sends each array's GX_SetArray and the call.
 DrawCost display_list_strip_cost(std::size_t strip_vertices, std::size_t vertex_bytes,

@@ -17,27 +17,30 @@ size_t stream_color_bytes(u32 type) {
   return type < 6 ? kSizes[type] : 4;
 }
 
-// The bytes one vertex takes under the CP registers' descriptor and VAT 0 (direct attributes
-// only, as the stream sends them: F32 by default, a stored mesh's types otherwise; no NBT).
+// The bytes one vertex takes under the CP registers' descriptor and VAT 0: each attribute's
+// direct bytes (F32 by default, a stored mesh's types otherwise; no NBT), or its index, 1 byte
+// for GX_INDEX8 (2) and 2 for GX_INDEX16 (3) [OGC gx.h L82-85] [DHW VertexLoaderBase.cpp
+// GetVertexSize].
 size_t stream_vertex_size(const RegisterFile& r) {
   const u32 lo = r.cp[0x50], hi = r.cp[0x60];
   const u32 vat_a = r.cp[0x70], vat_b = r.cp[0x80], vat_c = r.cp[0x90];
   size_t n = 0;
+  // `input` the descriptor's 2-bit field, `direct` the bytes sent directly.
+  auto add = [&](u32 input, size_t direct) { n += input >= 2 ? input - 1 : input ? direct : 0; };
   // VAT A: position count bit 0 (XY, XYZ) and type 1-3, normal type 10-12, colour types 14-16
   // and 18-20 [DHW CPMemory.h UVAT_group0].
-  if (field(lo, 9, 2))
-    n += (field(vat_a, 0, 1) ? 3 : 2) * stream_component_bytes(field(vat_a, 1, 3));
-  if (field(lo, 11, 2)) n += 3 * stream_component_bytes(field(vat_a, 10, 3));
-  if (field(lo, 13, 2)) n += stream_color_bytes(field(vat_a, 14, 3));
-  if (field(lo, 15, 2)) n += stream_color_bytes(field(vat_a, 18, 3));
+  add(field(lo, 9, 2), (field(vat_a, 0, 1) ? 3 : 2) * stream_component_bytes(field(vat_a, 1, 3)));
+  add(field(lo, 11, 2), 3 * stream_component_bytes(field(vat_a, 10, 3)));
+  add(field(lo, 13, 2), stream_color_bytes(field(vat_a, 14, 3)));
+  add(field(lo, 15, 2), stream_color_bytes(field(vat_a, 18, 3)));
   // Each TEXn's element count bit: VAT A 21; VAT B 0, 9, 18, 27; VAT C 5, 14, 23; its type the
   // three bits above it [DHW CPMemory.h UVAT_group0..2].
   const u32 vat[8] = {vat_a, vat_b, vat_b, vat_b, vat_b, vat_c, vat_c, vat_c};
   const int count_bit[8] = {21, 0, 9, 18, 27, 5, 14, 23};
   for (size_t t = 0; t < 8; ++t) {
-    if (!field(hi, 2 * static_cast<int>(t), 2)) continue;
     const bool st = field(vat[t], count_bit[t], 1) != 0;
-    n += (st ? 2 : 1) * stream_component_bytes(field(vat[t], count_bit[t] + 1, 3));
+    add(field(hi, 2 * static_cast<int>(t), 2),
+        (st ? 2 : 1) * stream_component_bytes(field(vat[t], count_bit[t] + 1, 3)));
   }
   return n;
 }
@@ -66,6 +69,7 @@ StreamEvents read_stream(const std::vector<u8>& b, RegisterFile& r, const std::s
       const u8 reg = b[at++];
       r.cp[reg] = u32_();
       ++ev.cp_loads;
+      if (reg >= 0xa0 && reg < 0xc0) ++ev.array_loads;
     } else if (op == 0x10) {
       const u32 head = u32_();
       const u32 count = (head >> 16) + 1, address = head & 0xffff;
@@ -93,6 +97,9 @@ StreamEvents read_stream(const std::vector<u8>& b, RegisterFile& r, const std::s
       }
       r.bp[reg] = value;
       r.bp_written.set(reg);
+    } else if (op == 0x40) {  // CALL_DL: address, size [DHW OpcodeDecoding.h GX_CMD_CALL_DL]
+      const u32 address = u32_();
+      ev.display_lists.push_back({start, address, u32_()});
     } else if (op >= 0x80 && op < 0xc0) {
       need(2);
       StreamDraw d;

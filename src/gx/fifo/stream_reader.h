@@ -33,10 +33,19 @@ struct StreamDraw {
   size_t vertex_size = 0;  // bytes
 };
 
+// A GX_CallDispList in the stream: the list is in RAM, not read here (the caller finds its bytes,
+// e.g. in a FIFO log's memory updates, and reads them with the registers as they stand).
+struct StreamCall {
+  size_t offset = 0;  // of the command in the stream
+  u32 address = 0, size = 0;
+};
+
 struct StreamEvents {
   std::vector<StreamDraw> draws;
+  std::vector<StreamCall> display_lists;
   std::vector<u32> copies;  // values written to BP 0x52 (EFB copy triggers), in order
   size_t bp_loads = 0, cp_loads = 0, xf_words = 0;
+  size_t array_loads = 0;  // CP loads of an array's base (0xA0 + n) or stride (0xB0 + n)
 };
 
 // Applies every command of `bytes` to `regs`, calling `on_draw` (if given) at each draw with the

@@ -9,6 +9,7 @@
 #include "gx/vertex_quantiser.h"
 #include "image/image.h"
 #include "paths/gx/camera_transform.h"
+#include "paths/gx/indexed_recording.h"
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/scene_vertices.h"
 
@@ -181,6 +182,7 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     CommandStream out;
     FifoFrame frame;
     TextureMemory memory(scene.file.string());
+    VertexMemory vertex_memory(scene.file.string());  // :draw=indexed, strips, list
     write_gx_init(out, size);
     write_view_xf(out, view_transform(glm::mat3(view.view), scene.camera, size), size);
     // The frame's pixel format before its clearing copy, as a game sets it once at start-up:
@@ -208,7 +210,11 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
       write_pass_xf(out, state);
       write_pass_bp(out, state, textures, addresses);
       for (size_t i : d.objects) {
-        if (stored)
+        if (in.variant.draw != GxVariant::Draw::Direct)
+          draw_indexed_object(out, frame, vertex_memory, state, streams[i],
+                              stored ? &object_meshes[i] : nullptr, scene.objects[i].mesh,
+                              in.variant, static_cast<size_t>(d.pass));
+        else if (stored)
           draw_stored_object(out, state, streams[i], object_meshes[i], scene.objects[i].mesh,
                              in.variant.storage, static_cast<size_t>(d.pass));
         else

@@ -7,6 +7,8 @@
 //   0x00000000-0x0014a000  written by the FIFO player's own initial clearing copy (probe README)
 //   0x00200000             the XFB, YUYV 4:2:2, width x height x 2 bytes (<= 0xa5000)
 //   0x00800000             the target of each frame's clearing copy, RGBA8 (<= 0x14a000)
+//   0x00a00000-0x01000000  vertex arrays and display lists (:draw=indexed, strips, list:
+//                          indexed_recording.h), each distinct one once
 //   0x01000000-0x01040000  the FIFO ring the log names (fifo_log.h)
 //   0x01040000-0x01800000  textures: each distinct one once, in tile order
 #pragma once

@@ -1,15 +1,11 @@
 #include "paths/gx/gx_budget.h"
 
 #include <algorithm>
-#include <map>
-#include <set>
 
 #include "core/error.h"
-#include "gx/fifo/cp_registers.h"
 #include "gx/texture_format.h"
-#include "mesh/triangle_strips.h"
 #include "paths/gx/gx_path.h"
-#include "paths/gx/scene_vertices.h"
+#include "paths/gx/scene_draw_cost.h"
 
 namespace lt::gx {
 
@@ -45,6 +41,28 @@ void add_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms&
       "vertex figures are exact counts a frame (bytes, vertices, triangles), not time: no public "
       "source states how long the console takes");
 }
+// The variant's own vertices: its storage and its :draw= (scene_draw_cost.h), as its FIFO log
+// sends them.
+void add_variant_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs,
+                             const GxVariant& v) {
+  SceneDrawCost c;
+  try {
+    c = scene_draw_cost(scene, programs, v.storage, v.draw, "--variant");
+  } catch (const InputError& e) {
+    r.notes.push_back("the variant's vertices not counted: " + e.where() + ": " + e.what_only());
+    return;
+  }
+  auto add = [&](const std::string& key, std::size_t n) {
+    r.details.push_back({key, "", static_cast<int>(n)});
+  };
+  add("vertex_bytes", c.draw.vertex_bytes);
+  add("array_bytes", c.draw.array_bytes);
+  add("refreshed_array_bytes", c.refreshed_array_bytes);
+  add("display_list_bytes", c.draw.display_list_bytes);
+  add("fifo_bytes", c.draw.fifo_bytes);
+  add("xf_vertices", c.draw.vertices);
+  add("triangles", c.draw.triangles);
+}
 void add_texture_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs) {
   const FrameTextureCost c = frame_texture_cost(scene, programs);
   r.details.push_back({"textures", "", static_cast<int>(c.textures)});
@@ -65,6 +83,7 @@ budget::Report gx_budget_scene(const Scene& scene, const std::string& variant,
   r.input = "scene";
   r.variant = to_string(v);
   add_vertex_cost(r, scene, programs);
+  add_variant_vertex_cost(r, scene, programs, v);
   add_texture_cost(r, scene, programs);
   return r;
 }
@@ -94,55 +113,12 @@ FrameTextureCost frame_texture_cost(const Scene& scene, const ScenePrograms& pro
 FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& programs,
                                   const VertexStorage& storage, const std::string& origin) {
   FrameVertexCost cost;
-  const SceneView view = SceneView::of(scene);
-  std::map<size_t, VertexStream> streams;
-  std::map<size_t, ObjectSpaceMesh> object_meshes;  // what a game stores: object space
-  std::map<size_t, std::vector<u32>> strips;
-  std::set<std::pair<size_t, int>> arrays_placed;                // (object, array) in MEM1
-  std::set<std::pair<size_t, std::array<u32, 2>>> lists_placed;  // (object, VCD)
-  for (const MaterialDraw& d : programs.draws(scene)) {
-    const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
-    const VertexDescriptor sent = fifo::sent_attributes(state);
-    const TexCoordFormats formats = fifo::sent_formats(state.texcoord_formats);
-    for (size_t object : d.objects) {
-      const TriangleMesh& mesh = scene.objects[object].mesh;
-      cost.immediate +=
-          immediate_list_cost(mesh.triangles.size(), fifo::vertex_size(sent, formats));
-      if (!streams.count(object)) {
-        streams.emplace(object, make_vertex_stream(scene, scene.objects[object], view));
-        object_meshes.emplace(object, object_space_mesh(scene.objects[object], view));
-        std::vector<u32> list;
-        for (const glm::uvec3& tri : mesh.triangles) list.insert(list.end(), {tri.x, tri.y, tri.z});
-        strips[object] = triangle_strip(list, mesh.positions.size());
-      }
-      const ObjectSpaceMesh& stored = object_meshes.at(object);
-      const VertexAttributeData data =
-          pass_vertex_data(stored.position, stored.normal, streams.at(object), sent, formats,
-                           static_cast<size_t>(d.pass));
-      const VertexAttributeFormat format = storage_format(storage, data, origin);
-      const IndexedArrays arrays = index_attributes(quantise_attributes(data, format), origin);
-      const VertexInputs inputs = indexed_inputs(arrays);
-      const VertexLoader loader(inputs, format, origin);
-      DrawCost draw = display_list_strip_cost(strips[object].size(), loader.vertex_size(), arrays);
-      // MEM1 holds an object's arrays and lists once; a pass's t array is its own.
-      draw.array_bytes = 0;
-      for (int a : arrays.arrays) {
-        const auto i = static_cast<size_t>(a);
-        const bool per_pass =
-            a >= kArrayTexCoord0 && data.texcoord_components[i - kArrayTexCoord0] == 1;
-        const size_t bytes = cache_lines_bytes(arrays.bytes[i].size());
-        if (per_pass) {
-          draw.array_bytes += bytes;
-          cost.refreshed_array_bytes += bytes;
-        } else if (arrays_placed.insert({object, a}).second) {
-          draw.array_bytes += bytes;
-        }
-      }
-      if (!lists_placed.insert({object, pack_vertex_inputs(inputs)}).second)
-        draw.display_list_bytes = 0;
-      cost.display_list += draw;
-    }
-  }
+  cost.immediate =
+      scene_draw_cost(scene, programs, VertexStorage{}, GxVariant::Draw::Direct, origin).draw;
+  const SceneDrawCost stored =
+      scene_draw_cost(scene, programs, storage, GxVariant::Draw::List, origin);
+  cost.display_list = stored.draw;
+  cost.refreshed_array_bytes = stored.refreshed_array_bytes;
   return cost;
 }
 

@@ -77,6 +77,11 @@ std::string gx_export_scene(const PathInfo& gx, const ExportRequest& r, const Ex
     throw InputError("--variant", in.variant,
                      "gx: --format c and module send F32 vertices; a vertex storage (:vtx=, "
                      ":nrm=, :clr=, :uv=) is exported by --format dff only, for now");
+  // So do they their vertices: directly, GX_TRIANGLES.
+  if (v.draw != GxVariant::Draw::Direct)
+    throw InputError("--variant", in.variant,
+                     "gx: --format c and module send each vertex directly; :draw=indexed, "
+                     "strips and list are exported by --format dff only, for now");
   if (r.format == kModule) return export_module(in.scene, v, r.scene_file);
   const ScenePrograms programs = scene_programs_for(in.scene, v, "");
   ExportFigures f;

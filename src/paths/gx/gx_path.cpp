@@ -21,6 +21,7 @@
 #include "paths/gx/gx_budget.h"
 #include "paths/gx/gx_export.h"
 #include "paths/gx/lobe_lut.h"
+#include "paths/gx/object_draw.h"
 #include "paths/gx/program_check.h"
 #include "paths/gx/scene_vertices.h"
 
@@ -154,6 +155,8 @@ class GxPath final : public Path {
       std::vector<glm::vec4> clip;
       for (const glm::vec3& p : streams_.back().position) clip.push_back(clip_position(placed, p));
       clip_.push_back(std::move(clip));
+      // The triangles as the setup unit receives them under :draw= (a strip's order).
+      triangles_.push_back(setup_order(o.mesh, variant_.draw));
     }
     // Per pass and material, the state and its textures (resolved once: the scene is static).
     pixel_programs_.resize(static_cast<size_t>(programs_.passes()));
@@ -176,7 +179,6 @@ class GxPath final : public Path {
   }
 
   void frame() override {
-    const Scene& s = ctx_.scene;
     // The frame's clearing copy: the background and the far z (GX_SetCopyClear's 0xffffff).
     efb_.clear(ctx_.width, ctx_.height, background_, 0xffffff, pixel_format_);
     vertex_seconds_ = pixel_seconds_ = 0;
@@ -202,7 +204,7 @@ class GxPath final : public Path {
                          outputs);
         light_vertices_ += streams_[i].position.size() * lights_in(state);
         make_raster_vertices(clip_[i], outputs, scales, vertices);
-        const auto& mesh_triangles = s.objects[i].mesh.triangles;
+        const auto& mesh_triangles = triangles_[i];
         vertex_seconds_ += seconds_since(t0);
         for (size_t first = 0; first < mesh_triangles.size(); first += kTriangleBatch) {
           t0 = SteadyClock::now();
@@ -361,6 +363,7 @@ class GxPath final : public Path {
   std::vector<TextureObject> luts_;
   std::vector<VertexStream> streams_;
   std::vector<std::vector<glm::vec4>> clip_;               // per object, per vertex
+  std::vector<std::vector<glm::uvec3>> triangles_;         // per object (object_draw.h)
   std::vector<std::vector<PixelProgram>> pixel_programs_;  // [pass][material]
   Efb efb_;
   TriangleCounts triangle_counts_;

@@ -20,8 +20,12 @@ const char* kValid =
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
     ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4), "
     ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
-    ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0) and the vertex storage "
-    ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto)";
+    ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0), the vertex storage "
+    ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto) and "
+    ":draw=direct | indexed | strips | list";
+
+// The :draw= values, in GxVariant::Draw's order.
+constexpr const char* kDrawNames[] = {"direct", "indexed", "strips", "list"};
 
 // The :map= values and the formats they name (gx_variant.h).
 struct MapFormatName {
@@ -114,6 +118,11 @@ GxVariant parse_gx_variant(const std::string& text) {
       v.light_range = d;
     } else if (key == "view" && first) {
       v.view_object = either("object", "exact") == "object";
+    } else if (key == "draw" && first) {
+      const auto named = std::find(std::begin(kDrawNames), std::end(kDrawNames), value);
+      if (named == std::end(kDrawNames))
+        bad("draw=" + value + " is not a way of sending vertices (direct, indexed, strips, list)");
+      v.draw = static_cast<GxVariant::Draw>(named - std::begin(kDrawNames));
     } else if (is_storage_key(key) && first) {
       try {
         set_vertex_storage(v.storage, key, value, "--variant");
@@ -166,6 +175,8 @@ std::string to_string(const GxVariant& v) {
     const std::string value = vertex_storage_value(v.storage, k);
     if (value != vertex_storage_value(f32, k)) s += ":" + std::string(k) + "=" + value;
   }
+  if (v.draw != GxVariant::Draw::Direct)
+    s += std::string(":draw=") + kDrawNames[static_cast<int>(v.draw)];
   return s;
 }
 

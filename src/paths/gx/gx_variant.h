@@ -50,6 +50,14 @@
 //   rgba4 | rgb565), :uv=u16/auto texture coordinates (the pass's t and the mesh's UVs);
 // e.g. `t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto`. Default f32 / rgba8: the F32
 // direct stream. A stored mesh goes through the console's vertex loader (scene_vertices.h).
+// One axis picks how the vertices are sent (docs/porting-to-the-wii.md "How the vertices are
+// sent"; paths/gx/object_draw.h):
+//   :draw=direct        every triangle's three vertices in the FIFO, GX_TRIANGLES (default)
+//   :draw=indexed       the attributes as arrays in MEM1 (GX_SetArray), the FIFO sends each
+//                       vertex's indices, GX_TRIANGLES in the mesh's order
+//   :draw=strips        indexed, the mesh as one GX_TRIANGLESTRIP (meshoptimizer's vertex-cache
+//                       order and stripify, joined by degenerate triangles: mesh/triangle_strips.h)
+//   :draw=list          the strips recorded once in a display list, sent as GX_CallDispList
 // One axis picks which image the path returns (xfb_copy.h):
 //   :out=xfb            what the TV shows: the EFB copied to the XFB as YUYV 4:2:2 and decoded
 //                       again, as Dolphin's software renderer dumps it (default :out=efb, the
@@ -70,6 +78,7 @@ struct GxVariant {
   enum class Lobe { Lut, XfSpec };
   enum class TexCoord { Vertex, Texgen };
   enum class Output { Efb, Xfb };
+  enum class Draw { Direct, Indexed, Strips, List };
   Lobe lobe = Lobe::Lut;
   TexCoord t = TexCoord::Vertex;
   int lut_size = 256;
@@ -93,6 +102,8 @@ struct GxVariant {
   // default F32 positions, normals and texture coordinates, RGBA8 colours, sent as ltrender
   // always has (scene_vertices.h).
   VertexStorage storage;
+  // :draw=: how the vertices are sent (object_draw.h); default each vertex direct, GX_TRIANGLES.
+  Draw draw = Draw::Direct;
 
   bool operator==(const GxVariant&) const = default;
 };

@@ -7,6 +7,7 @@
 #include "gx/vertex_loader.h"
 #include "image/image.h"
 #include "model/translucency.h"
+#include "paths/gx/object_draw.h"
 
 namespace lt::gx {
 
@@ -74,17 +75,25 @@ ObjectSpaceMesh object_space_mesh(const SceneObject& object, const SceneView& vi
 
 namespace {
 
-// `data`'s vertices 0..n-1 stored as `storage` says, sent directly and read back by the
-// console's vertex loader.
+// `data`'s vertices 0..n-1 stored as `storage` says, sent directly or (`indexed`) as indices
+// into the attributes' arrays (vertex_quantiser.h index_attributes, what the FIFO log puts in
+// MEM1), and read back by the console's vertex loader.
 std::vector<LoadedVertex> load_stored(const VertexAttributeData& data, const VertexStorage& storage,
-                                      const std::string& origin) {
+                                      bool indexed, const std::string& origin) {
   const VertexAttributeFormat format = storage_format(storage, data, origin);
   std::vector<u32> order(data.vertex_count());
   for (size_t v = 0; v < order.size(); ++v) order[v] = static_cast<u32>(v);
-  const std::vector<u8> bytes = direct_vertex_stream(quantise_attributes(data, format), order);
-  const VertexLoader loader(sent_inputs(data, AttributeInput::Direct), format, origin);
-  std::vector<LoadedVertex> loaded = loader.load(bytes, order.size(), VertexArrays{});
-  LT_CHECK(loaded.size() == order.size(), "a direct stream drops no vertex");
+  const std::vector<AttributeElements> elements = quantise_attributes(data, format);
+  std::vector<LoadedVertex> loaded;
+  if (indexed) {
+    const IndexedArrays arrays = index_attributes(elements, origin);
+    const VertexLoader loader(indexed_inputs(arrays), format, origin);
+    loaded = loader.load(indexed_vertex_stream(arrays, order), order.size(), arrays.views());
+  } else {
+    const VertexLoader loader(sent_inputs(data, AttributeInput::Direct), format, origin);
+    loaded = loader.load(direct_vertex_stream(elements, order), order.size(), VertexArrays{});
+  }
+  LT_CHECK(loaded.size() == order.size(), "a stream of ltrender's drops no vertex");
   return loaded;
 }
 
@@ -92,7 +101,7 @@ std::vector<LoadedVertex> load_stored(const VertexAttributeData& data, const Ver
 
 VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
                                   const SceneView& view, const VertexStorage& storage,
-                                  const std::string& origin) {
+                                  const std::string& origin, bool indexed) {
   const VertexStream f32 = make_vertex_stream(scene, object, view);
   const ObjectSpaceMesh mesh = object_space_mesh(object, view);
   VertexStream s;
@@ -103,7 +112,7 @@ VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
   shared.normal = mesh.normal;
   shared.color[0] = f32.color;
   if (!f32.uv.empty()) shared.texcoord[1] = f32.uv;
-  for (const LoadedVertex& v : load_stored(shared, storage, origin)) {
+  for (const LoadedVertex& v : load_stored(shared, storage, indexed, origin)) {
     s.position.push_back(v.position);
     s.normal.push_back(v.normal[0]);
     s.color.push_back(v.color[0]);
@@ -118,7 +127,7 @@ VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
     for (float x : t) pass.texcoord[0].emplace_back(x, 0.0f);
     pass.texcoord_components[0] = 1;
     std::vector<float> stored;
-    for (const LoadedVertex& v : load_stored(pass, storage, origin))
+    for (const LoadedVertex& v : load_stored(pass, storage, indexed, origin))
       stored.push_back(v.texcoord[0].x);
     s.t_per_light.push_back(std::move(stored));
   }
@@ -128,7 +137,8 @@ VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
 VertexStream object_vertex_stream(const Scene& scene, const SceneObject& object,
                                   const SceneView& view, const GxVariant& variant) {
   if (variant.storage.is_default()) return make_vertex_stream(scene, object, view);
-  return stored_vertex_stream(scene, object, view, variant.storage, "--variant");
+  return stored_vertex_stream(scene, object, view, variant.storage, "--variant",
+                              draws_indexed(variant.draw));
 }
 
 VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,

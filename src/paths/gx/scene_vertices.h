@@ -35,15 +35,17 @@ ObjectSpaceMesh object_space_mesh(const SceneObject& object, const SceneView& vi
 
 // The stream of `object` stored as `storage` says: object-space positions and normals, the
 // colour and UVs, and each light's t (one texture coordinate, its own fraction with /auto),
-// each quantised, sent directly and loaded by the vertex loader as the console does; eye
+// each quantised, sent directly (or, `indexed`, as indices into arrays of the distinct stored
+// elements, :draw=indexed, strips, list) and loaded by the vertex loader as the console does; eye
 // positions and normals through the object's matrices as the XF computes them
 // (gx/transform_unit.h). A value the storage cannot hold throws InputError(origin, key, ...).
 VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
                                   const SceneView& view, const VertexStorage& storage,
-                                  const std::string& origin);
+                                  const std::string& origin, bool indexed = false);
 
-// The variant's stream: make_vertex_stream for the default (F32) storage, else
-// stored_vertex_stream (errors name "--variant").
+// The variant's stream: make_vertex_stream for the default (F32) storage (an F32 array element
+// reads back as the same float as the direct one), else stored_vertex_stream, indexed where
+// :draw= sends indices (errors name "--variant").
 VertexStream object_vertex_stream(const Scene& scene, const SceneObject& object,
                                   const SceneView& view, const GxVariant& variant);
 
