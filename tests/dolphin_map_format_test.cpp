@@ -1,10 +1,13 @@
 // Every map format `:map=FMT` offers (gx_variant.h) judged by Dolphin: the map scenes' colour
-// map (scenes/maps/sphere_rgb_ramp.json) as RGB565, RGB5A3 and CMPR, their grey map
-// (scenes/maps/sphere_map.json) as IA8, IA4 and I4, the six frames in one FIFO log (one Dolphin
-// start: dolphin_util.h dolphin_pictures with a scene a frame), each frame's texture in its
-// format in the log's memory and TexImage0 (frame_recording.cpp, bp_registers.cpp). Dolphin's
-// software renderer decodes them ([DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel]), and
-// its picture must be ltrender's `:out=xfb` one, pixel for pixel. The defaults (RGBA8, I8) are
+// map (scenes/maps/sphere_rgb_ramp.json) as RGB565, RGB5A3, CMPR and CI8 (RGB565 TLUT), their
+// grey map (scenes/maps/sphere_map.json) as IA8, IA4, I4 and CI4 (IA8 TLUT), the eight frames in
+// one FIFO log (one Dolphin start: dolphin_util.h dolphin_pictures with a scene a frame), each
+// frame's texture in its format in the log's memory and TexImage0, a colour-indexed one's
+// palette in memory and loaded into TMEM by BP_LOADTLUT0/1, its TMEM offset and format in the
+// map's TLUT register (frame_recording.cpp, bp_registers.cpp). Dolphin's software renderer
+// decodes them ([DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel], the palette at
+// texMem[offset << 9] [DSW TextureSampler.cpp SampleMip]), and its picture must be ltrender's
+// `:out=xfb` one, pixel for pixel. The defaults (RGBA8, I8) are
 // judged by dolphin_judge_test.cpp's demo scenes.
 #include <gtest/gtest.h>
 
@@ -33,7 +36,9 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
                             {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr"},
                             {"scenes/maps/sphere_map.json", "t=vertex:map=ia8"},
                             {"scenes/maps/sphere_map.json", "t=vertex:map=ia4"},
-                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4"}};
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=ci8"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ci4"}};
   constexpr size_t kFrames = std::size(cases);
   std::vector<Scene> scenes;
   for (const MapFrame& c : cases) {
@@ -54,7 +59,10 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
   // format, not one format six times: RGB565, RGB5A3 and CMPR differ from each other, IA8 from
   // IA4. IA4 and I4 hold the same 4-bit intensity (the alpha is unused), so they draw one
   // picture from different tiles (8x4 of bytes, 8x8 of nibbles: a wrong format reads others).
-  const std::pair<size_t, size_t> differing[] = {{0, 1}, {0, 2}, {1, 2}, {3, 4}, {3, 5}};
+  // The colour-indexed frames differ from the direct formats of their map (CI8's 256 RGB565
+  // entries from RGB565's texels, CI4's 16 IA8 entries from IA8's texels).
+  const std::pair<size_t, size_t> differing[] = {{0, 1}, {0, 2}, {1, 2}, {3, 4},
+                                                 {3, 5}, {6, 0}, {7, 3}};
   for (const auto& [k, j] : differing)
     EXPECT_GT(test::picture_difference(dolphin[k], dolphin[j]).differ, 0u)
         << cases[k].variant << " and " << cases[j].variant << " draw the same picture";

@@ -145,6 +145,47 @@ TEST(GxFifoBits, TextureRegistersAreLibogcs) {
   EXPECT_EQ(r.image3, 0x82000u);
 }
 
+// GX_InitTlutObj(&tlut, 0x01041000, GX_TL_RGB565, 20), GX_LoadTlut(&tlut, GX_TLUT1) and
+// GX_InitTexObjCI(.., 8, 4, GX_TF_CI8, .., GX_TLUT1) loaded into GX_TEXMAP2 (L3421-3431,
+// L3648-3663, L3443-3474): BP 0x64 = 0x01041000 >> 5; GX_TLUT1's region at 0xC2000 gives
+// offset (0xC2000 - 0x80000) >> 9 = 0x210 and BP 0x65 = 0x210 | GX_TLUT_256 (16 lines) << 10,
+// the whole region whatever the entries; the TLUT register 0x9A = 0x210 | GX_TL_RGB565 << 10;
+// the texture's region texRegion[2]: even 0x20000, odd 0x28000. Read back: the decoder's state
+// holds the TLUT's format and offset.
+TEST(GxFifoBits, AColourIndexedTextureLoadsItsTlutAsLibogc) {
+  TextureObject t;
+  t.width = 8;
+  t.height = 4;
+  t.format = 9;  // GX_TF_CI8
+  t.data.assign(32, 0);
+  t.tlut.assign(40, 0);
+  t.tlut_format = 1;
+  t.tlut_offset = 0x210;
+  const TextureRegisters r = texture_registers(t, 2, 0x01040000);
+  EXPECT_EQ(r.tlut, 0x210u | (1u << 10));
+  EXPECT_EQ(r.image1, (0x20000u >> 5) | 0xD8000u);
+  EXPECT_EQ(r.image2, (0x28000u >> 5) | 0xD8000u);
+  CommandStream out;
+  GxState s;
+  s.textures[2] = t;
+  std::array<const TextureObject*, kMaxTexMaps> textures{};
+  textures[2] = &t;
+  std::array<u32, kMaxTexMaps> addresses{}, tlut_addresses{};
+  addresses[2] = 0x01040000;
+  tlut_addresses[2] = 0x01041000;
+  write_pass_bp(out, s, textures, addresses, tlut_addresses);
+  RegisterFile regs;
+  read_stream(out.bytes(), regs, "ci8");
+  EXPECT_EQ(regs.bp[0x64], 0x01041000u >> 5);
+  EXPECT_EQ(regs.bp[0x65], 0x210u | (16u << 10));
+  EXPECT_EQ(regs.bp[0x9A], 0x210u | (1u << 10));
+  const DecodedPass d = decode_pass(regs);
+  ASSERT_TRUE(d.state.textures[2]);
+  EXPECT_EQ(d.state.textures[2]->format, 9);
+  EXPECT_EQ(d.state.textures[2]->tlut_format, 1);
+  EXPECT_EQ(d.state.textures[2]->tlut_offset, 0x210);
+}
+
 // GX_SetVtxDesc of POS, NRM, CLR0 and TEX0 as GX_DIRECT (L2295-2367): VCD low 1 << 9 | 1 << 11 |
 // 1 << 13, high 1; GX_SetVtxAttrFmt(GX_VTXFMT0, GX_VA_TEX0, GX_TEX_S, GX_F32, 0) leaves bit 21
 // clear, GX_TEX_ST sets it; __GX_XfVtxSpecs: 1 colour | 1 normal << 2 | 1 texcoord << 4.

@@ -32,7 +32,7 @@ int nearest_expansion(int k, int bits) {
 }
 
 TEST(GxMapFormat, ParsesEveryFormatAndSpellsTheDefaultsAway) {
-  for (const char* name : {"rgb565", "rgb5a3", "cmpr", "ia8", "ia4", "i4"}) {
+  for (const char* name : {"rgb565", "rgb5a3", "cmpr", "ia8", "ia4", "i4", "ci4", "ci8"}) {
     const GxVariant v = parse_gx_variant(std::string("t=vertex:map=") + name);
     ASSERT_TRUE(v.map_format) << name;
     EXPECT_EQ(to_string(v), std::string("t=vertex:map=") + name);
@@ -41,7 +41,9 @@ TEST(GxMapFormat, ParsesEveryFormatAndSpellsTheDefaultsAway) {
   // rgba8 and i8 are the defaults: the same variant as no :map= at all.
   EXPECT_EQ(parse_gx_variant("t=vertex:map=rgba8"), GxVariant{});
   EXPECT_EQ(parse_gx_variant("t=vertex:map=i8"), GxVariant{});
-  EXPECT_THROW(parse_gx_variant("t=vertex:map=ci4"), InputError);
+  // CI14X2 is not a map format (gx_variant.h: its palette fits no TLUT region of GX_Init's).
+  EXPECT_THROW(parse_gx_variant("t=vertex:map=ci14x2"), InputError);
+  EXPECT_THROW(parse_gx_variant("t=vertex:map=ci14"), InputError);
   EXPECT_THROW(parse_gx_variant("t=vertex:map=RGB565"), InputError);
 }
 
@@ -54,6 +56,38 @@ TEST(GxMapFormat, AColourFormatIsForColourMapsAGreyOneForGreyMaps) {
   EXPECT_EQ(map_texture_format(i4, false), TexFormat::RGBA8);
   EXPECT_EQ(map_texture_format(GxVariant{}, true), TexFormat::I8);
   EXPECT_EQ(map_texture_format(GxVariant{}, false), TexFormat::RGBA8);
+  // A colour-indexed format takes both kinds; the TLUT's format follows the map.
+  const GxVariant ci8 = parse_gx_variant("t=vertex:map=ci8");
+  EXPECT_EQ(map_texture_format(ci8, true), TexFormat::CI8);
+  EXPECT_EQ(map_texture_format(ci8, false), TexFormat::CI8);
+  EXPECT_EQ(map_tlut_format(true), TlutFormat::IA8);
+  EXPECT_EQ(map_tlut_format(false), TlutFormat::RGB565);
+}
+
+// A map of no more distinct texels than the format has entries is exact through its palette:
+// a grey one in IA8 entries (8-bit intensity, alpha 255), a colour one whose texels RGB565 holds
+// exactly in RGB565 entries; texel_at reads each index through the TLUT as the hardware does.
+TEST(GxMapFormat, ColourIndexedMapsOfFewTexelsAreExactThroughTheirTlut) {
+  const std::vector<int> k{0, 100, 200, 255, 8, 9, 128, 247, 100, 0, 37, 200};
+  for (TexFormat f : {TexFormat::CI4, TexFormat::CI8}) {
+    const ThicknessTexture tt = thickness_texture(12, 1, grey_of(k), f, TlutFormat::IA8);
+    EXPECT_EQ(tt.format_name, std::string("GX_TF_") + format_info(f).name);
+    EXPECT_EQ(tt.texture.data.size(), level_bytes(f, 12, 1));
+    EXPECT_EQ(tt.texture.tlut_format, static_cast<u8>(TlutFormat::IA8));
+    EXPECT_EQ(tt.texture.tlut.size(), 2u * 9);  // nine distinct intensities, one entry each
+    for (int x = 0; x < 12; ++x) {
+      const u8 i = static_cast<u8>(k[static_cast<size_t>(x)]);
+      EXPECT_EQ(texel_at(tt.texture, x, 0), (Color8{i, i, i, 255})) << format_info(f).name << x;
+    }
+  }
+  // Colours of 5/6/5 fields, each expanded by bit replication: exact in RGB565 entries.
+  const std::vector<float> rgb{1, 0, 0, 0, 1, 0, 0, 0, 1, 132 / 255.0f, 130 / 255.0f, 132 / 255.0f};
+  const ThicknessTexture tt = thickness_texture(4, 1, rgb, TexFormat::CI8, TlutFormat::RGB565);
+  EXPECT_EQ(tt.texture.tlut_format, static_cast<u8>(TlutFormat::RGB565));
+  EXPECT_EQ(tt.texture.tlut.size(), 2u * 4);
+  const Color8 want[4] = {
+      {255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {132, 130, 132, 255}};
+  for (int x = 0; x < 4; ++x) EXPECT_EQ(texel_at(tt.texture, x, 0), want[x]) << x;
 }
 
 TEST(GxMapFormat, GreyFormatsHoldTheNearestIntensityTheirBitsAllow) {

@@ -172,7 +172,50 @@ TEST(GxMapProgram, AnUnloadedTexmap1AndAnUnmodelledFormatAreRefused) {
   expect_program_refused(unloaded, true, "TEV stage 0 fetches GX_TEXMAP1, which holds no texture");
   std::string indexed = p;
   indexed.replace(indexed.find("GX_TF_RGBA8"), 11, "GX_TF_CI8");
-  expect_program_refused(indexed, true, "texture format not modelled");
+  expect_program_refused(indexed, true, "a colour-indexed format needs GX_InitTexObjCI");
+}
+
+// A CI4 2 x 2 map (one 8x8 tile of 32 bytes, two texels a byte, the first in the high nibble:
+// (x, y) at byte y*4 + x/2) whose IA8 palette (alpha first, intensity second) is loaded into
+// GX_TLUT0 by GX_InitTlutObj + GX_LoadTlut and named by GX_InitTexObjCI.
+std::string ci4_program(int entries, const std::string& load_tlut) {
+  std::vector<gx::u8> tiles(32, 0);
+  tiles[0] = 0x12;  // (0, 0) index 1, (1, 0) index 2
+  tiles[4] = 0x30;  // (0, 1) index 3, (1, 1) index 0
+  const std::vector<gx::u8> palette{255, 250, 255, 200, 255, 30, 255, 50};
+  std::string p = map_program(tiles, "GX_TF_CI4");
+  const std::string init =
+      "GX_InitTexObj(&tex, map, 2, 2, GX_TF_CI4, GX_CLAMP, GX_CLAMP, GX_FALSE);";
+  p.replace(p.find(init), init.size(),
+            "GX_InitTlutObj(&pal, palette, GX_TL_IA8, " + std::to_string(entries) + ");\n" +
+                load_tlut +
+                "GX_InitTexObjCI(&tex, map, 2, 2, GX_TF_CI4, GX_CLAMP, GX_CLAMP, GX_FALSE, "
+                "GX_TLUT0);");
+  return byte_array("palette", palette) + "GXTlutObj pal;\n" + p;
+}
+
+TEST(GxMapProgram, Ci4MapReadsItsIa8PaletteThroughTheTlut) {
+  test::TempDir dir;
+  test::write_file(dir / "ci4.c", ci4_program(4, "GX_LoadTlut(&pal, GX_TLUT0);\n"));
+  // Each corner is its index's entry, IA8's intensity in r, g and b [DHW
+  // TextureDecoder_Common.cpp DecodePixel_Paletted, DecodePixel_IA8].
+  const std::array<std::array<int, 3>, 4> want = {
+      {{200, 200, 200}, {30, 30, 30}, {50, 50, 50}, {250, 250, 250}}};
+  EXPECT_EQ(
+      corners(render_scene(uv_quad_scene(dir, true), "gx", "", 0, 0, {(dir / "ci4.c").string()})),
+      want);
+}
+
+TEST(GxMapProgram, ACi4MapWithoutItsTlutOrWithTooFewEntriesIsRefused) {
+  expect_program_refused(ci4_program(4, ""), true, "TLUT 0 was never loaded (GX_LoadTlut)");
+  // Index 3 is past a TLUT of three entries.
+  expect_program_refused(ci4_program(3, "GX_LoadTlut(&pal, GX_TLUT0);\n"), true,
+                         "map holds palette index 3, TLUT 0 has 3 entries");
+  // GX_TLUT0 holds 256 entries [OGC gx.c GX_Init's GX_InitTlutRegion(.., GX_TLUT_256)].
+  std::string big = ci4_program(4, "GX_LoadTlut(&pal, GX_TLUT0);\n");
+  big.replace(big.find("GX_TL_IA8, 4"), 12, "GX_TL_IA8, 257");
+  big.replace(big.find("palette[8]"), 10, "palette[514]");
+  expect_program_refused(big, true, "GX_TLUT0 holds 256 entries, the TLUT has 257");
 }
 
 }  // namespace

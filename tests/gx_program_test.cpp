@@ -187,8 +187,10 @@ TEST(GxProgram, UnmodelledTextureFormatsAreRefusedAtTheirArgument) {
         "GX_FALSE);\n");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(e.what_only().find("texture format not modelled"), std::string::npos) << e.what();
-    EXPECT_EQ(e.where(), "3:28") << e.what();  // GX_TF_CI8 (no TLUT load is read yet)
+    EXPECT_NE(e.what_only().find("a colour-indexed format needs GX_InitTexObjCI"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.where(), "3:28") << e.what();  // GX_TF_CI8 (GX_InitTexObjCI's, with its TLUT)
     EXPECT_NE(e.what_only().find("argument 5:"), std::string::npos) << e.what();
   }
 }

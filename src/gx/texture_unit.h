@@ -24,6 +24,9 @@ struct TextureObject {
   // (gx/texture_decoder.h TlutView). Empty for the other formats.
   std::vector<u8> tlut;
   u8 tlut_format = 1;
+  // Where in TMEM the palette is loaded: the TLUT register's offset in 512-byte units
+  // (gx/tmem.h tlut_tmem_offset), as GX_LoadTlut and GX_LoadTexObj leave it.
+  u16 tlut_offset = 0;
   bool operator==(const TextureObject&) const = default;
 };
 

@@ -2,6 +2,8 @@
 
 #include "gx/clipper.h"
 #include "gx/fifo/display_copy.h"
+#include "gx/texture_format.h"
+#include "gx/tmem.h"
 
 namespace lt::gx::fifo {
 
@@ -32,18 +34,12 @@ u32 combiner_op(const TevCombiner& c) {
          place(c.dest, 22, 2);
 }
 
-// The texture region GX_LoadTexObj takes for a non-palette, non-CMPR, non-mipmapped texture on
-// the Wii: texRegion[map + 8], initialised by GX_Init as 32 KiB caches at the even address
-// _gxtexregionaddrtable[map + 16] and the odd one at [map + 24] [OGC gx.c L554-571, L114-127,
-// GX_Init's GX_InitTexCacheRegion loop]. Register: address >> 5 in bits 0-14, cache width 15-17
-// and height 18-20, 3 for 32 KiB [OGC gx.c GX_InitTexCacheRegion L3149-3191].
+// A texture cache region's register (TexImage1 even, TexImage2 odd): TMEM address >> 5 in bits
+// 0-14, cache width 15-17 and height 18-20, 3 for 32 KiB [OGC gx.c GX_InitTexCacheRegion
+// L3149-3191]; the region is libogc's default for the map and format (gx/tmem.h).
 u32 tmem_region(u32 tmem_address) {
   return place(tmem_address >> 5, 0, 15) | place(3, 15, 3) | place(3, 18, 3);
 }
-constexpr u32 kTmemEven[kMaxTexMaps] = {0x00000, 0x90000, 0x20000, 0xB0000,
-                                        0x40000, 0x98000, 0x60000, 0xB8000};
-constexpr u32 kTmemOdd[kMaxTexMaps] = {0x80000, 0x10000, 0xA0000, 0x30000,
-                                       0x88000, 0x50000, 0xA8000, 0x70000};
 
 }  // namespace
 
@@ -151,15 +147,35 @@ TextureRegisters texture_registers(const TextureObject& t, int map, u32 address)
   r.mode1 = 0;
   r.image0 = place(static_cast<u32>(t.width - 1), 0, 10) |
              place(static_cast<u32>(t.height - 1), 10, 10) | place(t.format, 20, 4);
-  r.image1 = tmem_region(kTmemEven[map]);
-  r.image2 = tmem_region(kTmemOdd[map]);
+  const TexCacheRegion region = texture_cache_region(static_cast<TexFormat>(t.format), false, map);
+  r.image1 = tmem_region(region.even);
+  r.image2 = tmem_region(region.odd);
   r.image3 = place(address >> 5, 0, 24);
+  // The TLUT register GX_LoadTexObj writes for a colour-indexed texture: the palette's TMEM
+  // offset 0-9 and format 10-11 [OGC gx.c GX_LoadTlut L3661 tmem_addr_base,
+  // GX_LoadTexObjPreloaded L3467-3472] [DHW BPMemory.h TexTLUT].
+  r.tlut = place(t.tlut_offset, 0, 10) | place(t.tlut_format, 10, 2);
   return r;
+}
+
+// GX_LoadTlut [OGC gx.c L3648-3663]: the texture-state flush (__GX_FlushTextureState writes the
+// indirect mask, 0xff since GX_Init [OGC gx.c L746-749]), BP_LOADTLUT0 with the palette's
+// address >> 5, BP_LOADTLUT1 with its TMEM offset (0-9) and the lines of the whole region
+// (10-20: libogc loads the region's size, gx/tmem.h tlut_region_entries_at), which copies it
+// into TMEM [DHW BPStructs.cpp BPMEM_LOADTLUT1], the flush again.
+void write_tlut_load(CommandStream& out, const TextureObject& t, u32 address) {
+  const int entries = tlut_region_entries_at(t.tlut_offset);
+  out.load_bp(bp::kIndirectMask, 0xff);
+  out.load_bp(bp::kLoadTlut0, place(address >> 5, 0, 24));
+  out.load_bp(bp::kLoadTlut1,
+              place(t.tlut_offset, 0, 10) | place(static_cast<u32>(tlut_lines(entries)), 10, 11));
+  out.load_bp(bp::kIndirectMask, 0xff);
 }
 
 void write_pass_bp(CommandStream& out, const GxState& s,
                    const std::array<const TextureObject*, kMaxTexMaps>& textures,
-                   const std::array<u32, kMaxTexMaps>& addresses) {
+                   const std::array<u32, kMaxTexMaps>& addresses,
+                   const std::array<u32, kMaxTexMaps>& tlut_addresses) {
   out.load_bp(bp::kGenMode, gen_mode(s));
   const TevState& tev = s.tev;
   for (int pair = 0; pair < kMaxTevStages / 2; ++pair)
@@ -196,12 +212,15 @@ void write_pass_bp(CommandStream& out, const GxState& s,
     const TextureObject* t = textures[static_cast<size_t>(m)];
     if (!t) continue;
     const TextureRegisters r = texture_registers(*t, m, addresses[static_cast<size_t>(m)]);
+    const bool indexed = is_indexed(static_cast<TexFormat>(t->format));
+    if (indexed) write_tlut_load(out, *t, tlut_addresses[static_cast<size_t>(m)]);
     out.load_bp(bp::texture_register(bp::kTexMode0, m), r.mode0);
     out.load_bp(bp::texture_register(bp::kTexMode1, m), r.mode1);
     out.load_bp(bp::texture_register(bp::kTexImage0, m), r.image0);
     out.load_bp(bp::texture_register(bp::kTexImage1, m), r.image1);
     out.load_bp(bp::texture_register(bp::kTexImage2, m), r.image2);
     out.load_bp(bp::texture_register(bp::kTexImage3, m), r.image3);
+    if (indexed) out.load_bp(bp::texture_register(bp::kTexTlut, m), r.tlut);
   }
   for (u32 coord = 0; coord < kMaxTexGens; ++coord) {
     const TexCoordScale& scale = scales[coord];

@@ -22,15 +22,15 @@ inline constexpr u8 kGenMode = 0x00, kCopyFilterPattern0 = 0x01, kIndirectMask =
                     kCopyStride = 0x4d, kCopyYScale = 0x4e, kClearAlphaRed = 0x4f,
                     kClearGreenBlue = 0x50, kClearZ = 0x51, kCopyTrigger = 0x52,
                     kCopyFilter0 = 0x53, kCopyFilter1 = 0x54, kRevisionBits = 0x58,
-                    kScissorOffset = 0x59, kTextureInvalidate = 0x66, kFieldMode = 0x68,
-                    kTevColorEnv0 = 0xc0, kTevAlphaEnv0 = 0xc1, kTevRegisterRA0 = 0xe0,
-                    kTevRegisterBG0 = 0xe1, kFogParam3 = 0xf1, kFogColor = 0xf2,
-                    kAlphaCompare = 0xf3, kZTextureBias = 0xf4, kZTexture = 0xf5,
-                    kTevKonstSelect0 = 0xf6;
+                    kScissorOffset = 0x59, kLoadTlut0 = 0x64, kLoadTlut1 = 0x65,
+                    kTextureInvalidate = 0x66, kFieldMode = 0x68, kTevColorEnv0 = 0xc0,
+                    kTevAlphaEnv0 = 0xc1, kTevRegisterRA0 = 0xe0, kTevRegisterBG0 = 0xe1,
+                    kFogParam3 = 0xf1, kFogColor = 0xf2, kAlphaCompare = 0xf3, kZTextureBias = 0xf4,
+                    kZTexture = 0xf5, kTevKonstSelect0 = 0xf6;
 // Per texture map n: maps 0..3 at base + n, maps 4..7 at base + 0x20 + (n - 4)
-// [OGC gx.c _gxtexmode0ids .. _gxteximg3ids].
+// [OGC gx.c _gxtexmode0ids .. _gxteximg3ids, _gxtextlutids].
 inline constexpr u8 kTexMode0 = 0x80, kTexMode1 = 0x84, kTexImage0 = 0x88, kTexImage1 = 0x8c,
-                    kTexImage2 = 0x90, kTexImage3 = 0x94;
+                    kTexImage2 = 0x90, kTexImage3 = 0x94, kTexTlut = 0x98;
 constexpr u8 texture_register(u8 base, int map) {
   return static_cast<u8>(base + (map < 4 ? map : 0x20 + map - 4));
 }
@@ -54,14 +54,21 @@ u32 z_mode(const ZMode& z);
 // physical address `address` (32-byte aligned).
 struct TextureRegisters {
   u32 mode0, mode1, image0, image1, image2, image3;
+  u32 tlut;  // written for colour-indexed formats only
 };
 TextureRegisters texture_registers(const TextureObject& texture, int map, u32 address);
 
+// GX_LoadTlut's registers: colour-indexed `t`'s palette, at the physical address `address`,
+// into TMEM at t.tlut_offset.
+void write_tlut_load(CommandStream& out, const TextureObject& t, u32 address);
+
 // Every BP register GxState models, for one pass, in libogc's order; `textures[m]` is what map m
-// holds (null: nothing) and `addresses[m]` where its tiles are in RAM.
+// holds (null: nothing) and `addresses[m]` where its tiles are in RAM; a colour-indexed map's
+// palette is at `tlut_addresses[m]` and loaded into TMEM (GX_LoadTlut) before its registers.
 void write_pass_bp(CommandStream& out, const GxState& state,
                    const std::array<const TextureObject*, kMaxTexMaps>& textures,
-                   const std::array<u32, kMaxTexMaps>& addresses);
+                   const std::array<u32, kMaxTexMaps>& addresses,
+                   const std::array<u32, kMaxTexMaps>& tlut_addresses = {});
 
 // The BP registers GX_Init sets that GxState does not model (copy filter, line width, scissor,
 // pixel format, dither, field mask, fog off, indirect stages off, revision bits), for a frame of

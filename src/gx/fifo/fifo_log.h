@@ -26,7 +26,7 @@ inline constexpr u32 kMem1Size = 0x01800000, kMem2Size = 0x04000000;
 inline constexpr u32 kFifoRingStart = 0x01000000, kFifoRingEnd = 0x0103ffe0;
 
 // FifoDataFile.h MemoryUpdate::Type: TEXTURE_MAP 1, XF_DATA 2, VERTEX_STREAM 4, TMEM 8.
-inline constexpr u8 kMemoryUpdateTexture = 0x01;
+inline constexpr u8 kMemoryUpdateTexture = 0x01, kMemoryUpdateTmem = 0x08;  // TMEM: a TLUT
 
 struct MemoryUpdate {
   u32 fifo_position = 0;  // byte offset into the frame's FIFO data

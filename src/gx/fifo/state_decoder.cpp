@@ -2,6 +2,7 @@
 
 #include "gx/clipper.h"
 #include "gx/fifo/cp_registers.h"
+#include "gx/texture_format.h"
 
 namespace lt::gx::fifo {
 
@@ -113,6 +114,12 @@ DecodedPass decode_pass(const RegisterFile& r) {
     t.width = static_cast<int>(field(image0, 0, 10)) + 1;
     t.height = static_cast<int>(field(image0, 10, 10)) + 1;
     t.format = static_cast<u8>(field(image0, 20, 4));
+    if (is_indexed(static_cast<TexFormat>(t.format))) {
+      // TexTLUT 0x98 + map: the palette's TMEM offset 0-9, format 10-11 [DHW BPMemory.h TexTLUT].
+      const u32 tlut = r.bp[static_cast<size_t>(0x98 + offset)];
+      t.tlut_offset = static_cast<u16>(field(tlut, 0, 10));
+      t.tlut_format = static_cast<u8>(field(tlut, 10, 2));
+    }
     s.textures[static_cast<size_t>(m)] = t;
     out.texture_addresses[static_cast<size_t>(m)] = r.bp[static_cast<size_t>(0x94 + offset)] << 5;
   }
@@ -187,7 +194,10 @@ GxState canonical_state(const GxState& in, const TextureObject* map0_fallback) {
   s.texcoord_formats = sent_formats(in.texcoord_formats);
   if (!s.textures[0] && map0_fallback) s.textures[0] = *map0_fallback;
   for (auto& t : s.textures)
-    if (t) t->data.clear();
+    if (t) {
+      t->data.clear();
+      t->tlut.clear();  // in memory, loaded by BP_LOADTLUT1; the register holds where and how
+    }
   for (size_t i = 0; i < 10; ++i) s.texgen.matrices[i] = {};
   return s;
 }

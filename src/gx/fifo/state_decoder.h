@@ -24,8 +24,9 @@ DecodedPass decode_pass(const RegisterFile& regs);
 // `state` as the registers hold it: a TEV order's null colour channel is the zero channel (both
 // write 7), a null texcoord is texcoord 0, the descriptor is what is sent (cp_registers.h
 // sent_attributes), each GX_VA_TEXn format is explicit, GX_TEXMAP0 holds `map0_fallback` where
-// the program loaded nothing (the emulator's LUT), texture data is dropped, and the position-
-// matrix slots of texgen.matrices (ids 0..27) are zero: the encoder writes texture matrices only.
+// the program loaded nothing (the emulator's LUT), texture data and palettes are dropped, and
+// the position-matrix slots of texgen.matrices (ids 0..27) are zero: the encoder writes texture
+// matrices only.
 GxState canonical_state(const GxState& state, const TextureObject* map0_fallback);
 
 }  // namespace lt::gx::fifo

@@ -1,10 +1,54 @@
 // The pixel engine, texture object, vertex format and cache calls.
+#include <algorithm>
 #include <optional>
 
 #include "gx/program/machine.h"
 #include "gx/texture_format.h"
+#include "gx/tmem.h"
 
 namespace lt::gx::interp {
+
+namespace {
+
+// GX_InitTexObj's and GX_InitTexObjCI's shared arguments 0..7 (object, image, width, height,
+// format, wraps, mipmap) into the object, the image checked to hold the format's tiles.
+void init_texture_object(Machine& m) {
+  if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
+  TexObject& t = m.tex(0);
+  t.array = m.name(1);
+  t.texture = TextureObject{};
+  t.texture.width = static_cast<int>(m.i(2));
+  t.texture.height = static_cast<int>(m.i(3));
+  t.texture.format = m.u(4);
+  t.texture.wrap_s = m.u(5);
+  t.texture.wrap_t = m.u(6);
+  t.texture.linear = true;  // mipmap GX_FALSE: linear min and mag [OGC gx.c L3236]
+  t.initialised = true;
+  t.tlut_name = -1;
+  const size_t need = tiled_size(t.texture.format, t.texture.width, t.texture.height);
+  if (m.bytes(1).size() < need)
+    m.fail_arg(1, m.name(1) + " holds " + std::to_string(m.bytes(1).size()) +
+                      " bytes, the texture needs " + std::to_string(need));
+}
+
+// The largest palette index a colour-indexed image's bytes hold (padding texels included: the
+// sampler can fetch them at the edges): CI4 a nibble, CI8 a byte, CI14X2 a big-endian u16's low
+// 14 bits [DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel, case CI14X2 `& 0x3FFF`].
+int largest_index(TexFormat format, const std::vector<u8>& bytes, size_t size) {
+  int top = 0;
+  for (size_t i = 0; i < size; ++i) {
+    if (format == TexFormat::CI4) {
+      top = std::max({top, bytes[i] >> 4, bytes[i] & 0xf});
+    } else if (format == TexFormat::CI8) {
+      top = std::max(top, static_cast<int>(bytes[i]));
+    } else if (i % 2 == 0) {
+      top = std::max(top, ((bytes[i] << 8) | bytes[i + 1]) & 0x3fff);
+    }
+  }
+  return top;
+}
+
+}  // namespace
 
 void add_pixel_calls(CallTable& table) {
   using K = ParamKind;
@@ -60,27 +104,57 @@ void add_pixel_calls(CallTable& table) {
          integer(G::TexFormat, 0, 14), integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2),
          integer(G::Bool, 0, 1)},
         [](Machine& m) {
-          // Every direct format is decoded (texture_decoder.h); a colour-indexed one needs
-          // GX_InitTexObjCI and a TLUT load, which the reader does not take yet.
+          // Every direct format is decoded (texture_decoder.h); a colour-indexed one is
+          // GX_InitTexObjCI's, with its TLUT.
           const std::optional<TexFormat> format = tex_format_from_number(static_cast<int>(m.u(4)));
-          if (!format || is_indexed(*format))
+          if (!format)
             m.fail_arg(4,
                        "texture format not modelled (GX_TF_I4, GX_TF_I8, GX_TF_IA4, GX_TF_IA8, "
                        "GX_TF_RGB565, GX_TF_RGB5A3, GX_TF_RGBA8 and GX_TF_CMPR are)");
-          if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
-          TexObject& t = m.tex(0);
-          t.array = m.name(1);
-          t.texture.width = static_cast<int>(m.i(2));
-          t.texture.height = static_cast<int>(m.i(3));
-          t.texture.format = m.u(4);
-          t.texture.wrap_s = m.u(5);
-          t.texture.wrap_t = m.u(6);
-          t.texture.linear = true;  // mipmap GX_FALSE: linear min and mag [OGC gx.c L3236]
-          t.initialised = true;
-          const size_t need = tiled_size(t.texture.format, t.texture.width, t.texture.height);
+          if (is_indexed(*format))
+            m.fail_arg(4, "a colour-indexed format needs GX_InitTexObjCI (and its TLUT)");
+          init_texture_object(m);
+        }}},
+      // A colour-indexed texture [OGC gx.c GX_InitTexObjCI L3301-3308]: GX_InitTexObj's
+      // arguments and the TLUT (GX_TLUT0..GX_BIGTLUT3) whose palette it reads when loaded.
+      {"GX_InitTexObjCI",
+       {{tex_p, of(K::ArrayName), integer(G::Number, 1, 1024), integer(G::Number, 1, 1024),
+         integer(G::TexFormat, 0, 14), integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2),
+         integer(G::Bool, 0, 1), integer(G::TlutName, 0, kTlutNames - 1)},
+        [](Machine& m) {
+          const std::optional<TexFormat> format = tex_format_from_number(static_cast<int>(m.u(4)));
+          if (!format || !is_indexed(*format))
+            m.fail_arg(4, "GX_InitTexObjCI takes GX_TF_CI4, GX_TF_CI8 or GX_TF_CI14");
+          init_texture_object(m);
+          m.tex(0).tlut_name = static_cast<int>(m.i(8));
+        }}},
+      // GX_InitTlutObj(obj, lut, fmt, entries) [OGC gx.c L3421-3431]: the palette array (2 bytes
+      // an entry, big-endian) and its format.
+      {"GX_InitTlutObj",
+       {{of(K::TlutRef), of(K::ArrayName), integer(G::TlutFormat, 0, 2),
+         integer(G::Number, 1, 16384)},
+        [](Machine& m) {
+          const size_t need = static_cast<size_t>(m.i(3)) * 2;
           if (m.bytes(1).size() < need)
-            m.fail_arg(1, m.name(1) + " holds " + std::to_string(m.bytes(1).size()) +
-                              " bytes, the texture needs " + std::to_string(need));
+            m.fail_arg(1, m.name(1) + " holds " + std::to_string(m.bytes(1).size()) + " bytes, " +
+                              std::to_string(m.i(3)) + " TLUT entries need " +
+                              std::to_string(need));
+          m.tlut(0) = {m.name(1), m.u(2), static_cast<int>(m.i(3)), true};
+        }}},
+      // GX_LoadTlut(obj, name) [OGC gx.c L3648-3663]: the palette into the named TLUT region
+      // (gx/tmem.h tlut_region), which holds 256 entries (GX_TLUT0..15) or 1,024 (GX_BIGTLUT*).
+      {"GX_LoadTlut",
+       {{of(K::TlutRef), integer(G::TlutName, 0, kTlutNames - 1)},
+        [](Machine& m) {
+          const TlutObject& t = m.tlut(0);
+          if (!t.initialised) m.fail_arg(0, m.name(0) + " was never given to GX_InitTlutObj");
+          const TlutRegion region = tlut_region(static_cast<int>(m.i(1)));
+          if (t.entries > region.entries)
+            m.fail_arg(1, m.text(1) + " holds " + std::to_string(region.entries) +
+                              " entries, the TLUT has " + std::to_string(t.entries));
+          const std::vector<u8>& src = m.bytes_of(t.array);
+          m.loaded_tluts[static_cast<int>(m.i(1))] = {
+              std::vector<u8>(src.begin(), src.begin() + t.entries * 2), t.format};
         }}},
       {"GX_InitTexObjWrapMode",
        {{tex_p, integer(G::TexWrap, 0, 2), integer(G::TexWrap, 0, 2)},
@@ -102,6 +176,23 @@ void add_pixel_calls(CallTable& table) {
           TexObject& t = m.tex(0);
           if (!t.initialised) m.fail_arg(0, m.name(0) + " was never given to GX_InitTexObj");
           TextureObject loaded = t.texture;
+          if (t.tlut_name >= 0) {
+            // The palette loaded in the texture's TLUT region now (TMEM holds it from then on).
+            const auto tlut = m.loaded_tluts.find(t.tlut_name);
+            if (tlut == m.loaded_tluts.end())
+              m.fail_arg(0, m.name(0) + "'s TLUT " + std::to_string(t.tlut_name) +
+                                " was never loaded (GX_LoadTlut)");
+            const size_t size = tiled_size(loaded.format, loaded.width, loaded.height);
+            const int top =
+                largest_index(static_cast<TexFormat>(loaded.format), m.bytes_of(t.array), size);
+            if (static_cast<size_t>(top) * 2 >= tlut->second.bytes.size())
+              m.fail_arg(0, t.array + " holds palette index " + std::to_string(top) + ", TLUT " +
+                                std::to_string(t.tlut_name) + " has " +
+                                std::to_string(tlut->second.bytes.size() / 2) + " entries");
+            loaded.tlut = tlut->second.bytes;
+            loaded.tlut_format = tlut->second.format;
+            loaded.tlut_offset = static_cast<u16>(tlut_tmem_offset(tlut_region(t.tlut_name)));
+          }
           const std::vector<u8>& src = m.bytes_of(t.array);
           loaded.data.assign(src.begin(),
                              src.begin() + static_cast<std::ptrdiff_t>(tiled_size(

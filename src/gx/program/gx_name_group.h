@@ -46,6 +46,8 @@ enum class NameGroup {
   TexFormat,
   TexWrap,
   TexFilter,
+  TlutFormat,
+  TlutName,
   PosMtx,
   CullMode,
   PixelFormat,

@@ -108,6 +108,10 @@ std::string describe(NameGroup group) {
       return "a wrap mode (GX_CLAMP, GX_REPEAT, GX_MIRROR)";
     case NameGroup::TexFilter:
       return "a filter (GX_NEAR, GX_LINEAR, ...)";
+    case NameGroup::TlutFormat:
+      return "a TLUT format (GX_TL_IA8, GX_TL_RGB565, GX_TL_RGB5A3)";
+    case NameGroup::TlutName:
+      return "a TLUT (GX_TLUT0..15, GX_BIGTLUT0..3)";
   }
   return "a GX constant";
 }

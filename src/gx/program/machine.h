@@ -18,7 +18,7 @@
 namespace lt::gx::interp {
 
 // What a parameter of a libogc prototype takes.
-enum class ParamKind { Int, F32, Color, ColorS10, LightRef, TexRef, MtxName, ArrayName };
+enum class ParamKind { Int, F32, Color, ColorS10, LightRef, TexRef, TlutRef, MtxName, ArrayName };
 
 struct Param {
   ParamKind kind;
@@ -45,6 +45,21 @@ struct TexObject {
   TextureObject texture;
   std::string array;
   bool initialised = false;
+  int tlut_name = -1;  // GX_InitTexObjCI's TLUT (GX_TLUT0..GX_BIGTLUT3); -1: a direct format
+};
+
+// libogc's TLUT object [OGC gx.c GX_InitTlutObj]: the palette array, its format and entries.
+struct TlutObject {
+  std::string array;
+  u8 format = 0;
+  int entries = 0;
+  bool initialised = false;
+};
+
+// A palette GX_LoadTlut left in TMEM (gx/tmem.h tlut_region): its bytes and format.
+struct LoadedTlut {
+  std::vector<u8> bytes;
+  u8 format = 0;
 };
 
 // One run: the state, the program's variables, and the call being executed (for messages).
@@ -82,6 +97,9 @@ class Machine {
   }
   LightObject& light(size_t k) { return lights_.at(call_->args[k].name); }
   TexObject& tex(size_t k) { return textures_.at(call_->args[k].name); }
+  TlutObject& tlut(size_t k) { return tluts_.at(call_->args[k].name); }
+  // The palettes loaded so far, by TLUT name (GX_LoadTlut).
+  std::map<int, LoadedTlut> loaded_tluts;
   const TexMatrix& mtx(size_t k) const { return matrices_.at(call_->args[k].name); }
   const std::vector<u8>& bytes(size_t k) const { return arrays_.at(call_->args[k].name); }
   const std::string& name(size_t k) const { return call_->args[k].name; }
@@ -102,8 +120,8 @@ class Machine {
   }
 
   void declare(const Declaration& d) {
-    if (lights_.count(d.name) || textures_.count(d.name) || matrices_.count(d.name) ||
-        arrays_.count(d.name))
+    if (lights_.count(d.name) || textures_.count(d.name) || tluts_.count(d.name) ||
+        matrices_.count(d.name) || arrays_.count(d.name))
       fail(d.pos, "redefinition of " + d.name);
     switch (d.type) {
       case Declaration::Type::LightObj:
@@ -111,6 +129,9 @@ class Machine {
         break;
       case Declaration::Type::TexObj:
         textures_[d.name] = TexObject{};
+        break;
+      case Declaration::Type::TlutObj:
+        tluts_[d.name] = TlutObject{};
         break;
       case Declaration::Type::Mtx: {
         TexMatrix m{};
@@ -177,6 +198,10 @@ class Machine {
         if (a.kind != Arg::Kind::AddressOf || !textures_.count(a.name))
           wrong("&name of a declared GXTexObj");
         break;
+      case ParamKind::TlutRef:
+        if (a.kind != Arg::Kind::AddressOf || !tluts_.count(a.name))
+          wrong("&name of a declared GXTlutObj");
+        break;
       case ParamKind::MtxName:
         if (a.kind != Arg::Kind::Identifier || !matrices_.count(a.name))
           wrong("the name of a declared Mtx");
@@ -192,6 +217,7 @@ class Machine {
   const Call* call_ = nullptr;
   std::map<std::string, LightObject> lights_;
   std::map<std::string, TexObject> textures_;
+  std::map<std::string, TlutObject> tluts_;
   std::map<std::string, TexMatrix> matrices_;
   std::map<std::string, std::vector<u8>> arrays_;
 };

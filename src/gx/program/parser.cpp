@@ -232,7 +232,7 @@ class Parser {
     Statement s;
     size_t save = k_;
     while (is("static") || is("const")) take();
-    if (is("GXLightObj") || is("GXTexObj") || is("Mtx") || is("u8")) {
+    if (is("GXLightObj") || is("GXTexObj") || is("GXTlutObj") || is("Mtx") || is("u8")) {
       s.kind = Statement::Kind::Declaration;
       s.declaration = declaration();
       return s;
@@ -249,8 +249,10 @@ class Parser {
     d.pos = cur().pos;
     const std::string type(take().text);
     d.name = identifier("a variable name");
-    if (type == "GXLightObj" || type == "GXTexObj") {
-      d.type = type == "GXLightObj" ? Declaration::Type::LightObj : Declaration::Type::TexObj;
+    if (type == "GXLightObj" || type == "GXTexObj" || type == "GXTlutObj") {
+      d.type = type == "GXLightObj" ? Declaration::Type::LightObj
+               : type == "GXTexObj" ? Declaration::Type::TexObj
+                                    : Declaration::Type::TlutObj;
       expect(";");
       return d;
     }

@@ -33,6 +33,9 @@ void print_declaration(std::ostream& out, const Declaration& d, const std::strin
     case Declaration::Type::TexObj:
       out << indent << "GXTexObj " << d.name << ";\n";
       return;
+    case Declaration::Type::TlutObj:
+      out << indent << "GXTlutObj " << d.name << ";\n";
+      return;
     case Declaration::Type::Mtx:
       out << indent << "Mtx " << d.name << " = {";
       for (size_t r = 0; r < 3; ++r) {

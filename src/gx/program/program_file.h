@@ -24,7 +24,7 @@ struct Arg {
     Number,     // a float literal (f32 parameters; integers are accepted there too)
     Color,      // (GXColor){r, g, b, a}
     ColorS10,   // (GXColorS10){r, g, b, a}
-    AddressOf,  // &name (a GXLightObj or GXTexObj)
+    AddressOf,  // &name (a GXLightObj, GXTexObj or GXTlutObj)
     Identifier  // name (an Mtx or a u8 array)
   };
   Kind kind = Kind::Integer;
@@ -52,10 +52,10 @@ struct Call {
   Call(std::string f, std::vector<Arg> a) : function(std::move(f)), args(std::move(a)) {}
 };
 
-// `GXLightObj name;`, `GXTexObj name;`, `Mtx name = {{..},{..},{..}};` and
+// `GXLightObj name;`, `GXTexObj name;`, `GXTlutObj name;`, `Mtx name = {{..},{..},{..}};` and
 // `u8 name[N] ATTRIBUTE_ALIGN(32) = {..};` (static/const allowed).
 struct Declaration {
-  enum class Type { LightObj, TexObj, Mtx, ByteArray };
+  enum class Type { LightObj, TexObj, Mtx, ByteArray, TlutObj };
   Type type = Type::LightObj;
   std::string name;
   std::vector<double> values;  // Mtx: 12 floats row by row; ByteArray: the bytes

@@ -24,25 +24,27 @@ class TextureMemory {
  public:
   explicit TextureMemory(const std::string& file) : file_(file) {}
   // The address of `t`, and whether it is new to the frame (its bytes must be sent).
-  std::pair<u32, bool> place_texture(const TextureObject& t) {
-    for (const auto& [texture, address] : placed_)
-      if (texture->data == t.data) return {address, false};
+  std::pair<u32, bool> place_texture(const TextureObject& t) { return place(t.data); }
+  // The same for a block of bytes (a colour-indexed texture's palette).
+  std::pair<u32, bool> place(const std::vector<u8>& data) {
+    for (const auto& [placed, address] : placed_)
+      if (*placed == data) return {address, false};
     const u32 address = next_;
-    const size_t bytes = (t.data.size() + 31) & ~size_t{31};
+    const size_t bytes = (data.size() + 31) & ~size_t{31};
     if (bytes > kTextureEnd - next_)
       throw InputError(file_, "textures",
                        "the frame's textures need more than the " +
                            std::to_string((kTextureEnd - kTextureBase) >> 20) +
                            " MiB the FIFO log's memory map has for them");
     next_ += static_cast<u32>(bytes);
-    placed_.emplace_back(&t, address);
+    placed_.emplace_back(&data, address);
     return {address, true};
   }
 
  private:
   std::string file_;
   u32 next_ = kTextureBase;
-  std::vector<std::pair<const TextureObject*, u32>> placed_;
+  std::vector<std::pair<const std::vector<u8>*, u32>> placed_;
 };
 
 // The triangles of `mesh` expanded to a vertex list.
@@ -195,7 +197,7 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     for (const MaterialDraw& d : programs.draws(scene)) {
       const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
       std::array<const TextureObject*, kMaxTexMaps> textures{};
-      std::array<u32, kMaxTexMaps> addresses{};
+      std::array<u32, kMaxTexMaps> addresses{}, tlut_addresses{};
       for (size_t map = 0; map < kMaxTexMaps; ++map) {
         const auto& t = state.textures[map];
         textures[map] = t ? &*t : (map == 0 ? &luts[d.material] : nullptr);
@@ -205,10 +207,17 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
         if (is_new)
           frame.updates.push_back({static_cast<u32>(out.position()), address, kMemoryUpdateTexture,
                                    textures[map]->data});
+        if (textures[map]->tlut.empty()) continue;
+        // A colour-indexed map's palette, which BP_LOADTLUT1 copies into TMEM (bp_registers.h).
+        const auto [tlut_address, tlut_new] = memory.place(textures[map]->tlut);
+        tlut_addresses[map] = tlut_address;
+        if (tlut_new)
+          frame.updates.push_back({static_cast<u32>(out.position()), tlut_address,
+                                   kMemoryUpdateTmem, textures[map]->tlut});
       }
       write_pass_cp(out, state);
       write_pass_xf(out, state);
-      write_pass_bp(out, state, textures, addresses);
+      write_pass_bp(out, state, textures, addresses, tlut_addresses);
       for (size_t i : d.objects) {
         if (in.variant.draw != GxVariant::Draw::Direct)
           draw_indexed_object(out, frame, vertex_memory, state, streams[i],

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "gx/texture_format.h"
+#include "gx/tmem.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/scene_draw_cost.h"
 
@@ -68,6 +69,10 @@ void add_texture_cost(budget::Report& r, const Scene& scene, const ScenePrograms
   r.details.push_back({"textures", "", static_cast<int>(c.textures)});
   r.details.push_back({"texture_bytes", "", static_cast<int>(c.texture_bytes)});
   r.details.push_back({"tlut_bytes", "", static_cast<int>(c.tlut_bytes)});
+  r.details.push_back({"tmem_bytes", "", static_cast<int>(c.tmem_bytes)});
+  r.details.push_back({"tmem_textures_over_cache", "", static_cast<int>(c.textures_over_cache)});
+  r.details.push_back({"tmem_overlapping_regions", "", static_cast<int>(c.overlapping_regions)});
+  r.details.push_back({"tmem_fits", c.fits_tmem() ? "yes" : "no", std::nullopt});
 }
 
 }  // namespace
@@ -104,8 +109,32 @@ FrameTextureCost frame_texture_cost(const Scene& scene, const ScenePrograms& pro
   FrameTextureCost cost;
   cost.textures = loaded.size();
   for (const TextureObject* t : loaded) {
-    cost.texture_bytes += level_bytes(static_cast<TexFormat>(t->format), t->width, t->height);
+    const std::size_t bytes = level_bytes(static_cast<TexFormat>(t->format), t->width, t->height);
+    cost.texture_bytes += bytes;
     cost.tlut_bytes += (t->tlut.size() + 31) & ~std::size_t{31};
+    if (bytes > kTexCacheRegionBytes) ++cost.textures_over_cache;
+  }
+  // TMEM per draw: the maps its state loads, each in its region (gx/tmem.h).
+  std::set<std::pair<size_t, int>> counted;  // (material, pass): one state, counted once
+  for (const MaterialDraw& d : programs.draws(scene)) {
+    if (!counted.insert({d.material, d.pass}).second) continue;
+    const GxState& state = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
+    std::size_t tmem = 0;
+    std::vector<TexCacheRegion> regions;
+    for (int map = 0; map < kMaxTexMaps; ++map) {
+      const auto& t = state.textures[static_cast<size_t>(map)];
+      if (!t) continue;
+      const auto format = static_cast<TexFormat>(t->format);
+      tmem += texture_tmem_bytes(level_bytes(format, t->width, t->height));
+      // A palette's TLUT region, which GX_LoadTlut loads whole (gx/tmem.h).
+      if (!t->tlut.empty())
+        tmem += static_cast<std::size_t>(tlut_region_entries_at(t->tlut_offset)) * 2;
+      const TexCacheRegion region = texture_cache_region(format, false, map);
+      for (const TexCacheRegion& other : regions)
+        if (regions_overlap(region, other)) ++cost.overlapping_regions;
+      regions.push_back(region);
+    }
+    cost.tmem_bytes = std::max(cost.tmem_bytes, tmem);
   }
   return cost;
 }

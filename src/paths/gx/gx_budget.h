@@ -43,12 +43,22 @@ FrameVertexCost frame_vertex_cost(const Scene& scene, const ScenePrograms& progr
 // materials that load the same texels share one copy), its bytes by GX_GetTexBufferSize's rule
 // (gx/texture_format.h level_bytes: whole tiles), and a colour-indexed texture's palette (2 bytes
 // an entry, from a 32-byte boundary: GX_InitTlutObj keeps the palette's address shifted right by
-// 5 [OGC gx.c GX_InitTlutObj]). Not counted: the TMEM a texture occupies while drawn (a cache
-// region of GX_Init's, not the texture's size).
+// 5 [OGC gx.c GX_InitTlutObj]).
+// TMEM (gx/tmem.h): each map of a draw in the cache region libogc's default callback gives it
+// (by map, format, mipmaps), occupying its bytes up to the region's 64 KiB, and a colour-indexed
+// map's palette's TLUT region (GX_LoadTlut loads the whole region: 512 bytes for GX_TLUT0..15,
+// 2 KiB for GX_BIGTLUT0..3); `tmem_bytes` is the most one draw's
+// maps occupy at once. A texture over its region's 64 KiB is drawn but streamed through the
+// cache (counted in `textures_over_cache`); two maps of one draw in overlapping regions evict
+// each other (`overlapping_regions`). The frame's maps fit TMEM when both are 0.
 struct FrameTextureCost {
   std::size_t textures = 0;
   std::size_t texture_bytes = 0;
   std::size_t tlut_bytes = 0;
+  std::size_t tmem_bytes = 0;
+  std::size_t textures_over_cache = 0;
+  std::size_t overlapping_regions = 0;
+  bool fits_tmem() const { return textures_over_cache == 0 && overlapping_regions == 0; }
 };
 FrameTextureCost frame_texture_cost(const Scene& scene, const ScenePrograms& programs);
 

@@ -310,9 +310,15 @@ class GxPath final : public Path {
       }
     }
     const int passes = programs_.passes();
+    // The textures' memory (gx_budget.h frame_texture_cost): MEM1 bytes (palettes included) and
+    // the most TMEM one draw's maps occupy, marked when a map is streamed through its cache or
+    // two maps' regions overlap.
+    const FrameTextureCost t = frame_texture_cost(ctx_.scene, programs_);
     return std::to_string(stages) + " TEV stages a pass, " + std::to_string(maps) +
            (maps == 1 ? " texture, " : " textures, ") + std::to_string(passes) +
-           (passes == 1 ? " pass" : " passes");
+           (passes == 1 ? " pass" : " passes") + ", " +
+           std::to_string(t.texture_bytes + t.tlut_bytes) + " texture bytes, " +
+           std::to_string(t.tmem_bytes) + " TMEM" + (t.fits_tmem() ? "" : " (over its regions)");
   }
 
   FrameStats frame_stats() const override {

@@ -18,7 +18,7 @@ namespace {
 const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
-    ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4), "
+    ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4; ci4, ci8), "
     ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
     ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0), the vertex storage "
     ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto) and "
@@ -35,7 +35,8 @@ struct MapFormatName {
 constexpr MapFormatName kMapFormats[] = {
     {"rgba8", TexFormat::RGBA8}, {"rgb565", TexFormat::RGB565}, {"rgb5a3", TexFormat::RGB5A3},
     {"cmpr", TexFormat::CMPR},   {"i8", TexFormat::I8},         {"ia8", TexFormat::IA8},
-    {"ia4", TexFormat::IA4},     {"i4", TexFormat::I4}};
+    {"ia4", TexFormat::IA4},     {"i4", TexFormat::I4},         {"ci4", TexFormat::CI4},
+    {"ci8", TexFormat::CI8}};
 
 // Whether all of `text` reads as one number into `out`.
 template <class T>
@@ -101,7 +102,7 @@ GxVariant parse_gx_variant(const std::string& text) {
                                       [&](const MapFormatName& m) { return value == m.name; });
       if (named == std::end(kMapFormats))
         bad("map=" + value +
-            " is not a map format (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4)");
+            " is not a map format (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4; ci4, ci8)");
       if (named->format != TexFormat::RGBA8 && named->format != TexFormat::I8)
         v.map_format = named->format;
     } else if (key == "out" && first) {
@@ -186,8 +187,14 @@ bool is_grey_map_format(TexFormat format) {
 }
 
 TexFormat map_texture_format(const GxVariant& v, bool grey_map) {
-  if (v.map_format && is_grey_map_format(*v.map_format) == grey_map) return *v.map_format;
+  // A colour-indexed format takes either kind: its TLUT's format follows the map (map_tlut_format).
+  if (v.map_format && (is_indexed(*v.map_format) || is_grey_map_format(*v.map_format) == grey_map))
+    return *v.map_format;
   return grey_map ? TexFormat::I8 : TexFormat::RGBA8;
+}
+
+TlutFormat map_tlut_format(bool grey_map) {
+  return grey_map ? TlutFormat::IA8 : TlutFormat::RGB565;
 }
 
 std::string refusal(const Scene& scene, const GxVariant& v) {

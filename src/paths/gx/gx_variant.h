@@ -31,6 +31,12 @@
 //   :map=cmpr           colour maps GX_TF_CMPR, 4 bits a texel (gx/cmpr_encoder.h)
 //   :map=ia8, :map=ia4, :map=i4   grey maps GX_TF_IA8 (16 bits), IA4 (8), I4 (4) (default
 //                       :map=i8, GX_TF_I8, 8 bits)
+//   :map=ci4, :map=ci8  every map colour-indexed, GX_TF_CI4 (4 bits, 16 entries) or CI8 (8
+//                       bits, 256), the palette (gx/palette.h) a TLUT in GX_TL_IA8 for a grey
+//                       map and GX_TL_RGB565 for a colour one (map_tlut_format). Not CI14X2:
+//                       its 16,384 entries need 32 KiB of TLUT, and libogc's GX_Init makes no
+//                       TLUT region over 1,024 entries (gx/tmem.h); at 16 bits a texel it is
+//                       RGB565's size anyway
 // One axis picks where a directional light's translucency base (light x albedo x tint x (a + s))
 // is multiplied in (docs/advise.md, "What the gx error is made of"):
 //   :base=tev           in the TEV, as a konst colour folded into the LUT stage, with COLOR0 the
@@ -117,6 +123,9 @@ std::string to_string(const GxVariant& v);
 
 // The format a map of this kind (grey: r = g = b in every texel) is stored in under `v`.
 TexFormat map_texture_format(const GxVariant& v, bool grey_map);
+// The TLUT format of a colour-indexed map: GX_TL_IA8 for a grey map (its intensity in 8 bits),
+// GX_TL_RGB565 for a colour one (the map has no alpha: RGB5A3's opaque RGB555 keeps a bit less).
+TlutFormat map_tlut_format(bool grey_map);
 // Whether `format` is one a grey map takes under :map= (I4, IA4, I8, IA8), else a colour map's.
 bool is_grey_map_format(TexFormat format);
 

@@ -80,6 +80,15 @@ struct TexturePlan {
   GxConst<NameGroup::TexMap> map{"GX_TEXMAP0"};
   size_t bytes = 0;
   std::string what;
+  // A colour-indexed texture's palette: GX_InitTlutObj(&object, array, format, entries) and
+  // GX_LoadTlut(&object, name) before GX_InitTexObjCI(..., name) [OGC gx.c L3301, L3421, L3648].
+  struct Tlut {
+    std::string object, array;
+    GxConst<NameGroup::TlutFormat> format{"GX_TL_RGB565"};
+    int entries = 0;
+    GxConst<NameGroup::TlutName> name{"GX_TLUT0"};
+  };
+  std::optional<Tlut> tlut;
 };
 
 // A texture matrix loaded before the texgens (GX_LoadTexMtxImm, 2x4): 12 floats row by row.

@@ -51,6 +51,7 @@ struct MapRole {
   const char* title;               // "Thickness map", starting the array's comment
   const char* key;                 // after "materials.<name>" in errors
   const char* unit_meaning;        // what a texel of 255 is (times the scale)
+  GxConst<NameGroup::TlutName> tlut;  // the TLUT a colour-indexed map's palette is loaded into
 };
 extern const MapRole kThicknessMapRole, kAlbedoMapRole;
 

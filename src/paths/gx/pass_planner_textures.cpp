@@ -101,7 +101,8 @@ const MapRole kThicknessMapRole{TexturePlan::Role::ThicknessMap,
                                 "thickness map",
                                 "Thickness map",
                                 ".translucency.thickness",
-                                "thickness"};
+                                "thickness",
+                                {"GX_TLUT0"}};
 const MapRole kAlbedoMapRole{TexturePlan::Role::AlbedoMap,
                              "albedo",
                              "ltrender_albedo_",
@@ -109,7 +110,8 @@ const MapRole kAlbedoMapRole{TexturePlan::Role::AlbedoMap,
                              "albedo map",
                              "Albedo map",
                              ".albedo_map",
-                             "albedo (linear: decoded from sRGB by ltrender)"};
+                             "albedo (linear: decoded from sRGB by ltrender)",
+                             {"GX_TLUT1"}};
 
 // A material's map as `role` says (thickness_texture.h: GX_TEXMAP1's thickness map, GX_TEXMAP2's
 // albedo map), one u8 array per material that every pass loads.
@@ -123,7 +125,7 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
                          " texels; a GX texture is at most 1024 a side (resize the map)");
   const ThicknessTexture tex =
       thickness_texture(texels.width, texels.height, *texels.rgb,
-                        map_texture_format(variant_, texels.grey));
+                        map_texture_format(variant_, texels.grey), map_tlut_format(texels.grey));
   const TextureObject& o = tex.texture;
   MapTexture m;
   m.scale = tex.scale;
@@ -148,6 +150,19 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
            "texel of 255 is " +
            std::string(role.unit_meaning) + " " + note_number(tex.scale) +
            ". Flush it (DCFlushRange)\nbefore the GPU reads it."});
+  if (!o.tlut.empty()) {
+    // The palette (gx/palette.h): big-endian entries of the TLUT format, loaded into the role's
+    // TLUT region (gx/tmem.h) before the texture.
+    const auto format = GxConst<NameGroup::TlutFormat>::with_value(o.tlut_format);
+    t.tlut = TexturePlan::Tlut{std::string(role.object) + "_tlut", t.array + "_tlut", format,
+                               static_cast<int>(o.tlut.size() / 2), role.tlut};
+    mp.arrays.push_back(
+        {t.tlut->array, o.tlut,
+         std::string(role.title) + " palette of material " + mat.name + ": " +
+             std::to_string(t.tlut->entries) + " entries " + format.name() +
+             " (big-endian), median cut of the map's texels;\nloaded with GX_LoadTlut into " +
+             role.tlut.name() + ". Flush it (DCFlushRange) before the GPU reads it."});
+  }
   return m;
 }
 

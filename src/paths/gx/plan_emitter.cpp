@@ -109,10 +109,22 @@ void channels(Writer& w, const PassPlan& p) {
 void texture(Writer& w, const TexturePlan& t) {
   const Arg self = Arg::address_of(t.object);
   w.declare(Declaration::Type::TexObj, t.object);
-  w.call("GX_InitTexObj",
-         {self, Arg::identifier(t.array), lit(t.width), lit(t.height), gx(t.format), gx(t.wrap_s),
-          gx(t.wrap_t), gx(GxConst<NG::Bool>{"GX_FALSE"})},
-         t.what);
+  if (t.tlut) {
+    const Arg tlut = Arg::address_of(t.tlut->object);
+    w.declare(Declaration::Type::TlutObj, t.tlut->object);
+    w.call("GX_InitTlutObj",
+           {tlut, Arg::identifier(t.tlut->array), gx(t.tlut->format), lit(t.tlut->entries)});
+    w.call("GX_LoadTlut", {tlut, gx(t.tlut->name)});
+    w.call("GX_InitTexObjCI",
+           {self, Arg::identifier(t.array), lit(t.width), lit(t.height), gx(t.format), gx(t.wrap_s),
+            gx(t.wrap_t), gx(GxConst<NG::Bool>{"GX_FALSE"}), gx(t.tlut->name)},
+           t.what);
+  } else {
+    w.call("GX_InitTexObj",
+           {self, Arg::identifier(t.array), lit(t.width), lit(t.height), gx(t.format), gx(t.wrap_s),
+            gx(t.wrap_t), gx(GxConst<NG::Bool>{"GX_FALSE"})},
+           t.what);
+  }
   w.call("GX_LoadTexObj", {self, gx(t.map)});
 }
 

@@ -31,7 +31,7 @@ Rgba8Image map_image(int width, int height, const std::vector<float>& rgb, doubl
 }  // namespace
 
 ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb,
-                                   TexFormat format) {
+                                   TexFormat format, TlutFormat tlut_format) {
   LT_CHECK(width >= 1 && width <= kMaxTextureSize && height >= 1 && height <= kMaxTextureSize,
            "the caller refuses thickness maps over 1024 texels a side");
   const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
@@ -39,7 +39,7 @@ ThicknessTexture thickness_texture(int width, int height, const std::vector<floa
   ThicknessTexture out;
   const float top = rgb.empty() ? 0.0f : *std::max_element(rgb.begin(), rgb.end());
   out.scale = top > 1.0f ? static_cast<double>(top) : 1.0;
-  LT_CHECK(!is_indexed(format), "a map's format is a direct one (gx_variant.h)");
+  LT_CHECK(format != TexFormat::CI14X2, "a map is never CI14X2 (gx_variant.h)");
   out.format_name = std::string("GX_TF_") + format_info(format).name;
   TextureObject& tex = out.texture;
   tex.width = width;
@@ -51,9 +51,13 @@ ThicknessTexture thickness_texture(int width, int height, const std::vector<floa
   if (!grey && !rgb565 && format != TexFormat::RGBA8) {
     // Every other format through the tree's encoders; I8, RGB565 and RGBA8 keep the loop below,
     // whose bytes the frames made before :map=FMT hold (RGB565 from the float texel itself).
-    tex.data = encode_level(map_image(width, height, rgb, out.scale), format,
-                            EncodeOptions{Rounding::Nearest, TlutFormat::RGB565})
-                   .data;
+    EncodedLevel level = encode_level(map_image(width, height, rgb, out.scale), format,
+                                      EncodeOptions{Rounding::Nearest, tlut_format});
+    tex.data = std::move(level.data);
+    if (is_indexed(format)) {
+      tex.tlut = std::move(level.tlut);
+      tex.tlut_format = static_cast<u8>(tlut_format);
+    }
     return out;
   }
   std::vector<u8> row_major;

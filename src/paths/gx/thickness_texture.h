@@ -46,11 +46,12 @@ struct ThicknessTexture {
 
 // `rgb` holds width x height texels of three floats, row 0 the image's bottom row; every value
 // is finite and >= 0 (the scene checked it). Width and height are 1..1024 (the caller refuses
-// larger maps with the scene key). `format` is any non-indexed format (the caller picks it by
+// larger maps with the scene key). `format` is any format but CI14X2 (the caller picks it by
 // `grey`: gx_variant.h map_texture_format); a colour map in a grey format stores
-// the encoder's intensity (the mean of r, g and b).
+// the encoder's intensity (the mean of r, g and b). A colour-indexed format gets its palette
+// (gx/palette.h, median cut of the 8-bit texels) in `tlut_format`, in texture.tlut.
 ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb,
-                                   TexFormat format);
+                                   TexFormat format, TlutFormat tlut_format = TlutFormat::RGB565);
 
 // A material's thickness map as the scene loaded it (load/thickness_map.h): float rgb texels,
 // row 0 the image's bottom row; empty when the material's thickness is not a map.
