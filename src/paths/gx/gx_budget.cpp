@@ -1,6 +1,8 @@
 #include "paths/gx/gx_budget.h"
 
 #include <algorithm>
+#include <set>
+#include <utility>
 
 #include "core/error.h"
 #include "gx/texture_format.h"
