@@ -125,9 +125,9 @@ def main():
     # CPU of the test processes and what they waited for (Dolphin, ltrender's children): where
     # a suite's time goes (docs/testing.md "Test time" adds these lines up).
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    print("run_batch: %d tests: %d passed, %d skipped, %d failed; %.2f s CPU in %d processes" % (
+    print("run_batch: %d tests: %d passed, %d skipped, %d failed; %.2f s CPU in %d process%s" % (
         len(args.tests), len(passed), len(skipped), len(bad), usage.ru_utime + usage.ru_stime,
-        processes))
+        processes, "" if processes == 1 else "es"))
     for name, outcome in bad:
         print("run_batch: FAILED %s: %s" % (name, outcome))
     if bad:
