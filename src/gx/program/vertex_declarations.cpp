@@ -58,8 +58,7 @@ void set_vertex_input(Machine& m) {
 }
 
 void set_vertex_attribute_format(Machine& m) {
-  const long long format = m.i(0), attribute = m.i(1), count = m.i(2), type = m.i(3),
-                  frac = m.i(4);
+  const long long format = m.i(0), attribute = m.i(1), count = m.i(2), type = m.i(3), frac = m.i(4);
   const bool texcoord = attribute >= kVaTex0 && attribute <= kVaTex7;
   if (attribute == kVaClr1) m.fail_arg(1, "the scene has one vertex colour (GX_VA_CLR0)");
   if (attribute == kVaPos && count != 1)
@@ -81,8 +80,9 @@ void set_vertex_attribute_format(Machine& m) {
   std::string key, value;
   if (attribute == kVaClr0) {
     if (named_component)
-      m.fail_arg(3, m.text(3) + " is a component type; GX_VA_CLR0 takes GX_RGB565, GX_RGB8, "
-                                "GX_RGBX8, GX_RGBA4, GX_RGBA6 or GX_RGBA8");
+      m.fail_arg(3, m.text(3) +
+                        " is a component type; GX_VA_CLR0 takes GX_RGB565, GX_RGB8, "
+                        "GX_RGBX8, GX_RGBA4, GX_RGBA6 or GX_RGBA8");
     key = "clr";
     value = storage_name(color_type_name(static_cast<ColorType>(type)));
   } else {
@@ -97,9 +97,10 @@ void set_vertex_attribute_format(Machine& m) {
       // is the type's (normal_exponent). A frac that is neither 0 nor that exponent expects a
       // scale the console does not apply.
       if (t != ComponentType::F32 && frac != 0 && frac != normal_exponent(t))
-        m.fail_arg(4, "a normal's exponent is fixed by its type (GX_S8: 6, GX_S16: 14) and libogc "
-                      "writes no fraction for GX_VA_NRM: give 0 or " +
-                          std::to_string(normal_exponent(t)));
+        m.fail_arg(4,
+                   "a normal's exponent is fixed by its type (GX_S8: 6, GX_S16: 14) and libogc "
+                   "writes no fraction for GX_VA_NRM: give 0 or " +
+                       std::to_string(normal_exponent(t)));
     } else if (t != ComponentType::F32) {
       // An F32's frac is written to the VAT, and the loader reads a float as it is
       // (vertex_loader.h): the storage key's f32 takes none.
@@ -124,8 +125,9 @@ void set_vertex_attribute_format(Machine& m) {
   if (texcoord && declared.storage_at[k][0] != 0 && before != value)
     m.fail_call(gx_attribute_name(attribute) + " stored as " + value + " where line " +
                 std::to_string(declared.storage_at[k][0]) + " stores a texture coordinate as " +
-                before + ": the stored mesh keeps every texture coordinate alike (the storage "
-                         "key's uv)");
+                before +
+                ": the stored mesh keeps every texture coordinate alike (the storage "
+                "key's uv)");
   declared.storage = storage;
   declared.storage_at[k] = {m.line(), m.column()};
 }

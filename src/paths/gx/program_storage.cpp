@@ -113,7 +113,8 @@ GxVariant declared_variant(const Scene& scene, const GxVariant& given,
     if (*declared.indexed && v.draw == GxVariant::Draw::Direct) v.draw = GxVariant::Draw::Indexed;
     if (!*declared.indexed && v.draw != GxVariant::Draw::Direct)
       throw InputError("--variant", to_string(given),
-                       "gx: :draw= sends indices where " + file + ":" + source_at(declared.input_at) +
+                       "gx: :draw= sends indices where " + file + ":" +
+                           source_at(declared.input_at) +
                            " sends GX_VA_POS GX_DIRECT (declare GX_INDEX8 or GX_INDEX16)");
   }
   check_array_strides(scene, programs, v.storage);

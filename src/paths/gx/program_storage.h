@@ -13,7 +13,8 @@
 // - every pass stores the mesh alike (one mesh a frame): two passes declaring an attribute
 //   otherwise are refused, naming the second's line.
 // A fraction the mesh overflows is refused at the declaration's file:line with vertex_storage's
-// own message; a GX_SetArray stride other than the stored element's bytes at its line. Generated programs declare nothing of their own: the variant is returned as is.
+// own message; a GX_SetArray stride other than the stored element's bytes at its line. Generated
+// programs declare nothing of their own: the variant is returned as is.
 #pragma once
 
 #include "paths/gx/gx_path.h"
