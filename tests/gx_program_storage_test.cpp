@@ -6,7 +6,9 @@
 // variant parser and the generated programs: an independent route to the same bytes.
 // - the declared storage renders the variant's frame byte for byte, and not the F32 frame;
 // - an indexed declaration writes the variant's :draw=indexed FIFO log byte for byte;
-// - a bad declaration is one InputError naming the file and the declaration's line.
+// - a bad declaration is one InputError naming the file and the declaration's line (a type the
+//   attribute cannot have, a fraction the mesh overflows, direct and indexed mixed, GX_INDEX8
+//   past its array, a stride that does not fit, passes or a variant axis that say otherwise).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -157,6 +159,14 @@ const BadDeclaration kBadDeclarations[] = {
      {{"GX_SetVtxDesc(GX_VA_NRM, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_NRM, GX_INDEX8);"}},
      "GX_INDEX8",
      "every attribute alike"},
+    // baked_blob's positions are hundreds of distinct elements: GX_INDEX8 cannot reach them.
+    {"index8_past_its_array",
+     {{"GX_SetVtxDesc(GX_VA_POS, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_POS, GX_INDEX8);"},
+      {"GX_SetVtxDesc(GX_VA_NRM, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_NRM, GX_INDEX8);"},
+      {"GX_SetVtxDesc(GX_VA_CLR0, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_CLR0, GX_INDEX8);"},
+      {"GX_SetVtxDesc(GX_VA_TEX0, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_TEX0, GX_INDEX8);"}},
+     "GX_SetVtxDesc(GX_VA_POS, GX_INDEX8)",
+     "GX_INDEX8 indexes at most 255 elements; GX_VA_POS's array holds"},
     {"a_stride_that_does_not_fit",
      {{"GX_ClearVtxDesc();", "GX_ClearVtxDesc();\n  GX_SetArray(GX_VA_POS, positions, 8);"}},
      "GX_SetArray",

@@ -51,6 +51,7 @@ void set_vertex_input(Machine& m) {
     }
   }
   m.state.vertex.type[static_cast<size_t>(attribute)] = m.u(1);
+  m.state.declared.input_at[static_cast<size_t>(attribute - kVaPos)] = {m.line(), m.column()};
   if (attribute == kVaPos) {
     m.state.declared.indexed = input >= 2;
     m.state.declared.position_input_at = {m.line(), m.column()};

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "gx/fifo/cp_registers.h"
 #include "paths/gx/object_draw.h"
 #include "paths/gx/scene_vertices.h"
 
@@ -90,6 +91,43 @@ void check_array_strides(const Scene& scene, const ScenePrograms& programs,
   }
 }
 
+// A GX_INDEX8 the file declares for an array of more than 255 elements: on the console its
+// indices would wrap (and 0xFF drops the vertex), so it is refused where the variant's draw would
+// quietly index it with GX_INDEX16 (vertex_quantiser.h index_attributes picks by size).
+void check_index8_arrays(const Scene& scene, const ScenePrograms& programs, const GxVariant& v) {
+  const bool stored = !v.storage.is_default();
+  const SceneView view = SceneView::of(scene);
+  for (const MaterialDraw& d : programs.draws(scene)) {
+    const GxState& st = programs.by_material[d.material][static_cast<size_t>(d.pass)].state;
+    bool any_index8 = false;
+    for (u8 input : st.vertex.type) any_index8 |= input == static_cast<u8>(AttributeInput::Index8);
+    if (!any_index8) continue;
+    for (size_t object : d.objects) {
+      const SceneObject& o = scene.objects[object];
+      const VertexStream stream = make_vertex_stream(scene, o, view);
+      const ObjectSpaceMesh mesh = stored ? object_space_mesh(o, view) : ObjectSpaceMesh{};
+      const VertexAttributeData data =
+          pass_vertex_data(stored ? mesh.position : stream.position,
+                           stored ? mesh.normal : stream.normal, stream, fifo::sent_attributes(st),
+                           fifo::sent_formats(st.texcoord_formats), static_cast<size_t>(d.pass));
+      const VertexAttributeFormat format = storage_format(v.storage, data, programs.file.file);
+      const IndexedArrays arrays =
+          index_attributes(quantise_attributes(data, format), programs.file.file);
+      for (int n : arrays.arrays) {
+        const auto i = static_cast<size_t>(n);
+        if (st.vertex.type[i + kVaPos] != static_cast<u8>(AttributeInput::Index8) ||
+            arrays.input[i] != AttributeInput::Index16)
+          continue;
+        throw InputError(
+            programs.file.file, source_at(st.declared.input_at[i]),
+            "GX_SetVtxDesc: GX_INDEX8 indexes at most 255 elements; " + attribute_name(n) +
+                "'s array holds " + std::to_string(arrays.bytes[i].size() / arrays.stride[i]) +
+                " elements for " + o.mesh_path.filename().string() + " (declare GX_INDEX16)");
+      }
+    }
+  }
+}
+
 GxVariant declared_variant(const Scene& scene, const GxVariant& given,
                            const ScenePrograms& programs) {
   if (programs.source == "generated") return given;
@@ -139,6 +177,7 @@ GxVariant declared_variant(const Scene& scene, const GxVariant& given,
       }
     }
   }
+  if (declared.indexed && *declared.indexed) check_index8_arrays(scene, programs, v);
   return v;
 }
 
