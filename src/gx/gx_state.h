@@ -85,10 +85,10 @@ struct PixelFormat {
 struct DeclaredStorage {
   using At = std::array<int, 2>;
   VertexStorage storage;
-  std::array<At, 4> storage_at{};            // per kVertexStorageKeys entry (vtx, nrm, clr, uv)
-  bool indexed = false;                      // GX_VA_POS is GX_INDEX8 or GX_INDEX16
-  At position_input_at{};                    // the GX_SetVtxDesc(GX_VA_POS, ...) in force
-  std::array<At, kVertexArrays> input_at{};  // each attribute's GX_SetVtxDesc, by array number
+  std::array<At, 4> storage_at{};  // per kVertexStorageKeys entry (vtx, nrm, clr, uv)
+  bool indexed = false;            // GX_VA_POS is GX_INDEX8 or GX_INDEX16
+  // Each attribute's GX_SetVtxDesc in force, by array number (kArrayPosition: GX_VA_POS's).
+  std::array<At, kVertexArrays> input_at{};
   // GX_SetArray(attr, array, stride): each array's stride (0: not set) and where; the bytes are
   // the scene's mesh stored as declared, so only the stride is the program's to say.
   std::array<int, kVertexArrays> array_stride{};

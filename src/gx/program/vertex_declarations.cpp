@@ -32,7 +32,7 @@ size_t storage_key_index(std::string_view key) {
 void clear_vertex_inputs(Machine& m) {
   m.state.vertex = VertexDescriptor{};
   m.state.declared.indexed = false;
-  m.state.declared.position_input_at = {};
+  m.state.declared.input_at = {};
 }
 
 void set_vertex_input(Machine& m) {
@@ -52,10 +52,7 @@ void set_vertex_input(Machine& m) {
   }
   m.state.vertex.type[static_cast<size_t>(attribute)] = m.u(1);
   m.state.declared.input_at[static_cast<size_t>(attribute - kVaPos)] = {m.line(), m.column()};
-  if (attribute == kVaPos) {
-    m.state.declared.indexed = input >= 2;
-    m.state.declared.position_input_at = {m.line(), m.column()};
-  }
+  if (attribute == kVaPos) m.state.declared.indexed = input >= 2;
 }
 
 void set_vertex_attribute_format(Machine& m) {

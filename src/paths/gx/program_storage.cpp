@@ -47,12 +47,12 @@ FileDeclarations merged_declarations(const Scene& scene, const ScenePrograms& pr
                              ": the scene's mesh is stored once a frame, alike in every pass");
       }
     }
-    if (st.position_input_at[0] == 0) continue;
+    if (st.input_at[kArrayPosition][0] == 0) continue;
     if (!out.indexed) {
       out.indexed = st.indexed;
-      out.input_at = st.position_input_at;
+      out.input_at = st.input_at[kArrayPosition];
     } else if (*out.indexed != st.indexed) {
-      throw InputError(file, source_at(st.position_input_at),
+      throw InputError(file, source_at(st.input_at[kArrayPosition]),
                        "GX_SetVtxDesc: GX_VA_POS sent " +
                            std::string(st.indexed ? "indexed" : "GX_DIRECT") + " where line " +
                            std::to_string(out.input_at[0]) +
