@@ -85,7 +85,7 @@ inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
         gx::scene_programs_for(scene, gx::parse_gx_variant(f.variant), f.program_file));
   std::vector<gx::fifo::FrameInput> inputs;
   for (size_t k = 0; k < frames.size(); ++k)
-    inputs.push_back({gx::parse_gx_variant(frames[k].variant), &programs[k], nullptr});
+    inputs.push_back({programs[k].variant, &programs[k], nullptr});
   const std::vector<Image> dolphin = dolphin_pictures(scene, inputs);
   std::vector<JudgedRow> rows;
   if (dolphin.size() != frames.size()) {

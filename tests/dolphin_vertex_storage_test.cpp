@@ -7,11 +7,15 @@
 // matter) x two storages (positions s16, normals s8, RGB565, s16 texture coordinates; and s8
 // positions, s16 normals, RGBA4, s8 texture coordinates), one Dolphin start a scene. Not u8/u16: t
 // = dot(V, -H) is signed, so an unsigned texture coordinate cannot hold it, and the demo meshes'
-// positions are centred on their origin.
+// positions are centred on their origin. A third frame is a program file declaring the storage
+// as a game does (the generated F32 program with GX_S16, 8 positions and GX_S8 normals, issue 46
+// step 4): Dolphin plays the log the declarations give, ltrender renders the file.
 #include <gtest/gtest.h>
 
 #include "dolphin_util.h"
+#include "gx/program/printer.h"
 #include "load/load_scene.h"
+#include "paths/gx/generator.h"
 
 namespace lt {
 namespace {
@@ -20,9 +24,21 @@ class DolphinVertexStorage : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DolphinVertexStorage, DolphinsFramesOfAStoredMeshAreLtrendersXfbPictures) {
   const Scene scene = load_scene(test::source_dir() / GetParam());
+  test::TempDir dir;
+  std::string program =
+      gx::print_program(gx::generate_programs(scene, gx::parse_gx_variant("t=vertex")).file);
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"GX_POS_XYZ, GX_F32, 0", "GX_POS_XYZ, GX_S16, 8"},
+        {"GX_NRM_XYZ, GX_F32, 0", "GX_NRM_XYZ, GX_S8, 0"}}) {
+    for (size_t at = program.find(from); at != std::string::npos; at = program.find(from, at))
+      program.replace(at, from.size(), to);
+  }
+  ASSERT_NE(program.find("GX_S16, 8"), std::string::npos) << "no position declaration edited";
+  test::write_file(dir / "declared.c", program);
   const std::vector<test::JudgedFrame> frames{
       {"t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto", ""},
-      {"t=vertex:vtx=s8/auto:nrm=s16:clr=rgba4:uv=s8/auto", ""}};
+      {"t=vertex:vtx=s8/auto:nrm=s16:clr=rgba4:uv=s8/auto", ""},
+      {"t=vertex", (dir / "declared.c").string()}};
   const std::vector<test::JudgedRow> rows =
       test::expect_dolphins_pictures(scene, frames, GetParam());
   for (size_t k = 0; k < rows.size(); ++k)

@@ -9,13 +9,14 @@
 #include "gx/efb.h"
 #include "gx/tev.h"
 #include "gx/texture_unit.h"
+#include "gx/vertex_storage.h"
 #include "gx/xf_lighting.h"
 #include "gx/xf_texgen.h"
 
 namespace lt::gx {
 
-// Vertex attributes GX_VA_POS (9) .. GX_VA_TEX7 (20), as GX_SetVtxDesc declares them: GX_NONE 0
-// or GX_DIRECT 1 (indexed data is refused: the scene's vertices are sent directly). GX_Init
+// Vertex attributes GX_VA_POS (9) .. GX_VA_TEX7 (20), as GX_SetVtxDesc declares them: GX_NONE 0,
+// GX_DIRECT 1, GX_INDEX8 2 or GX_INDEX16 3 (the draw then sends indices: DeclaredStorage). GX_Init
 // clears the descriptor [OGC gx.c __GX_InitGX: GX_ClearVtxDesc].
 inline constexpr int kVaPos = 9, kVaNrm = 10, kVaClr0 = 11, kVaClr1 = 12, kVaTex0 = 13,
                      kVaTex7 = 20;
@@ -76,6 +77,25 @@ struct PixelFormat {
   bool operator==(const PixelFormat&) const = default;
 };
 
+// What a program file declares of how the scene's mesh is stored and sent: each attribute's
+// GX_SetVtxAttrFmt on GX_VTXFMT0 (the format the scene draws with) as a storage key's attribute
+// (gx/vertex_storage.h), and whether GX_SetVtxDesc sends the position GX_DIRECT or indexed. The
+// gx path turns it into the variant's own storage and :draw= (paths/gx/program_storage.h): one
+// representation. Positions are (line, column) of the call, line 0 where nothing was declared.
+struct DeclaredStorage {
+  using At = std::array<int, 2>;
+  VertexStorage storage;
+  std::array<At, 4> storage_at{};  // per kVertexStorageKeys entry (vtx, nrm, clr, uv)
+  bool indexed = false;            // GX_VA_POS is GX_INDEX8 or GX_INDEX16
+  // Each attribute's GX_SetVtxDesc in force, by array number (kArrayPosition: GX_VA_POS's).
+  std::array<At, kVertexArrays> input_at{};
+  // GX_SetArray(attr, array, stride): each array's stride (0: not set) and where; the bytes are
+  // the scene's mesh stored as declared, so only the stride is the program's to say.
+  std::array<int, kVertexArrays> array_stride{};
+  std::array<At, kVertexArrays> array_at{};
+  bool operator==(const DeclaredStorage&) const = default;
+};
+
 struct GxState {
   XfLightingState lighting;
   XfTexGenState texgen;
@@ -87,6 +107,7 @@ struct GxState {
   ZMode z;
   VertexDescriptor vertex;
   TexCoordFormats texcoord_formats;
+  DeclaredStorage declared;
   u8 cull_mode = kCullBack;
   int cull_mode_line = 0;  // the program's line of the GX_SetCullMode in force; 0: GX_Init's
   PixelFormat pixel_format;

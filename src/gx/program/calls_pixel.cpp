@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "gx/program/machine.h"
+#include "gx/program/vertex_declarations.h"
 #include "gx/texture_format.h"
 #include "gx/tmem.h"
 
@@ -204,36 +205,22 @@ void add_pixel_calls(CallTable& table) {
       {"GX_InvalidateTexAll", {{}, [](Machine&) {}}},
       {"DCFlushRange", {{of(K::ArrayName), integer(G::Number, 0, 1 << 24)}, [](Machine&) {}}},
       // --- Vertex format [OGC gx.h L1781, L1955, L1985] ---
-      {"GX_ClearVtxDesc", {{}, [](Machine& m) { m.state.vertex = VertexDescriptor{}; }}},
+      {"GX_ClearVtxDesc", {{}, [](Machine& m) { clear_vertex_inputs(m); }}},
+      // Every input a stored mesh has: GX_DIRECT, or GX_INDEX8 / GX_INDEX16 for every attribute
+      // alike (the :draw= axis's indexed draws give each attribute the index its array needs:
+      // paths/gx/program_storage.h).
       {"GX_SetVtxDesc",
        {{integer(G::VtxAttr, 9, 20), integer(G::VtxAttrType, 0, 3)},
-        [](Machine& m) {
-          if (m.i(1) > 1)
-            m.fail_arg(1, "indexed vertex data is not modelled (the scene sends GX_DIRECT)");
-          if (m.i(0) == kVaClr1) m.fail_arg(0, "the scene has one vertex colour (GX_VA_CLR0)");
-          m.state.vertex.type[m.u(0)] = m.u(1);
-        }}},
+        [](Machine& m) { set_vertex_input(m); }}},
+      // GX_SetArray(attr, array, stride) [OGC gx.h L1929]: the array holds the scene's mesh as
+      // stored; its stride is checked against the declared storage (paths/gx/program_storage.h).
+      {"GX_SetArray",
+       {{integer(G::VtxAttr, 9, 20), of(K::MeshArray), integer(G::Number, 0, kMaxArrayStride)},
+        [](Machine& m) { set_vertex_array(m); }}},
       {"GX_SetVtxAttrFmt",
        {{integer(G::VtxFmt, 0, 7), integer(G::VtxAttr, 9, 20), integer(G::CompCount, 0, 2),
          integer(G::CompType, 0, 5), integer(G::Number, 0, 31)},
-        [](Machine& m) {
-          // The emulator feeds what the scene has, in one format: check that the program
-          // declares that format, so exported code matches what was emulated.
-          const long long attr = m.i(1), cnt = m.i(2), type = m.i(3);
-          const bool texcoord = attr >= kVaTex0 && attr <= kVaTex7;
-          const bool ok = (attr == kVaPos && cnt == 1 && type == 4) ||
-                          (attr == kVaNrm && cnt == 0 && type == 4) ||
-                          (attr == kVaClr0 && (type == 5 || type == 1)) || (texcoord && type == 4);
-          if (!ok || (texcoord && cnt > 1))
-            m.fail_call(
-                "the scene sends positions and normals as GX_F32 XYZ, colours as "
-                "GX_RGBA8/GX_RGB8 and texture coordinates as GX_F32 GX_TEX_S or GX_TEX_ST");
-          // GX_TEX_S (0) carries the CPU's t, GX_TEX_ST (1) the mesh's UV (gx_state.h). The
-          // scene draws with GX_VTXFMT0, so only that format's choice is what it sends.
-          if (texcoord && m.i(0) == 0)
-            m.state.texcoord_formats.kind[static_cast<size_t>(attr - kVaTex0)] =
-                cnt == 0 ? TexCoordFormats::S : TexCoordFormats::ST;
-        }}},
+        [](Machine& m) { set_vertex_attribute_format(m); }}},
   });
 }
 

@@ -18,7 +18,20 @@
 namespace lt::gx::interp {
 
 // What a parameter of a libogc prototype takes.
-enum class ParamKind { Int, F32, Color, ColorS10, LightRef, TexRef, TlutRef, MtxName, ArrayName };
+// MeshArray: any name (GX_SetArray's array is the scene's mesh as stored: the program names it,
+// ltrender holds its bytes).
+enum class ParamKind {
+  Int,
+  F32,
+  Color,
+  ColorS10,
+  LightRef,
+  TexRef,
+  TlutRef,
+  MtxName,
+  ArrayName,
+  MeshArray
+};
 
 struct Param {
   ParamKind kind;
@@ -106,6 +119,7 @@ class Machine {
   const std::string& text(size_t k) const { return call_->args[k].text; }
   const std::vector<u8>& bytes_of(const std::string& array) const { return arrays_.at(array); }
   int line() const { return call_->pos.line; }  // of the current call
+  int column() const { return call_->pos.column; }
 
   [[noreturn]] void fail_arg(size_t k, const std::string& what) const {
     fail(call_->args[k].pos, call_->function + " argument " + std::to_string(k + 1) + ": " + what);
@@ -205,6 +219,9 @@ class Machine {
       case ParamKind::MtxName:
         if (a.kind != Arg::Kind::Identifier || !matrices_.count(a.name))
           wrong("the name of a declared Mtx");
+        break;
+      case ParamKind::MeshArray:
+        if (a.kind != Arg::Kind::Identifier) wrong("the name of the attribute's array");
         break;
       case ParamKind::ArrayName:
         if (a.kind != Arg::Kind::Identifier || !arrays_.count(a.name))

@@ -23,6 +23,7 @@
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/object_draw.h"
 #include "paths/gx/program_check.h"
+#include "paths/gx/program_storage.h"
 #include "paths/gx/scene_vertices.h"
 
 namespace lt::gx {
@@ -97,6 +98,7 @@ ScenePrograms scene_programs_for(const Scene& scene, const GxVariant& variant,
                            " where the frame's first pass draws in " + name(format) +
                            " (one EFB format a frame is modelled)");
   }
+  apply_program_declarations(scene, variant, out);
   return out;
 }
 
@@ -133,6 +135,7 @@ class GxPath final : public Path {
         programs_(scene_programs_for(ctx.scene, variant_, ctx.options.program_file)),
         view_(SceneView::of(ctx.scene)),
         draws_(programs_.draws(ctx.scene)) {
+    variant_ = programs_.variant;  // with a program file's declared storage and draw
     const Scene& s = ctx.scene;
     if (variant_.out == GxVariant::Output::Xfb) {
       const std::string why = xfb_size_refusal(ctx.width, ctx.height);
@@ -409,7 +412,7 @@ class GxInfo final : public TypedPathInfo<gx::GxVariant> {
     const gx::GxVariant variant = parse(v);
     const gx::ScenePrograms programs = gx::scene_programs_for(scene, variant, options.program_file);
     return gx::fifo::write_fifo_log(gx::fifo::for_dolphin(
-        gx::fifo::record_frames(scene, {{variant, &programs}}, {width, height})));
+        gx::fifo::record_frames(scene, {{programs.variant, &programs}}, {width, height})));
   }
   // TEV stages, texgens, texture maps, channels, lights, konst colours, registers and passes
   // against the Wii's GX, for generated programs and for program files alike.

@@ -34,6 +34,9 @@ struct ScenePrograms {
   // (C name, scene name) of every material some object uses, in scene order: the export's
   // comment maps each pass function back to the scene's (or glTF's) material.
   std::vector<std::pair<std::string, std::string>> material_names;
+  // The variant the frame is drawn with: the given one, with a program file's declared vertex
+  // storage and draw (program_storage.h). The emulator, the FIFO log and the exports read this.
+  GxVariant variant;
 
   int passes() const;  // the most any used material needs
   // The frame's draws in the order the console receives them: pass by pass, every material that

@@ -1,0 +1,216 @@
+// A user's own GX C declares how the scene's mesh is stored and sent, as a game does (issue 46
+// step 4): GX_SetVtxAttrFmt on GX_VTXFMT0, GX_SetVtxDesc with GX_INDEX8/16 and GX_SetArray. The
+// file is the generated program of the default (F32) variant, printed, with its declarations
+// edited as a porter edits them; the expectation is the frame and FIFO log of the variant whose
+// axes say the same storage (`vtx=s16/8:nrm=s8:clr=rgb565`, `:draw=indexed`), reached through the
+// variant parser and the generated programs: an independent route to the same bytes.
+// - the declared storage renders the variant's frame byte for byte, and not the F32 frame;
+// - an indexed declaration writes the variant's :draw=indexed FIFO log byte for byte;
+// - a bad declaration is one InputError naming the file and the declaration's line (a type the
+//   attribute cannot have, a fraction the mesh overflows, direct and indexed mixed, GX_INDEX8
+//   past its array, a stride that does not fit, passes or a variant axis that say otherwise).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "gx/program/printer.h"
+#include "load/load_scene.h"
+#include "paths/gx/generator.h"
+#include "paths/gx/gx_path.h"
+#include "render/session.h"
+#include "test_util.h"
+
+namespace lt::gx {
+namespace {
+
+constexpr int kWidth = 96, kHeight = 72;
+const char* const kStored = "t=vertex:vtx=s16/8:nrm=s8:clr=rgb565";
+
+// A scene with a vertex colour (GX_VA_CLR0), so every declared attribute is sent.
+const Scene& baked_blob() {
+  static const Scene scene = load_scene(test::source_dir() / "scenes/baked_blob.json");
+  return scene;
+}
+
+// The default variant's generated programs as C, what `ltrender export gx` writes.
+const std::string& f32_program_text() {
+  static const std::string text =
+      print_program(generate_programs(baked_blob(), parse_gx_variant("t=vertex")).file);
+  return text;
+}
+
+// `text` with every `from` replaced by `to` (each must occur).
+std::string with_edits(std::string text,
+                       const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    for (; at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// The line (1-based) of the first occurrence of `needle` in `text`.
+int line_holding(const std::string& text, const std::string& needle) {
+  const size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+const std::vector<std::pair<std::string, std::string>> kS16S8Rgb565 = {
+    {"GX_VA_POS, GX_POS_XYZ, GX_F32, 0", "GX_VA_POS, GX_POS_XYZ, GX_S16, 8"},
+    {"GX_VA_NRM, GX_NRM_XYZ, GX_F32, 0", "GX_VA_NRM, GX_NRM_XYZ, GX_S8, 0"},
+    {"GX_VA_CLR0, GX_CLR_RGBA, GX_RGBA8, 0", "GX_VA_CLR0, GX_CLR_RGB, GX_RGB565, 0"}};
+
+TEST(GxProgramStorage, ADeclaredStorageRendersTheVariantsFrameByteForByte) {
+  test::TempDir dir;
+  const fs::path file = dir / "stored.c";
+  test::write_file(file, with_edits(f32_program_text(), kS16S8Rgb565));
+  PathOptions options;
+  options.program_file = file.string();
+  const Image declared = render_scene(baked_blob(), "gx", "t=vertex", kWidth, kHeight, options);
+  const Image variant = render_scene(baked_blob(), "gx", kStored, kWidth, kHeight);
+  const Image f32 = render_scene(baked_blob(), "gx", "t=vertex", kWidth, kHeight);
+  ASSERT_EQ(declared.rgba.size(), variant.rgba.size());
+  EXPECT_EQ(declared.rgba, variant.rgba);
+  EXPECT_NE(declared.rgba, f32.rgba) << "the declaration changed nothing";
+  // The same storage named both ways is one request, not a conflict.
+  EXPECT_EQ(render_scene(baked_blob(), "gx", std::string(kStored), kWidth, kHeight, options).rgba,
+            variant.rgba);
+}
+
+TEST(GxProgramStorage, AnIndexedDeclarationWritesTheVariantsIndexedFifoLog) {
+  test::TempDir dir;
+  const fs::path file = dir / "indexed.c";
+  auto edits = kS16S8Rgb565;
+  for (const char* a : {"GX_VA_POS", "GX_VA_NRM", "GX_VA_CLR0", "GX_VA_TEX0"})
+    edits.push_back({std::string("GX_SetVtxDesc(") + a + ", GX_DIRECT);",
+                     std::string("GX_SetVtxDesc(") + a + ", GX_INDEX16);"});
+  // Packed arrays: 3 x s16, 3 x s8, one RGB565, one f32 t.
+  edits.push_back({"GX_ClearVtxDesc();",
+                   "GX_ClearVtxDesc();\n  GX_SetArray(GX_VA_POS, positions, 6);\n"
+                   "  GX_SetArray(GX_VA_NRM, normals, 3);\n  GX_SetArray(GX_VA_CLR0, colours, 2);\n"
+                   "  GX_SetArray(GX_VA_TEX0, t, 4);"});
+  test::write_file(file, with_edits(f32_program_text(), edits));
+  const PathInfo& gx = gx_path_info();
+  const std::vector<std::uint8_t> declared =
+      gx.fifo_log(baked_blob(), "t=vertex", PathOptions{file.string(), ""}, kWidth, kHeight);
+  const std::vector<std::uint8_t> variant =
+      gx.fifo_log(baked_blob(), std::string(kStored) + ":draw=indexed", {}, kWidth, kHeight);
+  const std::vector<std::uint8_t> direct = gx.fifo_log(baked_blob(), kStored, {}, kWidth, kHeight);
+  EXPECT_EQ(declared, variant);
+  EXPECT_NE(declared, direct);
+}
+
+// A bad declaration: the edit, the text the refused line holds, and a part of the message.
+struct BadDeclaration {
+  const char* what;
+  std::vector<std::pair<std::string, std::string>> edits;
+  const char* line_holds;
+  const char* message;
+};
+
+class GxBadStorageDeclaration : public ::testing::TestWithParam<BadDeclaration> {};
+
+TEST_P(GxBadStorageDeclaration, IsRefusedNamingTheFileAndLine) {
+  const BadDeclaration& c = GetParam();
+  test::TempDir dir;
+  const fs::path file = dir / "bad.c";
+  const std::string text = with_edits(f32_program_text(), c.edits);
+  test::write_file(file, text);
+  try {
+    (void)scene_programs_for(baked_blob(), parse_gx_variant("t=vertex"), file.string());
+    FAIL() << c.what << ": accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), file.string()) << e.what();
+    EXPECT_EQ(e.where().substr(0, e.where().find(':')),
+              std::to_string(line_holding(text, c.line_holds)))
+        << e.what();
+    EXPECT_NE(e.what_only().find(c.message), std::string::npos) << e.what();
+    EXPECT_EQ(test::count_lines(std::string(e.what()) + "\n"), 1);
+  }
+}
+
+const BadDeclaration kBadDeclarations[] = {
+    // baked_blob's positions reach 1.2: s8/7 holds -1 .. 0.99 (vertex_storage's own message).
+    {"fraction_the_mesh_overflows",
+     {{"GX_VA_POS, GX_POS_XYZ, GX_F32, 0", "GX_VA_POS, GX_POS_XYZ, GX_S8, 7"}},
+     "GX_S8, 7",
+     "s8/7 holds -1 .. 0.992188; the mesh's positions reach"},
+    {"type_a_normal_cannot_have",
+     {{"GX_VA_NRM, GX_NRM_XYZ, GX_F32, 0", "GX_VA_NRM, GX_NRM_XYZ, GX_U8, 0"}},
+     "GX_U8",
+     "'u8' is not a normal type"},
+    {"normal_frac_other_than_its_exponent",
+     {{"GX_VA_NRM, GX_NRM_XYZ, GX_F32, 0", "GX_VA_NRM, GX_NRM_XYZ, GX_S8, 8"}},
+     "GX_S8, 8",
+     "fixed by its type"},
+    {"component_type_for_a_colour",
+     {{"GX_VA_CLR0, GX_CLR_RGBA, GX_RGBA8, 0", "GX_VA_CLR0, GX_CLR_RGBA, GX_S16, 0"}},
+     "GX_S16",
+     "is a component type"},
+    {"colour_encoding_for_a_position",
+     {{"GX_VA_POS, GX_POS_XYZ, GX_F32, 0", "GX_VA_POS, GX_POS_XYZ, GX_RGB565, 0"}},
+     "GX_RGB565",
+     "is a colour encoding"},
+    {"direct_and_indexed_in_one_vertex",
+     {{"GX_SetVtxDesc(GX_VA_NRM, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_NRM, GX_INDEX8);"}},
+     "GX_INDEX8",
+     "every attribute alike"},
+    // baked_blob's positions are hundreds of distinct elements: GX_INDEX8 cannot reach them.
+    {"index8_past_its_array",
+     {{"GX_SetVtxDesc(GX_VA_POS, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_POS, GX_INDEX8);"},
+      {"GX_SetVtxDesc(GX_VA_NRM, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_NRM, GX_INDEX8);"},
+      {"GX_SetVtxDesc(GX_VA_CLR0, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_CLR0, GX_INDEX8);"},
+      {"GX_SetVtxDesc(GX_VA_TEX0, GX_DIRECT);", "GX_SetVtxDesc(GX_VA_TEX0, GX_INDEX8);"}},
+     "GX_SetVtxDesc(GX_VA_POS, GX_INDEX8)",
+     "GX_INDEX8 indexes at most 255 elements; GX_VA_POS's array holds"},
+    {"a_stride_that_does_not_fit",
+     {{"GX_ClearVtxDesc();", "GX_ClearVtxDesc();\n  GX_SetArray(GX_VA_POS, positions, 8);"}},
+     "GX_SetArray",
+     "GX_SetArray: stride 8 where GX_VA_POS stored as f32 takes 12"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cases, GxBadStorageDeclaration, ::testing::ValuesIn(kBadDeclarations),
+                         [](const auto& info) { return std::string(info.param.what); });
+
+TEST(GxProgramStorage, PassesDeclaringTheMeshOtherwiseAreRefusedAtTheSecond) {
+  test::TempDir dir;
+  const fs::path file = dir / "two.c";
+  // Only the second pass's position: its line is the one named.
+  std::string text = f32_program_text();
+  const std::string from = "GX_VA_POS, GX_POS_XYZ, GX_F32, 0";
+  const size_t second = text.find(from, text.find(from) + 1);
+  ASSERT_NE(second, std::string::npos);
+  text.replace(second, from.size(), "GX_VA_POS, GX_POS_XYZ, GX_S16, 8");
+  test::write_file(file, text);
+  try {
+    (void)scene_programs_for(baked_blob(), parse_gx_variant("t=vertex"), file.string());
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), file.string());
+    EXPECT_EQ(e.where().substr(0, e.where().find(':')),
+              std::to_string(line_holding(text, "GX_S16, 8")));
+    EXPECT_NE(e.what_only().find("stored once a frame"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GxProgramStorage, AVariantAxisThatSaysOtherwiseIsRefusedNamingBoth) {
+  test::TempDir dir;
+  const fs::path file = dir / "stored.c";
+  test::write_file(file, with_edits(f32_program_text(), kS16S8Rgb565));
+  try {
+    (void)scene_programs_for(baked_blob(), parse_gx_variant("t=vertex:vtx=s16/7"), file.string());
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "--variant");
+    EXPECT_NE(e.what_only().find(":vtx=s16/7 where " + file.string()), std::string::npos)
+        << e.what();
+    EXPECT_NE(e.what_only().find("declares s16/8"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace lt::gx
