@@ -1,7 +1,9 @@
 #include "paths/gx/gx_budget.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "core/error.h"
@@ -14,6 +16,25 @@ namespace lt::gx {
 
 namespace {
 
+// One draw's figures, each key under `prefix` (docs/budget.md): what the FIFO sends a frame
+// and, for an indexed draw (`refreshed_array_bytes` given), the arrays and display list it
+// keeps in MEM1.
+void add_draw_cost(budget::Report& r, const std::string& prefix, const DrawCost& c,
+                   std::optional<std::size_t> refreshed_array_bytes) {
+  auto add = [&](const char* key, std::size_t n) {
+    r.details.push_back({prefix + key, "", static_cast<int>(n)});
+  };
+  add("vertex_bytes", c.vertex_bytes);
+  if (refreshed_array_bytes) {
+    add("array_bytes", c.array_bytes);
+    add("refreshed_array_bytes", *refreshed_array_bytes);
+    add("display_list_bytes", c.display_list_bytes);
+  }
+  add("fifo_bytes", c.fifo_bytes);
+  add("xf_vertices", c.vertices);
+  add("triangles", c.triangles);
+}
+
 // The vertex cost details of a scene's budget: F32 immediate mode and kBudgetVertexStorage,
 // indexed, stripped, in display lists (docs/budget.md).
 void add_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs) {
@@ -25,21 +46,9 @@ void add_vertex_cost(budget::Report& r, const Scene& scene, const ScenePrograms&
                       " not counted: " + e.where() + ": " + e.what_only());
     return;
   }
-  auto add = [&](const std::string& key, std::size_t v) {
-    r.details.push_back({key, "", static_cast<int>(v)});
-  };
-  add("f32_vertex_bytes", c.immediate.vertex_bytes);
-  add("f32_fifo_bytes", c.immediate.fifo_bytes);
-  add("f32_xf_vertices", c.immediate.vertices);
-  add("f32_triangles", c.immediate.triangles);
+  add_draw_cost(r, "f32_", c.immediate, std::nullopt);
   r.details.push_back({"stored_vertex_storage", kBudgetVertexStorage, std::nullopt});
-  add("stored_vertex_bytes", c.display_list.vertex_bytes);
-  add("stored_array_bytes", c.display_list.array_bytes);
-  add("stored_refreshed_array_bytes", c.refreshed_array_bytes);
-  add("stored_display_list_bytes", c.display_list.display_list_bytes);
-  add("stored_fifo_bytes", c.display_list.fifo_bytes);
-  add("stored_xf_vertices", c.display_list.vertices);
-  add("stored_triangles", c.display_list.triangles);
+  add_draw_cost(r, "stored_", c.display_list, c.refreshed_array_bytes);
   r.notes.push_back(
       "vertex figures are exact counts a frame (bytes, vertices, triangles), not time: no public "
       "source states how long the console takes");
@@ -55,16 +64,7 @@ void add_variant_vertex_cost(budget::Report& r, const Scene& scene, const SceneP
     r.notes.push_back("the variant's vertices not counted: " + e.where() + ": " + e.what_only());
     return;
   }
-  auto add = [&](const std::string& key, std::size_t n) {
-    r.details.push_back({key, "", static_cast<int>(n)});
-  };
-  add("vertex_bytes", c.draw.vertex_bytes);
-  add("array_bytes", c.draw.array_bytes);
-  add("refreshed_array_bytes", c.refreshed_array_bytes);
-  add("display_list_bytes", c.draw.display_list_bytes);
-  add("fifo_bytes", c.draw.fifo_bytes);
-  add("xf_vertices", c.draw.vertices);
-  add("triangles", c.draw.triangles);
+  add_draw_cost(r, "", c.draw, c.refreshed_array_bytes);
 }
 void add_texture_cost(budget::Report& r, const Scene& scene, const ScenePrograms& programs) {
   const FrameTextureCost c = frame_texture_cost(scene, programs);
