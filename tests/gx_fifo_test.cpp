@@ -1,21 +1,22 @@
-// The gx path's frame as a Dolphin FIFO log (src/gx/fifo/, recorded by src/paths/gx/frame_recording.h): register words against libogc's
-// own arithmetic worked by hand, every pass of every demo scene and gx variant decoded back to
-// the state the emulator runs, the whole frame walked as a command processor would, the
-// container read back, and `export gx --format dff`'s refusals.
+// The gx path's frame as a Dolphin FIFO log (src/gx/fifo/, recorded by
+// src/paths/gx/frame_recording.h): register words against libogc's own arithmetic worked by hand,
+// every pass of every demo scene and gx variant decoded back to the state the emulator runs, the
+// whole frame walked as a command processor would, the container read back, and `export gx --format
+// dff`'s refusals.
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "core/error.h"
-#include "load/load_scene.h"
 #include "gx/fifo/bp_registers.h"
 #include "gx/fifo/cp_registers.h"
 #include "gx/fifo/fifo_log.h"
-#include "paths/gx/camera_transform.h"
-#include "paths/gx/frame_recording.h"
 #include "gx/fifo/state_decoder.h"
 #include "gx/fifo/stream_reader.h"
 #include "gx/fifo/xf_registers.h"
+#include "load/load_scene.h"
+#include "paths/gx/camera_transform.h"
+#include "paths/gx/frame_recording.h"
 #include "paths/gx/gx_path.h"
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/scene_vertices.h"

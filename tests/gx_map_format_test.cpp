@@ -115,10 +115,9 @@ TEST(GxMapFormat, Rgb5a3IsOpaqueRgb555) {
   EXPECT_EQ(tt.format_name, "GX_TF_RGB5A3");
   EXPECT_EQ(texel_at(tt.texture, 0, 0),
             (Color8{static_cast<u8>(nearest_expansion(51, 5)), 255, 0, 255}));
-  EXPECT_EQ(texel_at(tt.texture, 1, 0),
-            (Color8{static_cast<u8>(nearest_expansion(100, 5)),
-                    static_cast<u8>(nearest_expansion(200, 5)),
-                    static_cast<u8>(nearest_expansion(7, 5)), 255}));
+  EXPECT_EQ(texel_at(tt.texture, 1, 0), (Color8{static_cast<u8>(nearest_expansion(100, 5)),
+                                                static_cast<u8>(nearest_expansion(200, 5)),
+                                                static_cast<u8>(nearest_expansion(7, 5)), 255}));
 }
 
 TEST(GxMapFormat, CmprKeepsABlockOfTwoRgb565ColoursExactly) {

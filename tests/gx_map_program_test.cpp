@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "load/load_scene.h"
 #include "gx/texture_unit.h"
+#include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene_parse.h"
 #include "test_util.h"

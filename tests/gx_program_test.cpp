@@ -6,14 +6,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "gx_test_programs.h"
-#include "load/load_scene.h"
-#include "paths/gx/generator.h"
-#include "paths/gx/gx_budget.h"
 #include "gx/program/interpreter.h"
 #include "gx/program/parser.h"
 #include "gx/program/pass_programs.h"
 #include "gx/program/printer.h"
+#include "gx_test_programs.h"
+#include "load/load_scene.h"
+#include "paths/gx/generator.h"
+#include "paths/gx/gx_budget.h"
 #include "scene/scene.h"
 #include "test_util.h"
 

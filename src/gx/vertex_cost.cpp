@@ -29,7 +29,8 @@ std::vector<std::size_t> list_draw_counts(std::size_t vertices) {
 }
 
 std::vector<std::size_t> strip_draw_counts(std::size_t vertices) {
-  constexpr std::size_t most = kMaxBeginVertices - 1;  // even: the next draw starts on an even index
+  constexpr std::size_t most =
+      kMaxBeginVertices - 1;  // even: the next draw starts on an even index
   std::vector<std::size_t> counts;
   if (vertices < 3) return counts;
   // Each draw after the first starts two vertices back, on the last triangle's first two.

@@ -29,7 +29,8 @@ inline constexpr std::size_t kGxBeginBytes = 3, kCallDisplayListBytes = 9, kCpLo
 inline constexpr std::size_t kMaxBeginVertices = 65535;
 
 struct DrawCost {
-  std::size_t vertex_bytes = 0;  // one vertex in the stream (VertexLoader::vertex_size); summed: the largest
+  std::size_t vertex_bytes =
+      0;  // one vertex in the stream (VertexLoader::vertex_size); summed: the largest
   std::size_t vertices = 0;            // vertices sent: what the XF transforms and lights
   std::size_t triangles = 0;           // triangles set up (a strip's degenerate joins included)
   std::size_t draws = 0;               // GX_Begin commands

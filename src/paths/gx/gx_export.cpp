@@ -28,8 +28,7 @@ std::vector<std::uint8_t> animation_fifo_log(const Scene& base, const std::vecto
 // `--format dff`: the frame as the console receives it, at the scene's size or --width x
 // --height (gx/fifo/).
 std::string fifo_log_file(const PathInfo& gx, const ExportRequest& r, const ExportInput& in) {
-  const FrameSize size{r.width ? r.width : in.scene.width,
-                             r.height ? r.height : in.scene.height};
+  const FrameSize size{r.width ? r.width : in.scene.width, r.height ? r.height : in.scene.height};
   fifo::check_frame_size(size, r.scene_file, r.width ? "--width" : "width",
                          r.height ? "--height" : "height");
   const std::vector<std::uint8_t> bytes =

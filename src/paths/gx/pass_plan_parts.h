@@ -44,13 +44,13 @@ struct MapTexture {
 // Which map a MapTexture is: its role, names, slot and the scene key its errors name.
 struct MapRole {
   TexturePlan::Role role;
-  const char* object;              // the GXTexObj
-  const char* array_prefix;        // the u8 array's name before the material's C name
-  GxConst<NameGroup::TexMap> map;  // the GX_TEXMAP it is loaded into
-  const char* what;                // "thickness map", in errors and comments
-  const char* title;               // "Thickness map", starting the array's comment
-  const char* key;                 // after "materials.<name>" in errors
-  const char* unit_meaning;        // what a texel of 255 is (times the scale)
+  const char* object;                 // the GXTexObj
+  const char* array_prefix;           // the u8 array's name before the material's C name
+  GxConst<NameGroup::TexMap> map;     // the GX_TEXMAP it is loaded into
+  const char* what;                   // "thickness map", in errors and comments
+  const char* title;                  // "Thickness map", starting the array's comment
+  const char* key;                    // after "materials.<name>" in errors
+  const char* unit_meaning;           // what a texel of 255 is (times the scale)
   GxConst<NameGroup::TlutName> tlut;  // the TLUT a colour-indexed map's palette is loaded into
 };
 extern const MapRole kThicknessMapRole, kAlbedoMapRole;

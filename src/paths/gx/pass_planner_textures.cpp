@@ -40,15 +40,22 @@ std::string tile_order_note(TexFormat format) {
   const std::string tiles = std::to_string(f.tile_width) + "x" + std::to_string(f.tile_height) +
                             " tiles of " + std::to_string(f.tile_bytes) + " bytes";
   switch (format) {
-    case TexFormat::RGBA8: return tiles + ": 16 (a, r) pairs, then 16 (g, b) pairs";
-    case TexFormat::RGB565: return tiles + ", big-endian r5 g6 b5";
-    case TexFormat::RGB5A3: return tiles + ", big-endian 1 r5 g5 b5 (opaque)";
+    case TexFormat::RGBA8:
+      return tiles + ": 16 (a, r) pairs, then 16 (g, b) pairs";
+    case TexFormat::RGB565:
+      return tiles + ", big-endian r5 g6 b5";
+    case TexFormat::RGB5A3:
+      return tiles + ", big-endian 1 r5 g5 b5 (opaque)";
     case TexFormat::CMPR:
       return tiles + ", four 4x4 blocks of two RGB565 colours and 2-bit indices";
-    case TexFormat::IA8: return tiles + ", (alpha, intensity) byte pairs";
-    case TexFormat::IA4: return tiles + ", alpha in the high nibble, intensity in the low";
-    case TexFormat::I4: return tiles + ", two texels a byte, the first in the high nibble";
-    default: return tiles;
+    case TexFormat::IA8:
+      return tiles + ", (alpha, intensity) byte pairs";
+    case TexFormat::IA4:
+      return tiles + ", alpha in the high nibble, intensity in the low";
+    case TexFormat::I4:
+      return tiles + ", two texels a byte, the first in the high nibble";
+    default:
+      return tiles;
   }
 }
 

@@ -23,8 +23,8 @@ Rgba8Image map_image(int width, int height, const std::vector<float>& rgb, doubl
   image.height = height;
   image.texels.reserve(rgb.size() / 3);
   for (size_t i = 0; i < rgb.size(); i += 3)
-    image.texels.push_back({to_byte(rgb[i], scale), to_byte(rgb[i + 1], scale),
-                            to_byte(rgb[i + 2], scale), 255});
+    image.texels.push_back(
+        {to_byte(rgb[i], scale), to_byte(rgb[i + 1], scale), to_byte(rgb[i + 2], scale), 255});
   return image;
 }
 
