@@ -64,7 +64,9 @@ def run_once(binary, tests, timeout, results):
             timed_out = True
             kill_group(proc)
             break
-        if not selector.select(timeout=wait):
+        if not selector.select(timeout=min(wait, 0.5)):
+            if proc.poll() is not None:
+                break  # the test process ended; a child it left may still hold the pipe open
             continue
         chunk = os.read(proc.stdout.fileno(), 65536)
         if not chunk:

@@ -44,3 +44,11 @@ TEST(Skipping, First) {
 TEST(Skipping, Second) {
   GTEST_SKIP();
 }
+TEST(Leaving, AChildThatHoldsTheOutputOpen) {
+  // Passes, and leaves a child holding stdout: the batch must end when the process does.
+  if (::fork() == 0) {
+    ::execlp("sleep", "sleep", "32", nullptr);
+    ::_exit(127);
+  }
+  SUCCEED();
+}

@@ -62,6 +62,14 @@ def all_skipped_is_ctest_skip(binary):
     check(code == 0, "a batch that passed and skipped exits 0, got %d" % code)
 
 
+def a_child_left_running_does_not_hold_the_batch(binary):
+    code, out, seconds = run_batch(binary, ["Leaving.AChildThatHoldsTheOutputOpen"], 60)
+    check(code == 0, "a case that leaves a child passes, got %d:\n%s" % (code, out))
+    check(seconds < 15, "the batch ended with its process, not its limit: %.1f s" % seconds)
+    leftover = subprocess.run(["pgrep", "-f", "^sleep 32$"], capture_output=True, text=True)
+    check(leftover.stdout.strip() == "", "the left child outlived the batch: " + leftover.stdout)
+
+
 def a_missing_case_fails(binary):
     code, out, _ = run_batch(binary, ["Cases.Passes", "Cases.NoSuchCase"], 10)
     check(code == 1 and "FAILED Cases.NoSuchCase: not run" in out, "a case the binary lacks:\n" + out)
@@ -86,7 +94,7 @@ def planner_batches_suites(binary):
     # Cases: 7 before the alone case (4 + 3, split evenly as 4 and 3), the alone one, 1 after;
     # Skipping's rule asks for batches of one.
     check(names == ["Cases:1/3", "Cases:2/3", "Cases.Hangs", "Cases:3/3", "Skipping:1/2",
-                    "Skipping:2/2"],
+                    "Skipping:2/2", "Leaving"],
           "batch names: %s" % names)
     commands = dict(tests)
     check(commands["Cases:1/3"].count("[==[Cases.") == 4, "first batch holds 4 cases")
@@ -101,6 +109,7 @@ def main():
     runner_reports_every_ending(binary)
     all_skipped_is_ctest_skip(binary)
     a_missing_case_fails(binary)
+    a_child_left_running_does_not_hold_the_batch(binary)
     planner_batches_suites(binary)
     for failure in failures:
         print("runner_test: " + failure)
