@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "arb/arb_ir_counter.h"
+#include "arb/arb_program.h"
 #include "arb_ir_query.h"
 #include "arb_test_util.h"
 #include "gl/program.h"
@@ -12,8 +14,6 @@
 #include "model/pow_curves.h"
 #include "model/translucency.h"
 #include "paths/arbfp/arb_generator.h"
-#include "arb/arb_ir_counter.h"
-#include "arb/arb_program.h"
 #include "paths/arbfp/arbfp_path.h"
 #include "render/session.h"
 
@@ -251,7 +251,8 @@ void PrintTo(const VariantCase& c, std::ostream* os) {
   *os << c.scene << " " << c.variant;
 }
 
-// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json
+// (bounds_test.cpp).
 
 // Every variant on every hard scene: finite everywhere (POW of 0 through LG2/EX2 is NaN unless
 // guarded, RSQ(0) is inf, a light at distance 0 divides by 0). The 8-bit framebuffer would hide a

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "combiner/combiner_program.h"
 #include "core/error.h"
 #include "gl/context.h"
 #include "load/load_scene.h"
 #include "metrics/compare.h"
 #include "paths/combiners/combiner_budget.h"
-#include "combiner/combiner_program.h"
 #include "paths/combiners/combiners_path.h"
 #include "paths/combiners/texgen_matrix.h"
 #include "render/session.h"
@@ -301,7 +301,8 @@ Comparison against_reference(const Scene& scene, const std::string& variant, int
   return compare_images(img, ref, TestEncoding::kUnorm8);
 }
 
-// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json
+// (bounds_test.cpp).
 
 // Hard cases (model.md) through the default variant: finite everywhere (paths_test checks that
 // too) and within bounds measured on the per-vertex sampling, set a little above. Cases not

@@ -174,7 +174,8 @@ TEST_P(GxDemoScene, ExportRoundTripIsBitExact) {
   EXPECT_EQ(differ, 0u);
 }
 
-// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json
+// (bounds_test.cpp).
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GxDemoScene, ::testing::ValuesIn(test::json_files("scenes")),
                          [](const auto& info) { return test::scene_param_name(info.param); });

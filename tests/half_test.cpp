@@ -135,7 +135,8 @@ TEST_P(HalfQuad, EveryCoveredPixelHasTheHandComputedHalfValue) {
 INSTANTIATE_TEST_SUITE_P(Analytic, HalfQuad, ::testing::ValuesIn(kHalfQuadCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json (bounds_test.cpp).
+// Every variant on every demo scene against the reference: src/paths/bounds/path_bounds.json
+// (bounds_test.cpp).
 
 // Hard scenes: the guarded variants never produce a non-finite value (nothing to hide behind the
 // marker); paths_test.cpp checks the images of every variant for NaN/Inf.

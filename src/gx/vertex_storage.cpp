@@ -41,15 +41,16 @@ CoordinateStorage parse_coordinate(std::string_view key, std::string_view value,
   if (slash == std::string_view::npos) return s;
   const std::string_view frac = value.substr(slash + 1);
   if (*type == ComponentType::F32) {
-    throw InputError(origin, std::string(key), "f32 takes no fractional bits ('" +
-                                                   std::string(value) + "')");
+    throw InputError(origin, std::string(key),
+                     "f32 takes no fractional bits ('" + std::string(value) + "')");
   }
   if (frac == "auto") return s;
   int bits = -1;
   const auto [end, error] = std::from_chars(frac.data(), frac.data() + frac.size(), bits);
   if (error != std::errc() || end != frac.data() + frac.size() || bits < 0 || bits > kMaxFracBits) {
-    throw InputError(origin, std::string(key),
-                     "'" + std::string(frac) + "' is not a number of fractional bits (0-31, or auto)");
+    throw InputError(
+        origin, std::string(key),
+        "'" + std::string(frac) + "' is not a number of fractional bits (0-31, or auto)");
   }
   s.frac = bits;
   s.auto_frac = false;
@@ -184,14 +185,13 @@ VertexAttributeFormat storage_format(const VertexStorage& s, const VertexAttribu
     if (!quantise_component(bounds.normal.lo, s.normal, e) ||
         !quantise_component(bounds.normal.hi, s.normal, e)) {
       const IntegerRange r = integer_range(s.normal);
-      throw InputError(origin, "nrm",
-                       std::string(kComponentNames[static_cast<size_t>(s.normal)]) + " holds " +
-                           number(std::ldexp(static_cast<double>(r.lo), -e)) + " .. " +
-                           number(std::ldexp(static_cast<double>(r.hi), -e)) +
-                           "; the mesh's normals reach " +
-                           number(std::abs(bounds.normal.lo) > std::abs(bounds.normal.hi)
-                                      ? bounds.normal.lo
-                                      : bounds.normal.hi));
+      throw InputError(
+          origin, "nrm",
+          std::string(kComponentNames[static_cast<size_t>(s.normal)]) + " holds " +
+              number(std::ldexp(static_cast<double>(r.lo), -e)) + " .. " +
+              number(std::ldexp(static_cast<double>(r.hi), -e)) + "; the mesh's normals reach " +
+              number(std::abs(bounds.normal.lo) > std::abs(bounds.normal.hi) ? bounds.normal.lo
+                                                                             : bounds.normal.hi));
     }
   }
   for (ColorFormat& c : f.color) c = {true, s.color};
