@@ -5,10 +5,12 @@
 // cited in texture_unit.h (Dolphin's TexDecoder_DecodeTexel, Convert5To8 / Convert6To8).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "gx/rasteriser.h"
+#include "gx/texture_encoder.h"
 #include "gx/texture_unit.h"
 #include "paths/gx/thickness_texture.h"
 
@@ -198,9 +200,8 @@ TEST(GxMapTexture, ColourMapIsRgba8AndExactForEightBitTexels) {
 TEST(GxMapTexture, Rgb565MapStoresTheNearestExpansion) {
   // 0.2 = 51/255: r, b fields 6 -> 49 (57 from 7 is further); g field 13 -> 52 (48 from 12 is
   // further). 1 and 0 are exact.
-  const ThicknessTexture tt =
-      thickness_texture(3, 1, {0.2f, 0.2f, 0.2f, 1.0f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f},
-                        TexFormat::RGB565);
+  const ThicknessTexture tt = thickness_texture(
+      3, 1, {0.2f, 0.2f, 0.2f, 1.0f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f}, TexFormat::RGB565);
   EXPECT_EQ(tt.format_name, "GX_TF_RGB565");
   EXPECT_EQ(texel_at(tt.texture, 0, 0), (Color8{49, 52, 49, 255}));
   EXPECT_EQ(texel_at(tt.texture, 1, 0), (Color8{255, 0, 255, 255}));
@@ -215,6 +216,31 @@ TEST(GxMapTexture, Rgb565MapStoresTheNearestExpansion) {
     EXPECT_LE(std::abs(r - k), 4) << k;
     EXPECT_LE(std::abs(g - k), 2) << k;
     EXPECT_EQ(expand5(v & 31), r) << k;
+  }
+}
+
+// A field's 8-bit value by its definition, the field's bits repeated from the top down (the
+// hardware's bit replication), written here independently of texture_decoder.h.
+int replicated(int field, int bits) {
+  int out = 0;
+  for (int k = 0; k < 8; ++k) out = out << 1 | (field >> (bits - 1 - k % bits) & 1);
+  return out;
+}
+
+TEST(GxMapTexture, TheNearestFieldIsTheLowestOfTheNearestExpansionsForAnyTarget) {
+  // Targets every 1/8 of a step over 0..255 (the midpoints between two expansions among them,
+  // where the lower field must win) and beyond both ends (clamped): the field nearest_field
+  // gives is the lowest of those whose expansion is nearest, found by trying every field.
+  for (int bits : {3, 4, 5, 6, 8}) {  // the fields of the GX formats
+    for (int j = -16; j <= 255 * 8 + 16; ++j) {
+      const double v = j / 8.0, target = std::clamp(v, 0.0, 255.0);
+      int lowest_nearest = 0;
+      for (int f = 1; f < 1 << bits; ++f)
+        if (std::abs(replicated(f, bits) - target) <
+            std::abs(replicated(lowest_nearest, bits) - target))
+          lowest_nearest = f;
+      ASSERT_EQ(nearest_field(v, bits), lowest_nearest) << bits << " bits, v " << v;
+    }
   }
 }
 

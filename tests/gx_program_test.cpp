@@ -108,17 +108,17 @@ GX_LoadTexObj(&t, GX_TEXMAP2);
 }
 
 // Every kind of bad file: one InputError naming file:line:column and what is wrong.
-struct BadCase {
+struct BadProgramCase {
   const char* what;
   const char* text;
   const char* where;    // "line:column"
   const char* message;  // a part of the message
 };
 
-class GxBadProgram : public ::testing::TestWithParam<BadCase> {};
+class GxBadProgram : public ::testing::TestWithParam<BadProgramCase> {};
 
 TEST_P(GxBadProgram, IsRefusedWithFileLineAndColumn) {
-  const BadCase& c = GetParam();
+  const BadProgramCase& c = GetParam();
   try {
     const ProgramFile f = parse_program(c.text, "bad.c");
     file_programs(f);
@@ -130,7 +130,7 @@ TEST_P(GxBadProgram, IsRefusedWithFileLineAndColumn) {
   }
 }
 
-const BadCase kBad[] = {
+const BadProgramCase kBad[] = {
     {"unknown_call", "GX_SetNumChans(1);\nGX_Frobnicate(1);\n", "2:1", "not modelled"},
     {"not_gx_call", "foo(1);\n", "1:1", "unknown call foo"},
     {"wrong_argument_count", "GX_SetNumChans(1, 2);\n", "1:1", "expected 1 arguments, found 2"},

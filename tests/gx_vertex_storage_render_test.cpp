@@ -30,7 +30,7 @@
 namespace lt::gx {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kFrameWidth = 160, kFrameHeight = 120;
 
 const Scene& cubes() {
   static const Scene scene = load_scene(test::source_dir() / "scenes/coloured_cubes.json");
@@ -41,8 +41,8 @@ TEST(GxVertexStorageRender, AnExplicitF32StorageIsTheDefaultFrameByteForByte) {
   const std::string f32 = "t=vertex:vtx=f32:nrm=f32:clr=rgba8:uv=f32";
   EXPECT_EQ(parse_gx_variant(f32), parse_gx_variant("t=vertex"));
   EXPECT_EQ(to_string(parse_gx_variant(f32)), "t=vertex");
-  const Image a = render_scene(cubes(), "gx", "t=vertex", kWidth, kHeight);
-  const Image b = render_scene(cubes(), "gx", f32, kWidth, kHeight);
+  const Image a = render_scene(cubes(), "gx", "t=vertex", kFrameWidth, kFrameHeight);
+  const Image b = render_scene(cubes(), "gx", f32, kFrameWidth, kFrameHeight);
   ASSERT_EQ(a.rgba.size(), b.rgba.size());
   EXPECT_EQ(a.rgba, b.rgba);
 }
@@ -70,7 +70,7 @@ TEST(GxVertexStorageRender, ABadStorageValueIsOneLineNamingTheVariantKey) {
   }
   // A fraction the mesh's positions overflow (the cubes reach past 1; s8/7 holds -1 .. 0.99).
   try {
-    render_scene(cubes(), "gx", "t=vertex:vtx=s8/7", kWidth, kHeight);
+    render_scene(cubes(), "gx", "t=vertex:vtx=s8/7", kFrameWidth, kFrameHeight);
     ADD_FAILURE() << "s8/7 rendered";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "vtx") << e.what();
@@ -137,7 +137,8 @@ TEST(GxVertexStorageRender, TheFifoLogsStoredBytesLoadAsTheEmulatorsVertices) {
   std::vector<std::pair<size_t, size_t>> expected;
   for (const MaterialDraw& d : programs.draws(scene))
     for (size_t i : d.objects) expected.emplace_back(i, static_cast<size_t>(d.pass));
-  const fifo::FifoLog log = fifo::record_frames(scene, {{v, &programs}}, {kWidth, kHeight});
+  const fifo::FifoLog log =
+      fifo::record_frames(scene, {{v, &programs}}, {kFrameWidth, kFrameHeight});
   const std::vector<u8>& bytes = log.frames.at(0).fifo;
   size_t draw = 0, checked = 0;
   fifo::RegisterFile regs;
@@ -181,18 +182,18 @@ TEST(GxVertexStorageRender, TheFifoLogsStoredBytesLoadAsTheEmulatorsVertices) {
 }
 
 TEST(GxVertexStorageRender, AFineStorageMovesLittleAndACoarseOneMore) {
-  const Image f32 = render_scene(cubes(), "gx", "t=vertex", kWidth, kHeight);
+  const Image f32 = render_scene(cubes(), "gx", "t=vertex", kFrameWidth, kFrameHeight);
   const test::PictureDifference fine = test::picture_difference(
-      f32,
-      render_scene(cubes(), "gx", "t=vertex:vtx=s16/auto:nrm=s16:uv=s16/auto", kWidth, kHeight));
+      f32, render_scene(cubes(), "gx", "t=vertex:vtx=s16/auto:nrm=s16:uv=s16/auto", kFrameWidth,
+                        kFrameHeight));
   const test::PictureDifference coarse = test::picture_difference(
-      f32, render_scene(cubes(), "gx", "t=vertex:vtx=s8/auto:nrm=s8:clr=rgba4:uv=s8/auto", kWidth,
-                        kHeight));
+      f32, render_scene(cubes(), "gx", "t=vertex:vtx=s8/auto:nrm=s8:clr=rgba4:uv=s8/auto",
+                        kFrameWidth, kFrameHeight));
   std::printf("fine: %zu pixels, max %d LSB; coarse: %zu pixels, max %d LSB\n", fine.differ,
               fine.max, coarse.differ, coarse.max);
   // s16 positions move a vertex by at most 2^-15 object units, far under a pixel here: the few
   // pixels that differ are edge and shading pixels a rounding flips (measured: 7 of 19,200).
-  EXPECT_LT(fine.differ, kWidth * kHeight / 100u);
+  EXPECT_LT(fine.differ, kFrameWidth * kFrameHeight / 100u);
   EXPECT_GT(coarse.differ, 4 * fine.differ);
   EXPECT_GE(coarse.max, fine.max);
 }

@@ -119,20 +119,20 @@ void expect_unit_normals(const TriangleMesh& m, const std::string& what) {
 // =============================================================================================
 // Bad input: one InputError naming the file, never a crash.
 
-struct BadCase {
+struct BadMeshCase {
   const char* file;  // under tests/data/meshes/bad
   const char* what;  // part of the message
   const char* line;  // expected InputError::where(), "" when the reader cannot know a line
 };
 
-std::ostream& operator<<(std::ostream& o, const BadCase& c) {
+std::ostream& operator<<(std::ostream& o, const BadMeshCase& c) {
   return o << c.file;
 }
 
-class BadMesh : public ::testing::TestWithParam<BadCase> {};
+class BadMesh : public ::testing::TestWithParam<BadMeshCase> {};
 
 TEST_P(BadMesh, IsOneInputErrorNamingTheFile) {
-  const BadCase& c = GetParam();
+  const BadMeshCase& c = GetParam();
   const fs::path path = kData / "bad" / c.file;
   ASSERT_TRUE(fs::exists(path)) << path;
   ::testing::internal::CaptureStderr();
@@ -166,87 +166,91 @@ TEST_P(BadMesh, IsOneInputErrorNamingTheFile) {
 INSTANTIATE_TEST_SUITE_P(
     Ply, BadMesh,
     ::testing::Values(
-        BadCase{"empty.ply", "file is empty", ""}, BadCase{"not_ply.ply", "not a PLY file", "1"},
-        BadCase{"header_only.ply", "declares 3 vertex elements but the file is too short", ""},
+        BadMeshCase{"empty.ply", "file is empty", ""},
+        BadMeshCase{"not_ply.ply", "not a PLY file", "1"},
+        BadMeshCase{"header_only.ply", "declares 3 vertex elements but the file is too short", ""},
         // OpenMesh 9.0 loops forever on this one.
-        BadCase{"header_truncated.ply", "no end_header", ""},
-        BadCase{"nan_ascii.ply", "vertex 1 has a non-finite coordinate (nan", "11"},
-        BadCase{"inf_ascii.ply", "vertex 2 has a non-finite coordinate (0, -inf", "12"},
-        BadCase{"nan_binary.ply", "vertex 2 has a non-finite coordinate", ""},
-        BadCase{"bad_token.ply",
-                "'x' in vertex 1 is not a number of the declared type (property z)", "11"},
-        BadCase{"list_in_vertex.ply",
-                "'1.5' in vertex 0 is not a number of the declared type (property list "
-                "vertex_indices)",
-                "10"},
-        BadCase{"out_of_range_ascii.ply",
-                "face 0: vertex index 7 is out of range (the file has 3 vertices)", "13"},
-        BadCase{"out_of_range_binary.ply", "vertex index 99999999 is out of range", ""},
-        BadCase{"negative_index.ply", "vertex index -1 is out of range", "13"},
-        BadCase{"two_vertex_face.ply", "face 0 has 2 vertices", "13"},
-        BadCase{"truncated_ascii.ply", "declares 3 vertex elements but the file is too short", ""},
-        BadCase{"truncated_binary.ply", "file ends inside face 0 of 1", ""},
-        BadCase{"no_faces.ply", "3 vertices but no faces", ""},
-        BadCase{"zero_vertices.ply", "no vertices", ""},
+        BadMeshCase{"header_truncated.ply", "no end_header", ""},
+        BadMeshCase{"nan_ascii.ply", "vertex 1 has a non-finite coordinate (nan", "11"},
+        BadMeshCase{"inf_ascii.ply", "vertex 2 has a non-finite coordinate (0, -inf", "12"},
+        BadMeshCase{"nan_binary.ply", "vertex 2 has a non-finite coordinate", ""},
+        BadMeshCase{"bad_token.ply",
+                    "'x' in vertex 1 is not a number of the declared type (property z)", "11"},
+        BadMeshCase{"list_in_vertex.ply",
+                    "'1.5' in vertex 0 is not a number of the declared type (property list "
+                    "vertex_indices)",
+                    "10"},
+        BadMeshCase{"out_of_range_ascii.ply",
+                    "face 0: vertex index 7 is out of range (the file has 3 vertices)", "13"},
+        BadMeshCase{"out_of_range_binary.ply", "vertex index 99999999 is out of range", ""},
+        BadMeshCase{"negative_index.ply", "vertex index -1 is out of range", "13"},
+        BadMeshCase{"two_vertex_face.ply", "face 0 has 2 vertices", "13"},
+        BadMeshCase{"truncated_ascii.ply", "declares 3 vertex elements but the file is too short",
+                    ""},
+        BadMeshCase{"truncated_binary.ply", "file ends inside face 0 of 1", ""},
+        BadMeshCase{"no_faces.ply", "3 vertices but no faces", ""},
+        BadMeshCase{"zero_vertices.ply", "no vertices", ""},
         // OpenMesh would try to reserve memory for 2e9 vertices first.
-        BadCase{"huge_count.ply", "declares 2000000000 vertex elements but the file is too short",
-                ""},
-        BadCase{"ushort_color.ply", "colour property 'red' must be uchar, float or double", ""}));
+        BadMeshCase{"huge_count.ply",
+                    "declares 2000000000 vertex elements but the file is too short", ""},
+        BadMeshCase{"ushort_color.ply", "colour property 'red' must be uchar, float or double",
+                    ""}));
 
 INSTANTIATE_TEST_SUITE_P(
     Obj, BadMesh,
     ::testing::Values(
         // OpenMesh writes through these indices unchecked when the corner also has a normal.
-        BadCase{"out_of_range.obj", "face vertex index 9 is out of range (the file has 3 vertices)",
-                "4"},
-        BadCase{"zero_index.obj", "face corner '0' has no valid vertex index", "4"},
-        BadCase{"negative_out_of_range.obj", "face vertex index -4 is out of range", "4"},
+        BadMeshCase{"out_of_range.obj",
+                    "face vertex index 9 is out of range (the file has 3 vertices)", "4"},
+        BadMeshCase{"zero_index.obj", "face corner '0' has no valid vertex index", "4"},
+        BadMeshCase{"negative_out_of_range.obj", "face vertex index -4 is out of range", "4"},
         // OpenMesh would silently drop the vertex and shift every later index.
-        BadCase{"nan.obj", "vertex 1 has a non-finite coordinate ('nan'", "2"},
-        BadCase{"garbage_vertex.obj", "'x' is not a number", "2"},
-        BadCase{"no_faces.obj", "3 vertices but no faces", ""},
-        BadCase{"empty.obj", "no vertices", ""},
-        BadCase{"normal_out_of_range.obj",
-                "face normal index 5 is out of range (the file has 1 normal)", "5"},
-        BadCase{"corner_without_vertex.obj", "face corner '//1' has no valid vertex index", "5"},
-        BadCase{"two_vertex_face.obj", "a face needs at least 3 vertices", "4"},
+        BadMeshCase{"nan.obj", "vertex 1 has a non-finite coordinate ('nan'", "2"},
+        BadMeshCase{"garbage_vertex.obj", "'x' is not a number", "2"},
+        BadMeshCase{"no_faces.obj", "3 vertices but no faces", ""},
+        BadMeshCase{"empty.obj", "no vertices", ""},
+        BadMeshCase{"normal_out_of_range.obj",
+                    "face normal index 5 is out of range (the file has 1 normal)", "5"},
+        BadMeshCase{"corner_without_vertex.obj", "face corner '//1' has no valid vertex index",
+                    "5"},
+        BadMeshCase{"two_vertex_face.obj", "a face needs at least 3 vertices", "4"},
         // As assimp-testmodels' OBJ/box_UTF16BE.obj: read as bytes it has no vertex.
-        BadCase{"utf16.obj", "UTF-16 text (it starts with a byte-order mark)", "1"}));
+        BadMeshCase{"utf16.obj", "UTF-16 text (it starts with a byte-order mark)", "1"}));
 
 INSTANTIATE_TEST_SUITE_P(
     Off, BadMesh,
-    ::testing::Values(BadCase{"out_of_range.off",
-                              "face 0: vertex index 9 is out of range (the file has 3 vertices)",
-                              "6"},
-                      BadCase{"negative.off", "vertex index -1 is out of range", "6"},
-                      BadCase{"truncated.off", "file ends after 2 of 3 vertices", ""},
-                      BadCase{"huge_count.off", "counts (3000000000 vertices", "2"},
-                      BadCase{"nan.off", "vertex 1 has a non-finite coordinate", "4"},
-                      BadCase{"face_too_long.off", "face 0 lists fewer than 300 vertices", "6"}));
+    ::testing::Values(
+        BadMeshCase{"out_of_range.off",
+                    "face 0: vertex index 9 is out of range (the file has 3 vertices)", "6"},
+        BadMeshCase{"negative.off", "vertex index -1 is out of range", "6"},
+        BadMeshCase{"truncated.off", "file ends after 2 of 3 vertices", ""},
+        BadMeshCase{"huge_count.off", "counts (3000000000 vertices", "2"},
+        BadMeshCase{"nan.off", "vertex 1 has a non-finite coordinate", "4"},
+        BadMeshCase{"face_too_long.off", "face 0 lists fewer than 300 vertices", "6"}));
 
 INSTANTIATE_TEST_SUITE_P(
     Stl, BadMesh,
     ::testing::Values(
-        BadCase{"truncated_binary.stl",
-                "declares 1000 triangles, which need 50084 bytes; the file has 234", ""},
-        BadCase{"nan_binary.stl", "triangle 0 has a non-finite vertex coordinate", ""},
-        BadCase{"nan_ascii.stl", "'nan' is not a finite number", "5"},
-        BadCase{"empty.stl", "file is empty", ""}));
+        BadMeshCase{"truncated_binary.stl",
+                    "declares 1000 triangles, which need 50084 bytes; the file has 234", ""},
+        BadMeshCase{"nan_binary.stl", "triangle 0 has a non-finite vertex coordinate", ""},
+        BadMeshCase{"nan_ascii.stl", "'nan' is not a finite number", "5"},
+        BadMeshCase{"empty.stl", "file is empty", ""}));
 
 INSTANTIATE_TEST_SUITE_P(
     Other, BadMesh,
     ::testing::Values(
-        BadCase{"mesh.xyz", "unknown mesh format '.xyz'", ""},
+        BadMeshCase{"mesh.xyz", "unknown mesh format '.xyz'", ""},
         // These three kill a process that reads them with OpenMesh (SIGSEGV, abort from a double
         // free, gigabytes allocated within seconds): the OM reader runs in a child process.
-        BadCase{"corrupt_segv.om", "face 1 has a broken halfedge loop", ""},
-        BadCase{"corrupt_abort.om", "face 2 has a broken halfedge loop", ""},
-        BadCase{"corrupt_runaway.om", "OpenMesh could not read it: std::bad_alloc", ""},
-        BadCase{"truncated.om", "OpenMesh could not read it", ""},
+        BadMeshCase{"corrupt_segv.om", "face 1 has a broken halfedge loop", ""},
+        BadMeshCase{"corrupt_abort.om", "face 2 has a broken halfedge loop", ""},
+        BadMeshCase{"corrupt_runaway.om", "OpenMesh could not read it: std::bad_alloc", ""},
+        BadMeshCase{"truncated.om", "OpenMesh could not read it", ""},
         // OpenMesh's last log line is the reason; it was read from a destroyed string (freed
         // bytes in the message, use-after-free under ASan).
-        BadCase{"unknown_chunk.om", "OpenMesh could not read it: Unknown chunk type ignored!",
-                ""}));
+        BadMeshCase{"unknown_chunk.om", "OpenMesh could not read it: Unknown chunk type ignored!",
+                    ""}));
 
 TEST(ReadMesh, MissingFileAndDirectory) {
   const fs::path missing = kData / "bad" / "does_not_exist.ply";

@@ -119,18 +119,18 @@ TEST_F(SceneFile, GoodSceneParsesToWhatTheFileSays) {
   EXPECT_FALSE(needs.any_vertex_thickness);
 }
 
-struct BadCase {
+struct BadSceneCase {
   const char* name;
   const char* from;
   const char* to;
   const char* expect_in_message;
 };
 
-void PrintTo(const BadCase& c, std::ostream* os) {
+void PrintTo(const BadSceneCase& c, std::ostream* os) {
   *os << c.name;
 }
 
-const BadCase kBad[] = {
+const BadSceneCase kBad[] = {
     {"unknown_top_key", "\"ambient_light\"", "\"ambient_lihgt\"", "ambient_lihgt: unknown key"},
     {"unknown_material_key", "\"albedo\": [0.9", "\"albedoo\": [0.9",
      "materials.marble.albedoo: unknown key"},
@@ -177,10 +177,10 @@ const BadCase kBad[] = {
     {"syntax_error_line", "\"lights\": [", "\"lights\": [,", "s.json:13: invalid JSON"},
 };
 
-class BadScene : public SceneFile, public ::testing::WithParamInterface<BadCase> {};
+class BadScene : public SceneFile, public ::testing::WithParamInterface<BadSceneCase> {};
 
 TEST_P(BadScene, NamesTheFileAndTheKey) {
-  const BadCase& c = GetParam();
+  const BadSceneCase& c = GetParam();
   const std::string msg = error_of(edit(c.from, c.to));
   EXPECT_NE(msg.find(c.expect_in_message), std::string::npos) << msg;
   EXPECT_NE(msg.find("s.json"), std::string::npos) << msg;

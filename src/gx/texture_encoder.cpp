@@ -41,17 +41,30 @@ int expand(int field, int bits) {
 
 }  // namespace
 
-int quantise_component(int v, int bits, Rounding rounding) {
-  LT_CHECK(v >= 0 && v <= 255 && bits >= 3 && bits <= 8, "an 8-bit component into 3..8 bits");
-  if (rounding == Rounding::Truncate || bits == 8) return v >> (8 - bits);
-  // Expansion is monotonic and within one step of `field << (8 - bits)`, and the replicated low
-  // bits can put the truncated field's expansion above v, so the nearest field is the truncated
-  // one or a neighbour (ties to the lower).
-  const int truncated = v >> (8 - bits);
+int nearest_field(double v, int bits) {
+  LT_CHECK((bits >= 3 && bits <= 6) || bits == 8, "a field of 3, 4, 5, 6 or 8 bits");
+  const double target = std::clamp(v, 0.0, 255.0);
+  // Expansion is monotonic, and the expansion of field f lies in [f << (8 - bits),
+  // (f + 1) << (8 - bits)), so only the truncated field and its two neighbours can be nearest:
+  // every field below them expands below the target, every field above them above the
+  // truncated field's upper neighbour. Ties go to the lower field.
+  const int truncated = static_cast<int>(target) >> (8 - bits);
   int best = std::max(truncated - 1, 0);
   for (int f = best + 1; f <= std::min(truncated + 1, (1 << bits) - 1); ++f)
-    if (std::abs(expand(f, bits) - v) < std::abs(expand(best, bits) - v)) best = f;
+    if (std::abs(expand(f, bits) - target) < std::abs(expand(best, bits) - target)) best = f;
   return best;
+}
+
+int quantise_component(int v, int bits, Rounding rounding) {
+  LT_CHECK(v >= 0 && v <= 255, "an 8-bit component");
+  if (rounding == Rounding::Truncate || bits == 8) return v >> (8 - bits);
+  return nearest_field(v, bits);
+}
+
+u16 nearest_rgb565(double r, double g, double b) {
+  return static_cast<u16>(nearest_field(std::clamp(r, 0.0, 1.0) * 255.0, 5) << 11 |
+                          nearest_field(std::clamp(g, 0.0, 1.0) * 255.0, 6) << 5 |
+                          nearest_field(std::clamp(b, 0.0, 1.0) * 255.0, 5));
 }
 
 int intensity_of(const Color8& c, Rounding rounding) {

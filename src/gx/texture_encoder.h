@@ -50,6 +50,12 @@ struct EncodedLevel {
 
 // The field (0 .. 2^bits - 1) that stores the 8-bit component v under `rounding`.
 int quantise_component(int v, int bits, Rounding rounding);
+// The field (0 .. 2^bits - 1) whose expansion (texture_decoder.h) is nearest to v, a value in
+// 0..255 that need not be whole (clamped); ties to the lower field.
+int nearest_field(double v, int bits);
+// The RGB565 value whose expansion is nearest to the linear colour (r, g, b) in [0, 1] per
+// component (clamped; ties to the lower field): the best a texture converter can store.
+u16 nearest_rgb565(double r, double g, double b);
 // The intensity a grey format stores for a colour: the mean of r, g and b (rounded to nearest,
 // or truncated as gxtexconv does).
 int intensity_of(const Color8& c, Rounding rounding);

@@ -154,28 +154,6 @@ int expand6(int v) {
   return (v << 2) | (v >> 4);
 }
 
-namespace {
-
-// The field value (0 .. 2^bits - 1) whose expansion is nearest to 255 v; ties to the lower one.
-int nearest_field(double v, int bits) {
-  const int top = (1 << bits) - 1;
-  const double target = std::clamp(v, 0.0, 1.0) * 255.0;
-  int best = 0;
-  for (int q = 1; q <= top; ++q) {
-    const int e = bits == 5 ? expand5(q) : expand6(q);
-    const int b = bits == 5 ? expand5(best) : expand6(best);
-    if (std::abs(e - target) < std::abs(b - target)) best = q;
-  }
-  return best;
-}
-
-}  // namespace
-
-u16 nearest_rgb565(double r, double g, double b) {
-  return static_cast<u16>((nearest_field(r, 5) << 11) | (nearest_field(g, 6) << 5) |
-                          nearest_field(b, 5));
-}
-
 size_t tiled_size(u8 format, int width, int height) {
   const std::optional<TexFormat> f = tex_format_from_number(format);
   LT_CHECK(f.has_value(), "texture format must be a GX_TF_* format");

@@ -71,8 +71,5 @@ Color8 texel_at(const TextureObject& texture, int x, int y);
 // TextureDecoder_Common.cpp DecodePixel_RGB565].
 int expand5(int v);
 int expand6(int v);
-// The RGB565 value whose expansion is nearest to the linear colour (r, g, b) in [0, 1] per
-// component (ties to the lower field): the best a texture converter can store.
-u16 nearest_rgb565(double r, double g, double b);
 
 }  // namespace lt::gx

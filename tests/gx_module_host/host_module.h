@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "../test_util.h"
-#include "paths/gx/generator.h"
-#include "paths/gx/module/runtime/ltrender_gx_runtime.h"
 #include "gx/program/gx_name_table.h"
 #include "gx/program/pass_programs.h"
+#include "paths/gx/generator.h"
+#include "paths/gx/module/runtime/ltrender_gx_runtime.h"
 #include "render/camera_path.h"
 #include "scene/scene.h"
 
@@ -41,10 +41,16 @@ inline void make_float(Scene& s) {
   }
 }
 
-// The host side: the module and the recorder compiled into one shared object.
-class HostModule {
- public:
-  HostModule(const test::TempDir& dir, const std::string& module_text) {
+// libogc's stand-in, compiled once a test process: it, gccore.h and the constants header are
+// the same for every module (0.2 s of the compiler a module otherwise). Empty if it failed, with
+// the compiler's output in `log`.
+struct HostObject {
+  fs::path dir, object;
+  std::string log;
+  HostObject() {
+    dir = fs::temp_directory_path() / ("lt_gx_host_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
     std::ostringstream constants;
     std::set<std::string> seen;
     for (const GxName& n : kGxNames) {
@@ -53,12 +59,41 @@ class HostModule {
     test::write_file(dir / "gx_constants.h", constants.str());
     const fs::path host = test::source_dir() / "tests" / "gx_module_host";
     fs::copy_file(host / "gccore.h", dir / "gccore.h", fs::copy_options::overwrite_existing);
+    const fs::path out = dir / "gx_host.o", log_file = dir / "cc.log";
+    const std::string cc = "cc " + std::string(kHostFlags) + " -c -I" + dir.string() + " " +
+                           (host / "gx_host.c").string() + " -o " + out.string() + " >" +
+                           log_file.string() + " 2>&1";
+    if (std::system(cc.c_str()) == 0) object = out;
+    log = test::read_file(log_file);
+  }
+  ~HostObject() {
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+  }
+  static constexpr const char* kHostFlags =
+      "-std=c99 -O1 -ffp-contract=off -fPIC -Wall -Wextra -Werror";
+};
+
+inline const HostObject& host_object() {
+  static const HostObject host;
+  return host;
+}
+
+// The host side: the module and the recorder compiled into one shared object.
+class HostModule {
+ public:
+  HostModule(const test::TempDir& dir, const std::string& module_text) {
+    const HostObject& host = host_object();
+    if (host.object.empty()) {
+      compiler_output = host.log;
+      return;
+    }
     test::write_file(dir / "module.c", module_text);
     const fs::path so = dir / "module.so", log = dir / "cc.log";
-    const std::string cc =
-        "cc -std=c99 -O1 -ffp-contract=off -fPIC -shared -Wall -Wextra -Werror -I" +
-        dir.path().string() + " " + (dir / "module.c").string() + " " +
-        (host / "gx_host.c").string() + " -o " + so.string() + " -lm >" + log.string() + " 2>&1";
+    const std::string cc = "cc " + std::string(HostObject::kHostFlags) + " -shared -I" +
+                           host.dir.string() + " " + (dir / "module.c").string() + " " +
+                           host.object.string() + " -o " + so.string() + " -lm >" + log.string() +
+                           " 2>&1";
     compiled = std::system(cc.c_str()) == 0;
     compiler_output = test::read_file(log);
     if (compiled) handle_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
