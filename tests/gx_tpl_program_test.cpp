@@ -8,6 +8,8 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "gx/program/interpreter.h"
+#include "gx/program/parser.h"
 #include "gx/program/printer.h"
 #include "gx/tpl_file.h"
 #include "load/load_scene.h"
@@ -50,43 +52,72 @@ TplProgram tpl_program(const Scene& scene, const std::string& variant,
   return {print_program(file), tpl};
 }
 
-struct Case {
-  const char *scene, *variant;
-};
-
-class GxTplProgram : public ::testing::TestWithParam<Case> {};
-
 // From a file in a folder beside the program (read relative to the program, not the working
-// directory) and from an array: both are the variant's frame.
-TEST_P(GxTplProgram, DrawsTheVariantsFrameFromAFileAndFromMemory) {
-  const Scene scene = load_scene(test::source_dir() / GetParam().scene);
-  const std::string variant = GetParam().variant;
-  const Image direct = render_scene(scene, "gx", variant, kSize, kSize);
-  test::TempDir dir;
-  fs::create_directory(dir / "maps");
-  const TplProgram from_file = tpl_program(scene, variant, "maps/textures.tpl");
-  ASSERT_NE(from_file.text.find("TPL_OpenTPLFromFile(&ltrender_tpl, \"maps/textures.tpl\")"),
-            std::string::npos);
-  test::write_file(dir / "maps/textures.tpl",
-                   std::string(from_file.tpl.begin(), from_file.tpl.end()));
-  test::write_file(dir / "file.c", from_file.text);
-  const Image by_file =
-      render_scene(scene, "gx", variant, kSize, kSize, PathOptions{(dir / "file.c").string(), ""});
-  EXPECT_TRUE(by_file.rgba == direct.rgba) << "the frame drawn from maps/textures.tpl differs";
-  test::write_file(dir / "memory.c", tpl_program(scene, variant, "").text);
-  const Image by_memory = render_scene(scene, "gx", variant, kSize, kSize,
-                                       PathOptions{(dir / "memory.c").string(), ""});
-  EXPECT_TRUE(by_memory.rgba == direct.rgba) << "the frame drawn from the TPL array differs";
+// directory) and from an array: both are the variant's frame, for a CI4 map (IA8 palette,
+// TPL_GetTextureCI) and a CMPR one. One suite of plain tests: one process start, not two.
+TEST(GxTplProgram, DrawsTheVariantsFrameFromAFileAndFromMemory) {
+  for (const auto& [scene_file, variant] :
+       {std::pair<std::string, std::string>{"scenes/maps/sphere_map.json", "t=vertex:map=ci4"},
+        {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr"}}) {
+    SCOPED_TRACE(scene_file + " --variant " + variant);
+    const Scene scene = load_scene(test::source_dir() / scene_file);
+    const Image direct = render_scene(scene, "gx", variant, kSize, kSize);
+    test::TempDir dir;
+    fs::create_directory(dir / "maps");
+    const TplProgram from_file = tpl_program(scene, variant, "maps/textures.tpl");
+    ASSERT_NE(from_file.text.find("TPL_OpenTPLFromFile(&ltrender_tpl, \"maps/textures.tpl\")"),
+              std::string::npos);
+    test::write_file(dir / "maps/textures.tpl",
+                     std::string(from_file.tpl.begin(), from_file.tpl.end()));
+    test::write_file(dir / "file.c", from_file.text);
+    const Image by_file = render_scene(scene, "gx", variant, kSize, kSize,
+                                       PathOptions{(dir / "file.c").string(), ""});
+    EXPECT_TRUE(by_file.rgba == direct.rgba) << "the frame drawn from maps/textures.tpl differs";
+    test::write_file(dir / "memory.c", tpl_program(scene, variant, "").text);
+    const Image by_memory = render_scene(scene, "gx", variant, kSize, kSize,
+                                         PathOptions{(dir / "memory.c").string(), ""});
+    EXPECT_TRUE(by_memory.rgba == direct.rgba) << "the frame drawn from the TPL array differs";
+  }
 }
 
-const Case kCases[] = {
-    {"scenes/maps/sphere_map.json", "t=vertex:map=ci4"},
-    {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr"},
-};
-
-INSTANTIATE_TEST_SUITE_P(Maps, GxTplProgram, ::testing::ValuesIn(kCases), [](const auto& info) {
-  return test::test_param_name(std::string(info.param.scene) + "_" + info.param.variant);
-});
+// What TPL_GetTexture gives the texture object, from an array in the program: the header's
+// format, size, wraps and texels, linear filters (mipmap off); and a later GX_InitTexObjWrapMode
+// and GX_InitTexObjFilterMode change the object as they change a game's.
+TEST(GxTplProgram, TheObjectTakesTheHeaderAndTheProgramsLaterCallsWin) {
+  TplTexture t;
+  t.format = TexFormat::IA8;
+  t.width = 8;
+  t.height = 4;
+  t.wrap_s = 1;                                                               // GX_REPEAT
+  t.wrap_t = 2;                                                               // GX_MIRROR
+  for (int k = 0; k < 64; ++k) t.data.push_back(static_cast<u8>(3 * k + 1));  // two 4x4 tiles
+  const std::vector<u8> tpl = write_tpl({t});
+  std::string array = "u8 maps_tpl[" + std::to_string(tpl.size()) + "] ATTRIBUTE_ALIGN(32) = {";
+  for (size_t k = 0; k < tpl.size(); ++k) array += (k ? ", " : "") + std::to_string(tpl[k]);
+  array += "};\nTPLFile tpl;\nGXTexObj tex;\nTPL_OpenTPLFromMemory(&tpl, maps_tpl, " +
+           std::to_string(tpl.size()) + ");\nTPL_GetTexture(&tpl, 0, &tex);\n";
+  auto loaded = [&](const std::string& then) {
+    const ProgramFile f = parse_program(array + then + "GX_LoadTexObj(&tex, GX_TEXMAP2);\n", "p.c");
+    const GxState state = run_program("p.c", {&f.top_level});
+    EXPECT_TRUE(state.textures[2].has_value());
+    return state.textures[2].value_or(TextureObject{});
+  };
+  const TextureObject as_read = loaded("");
+  EXPECT_EQ(as_read.format, 3);  // GX_TF_IA8
+  EXPECT_EQ(as_read.width, 8);
+  EXPECT_EQ(as_read.height, 4);
+  EXPECT_EQ(as_read.wrap_s, 1);
+  EXPECT_EQ(as_read.wrap_t, 2);
+  EXPECT_TRUE(as_read.linear);
+  EXPECT_EQ(as_read.data, t.data);
+  const TextureObject changed = loaded(
+      "GX_InitTexObjWrapMode(&tex, GX_CLAMP, GX_CLAMP);\n"
+      "GX_InitTexObjFilterMode(&tex, GX_NEAR, GX_NEAR);\n");
+  EXPECT_EQ(changed.wrap_s, 0);
+  EXPECT_EQ(changed.wrap_t, 0);
+  EXPECT_FALSE(changed.linear);
+  EXPECT_EQ(changed.data, t.data);
+}
 
 // A bad TPL or TPL call: how the file or the program is spoiled, and what the one line says.
 struct BadTpl {
@@ -171,6 +202,11 @@ const BadTpl kBadTpls[] = {
                           "TPL_GetTextureCI(&ltrender_tpl, 2,");
      },
      "bad.c", "TPL_GetTextureCI", "texture id 2 is past the 2 textures of"},
+    {"tpl_never_opened",
+     [](std::vector<u8>&, std::string& program) {
+       replace_in_program(program, "TPL_OpenTPLFromFile(&ltrender_tpl, \"maps.tpl\");", "");
+     },
+     "bad.c", "TPL_GetTexture(", "ltrender_tpl was never opened"},
     {"colour_indexed_without_its_palette_call",
      [](std::vector<u8>&, std::string& program) {
        replace_in_program(
