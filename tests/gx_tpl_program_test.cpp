@@ -202,6 +202,11 @@ const BadTpl kBadTpls[] = {
                           "TPL_GetTextureCI(&ltrender_tpl, 2,");
      },
      "bad.c", "TPL_GetTextureCI", "texture id 2 is past the 2 textures of"},
+    {"unterminated_file_name",
+     [](std::vector<u8>&, std::string& program) {
+       replace_in_program(program, "\"maps.tpl\");", "\"maps.tpl);");
+     },
+     "bad.c", "TPL_OpenTPLFromFile(", "unterminated string"},
     {"tpl_never_opened",
      [](std::vector<u8>&, std::string& program) {
        replace_in_program(program, "TPL_OpenTPLFromFile(&ltrender_tpl, \"maps.tpl\");", "");

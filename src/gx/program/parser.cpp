@@ -134,7 +134,14 @@ class Lexer {
     advance();
     const size_t start = i_;
     while (i_ < s_.size() && s_[i_] != '"' && s_[i_] != '\n') {
-      if (s_[i_] == '\\') fail(pos_, "escape sequences in strings are not read");
+      const unsigned char c = static_cast<unsigned char>(s_[i_]);
+      if (c == '\\') fail(pos_, "escape sequences in strings are not read");
+      // Printable ASCII only: a message that quotes the string stays one readable line.
+      if (c < 0x20 || c > 0x7e) {
+        char shown[8];
+        std::snprintf(shown, sizeof shown, "0x%02X", c);
+        fail(pos_, std::string("unexpected character ") + shown + " in a string");
+      }
       advance();
     }
     if (i_ >= s_.size() || s_[i_] != '"') fail(t.pos, "unterminated string");
