@@ -153,6 +153,30 @@ TEST(GxModuleLightRange, CompilesWithThePowerPcCompilerAgainstLibogc) {
   }
 }
 
+// Modules whose maps are colour-indexed (TPL_GetTextureCI) or CMPR: the TPL calls and the
+// TPLFile of libogc's tpl.h, which both eras declare alike (unchanged since 2011).
+TEST(GxModuleTplCompiles, WithThePowerPcCompilerAgainstLibogc) {
+  const std::vector<fs::path> checkouts = libogc_checkouts();
+  if (checkouts.empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile a module's TPL calls";
+  test::TempDir dir;
+  for (const char* scene_variant : {"sphere_map.json --variant t=vertex:map=ci4",
+                                    "sphere_rgb_ramp.json --variant t=vertex:map=cmpr"}) {
+    const fs::path c = dir / "module.c";
+    const test::RunResult r =
+        test::run_ltrender("export gx " + (test::source_dir() / "scenes/maps").string() + "/" +
+                           scene_variant + " --format module -o " + c.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(test::read_file(c).find("TPL_OpenTPLFromMemory"), std::string::npos);
+    for (const fs::path& ogc : checkouts) {
+      const fs::path log = dir / "cc.log";
+      EXPECT_EQ(std::system(compile_command(c, ogc, log).c_str()), 0)
+          << scene_variant << " against " << ogc << ":\n"
+          << test::read_file(log);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GxExportCompiles, ::testing::ValuesIn(export_scenes()),
                          [](const auto& info) { return test::test_param_name(info.param); });
 

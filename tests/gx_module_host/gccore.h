@@ -23,6 +23,13 @@ typedef struct {
 typedef struct {
   int unused;
 } GXTexObj;
+/* libogc's open TPL file [OGC tpl.h]: the fields the module reads (ntextures). */
+typedef struct {
+  int type;
+  int ntextures;
+  void* texdesc;
+  void* tpl_file;
+} TPLFile;
 #define ATTRIBUTE_ALIGN(v) __attribute__((aligned(v)))
 
 #include "gx_constants.h"
@@ -80,6 +87,10 @@ void GX_TexCoord1f32(f32 s);
 void GX_TexCoord2f32(f32 s, f32 t);
 void GX_End(void);
 void DCFlushRange(void* start, u32 length);
+/* The module's textures come from its TPL: these read it as libogc's tpl.c does and call
+   GX_InitTexObj, which records the texture. */
+s32 TPL_OpenTPLFromMemory(TPLFile* tdf, void* memory, u32 len);
+s32 TPL_GetTexture(TPLFile* tdf, s32 id, GXTexObj* texObj);
 void GX_InvalidateTexAll(void);
 
 #endif

@@ -239,3 +239,28 @@ void DCFlushRange(void* p, u32 n) {
   (void)p, (void)n;
 }
 void GX_InvalidateTexAll(void) {}
+
+/* TPL files as libogc reads them [OGC tpl.c L147-250], on a little-endian host: the file is
+   big-endian, so every field is read byte by byte. The header's filters count only for a mip
+   chain, which the module never has. */
+static u32 be32(const u8* p) {
+  return (u32)p[0] << 24 | (u32)p[1] << 16 | (u32)p[2] << 8 | p[3];
+}
+s32 TPL_OpenTPLFromMemory(TPLFile* tdf, void* memory, u32 len) {
+  if (!memory || !len) return -1;
+  tdf->type = 1;
+  tdf->ntextures = (int)be32((const u8*)memory + 4);
+  tdf->texdesc = memory;
+  tdf->tpl_file = 0;
+  return 1;
+}
+s32 TPL_GetTexture(TPLFile* tdf, s32 id, GXTexObj* texObj) {
+  const u8* p = tdf->texdesc;
+  const u8* image;
+  if (id < 0 || id >= tdf->ntextures) return -1;
+  image = p + be32(p + 12 + 8 * (u32)id);
+  GX_InitTexObj(texObj, (void*)(p + be32(image + 4 + 4)), (u16)(image[2] << 8 | image[3]),
+                (u16)(image[0] << 8 | image[1]), (u8)be32(image + 4), (u8)be32(image + 12),
+                (u8)be32(image + 16), image[34] > 0);
+  return 0;
+}

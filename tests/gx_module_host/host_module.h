@@ -97,6 +97,9 @@ class HostModule {
     compiled = std::system(cc.c_str()) == 0;
     compiler_output = test::read_file(log);
     if (compiled) handle_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+    // What a game calls once before its first draw: it opens the module's TPL, from which every
+    // pass takes its textures (module_textures.h).
+    if (auto* open_textures = get<void()>("ltrender_flush_textures")) open_textures();
   }
   ~HostModule() {
     if (handle_) dlclose(handle_);

@@ -14,6 +14,7 @@ const CallTable& calls() {
     add_xf_calls(t);
     add_tev_calls(t);
     add_pixel_calls(t);
+    add_tpl_calls(t);
     return t;
   }();
   return table;

@@ -14,6 +14,7 @@
 #include "gx/gx_state.h"
 #include "gx/program/gx_names.h"
 #include "gx/program/program_file.h"
+#include "gx/tpl_file.h"
 
 namespace lt::gx::interp {
 
@@ -28,6 +29,8 @@ enum class ParamKind {
   LightRef,
   TexRef,
   TlutRef,
+  TplRef,  // &name of a declared TPLFile
+  String,  // a "file name"
   MtxName,
   ArrayName,
   MeshArray
@@ -75,6 +78,14 @@ struct LoadedTlut {
   u8 format = 0;
 };
 
+// libogc's TPLFile once TPL_OpenTPLFromFile / TPL_OpenTPLFromMemory opened it (calls_tpl.cpp):
+// the textures it holds and the name errors give it.
+struct TplObject {
+  std::string source;  // the file as resolved, or `program.c:array`
+  std::vector<TplTexture> textures;
+  bool open = false;
+};
+
 // One run: the state, the program's variables, and the call being executed (for messages).
 
 class Machine {
@@ -111,6 +122,13 @@ class Machine {
   LightObject& light(size_t k) { return lights_.at(call_->args[k].name); }
   TexObject& tex(size_t k) { return textures_.at(call_->args[k].name); }
   TlutObject& tlut(size_t k) { return tluts_.at(call_->args[k].name); }
+  TplObject& tpl(size_t k) { return tpls_.at(call_->args[k].name); }
+  // Bytes the program did not declare (a TPL's texels and palettes), held under `name` for the
+  // texture and TLUT objects that point at them, as a declared array would be.
+  void hold_bytes(const std::string& name, std::vector<u8> bytes) {
+    arrays_[name] = std::move(bytes);
+  }
+  const std::string& program_file() const { return file_; }
   // The palettes loaded so far, by TLUT name (GX_LoadTlut).
   std::map<int, LoadedTlut> loaded_tluts;
   const TexMatrix& mtx(size_t k) const { return matrices_.at(call_->args[k].name); }
@@ -135,7 +153,7 @@ class Machine {
 
   void declare(const Declaration& d) {
     if (lights_.count(d.name) || textures_.count(d.name) || tluts_.count(d.name) ||
-        matrices_.count(d.name) || arrays_.count(d.name))
+        tpls_.count(d.name) || matrices_.count(d.name) || arrays_.count(d.name))
       fail(d.pos, "redefinition of " + d.name);
     switch (d.type) {
       case Declaration::Type::LightObj:
@@ -146,6 +164,9 @@ class Machine {
         break;
       case Declaration::Type::TlutObj:
         tluts_[d.name] = TlutObject{};
+        break;
+      case Declaration::Type::TplFile:
+        tpls_[d.name] = TplObject{};
         break;
       case Declaration::Type::Mtx: {
         TexMatrix m{};
@@ -216,6 +237,13 @@ class Machine {
         if (a.kind != Arg::Kind::AddressOf || !tluts_.count(a.name))
           wrong("&name of a declared GXTlutObj");
         break;
+      case ParamKind::TplRef:
+        if (a.kind != Arg::Kind::AddressOf || !tpls_.count(a.name))
+          wrong("&name of a declared TPLFile");
+        break;
+      case ParamKind::String:
+        if (a.kind != Arg::Kind::String) wrong("a \"file name\"");
+        break;
       case ParamKind::MtxName:
         if (a.kind != Arg::Kind::Identifier || !matrices_.count(a.name))
           wrong("the name of a declared Mtx");
@@ -235,6 +263,7 @@ class Machine {
   std::map<std::string, LightObject> lights_;
   std::map<std::string, TexObject> textures_;
   std::map<std::string, TlutObject> tluts_;
+  std::map<std::string, TplObject> tpls_;
   std::map<std::string, TexMatrix> matrices_;
   std::map<std::string, std::vector<u8>> arrays_;
 };
@@ -255,5 +284,6 @@ using CallTable = std::map<std::string, CallInfo>;
 void add_xf_calls(CallTable& table);     // channels, lights, texgen
 void add_tev_calls(CallTable& table);    // TEV stages, registers, konst, swap tables
 void add_pixel_calls(CallTable& table);  // pixel engine, textures, vertex format, cache
+void add_tpl_calls(CallTable& table);    // TPL files (libogc's tpl.h)
 
 }  // namespace lt::gx::interp

@@ -18,7 +18,7 @@ namespace lt::gx {
 namespace {
 
 struct Token {
-  enum class Kind { Identifier, Integer, Float, Punct, End };
+  enum class Kind { Identifier, Integer, Float, Punct, String, End };
   Kind kind = Kind::End;
   // Into the program text, which outlives the parse: a texture's bytes are millions of tokens,
   // and a view neither copies them nor makes a token larger than 32 bytes.
@@ -83,6 +83,8 @@ class Lexer {
       } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                  (c == '.' && std::isdigit(static_cast<unsigned char>(peek(1))))) {
         t = number();
+      } else if (c == '"') {
+        t = string_literal();
       } else if (std::string("(){}[],;&|=-+").find(c) != std::string::npos) {
         const size_t start = i_;
         advance();
@@ -122,6 +124,31 @@ class Lexer {
   }
   [[noreturn]] void fail(const SourcePos& p, const std::string& what) const {
     throw InputError(file_, std::to_string(p.line) + ":" + std::to_string(p.column), what);
+  }
+
+  // "text" on one line, without escapes (TPL_OpenTPLFromFile's file name): the token is the
+  // characters between the quotes.
+  Token string_literal() {
+    Token t;
+    t.pos = pos_;
+    advance();
+    const size_t start = i_;
+    while (i_ < s_.size() && s_[i_] != '"' && s_[i_] != '\n') {
+      const unsigned char c = static_cast<unsigned char>(s_[i_]);
+      if (c == '\\') fail(pos_, "escape sequences in strings are not read");
+      // Printable ASCII only: a message that quotes the string stays one readable line.
+      if (c < 0x20 || c > 0x7e) {
+        char shown[8];
+        std::snprintf(shown, sizeof shown, "0x%02X", c);
+        fail(pos_, std::string("unexpected character ") + shown + " in a string");
+      }
+      advance();
+    }
+    if (i_ >= s_.size() || s_[i_] != '"') fail(t.pos, "unterminated string");
+    t.text = text_from(start);
+    advance();
+    t.kind = Token::Kind::String;
+    return t;
   }
 
   // C literals: decimal and hex integers (u/U/l/L suffixes), floats with an optional f suffix.
@@ -187,7 +214,10 @@ class Parser {
  private:
   const Token& cur() const { return t_[k_]; }
   const Token& ahead(size_t n) const { return t_[std::min(k_ + n, t_.size() - 1)]; }
-  bool is(const char* text) const { return cur().kind != Token::Kind::End && cur().text == text; }
+  bool is(const char* text) const {
+    return cur().kind != Token::Kind::End && cur().kind != Token::Kind::String &&
+           cur().text == text;
+  }
   Token take() { return t_[k_ < t_.size() - 1 ? k_++ : k_]; }
 
   [[noreturn]] void fail(const SourcePos& p, const std::string& what) const {
@@ -232,7 +262,8 @@ class Parser {
     Statement s;
     size_t save = k_;
     while (is("static") || is("const")) take();
-    if (is("GXLightObj") || is("GXTexObj") || is("GXTlutObj") || is("Mtx") || is("u8")) {
+    if (is("GXLightObj") || is("GXTexObj") || is("GXTlutObj") || is("TPLFile") || is("Mtx") ||
+        is("u8")) {
       s.kind = Statement::Kind::Declaration;
       s.declaration = declaration();
       return s;
@@ -249,10 +280,11 @@ class Parser {
     d.pos = cur().pos;
     const std::string type(take().text);
     d.name = identifier("a variable name");
-    if (type == "GXLightObj" || type == "GXTexObj" || type == "GXTlutObj") {
-      d.type = type == "GXLightObj" ? Declaration::Type::LightObj
-               : type == "GXTexObj" ? Declaration::Type::TexObj
-                                    : Declaration::Type::TlutObj;
+    if (type == "GXLightObj" || type == "GXTexObj" || type == "GXTlutObj" || type == "TPLFile") {
+      d.type = type == "GXLightObj"  ? Declaration::Type::LightObj
+               : type == "GXTexObj"  ? Declaration::Type::TexObj
+               : type == "GXTlutObj" ? Declaration::Type::TlutObj
+                                     : Declaration::Type::TplFile;
       expect(";");
       return d;
     }
@@ -357,6 +389,8 @@ class Parser {
       }
       expect("}");
       a = Arg::rgba(c, s10);
+    } else if (cur().kind == Token::Kind::String) {
+      a = Arg::string(std::string(take().text));
     } else {
       a = expression();
     }

@@ -54,6 +54,9 @@ void print_declaration(std::ostream& out, const Declaration& d, const std::strin
     case Declaration::Type::TlutObj:
       out << indent << "GXTlutObj " << d.name << ";\n";
       return;
+    case Declaration::Type::TplFile:
+      out << indent << "TPLFile " << d.name << ";\n";
+      return;
     case Declaration::Type::Mtx:
       out << indent << "Mtx " << d.name << " = {";
       for (size_t r = 0; r < 3; ++r) {
@@ -107,6 +110,8 @@ std::string print_arg(const Arg& a) {
       return "&" + a.name;
     case Arg::Kind::Identifier:
       return a.name;
+    case Arg::Kind::String:
+      return "\"" + a.text + "\"";
   }
   return "";
 }

@@ -41,6 +41,13 @@ Arg Arg::identifier(const std::string& n) {
   return a;
 }
 
+Arg Arg::string(const std::string& s) {
+  Arg a;
+  a.kind = Kind::String;
+  a.text = s;
+  return a;
+}
+
 Statement Statement::of(Call c, std::string comment) {
   Statement s;
   s.kind = Kind::Call;

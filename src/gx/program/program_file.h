@@ -24,7 +24,9 @@ struct Arg {
     Number,     // a float literal (f32 parameters; integers are accepted there too)
     Color,      // (GXColor){r, g, b, a}
     ColorS10,   // (GXColorS10){r, g, b, a}
-    AddressOf,  // &name (a GXLightObj, GXTexObj or GXTlutObj)
+    AddressOf,  // &name (a GXLightObj, GXTexObj, GXTlutObj or TPLFile)
+    String,     // "text" (TPL_OpenTPLFromFile's file name), without escapes: text is the
+                // characters between the quotes
     Identifier  // name (an Mtx or a u8 array)
   };
   Kind kind = Kind::Integer;
@@ -41,6 +43,7 @@ struct Arg {
   static Arg rgba(std::array<long long, 4> c, bool s10 = false);
   static Arg address_of(const std::string& n);
   static Arg identifier(const std::string& n);
+  static Arg string(const std::string& s);
 };
 
 struct Call {
@@ -52,10 +55,11 @@ struct Call {
   Call(std::string f, std::vector<Arg> a) : function(std::move(f)), args(std::move(a)) {}
 };
 
-// `GXLightObj name;`, `GXTexObj name;`, `GXTlutObj name;`, `Mtx name = {{..},{..},{..}};` and
-// `u8 name[N] ATTRIBUTE_ALIGN(32) = {..};` (static/const allowed).
+// `GXLightObj name;`, `GXTexObj name;`, `GXTlutObj name;`, `TPLFile name;` (libogc's open TPL
+// file, tpl.h), `Mtx name = {{..},{..},{..}};` and `u8 name[N] ATTRIBUTE_ALIGN(32) = {..};`
+// (static/const allowed).
 struct Declaration {
-  enum class Type { LightObj, TexObj, Mtx, ByteArray, TlutObj };
+  enum class Type { LightObj, TexObj, Mtx, ByteArray, TlutObj, TplFile };
   Type type = Type::LightObj;
   std::string name;
   std::vector<double> values;  // Mtx: 12 floats row by row; ByteArray: the bytes

@@ -10,6 +10,7 @@
 #include "gx/program/pass_programs.h"
 #include "gx/program/printer.h"
 #include "paths/gx/generator.h"
+#include "paths/gx/module/module_textures.h"
 
 namespace lt::gx {
 
@@ -375,6 +376,8 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << light_kinds(scene, variant);
   ProgramFile file = g.file;
   file.comment.clear();
+  const ModuleTextures textures = module_textures(plan);
+  file.top_level = with_textures_in_tpl(file.top_level, textures);
   std::vector<Function> bound;
   for (const MaterialPlan& m : plan.materials) {
     for (size_t i = 0; i < m.passes.size(); ++i) {
@@ -382,22 +385,14 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       const auto f = std::find_if(file.functions.begin(), file.functions.end(),
                                   [&](const Function& fn) { return fn.name == name; });
       LT_CHECK(f != file.functions.end(), "emit_programs wrote no " + name);
-      bound.push_back(bind_frame_state(*f, m.passes[i], t_from_normal));
+      bound.push_back(
+          take_textures_from_tpl(bind_frame_state(*f, m.passes[i], t_from_normal), textures));
     }
   }
   file.functions = std::move(bound);
   out << "\n// ---- the passes ----\n" << print_program(file);
   for (const MaterialPlan& m : plan.materials) out << material_functions(scene, m, variant);
-  out << "\n// Once, before the first draw: every texture array out of the CPU cache, so the GPU "
-         "reads\n"
-      << "// what the CPU wrote [OGC gc/ogc/cache.h L123-139].\n"
-      << "void ltrender_flush_textures(void) {\n";
-  for (const MaterialPlan& m : plan.materials) {
-    for (const ArrayPlan& a : m.arrays)
-      out << "  DCFlushRange(" << a.name << ", sizeof " << a.name << ");\n";
-  }
-  out << "  GX_InvalidateTexAll();\n}\n"
-      << "\n// ---- every material ----\n"
+  out << open_textures_function(textures) << "\n// ---- every material ----\n"
       << "typedef struct {\n"
       << "  const char* name; /* as the scene names it */\n"
       << "  int passes;\n"
