@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "gx/texture_format.h"
 #include "gx/texture_unit.h"
 #include "scene/scene.h"
 
