@@ -162,12 +162,13 @@ TEST(GxExportStoredDeclarations, CompileWithThePowerPcCompilerAgainstLibogc) {
   test::TempDir dir;
   const fs::path c = dir / "stored.c";
   const test::RunResult r = test::run_ltrender(
-      "export gx " + (test::source_dir() / "scenes/coloured_cubes.json").string() +
+      "export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
       " --variant t=vertex:vtx=s16:nrm=s8:clr=rgb565:uv=s16:draw=list -o " + c.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string text = test::read_file(c);
   EXPECT_NE(text.find("GX_RGB565"), std::string::npos);
-  EXPECT_NE(text.find("GX_INDEX"), std::string::npos);
+  EXPECT_NE(text.find("GX_INDEX8"), std::string::npos) << "the blob's colour array";
+  EXPECT_NE(text.find("GX_INDEX16"), std::string::npos) << "the blob's positions";
   for (const fs::path& ogc : checkouts) {
     const fs::path log = dir / "cc.log";
     EXPECT_EQ(std::system(compile_command(c, ogc, log).c_str()), 0) << "against " << ogc << ":\n"

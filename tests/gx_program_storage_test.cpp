@@ -18,6 +18,7 @@
 #include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_path.h"
+#include "paths/gx/scene_vertices.h"
 #include "render/session.h"
 #include "test_util.h"
 
@@ -249,20 +250,30 @@ TEST(GxExportDeclaresStorage, TheExportedFileRendersTheVariantsFrameAndAnEditedO
   EXPECT_NE(edited.rgba, s16_8.rgba) << "the edit changed nothing";
 }
 
-// An indexed display list with /auto fractions: the file declares each array's index and the
-// fractions the variant chose, and its FIFO log (the draw taken from :draw=list) is the variant's
-// to the byte.
+// An indexed display list with /auto fractions: the file declares each array's index and one
+// fraction an attribute. baked_blob is one object, so its positions' /auto is the variant's; its
+// two lights' t may each take their own under uv=s16/auto, and the file declares the smallest,
+// the widest fraction (vertex_quantiser.h widest_fraction) that holds every light's t. Read
+// back, its FIFO log (the draw taken from :draw=list) is the log of the variant that says that
+// fraction, to the byte.
 TEST(GxExportDeclaresStorage, AnIndexedListWithAutoFractionsWritesTheVariantsFifoLog) {
   test::TempDir dir;
-  const std::string variant = "t=vertex:vtx=s16:nrm=s16:clr=rgba4:uv=s16:draw=list";
-  const fs::path file = exported_c(dir, variant);
-  const std::string text = test::read_file(file);
-  EXPECT_NE(text.find("GX_SetVtxDesc(GX_VA_POS, GX_INDEX16);"), std::string::npos)
+  const std::string storage = "t=vertex:vtx=s16:nrm=s16:clr=rgba4";
+  const fs::path file = exported_c(dir, storage + ":uv=s16:draw=list");
+  EXPECT_NE(test::read_file(file).find("GX_SetVtxDesc(GX_VA_POS, GX_INDEX16);"), std::string::npos)
       << "the blob has more than 255 positions";
+  const SceneView view = SceneView::of(baked_blob());
+  const VertexStream stream = make_vertex_stream(baked_blob(), baked_blob().objects[0], view);
+  int t_frac = kMaxFracBits;
+  for (const std::vector<float>& t : stream.t_per_light) {
+    const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
+    t_frac = std::min(t_frac, widest_fraction(*lo, *hi, ComponentType::S16).value());
+  }
   const PathInfo& gx = gx_path_info();
   EXPECT_EQ(gx.fifo_log(baked_blob(), "t=vertex:draw=list", PathOptions{file.string(), ""}, kWidth,
                         kHeight),
-            gx.fifo_log(baked_blob(), variant, {}, kWidth, kHeight));
+            gx.fifo_log(baked_blob(), storage + ":uv=s16/" + std::to_string(t_frac) + ":draw=list",
+                        {}, kWidth, kHeight));
 }
 
 }  // namespace
