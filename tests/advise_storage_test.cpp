@@ -20,9 +20,9 @@ const fs::path kScene = lt::build_paths::source_dir() / "scenes" / "backlit_sphe
 
 nlohmann::json advise_json(const fs::path& dir, const std::string& max_lsb, int expected_exit) {
   const fs::path json = dir / ("advise_" + max_lsb + ".json");
-  const test::RunResult r = test::run_ltrender("advise " + kScene.string() +
-                                               " --target wii-tev --width 48 --max-lsb " +
-                                               max_lsb + " --json " + json.string());
+  const test::RunResult r =
+      test::run_ltrender("advise " + kScene.string() + " --target wii-tev --width 48 --max-lsb " +
+                         max_lsb + " --json " + json.string());
   EXPECT_EQ(r.exit_code, expected_exit) << r.out << r.err;
   return nlohmann::json::parse(test::read_file(json));
 }
@@ -65,8 +65,7 @@ TEST(AdviseStorage, ALooseBudgetPicksTheStorageOfFewestFifoBytesAndZeroLsbPicksN
   EXPECT_EQ(m["storage"]["pick"], expected);
   // The F32 option renders the pick itself: its error is the pick's in the search.
   for (const nlohmann::json& c : m["candidates"]) {
-    if (c["variant"] == m["pick"])
-      EXPECT_EQ(options[0]["error"]["max"], c["error"]["max"]);
+    if (c["variant"] == m["pick"]) EXPECT_EQ(options[0]["error"]["max"], c["error"]["max"]);
   }
 
   // 0 LSB: gx's 8-bit frame cannot be exact here (the search's own errors say so), so no

@@ -211,9 +211,9 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
     }
     ASSERT_TRUE(row.contains("console")) << rows[i].variant;
     if (rows[i].variant != "t=vertex" && rows[i].variant != "t=texgen:view=object") continue;
-    const test::RunResult budget = test::run_ltrender(
-        "budget " + (dir / "quad.json").string() + " --path gx --variant " + rows[i].variant +
-        " --json");
+    const test::RunResult budget =
+        test::run_ltrender("budget " + (dir / "quad.json").string() + " --path gx --variant " +
+                           rows[i].variant + " --json");
     ASSERT_EQ(budget.exit_code, 0) << budget.err;
     const auto details = nlohmann::json::parse(budget.out).at("details");
     for (const char* key : {"vertex_bytes", "fifo_bytes", "xf_vertices", "triangles",

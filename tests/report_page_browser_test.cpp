@@ -134,13 +134,14 @@ TEST_F(ReportPageInBrowser, ImagesLoadFlipChangesTheImageAndTheFailureFilterIsEx
   const auto bench = test::run_ltrender(
       "bench " + (out / "scenes" / "quad_a.json").string() +
       " --paths gx --variants default --quick --min-time 0 --max-time 0 --warmup 0 --pin-core "
-      "none --quiet -o " + bench_dir.string());
+      "none --quiet -o " +
+      bench_dir.string());
   ASSERT_EQ(bench.exit_code, 0) << bench.err;
-  const nlohmann::json charts =
-      selftest_result(chromium("file://" + (bench_dir / "index.html").string() + "?selftest",
-                               "--dump-dom"))["charts"];
+  const nlohmann::json charts = selftest_result(chromium(
+      "file://" + (bench_dir / "index.html").string() + "?selftest", "--dump-dom"))["charts"];
   ASSERT_EQ(charts.size(), 3u) << charts;
-  EXPECT_EQ(charts[2]["title"], "Console bytes against error, per path and variant over all scenes");
+  EXPECT_EQ(charts[2]["title"],
+            "Console bytes against error, per path and variant over all scenes");
   for (const auto& chart : charts) {
     EXPECT_EQ(chart["points"], 1) << chart;
     EXPECT_GT(chart["width"].get<int>(), 100) << chart;

@@ -29,7 +29,7 @@ std::string error_text(const ErrorStats& e, const EdgeShiftSplit& split) {
 }
 
 // A storage's name as the text shows it.
-std::string storage_name(const StorageOption& o) {
+std::string storage_label(const StorageOption& o) {
   return o.storage.empty() ? "F32 direct (the default)" : o.storage;
 }
 
@@ -37,14 +37,15 @@ std::string storage_name(const StorageOption& o) {
 void storage_text(std::ostream& out, const StorageAdvice& s, Stat stat) {
   if (s.pick) {
     const StorageOption& p = s.options[*s.pick];
-    out << "  storage: " << storage_name(p) << ": " << p.bytes.fifo_bytes
+    out << "  storage: " << storage_label(p) << ": " << p.bytes.fifo_bytes
         << " FIFO bytes a frame, " << p.bytes.mem1_bytes() << " MEM1 bytes, " << to_string(stat)
         << " " << fixed(stat_of(p.error, stat), 2) << " LSB (rendered)\n";
   } else {
     out << "  storage: none within the budget\n";
   }
   for (const StorageOption& o : s.options) {
-    out << "    " << (s.pick && &s.options[*s.pick] == &o ? "* " : "  ") << storage_name(o) << ": ";
+    out << "    " << (s.pick && &s.options[*s.pick] == &o ? "* " : "  ") << storage_label(o)
+        << ": ";
     if (!o.failed.empty()) {
       out << o.failed << "\n";
       continue;
@@ -53,15 +54,14 @@ void storage_text(std::ostream& out, const StorageAdvice& s, Stat stat) {
         << o.bytes.mem1_bytes() << " MEM1 B, " << o.bytes.xf_vertices << " XF vertices; max "
         << fixed(o.error.max_lsb, 2) << ", p99 " << fixed(o.error.p99_lsb, 2) << ", mean "
         << fixed(o.error.mean_lsb, 2)
-        << (o.non_finite ? ", " + std::to_string(o.non_finite) + " non-finite pixels" : "")
-        << "\n";
+        << (o.non_finite ? ", " + std::to_string(o.non_finite) + " non-finite pixels" : "") << "\n";
   }
 }
 
 nlohmann::ordered_json storage_json(const StorageAdvice& s) {
   nlohmann::ordered_json j;
-  j["pick"] = s.pick ? nlohmann::ordered_json(s.options[*s.pick].storage)
-                     : nlohmann::ordered_json(nullptr);
+  j["pick"] =
+      s.pick ? nlohmann::ordered_json(s.options[*s.pick].storage) : nlohmann::ordered_json(nullptr);
   j["options"] = nlohmann::ordered_json::array();
   for (const StorageOption& o : s.options) {
     nlohmann::ordered_json jo;
@@ -71,7 +71,8 @@ nlohmann::ordered_json storage_json(const StorageAdvice& s) {
     if (o.failed.empty()) {
       for (const auto& [name, field] : ConsoleBytes::kFields) jo[name] = o.bytes.*field;
       jo["mem1_bytes"] = o.bytes.mem1_bytes();
-      jo["error"] = {{"max", o.error.max_lsb}, {"p99", o.error.p99_lsb}, {"mean", o.error.mean_lsb}};
+      jo["error"] = {
+          {"max", o.error.max_lsb}, {"p99", o.error.p99_lsb}, {"mean", o.error.mean_lsb}};
       jo["non_finite_pixels"] = o.non_finite;
     }
     j["options"].push_back(jo);

@@ -1,5 +1,6 @@
 #include "advise/storage_advice.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 
@@ -74,8 +75,8 @@ void add_storage_advice(Advice& a, const Scene& scene, const PathInfo& path,
       }
       const bool within = o.failed.empty() && o.non_finite == 0 &&
                           stat_of(o.error, a.options.stat) <= a.options.max_lsb;
-      if (within && (!advice.pick || o.bytes.fifo_bytes <
-                                         advice.options[*advice.pick].bytes.fifo_bytes))
+      if (within &&
+          (!advice.pick || o.bytes.fifo_bytes < advice.options[*advice.pick].bytes.fifo_bytes))
         advice.pick = advice.options.size();
       advice.options.push_back(std::move(o));
     }

@@ -23,9 +23,8 @@ namespace lt::advise {
 // the pick's variant (docs/advise.md): positions and texture coordinates s16 with the fractional
 // bits the mesh's bounds allow, normals s8, colours RGB565; then the same indexed, stripped, in
 // display lists.
-inline constexpr const char* kStorages[] = {
-    "", "vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto",
-    "vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"};
+inline constexpr const char* kStorages[] = {"", "vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto",
+                                            "vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"};
 
 struct StorageOption {
   std::string storage;  // a kStorages entry ("" F32 direct)

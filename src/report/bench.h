@@ -78,7 +78,7 @@ struct BenchRow {
   // them): a silhouette two rasterisers place differently reads as edge shifts, a wrong shade
   // as shading, so a large max is told from a broken shade. With `error`.
   std::optional<EdgeShiftSplit> edge_split;
-  FrameStats stats;                 // the path's own figures, medians over the timed frames
+  FrameStats stats;  // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
   std::string cost;                             // Path::cost(): instructions or stages
   // A console path's (writes_fifo_log) bytes and vertices a frame, from its budget of the
