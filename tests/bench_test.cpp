@@ -130,7 +130,7 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
             0u);
   EXPECT_NE(csv.find(",cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
                      "work_vertex_ops,settling_frames,edge_shift_pixels,shading_pixels,"
-                     "shading_max_lsb\n"),
+                     "shading_max_lsb,"),
             std::string::npos);
   for (size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& r = rows[i];
@@ -196,6 +196,37 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
       EXPECT_EQ(r.work->pixel_ops, reference->stats.covered_pixels.value()) << r.path;
   }
   EXPECT_NE(md.find("work (M ops)"), std::string::npos);
+
+  // The console's figures: a gx row carries what `ltrender budget --path gx --variant V` counts
+  // for the scene (the budget's own command, run apart), for two variants that send different
+  // attributes; the other paths carry none. The page and chart_console.svg plot FIFO bytes.
+  EXPECT_NE(csv.find(",shading_max_lsb,console_vertex_bytes,console_fifo_bytes,"),
+            std::string::npos);
+  size_t checked = 0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const auto& row = j["rows"][i];
+    if (rows[i].path != "gx") {
+      EXPECT_FALSE(row.contains("console")) << rows[i].path;
+      continue;
+    }
+    ASSERT_TRUE(row.contains("console")) << rows[i].variant;
+    if (rows[i].variant != "t=vertex" && rows[i].variant != "t=texgen:view=object") continue;
+    const test::RunResult budget =
+        test::run_ltrender("budget " + (dir / "quad.json").string() + " --path gx --variant " +
+                           rows[i].variant + " --json");
+    ASSERT_EQ(budget.exit_code, 0) << budget.err;
+    const auto details = nlohmann::json::parse(budget.out).at("details");
+    for (const char* key : {"vertex_bytes", "fifo_bytes", "xf_vertices", "triangles",
+                            "texture_bytes", "tlut_bytes"}) {
+      EXPECT_EQ(row["console"].at(key), details.at(key)) << rows[i].variant << " " << key;
+    }
+    EXPECT_GT(row["console"]["fifo_bytes"].get<std::size_t>(), 0u);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2u);
+  EXPECT_NE(html.find("Console bytes against error"), std::string::npos);
+  EXPECT_NE(slurp("chart_console.svg").find("x: geometric mean FIFO bytes a frame"),
+            std::string::npos);
 }
 
 }  // namespace

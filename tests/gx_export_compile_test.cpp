@@ -177,6 +177,29 @@ TEST(GxModuleTplCompiles, WithThePowerPcCompilerAgainstLibogc) {
   }
 }
 
+// `--format c` of a stored, indexed display-list variant: its declarations (GX_S16 with a
+// fraction, GX_S8 normals, GX_RGB565, GX_INDEX8/GX_INDEX16) are libogc's names and arguments.
+TEST(GxExportStoredDeclarations, CompileWithThePowerPcCompilerAgainstLibogc) {
+  const std::vector<fs::path> checkouts = libogc_checkouts();
+  if (checkouts.empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile a stored variant's C";
+  test::TempDir dir;
+  const fs::path c = dir / "stored.c";
+  const test::RunResult r = test::run_ltrender(
+      "export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
+      " --variant t=vertex:vtx=s16:nrm=s8:clr=rgb565:uv=s16:draw=list -o " + c.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string text = test::read_file(c);
+  EXPECT_NE(text.find("GX_RGB565"), std::string::npos);
+  EXPECT_NE(text.find("GX_INDEX8"), std::string::npos) << "the blob's colour array";
+  EXPECT_NE(text.find("GX_INDEX16"), std::string::npos) << "the blob's positions";
+  for (const fs::path& ogc : checkouts) {
+    const fs::path log = dir / "cc.log";
+    EXPECT_EQ(std::system(compile_command(c, ogc, log).c_str()), 0) << "against " << ogc << ":\n"
+                                                                    << test::read_file(log);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GxExportCompiles, ::testing::ValuesIn(export_scenes()),
                          [](const auto& info) { return test::test_param_name(info.param); });
 

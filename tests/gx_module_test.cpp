@@ -17,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "gx/program/pass_programs.h"
 #include "gx_module_host/host_module.h"
 #include "load/load_scene.h"
 #include "model/rational_fit.h"
@@ -25,7 +26,6 @@
 #include "paths/gx/gx_variant.h"
 #include "paths/gx/module/module_exporter.h"
 #include "paths/gx/module/runtime/ltrender_gx_runtime.h"
-#include "gx/program/pass_programs.h"
 #include "paths/gx/scene_vertices.h"
 #include "render/camera_path.h"
 #include "render/session.h"
@@ -191,6 +191,22 @@ TEST(GxModuleExport, RefusesALightRangeThatIsNoDistance) {
   EXPECT_NE(r.err.find("light-range=-2"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// The module's runtime sends each vertex F32, GX_DIRECT: a stored or indexed variant is one line,
+// exit 2, no file (`--format c` declares them).
+TEST(GxModuleExport, RefusesAVertexStorageOrAnIndexedDraw) {
+  test::TempDir dir;
+  const fs::path out = dir / "m.c";
+  for (const char* variant : {"t=vertex:vtx=s16/8", "t=vertex:draw=list"}) {
+    const test::RunResult r =
+        test::run_ltrender("export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
+                           " --variant " + variant + " --format module -o " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << variant;
+    EXPECT_NE(r.err.find("not yet by the module"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 std::vector<Case> module_cases() {

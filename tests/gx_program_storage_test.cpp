@@ -18,6 +18,7 @@
 #include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_path.h"
+#include "paths/gx/scene_vertices.h"
 #include "render/session.h"
 #include "test_util.h"
 
@@ -210,6 +211,69 @@ TEST(GxProgramStorage, AVariantAxisThatSaysOtherwiseIsRefusedNamingBoth) {
         << e.what();
     EXPECT_NE(e.what_only().find("declares s16/8"), std::string::npos) << e.what();
   }
+}
+
+// `--format c` declares the variant's storage (issue 46 step 5): the generated program of a
+// stored variant is the F32 program with the very declarations a porter writes by hand
+// (kS16S8Rgb565 above, the edits the tests before read back), and the exported file, read back
+// with `render --program`, draws the variant's frame; a user's edit of one declaration draws the
+// frame of the variant that says the same.
+TEST(GxExportDeclaresStorage, AsThePorterWritesItByHand) {
+  EXPECT_EQ(print_program(generate_programs(baked_blob(), parse_gx_variant(kStored)).file),
+            with_edits(f32_program_text(), kS16S8Rgb565));
+}
+
+// The exported file (`ltrender export gx`, comment block and all) under --program.
+fs::path exported_c(const test::TempDir& dir, const std::string& variant) {
+  const fs::path file = dir / "export.c";
+  const test::RunResult r =
+      test::run_ltrender("export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
+                         " --variant " + variant + " -o " + file.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return file;
+}
+
+TEST(GxExportDeclaresStorage, TheExportedFileRendersTheVariantsFrameAndAnEditedOneItsVariants) {
+  test::TempDir dir;
+  const fs::path file = exported_c(dir, kStored);
+  PathOptions options;
+  options.program_file = file.string();
+  const Image read_back = render_scene(baked_blob(), "gx", "t=vertex", kWidth, kHeight, options);
+  const Image s16_8 = render_scene(baked_blob(), "gx", kStored, kWidth, kHeight);
+  EXPECT_EQ(read_back.rgba, s16_8.rgba);
+  // The porter moves the positions to 10 fractional bits.
+  test::write_file(file, with_edits(test::read_file(file), {{"GX_S16, 8", "GX_S16, 10"}}));
+  const Image edited = render_scene(baked_blob(), "gx", "t=vertex", kWidth, kHeight, options);
+  const Image s16_10 =
+      render_scene(baked_blob(), "gx", "t=vertex:vtx=s16/10:nrm=s8:clr=rgb565", kWidth, kHeight);
+  EXPECT_EQ(edited.rgba, s16_10.rgba);
+  EXPECT_NE(edited.rgba, s16_8.rgba) << "the edit changed nothing";
+}
+
+// An indexed display list with /auto fractions: the file declares each array's index and one
+// fraction an attribute. baked_blob is one object, so its positions' /auto is the variant's; its
+// two lights' t may each take their own under uv=s16/auto, and the file declares the smallest,
+// the widest fraction (vertex_quantiser.h widest_fraction) that holds every light's t. Read
+// back, its FIFO log (the draw taken from :draw=list) is the log of the variant that says that
+// fraction, to the byte.
+TEST(GxExportDeclaresStorage, AnIndexedListWithAutoFractionsWritesTheVariantsFifoLog) {
+  test::TempDir dir;
+  const std::string storage = "t=vertex:vtx=s16:nrm=s16:clr=rgba4";
+  const fs::path file = exported_c(dir, storage + ":uv=s16:draw=list");
+  EXPECT_NE(test::read_file(file).find("GX_SetVtxDesc(GX_VA_POS, GX_INDEX16);"), std::string::npos)
+      << "the blob has more than 255 positions";
+  const SceneView view = SceneView::of(baked_blob());
+  const VertexStream stream = make_vertex_stream(baked_blob(), baked_blob().objects[0], view);
+  int t_frac = kMaxFracBits;
+  for (const std::vector<float>& t : stream.t_per_light) {
+    const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
+    t_frac = std::min(t_frac, widest_fraction(*lo, *hi, ComponentType::S16).value());
+  }
+  const PathInfo& gx = gx_path_info();
+  EXPECT_EQ(gx.fifo_log(baked_blob(), "t=vertex:draw=list", PathOptions{file.string(), ""}, kWidth,
+                        kHeight),
+            gx.fifo_log(baked_blob(), storage + ":uv=s16/" + std::to_string(t_frac) + ":draw=list",
+                        {}, kWidth, kHeight));
 }
 
 }  // namespace

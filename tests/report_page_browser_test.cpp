@@ -124,6 +124,29 @@ TEST_F(ReportPageInBrowser, ImagesLoadFlipChangesTheImageAndTheFailureFilterIsEx
   for (const auto& id : result["failing_shown"]) shown.insert(id.get<std::string>());
   EXPECT_EQ(failed, (std::set<std::string>{"quad_a/glsl/pow=exact", "quad_b/combiners/t=vertex"}));
   EXPECT_EQ(shown, failed);
+  EXPECT_TRUE(result["charts"].empty()) << "regress's page has no chart";
+
+  // bench's page draws its charts, the console's bytes beside speed and work: each laid out
+  // at a size, its points there (flat has no error, so gx's default and, in the console
+  // chart, only gx's). A bench of gx's default alone, timed as briefly as bench allows: the
+  // page, not the figures, is under test.
+  const fs::path bench_dir = out / "bench";
+  const auto bench = test::run_ltrender(
+      "bench " + (out / "scenes" / "quad_a.json").string() +
+      " --paths gx --variants default --quick --min-time 0 --max-time 0 --warmup 0 --pin-core "
+      "none --quiet -o " +
+      bench_dir.string());
+  ASSERT_EQ(bench.exit_code, 0) << bench.err;
+  const nlohmann::json charts = selftest_result(chromium(
+      "file://" + (bench_dir / "index.html").string() + "?selftest", "--dump-dom"))["charts"];
+  ASSERT_EQ(charts.size(), 3u) << charts;
+  EXPECT_EQ(charts[2]["title"],
+            "Console bytes against error, per path and variant over all scenes");
+  for (const auto& chart : charts) {
+    EXPECT_EQ(chart["points"], 1) << chart;
+    EXPECT_GT(chart["width"].get<int>(), 100) << chart;
+    EXPECT_GT(chart["height"].get<int>(), 100) << chart;
+  }
 }
 
 TEST_F(ReportPageInBrowser, ScreenshotsShowTheFlip) {

@@ -423,6 +423,7 @@ Advice run_advise(const AdviseOptions& o) {
       ma.refinement = std::move(r);
     }
   }
+  add_storage_advice(a, scene, path, target.options, target.profile);
   a.seconds = seconds_since(start);
   return a;
 }

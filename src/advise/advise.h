@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "advise/hard_cases.h"
+#include "advise/storage_advice.h"
 #include "advise/variant_space.h"
 #include "metrics/compare.h"
 #include "scene/triangle_mesh.h"
@@ -109,6 +110,7 @@ struct MaterialAdvice {
   std::optional<size_t> pick;            // the cheapest admissible candidate within the budget
   std::optional<size_t> closest;         // without a pick: the admissible one of least error
   std::optional<Refinement> refinement;  // with --max-vertices, for a material without a pick
+  std::optional<StorageAdvice> storage;  // a console path's, for a material with a pick
   // A pick, or a refined mesh within the budget.
   bool within_budget() const { return pick || (refinement && refinement->holds_at); }
 };

@@ -28,6 +28,58 @@ std::string error_text(const ErrorStats& e, const EdgeShiftSplit& split) {
          std::to_string(split.edge_shift_pixels) + " edge shifts > 1 LSB)";
 }
 
+// A storage's name as the text shows it.
+std::string storage_label(const StorageOption& o) {
+  return o.storage.empty() ? "F32 direct (the default)" : o.storage;
+}
+
+// The vertex storage advised for a material and what each tried storage measured.
+void storage_text(std::ostream& out, const StorageAdvice& s, Stat stat) {
+  if (s.pick) {
+    const StorageOption& p = s.options[*s.pick];
+    out << "  storage: " << storage_label(p) << ": " << p.bytes.fifo_bytes
+        << " FIFO bytes a frame, " << p.bytes.mem1_bytes() << " MEM1 bytes, " << to_string(stat)
+        << " " << fixed(stat_of(p.error, stat), 2) << " LSB (rendered)\n";
+  } else {
+    out << "  storage: none within the budget\n";
+  }
+  for (const StorageOption& o : s.options) {
+    out << "    " << (s.pick && &s.options[*s.pick] == &o ? "* " : "  ") << storage_label(o)
+        << ": ";
+    if (!o.failed.empty()) {
+      out << o.failed << "\n";
+      continue;
+    }
+    out << o.bytes.vertex_bytes << " B a vertex, " << o.bytes.fifo_bytes << " FIFO B, "
+        << o.bytes.mem1_bytes() << " MEM1 B, " << o.bytes.xf_vertices << " XF vertices; max "
+        << fixed(o.error.max_lsb, 2) << ", p99 " << fixed(o.error.p99_lsb, 2) << ", mean "
+        << fixed(o.error.mean_lsb, 2)
+        << (o.non_finite ? ", " + std::to_string(o.non_finite) + " non-finite pixels" : "") << "\n";
+  }
+}
+
+nlohmann::ordered_json storage_json(const StorageAdvice& s) {
+  nlohmann::ordered_json j;
+  j["pick"] =
+      s.pick ? nlohmann::ordered_json(s.options[*s.pick].storage) : nlohmann::ordered_json(nullptr);
+  j["options"] = nlohmann::ordered_json::array();
+  for (const StorageOption& o : s.options) {
+    nlohmann::ordered_json jo;
+    jo["storage"] = o.storage;
+    jo["variant"] = o.variant;
+    jo["failed"] = o.failed;
+    if (o.failed.empty()) {
+      for (const auto& [name, field] : ConsoleBytes::kFields) jo[name] = o.bytes.*field;
+      jo["mem1_bytes"] = o.bytes.mem1_bytes();
+      jo["error"] = {
+          {"max", o.error.max_lsb}, {"p99", o.error.p99_lsb}, {"mean", o.error.mean_lsb}};
+      jo["non_finite_pixels"] = o.non_finite;
+    }
+    j["options"].push_back(jo);
+  }
+  return j;
+}
+
 // How the pick compares with the path's default for one material.
 std::string against_default(const Advice& a, size_t m, size_t pick) {
   const CandidateResult& d = a.candidates.front();
@@ -87,6 +139,7 @@ std::string to_text(const Advice& a) {
       out << "  pick: " << p.candidate.variant << ": " << cost_text(p.cost[m]) << ", "
           << error_text(p.error[m], p.edge_split[m]) << "\n  " << against_default(a, m, *ma.pick)
           << "\n";
+      if (ma.storage) storage_text(out, *ma.storage, o.stat);
     } else if (ma.closest) {
       const CandidateResult& c = a.candidates[*ma.closest];
       out << "  no candidate within the budget; closest: " << c.candidate.variant << ": "
@@ -193,6 +246,7 @@ nlohmann::ordered_json to_json(const Advice& a) {
     };
     jm["pick"] = name_of(ma.pick);
     jm["closest"] = name_of(ma.closest);
+    if (ma.storage) jm["storage"] = storage_json(*ma.storage);
     if (ma.refinement) {
       const Refinement& r = *ma.refinement;
       auto steps = [&](const std::vector<RefinementStep>& v) {

@@ -324,6 +324,8 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
         auto path = session.build(*p, v->name, profile_options(*p, o));
         row.at_scene_size = time_frames(*path, o);
         row.cost = path->cost();
+        if (p->writes_fifo_log)
+          row.console = console_bytes(p->budget(scene, v->name, profile_options(*p, o).profile));
         const Image img = path->result();
         const std::string base = sname + "__" + file_name_safe(p->name + "_" + v->name);
         row.image = "images/" + base + ".png";

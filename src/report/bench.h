@@ -14,6 +14,7 @@
 #include "metrics/compare.h"
 #include "paths/frame_stats.h"
 #include "paths/path.h"
+#include "report/console_bytes.h"
 #include "report/frame_work.h"
 #include "report/interleaved_timing.h"
 
@@ -77,9 +78,12 @@ struct BenchRow {
   // them): a silhouette two rasterisers place differently reads as edge shifts, a wrong shade
   // as shading, so a large max is told from a broken shade. With `error`.
   std::optional<EdgeShiftSplit> edge_split;
-  FrameStats stats;                 // the path's own figures, medians over the timed frames
+  FrameStats stats;  // the path's own figures, medians over the timed frames
   std::optional<double> shading_mpixels_per_s;  // CPU paths: covered pixels / shading time
   std::string cost;                             // Path::cost(): instructions or stages
+  // A console path's (writes_fifo_log) bytes and vertices a frame, from its budget of the
+  // scene and variant (console_bytes.h); none for the other paths.
+  std::optional<ConsoleBytes> console;
   std::optional<FrameWork> work;  // at 1280x720: operations a frame executes (frame_work.h)
   std::string work_not_counted;   // why `work` is empty
   std::string image, heatmap;     // relative to out_dir

@@ -123,6 +123,10 @@ nlohmann::json bench_row_to_json(const BenchRow& r) {
   } else {
     x["work"] = {{"not_counted", r.work_not_counted}};
   }
+  if (r.console) {
+    nlohmann::json& c = x["console"];
+    for (const auto& [name, field] : ConsoleBytes::kFields) c[name] = (*r.console).*field;
+  }
   if (r.error) x["error"] = error_json(*r.error);
   if (r.error && r.edge_split) {
     // Beside the figures: the pixels over 1 LSB classed (reference_edge_split.h).
@@ -173,6 +177,13 @@ BenchRow bench_row_from_json(const nlohmann::json& j, const std::string& file,
     w.pixel_operation = in.get<std::string>(work, "pixel_operation", "/work");
     w.vertex_operation = in.get<std::string>(work, "vertex_operation", "/work");
     r.work = w;
+  }
+  if (j.contains("console")) {
+    const nlohmann::json& c = j.at("console");
+    ConsoleBytes bytes;
+    for (const auto& [name, field] : ConsoleBytes::kFields)
+      bytes.*field = in.get<std::size_t>(c, name, "/console");
+    r.console = bytes;
   }
   if (j.contains("error")) {
     const nlohmann::json& e = j.at("error");

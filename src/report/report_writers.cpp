@@ -154,7 +154,9 @@ std::string csv(const std::vector<BenchRow>& rows) {
   s << "scene,path,variant,ms_median,ms_min,ms_median_wide,ms_min_wide,ratio_to_flat,max_lsb,"
        "mean_lsb,rmse_lsb,psnr_db,p99_lsb,percent_over_1_lsb,percent_over_4_lsb,"
        "shading_mpixels_per_s,cost,ratio_low,ratio_high,ratio_pairs,work_ops,work_pixel_ops,"
-       "work_vertex_ops,settling_frames,edge_shift_pixels,shading_pixels,shading_max_lsb\n";
+       "work_vertex_ops,settling_frames,edge_shift_pixels,shading_pixels,shading_max_lsb";
+  for (const auto& [name, field] : ConsoleBytes::kFields) s << ",console_" << name;
+  s << "\n";
   for (const BenchRow& r : rows) {
     s << r.scene << "," << r.path << "," << r.variant << "," << r.at_scene_size.median_ms << ","
       << r.at_scene_size.min_ms << "," << r.at_wide.median_ms << "," << r.at_wide.min_ms << ","
@@ -180,6 +182,10 @@ std::string csv(const std::vector<BenchRow>& rows) {
         << r.edge_split->shading_max_lsb;
     else
       s << ",,";
+    for (const auto& [name, field] : ConsoleBytes::kFields) {
+      s << ",";
+      if (r.console) s << (*r.console).*field;
+    }
     s << "\n";
   }
   return s.str();
@@ -350,6 +356,25 @@ ChartAxis work_axis(const BenchOptions& o) {
           }};
 }
 
+// The console's bytes (console_bytes.h), for the rows of a console path: FIFO bytes a frame, what
+// the CPU writes to the GP every frame, the figure every way of sending vertices has (docs/bench.md
+// says why this one and not MEM1). Counts, not time: the console's time is not modelled.
+bool has_console_rows(const std::vector<BenchRow>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return r.console; });
+}
+ChartAxis console_axis() {
+  return {"Console bytes",
+          "FIFO bytes a frame, counted, of the console paths' rows (the console's time is not "
+          "modelled; MEM1 bytes on each card)",
+          "FIFO bytes a frame",
+          " KB FIFO",
+          1e3,
+          [](const BenchRow& r) -> std::optional<double> {
+            if (!r.console) return std::nullopt;
+            return static_cast<double>(r.console->fifo_bytes);
+          }};
+}
+
 void write_contact_sheet(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   const ContactSheet sheet = bench_contact_sheet(o.out_dir, rows);
   if (sheet.row_labels.empty()) return;
@@ -367,6 +392,7 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
                  " (at least " + std::to_string(o.frames) + ", in pairs with flat; " + o.pinning +
                  "); " + timing_summary(o);
   page.chart_svg = svg_chart(rows, time_axis(o)) + svg_chart(rows, work_axis(o));
+  if (has_console_rows(rows)) page.chart_svg += svg_chart(rows, console_axis());
   for (const BenchRow& r : rows) {
     PageCard c;
     c.scene = r.scene;
@@ -394,6 +420,11 @@ ReportPage bench_page(const BenchOptions& o, const std::vector<BenchRow>& rows) 
           {"edge shifts", std::to_string(r.edge_split->edge_shift_pixels) + " px > 1 LSB"});
     }
     if (!r.cost.empty()) c.figures.push_back({"cost", r.cost});
+    if (r.console) {
+      c.figures.push_back({"FIFO a frame", std::to_string(r.console->fifo_bytes) + " bytes"});
+      c.figures.push_back({"MEM1", std::to_string(r.console->mem1_bytes()) + " bytes"});
+      c.figures.push_back({"XF vertices", std::to_string(r.console->xf_vertices)});
+    }
     if (const std::string notes = stats_note(r); !notes.empty()) c.notes.push_back(notes);
     page.cards.push_back(std::move(c));
   }
@@ -411,6 +442,8 @@ void write_bench_reports(const BenchOptions& o, const std::vector<BenchRow>& row
   write_text_file(o.out_dir / "report.json", json.dump(2) + "\n");
   write_text_file(o.out_dir / "chart.svg", svg_chart(rows, time_axis(o)));
   write_text_file(o.out_dir / "chart_work.svg", svg_chart(rows, work_axis(o)));
+  if (has_console_rows(rows))
+    write_text_file(o.out_dir / "chart_console.svg", svg_chart(rows, console_axis()));
   write_report_page(o.out_dir, bench_page(o, rows));
   write_contact_sheet(o, rows);
 }

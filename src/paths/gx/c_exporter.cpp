@@ -6,10 +6,41 @@
 #include "core/fixed.h"
 #include "core/fs.h"
 #include "gx/program/printer.h"
+#include "gx/vertex_storage.h"
 
 namespace lt::gx {
 
-namespace {}  // namespace
+namespace {
+
+// How the vertices go in when the variant stores or indexes them (docs/porting-to-the-wii.md
+// "Vertex storage"): the declarations above say the types, the scene's mesh is the port's own.
+std::string stored_note(const GxVariant& v) {
+  std::ostringstream o;
+  o << "\n"
+    << "Vertex storage " << vertex_storage_key(v.storage) << " (--variant " << to_string(v)
+    << "):\n";
+  if (!v.storage.is_default())
+    o << "each pass declares GX_VTXFMT0 as the variant stores the mesh: positions and normals in\n"
+      << "the object's own coordinates, quantised as docs/porting-to-the-wii.md says (round to\n"
+      << "nearest), placed by GX_PNMTX0 = view x model (the normal matrix its inverse transpose);\n"
+      << "send each attribute in its declared type (GX_Position3s16, GX_Normal3s8, ...).\n";
+  if (v.draw != GxVariant::Draw::Direct)
+    o << "The attributes are indexed: GX_SetArray each one's 32-byte aligned, DCFlushRange'd "
+         "array\n"
+      << "(stride = one element's bytes) and send each vertex's indices in the declared sizes;\n"
+      << (v.draw == GxVariant::Draw::Indexed
+              ? "GX_TRIANGLES, three vertices a triangle.\n"
+              : "the mesh as one GX_TRIANGLESTRIP (meshoptimizer's stripify, degenerate joins)" +
+                    std::string(v.draw == GxVariant::Draw::List
+                                    ? ", recorded once into a display list\n"
+                                      "(GX_BeginDispList / GX_EndDispList) and called each frame "
+                                      "(GX_CallDispList).\n"
+                                    : ".\n"));
+  o << "`ltrender render SCENE --program THIS_FILE` reads these declarations back as that storage.";
+  return o.str();
+}
+
+}  // namespace
 
 std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
   std::ostringstream h;
@@ -53,6 +84,8 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
     << "  GX_End();\n"
     << "Call DCFlushRange(array, sizeof array) once for each texture array (LUT, thickness map,\n"
     << "albedo map) before the first draw.";
+  const GxVariant& v = programs.variant;
+  if (!v.storage.is_default() || v.draw != GxVariant::Draw::Direct) h << "\n" << stored_note(v);
   ProgramFile file = programs.file;
   file.comment.clear();
   std::ostringstream out;

@@ -1,6 +1,7 @@
 // `ltrender export gx`: the generated programs as C for a libogc project (gx.md §2): one
 // function per material and pass, the LUTs as 32-byte aligned u8 arrays in I8 tile order, the
-// vertex format each pass expects, and a comment block with the stage/unit counts and the
+// vertex format each pass expects (the variant's storage and indices, declared: plan_emitter.cpp
+// vertex_format), and a comment block with the stage/unit counts and the
 // error measured against the reference. `render --program` reads the file back to the same
 // image, bit for bit.
 #pragma once

@@ -70,17 +70,8 @@ std::string gx_export_variant(const PathInfo& gx, const ExportRequest& r) {
 std::string gx_export_scene(const PathInfo& gx, const ExportRequest& r, const ExportInput& in) {
   if (r.format == kDff) return fifo_log_file(gx, r, in);
   const GxVariant v = parse_gx_variant(in.variant);
-  // The C and the module send the F32 stream (module/runtime/ltrender_gx_draw.c); declaring a
-  // storage there is issue 46's next step: refused rather than exported as something else.
-  if (!v.storage.is_default())
-    throw InputError("--variant", in.variant,
-                     "gx: --format c and module send F32 vertices; a vertex storage (:vtx=, "
-                     ":nrm=, :clr=, :uv=) is exported by --format dff only, for now");
-  // So do they their vertices: directly, GX_TRIANGLES.
-  if (v.draw != GxVariant::Draw::Direct)
-    throw InputError("--variant", in.variant,
-                     "gx: --format c and module send each vertex directly; :draw=indexed, "
-                     "strips and list are exported by --format dff only, for now");
+  // The C declares the variant's storage and :draw= (plan_emitter.cpp vertex_format); the
+  // module refuses them (module_exporter.h).
   if (r.format == kModule) return export_module(in.scene, v, r.scene_file);
   const ScenePrograms programs = scene_programs_for(in.scene, v, "");
   ExportFigures f;

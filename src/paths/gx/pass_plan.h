@@ -17,16 +17,29 @@
 
 #include "gx/gx_types.h"
 #include "gx/program/gx_names.h"
+#include "gx/vertex_storage.h"
 
 namespace lt::gx {
 
-// GX_VTXFMT0's attributes, each GX_DIRECT: position and normal as GX_F32 XYZ always, then the
-// baked thickness colour (GX_VA_CLR0, RGBA8), the CPU's t (GX_VA_TEX0, GX_TEX_S) and the mesh's
-// UV (GX_VA_TEX<uv_attribute>, GX_TEX_ST).
+// GX_VTXFMT0's attributes: position and normal (XYZ) always, then the baked thickness colour
+// (GX_VA_CLR0), the CPU's t (GX_VA_TEX0, GX_TEX_S) and the mesh's UV (GX_VA_TEX<uv_attribute>,
+// GX_TEX_ST).
+// How GX_VTXFMT0 declares them (VertexDeclarations): the variant's vertex storage (:vtx= :nrm=
+// :clr= :uv=) with each /auto fraction resolved once for the scene (storage_declarations,
+// scene_vertices.h), and, where :draw= sends indices, GX_INDEX8 or GX_INDEX16 per array (the
+// index the FIFO log gives it). The default variant's: GX_F32, GX_RGBA8, GX_DIRECT.
+struct VertexDeclarations {
+  VertexStorage storage;  // no auto_frac left
+  bool indexed = false;
+  std::array<bool, kVertexArrays> index16{};  // by array number (vertex_format.h)
+  bool operator==(const VertexDeclarations&) const = default;
+};
+
 struct VertexFormatPlan {
   bool colour = false;
   bool t = false;
   bool uv = false;
+  VertexDeclarations declared;
   // The UV rides in the texture coordinate after t: the XF is told only how many texture
   // coordinates arrive (program_check.h), so they are declared without a gap.
   int uv_attribute() const { return t ? 1 : 0; }

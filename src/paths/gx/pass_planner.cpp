@@ -13,6 +13,7 @@
 #include "paths/gx/lobe_lut.h"
 #include "paths/gx/pass_plan_parts.h"
 #include "paths/gx/scene_pass_programs.h"
+#include "paths/gx/scene_vertices.h"
 #include "paths/gx/thickness_texture.h"
 
 namespace lt::gx {
@@ -158,6 +159,10 @@ ScenePlan PassPlanner::plan() {
     material_passes(mp);
     out.materials.push_back(std::move(mp));
   }
+  // Every pass declares the mesh alike: it is stored once a frame (program_storage.h).
+  const VertexDeclarations declared = storage_declarations(scene_, variant_, out);
+  for (MaterialPlan& m : out.materials)
+    for (PassPlan& p : m.passes) p.vertex.declared = declared;
   return out;
 }
 
@@ -275,8 +280,9 @@ PassPlan PassPlanner::light_pass(int m, size_t l, const std::optional<TexturePla
     base = c.trans_color * (mat.translucency->ambient + light.translucency_scale) * c.t_max /
            double(st_scale);
   PassPlan p;
-  p.vertex = {c.translucent && c.vertex_t, c.lut && variant_.t == GxVariant::TexCoord::Vertex,
-              c.uses_map};
+  p.vertex.colour = c.translucent && c.vertex_t;
+  p.vertex.t = c.lut && variant_.t == GxVariant::TexCoord::Vertex;
+  p.vertex.uv = c.uses_map;
   const glm::dvec3 pos = light_position_eye(view_, light);
   if (c.translucent && c.xf) {
     p.lights.push_back(specular_light(*mat.translucency, light, cv, c.trans_color,

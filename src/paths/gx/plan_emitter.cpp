@@ -41,10 +41,18 @@ class Writer {
   std::vector<Statement> body;
 };
 
+// GX_SetVtxAttrFmt's type argument: a component type (GX_S16) or, for GX_VA_CLR0, a colour
+// encoding (GX_RGB565); one field, two groups of libogc names [OGC gx.h L93-103].
+Arg component_type(ComponentType t) {
+  return Arg::integer(component_type_name(t), static_cast<long long>(t));
+}
+Arg color_type(ColorType t) {
+  return Arg::integer(color_type_name(t), static_cast<long long>(t));
+}
+
 void vertex_format(Writer& w, const VertexFormatPlan& v) {
+  const VertexDeclarations& d = v.declared;
   const GxConst<NG::VtxFmt> fmt0{"GX_VTXFMT0"};
-  const GxConst<NG::VtxAttrType> direct{"GX_DIRECT"};
-  const GxConst<NG::CompType> f32{"GX_F32"};
   w.call("GX_ClearVtxDesc", {},
          v.uv ? "Vertex format: position and normal (and t) as sent, and the mesh's UV for the "
                 "thickness map"
@@ -52,19 +60,41 @@ void vertex_format(Writer& w, const VertexFormatPlan& v) {
   const GxConst<NG::VtxAttr> pos{"GX_VA_POS"}, nrm{"GX_VA_NRM"}, clr0{"GX_VA_CLR0"},
       tex0{"GX_VA_TEX0"};
   const auto uv_va = GxConst<NG::VtxAttr>::with_value(tex0.value() + v.uv_attribute());
-  w.call("GX_SetVtxDesc", {gx(pos), gx(direct)});
-  w.call("GX_SetVtxDesc", {gx(nrm), gx(direct)});
-  if (v.colour) w.call("GX_SetVtxDesc", {gx(clr0), gx(direct)});
-  if (v.t) w.call("GX_SetVtxDesc", {gx(tex0), gx(direct)});
-  if (v.uv) w.call("GX_SetVtxDesc", {gx(uv_va), gx(direct)});
-  auto format = [&](GxConst<NG::VtxAttr> a, GxConst<NG::CompCount> n, GxConst<NG::CompType> t) {
-    w.call("GX_SetVtxAttrFmt", {gx(fmt0), gx(a), gx(n), gx(t), lit(0)});
+  // Each attribute GX_DIRECT, or under an indexed :draw= the index its array takes (the GX_VA_*
+  // values are the array numbers plus GX_VA_POS [OGC gx.h L82-92]).
+  auto input = [&](GxConst<NG::VtxAttr> a) {
+    if (!d.indexed) return gx(GxConst<NG::VtxAttrType>{"GX_DIRECT"});
+    const bool wide = d.index16[static_cast<size_t>(a.value() - pos.value())];
+    return wide ? gx(GxConst<NG::VtxAttrType>{"GX_INDEX16"})
+                : gx(GxConst<NG::VtxAttrType>{"GX_INDEX8"});
   };
-  format(pos, {"GX_POS_XYZ"}, f32);
-  format(nrm, {"GX_NRM_XYZ"}, f32);
-  if (v.colour) format(clr0, {"GX_CLR_RGBA"}, {"GX_RGBA8"});
-  if (v.t) format(tex0, {"GX_TEX_S"}, f32);
-  if (v.uv) format(uv_va, {"GX_TEX_ST"}, f32);
+  w.call("GX_SetVtxDesc", {gx(pos), input(pos)},
+         d.indexed ? "Indexed: GX_SetArray(attribute, array, stride) of each before the draw" : "");
+  w.call("GX_SetVtxDesc", {gx(nrm), input(nrm)});
+  if (v.colour) w.call("GX_SetVtxDesc", {gx(clr0), input(clr0)});
+  if (v.t) w.call("GX_SetVtxDesc", {gx(tex0), input(tex0)});
+  if (v.uv) w.call("GX_SetVtxDesc", {gx(uv_va), input(uv_va)});
+  auto format = [&](GxConst<NG::VtxAttr> a, GxConst<NG::CompCount> n, Arg type, int frac) {
+    w.call("GX_SetVtxAttrFmt", {gx(fmt0), gx(a), gx(n), std::move(type), lit(frac)});
+  };
+  const VertexStorage& s = d.storage;
+  // A position's and texture coordinate's fraction as stored; F32 takes none. A normal's exponent
+  // is its type's, and libogc writes no fraction for it [OGC gx.c __SETVCDFMT L2545-2555].
+  auto fraction = [](const CoordinateStorage& c) {
+    return c.type == ComponentType::F32 ? 0 : c.frac;
+  };
+  format(pos, {"GX_POS_XYZ"}, component_type(s.position.type), fraction(s.position));
+  format(nrm, {"GX_NRM_XYZ"}, component_type(s.normal), 0);
+  // GX_CLR_RGB for an encoding without alpha, as a port writes it; the loader reads the
+  // encoding alone (vertex_format.h ColorFormat).
+  const bool alpha =
+      s.color == ColorType::Rgba4 || s.color == ColorType::Rgba6 || s.color == ColorType::Rgba8;
+  if (v.colour)
+    format(clr0,
+           alpha ? GxConst<NG::CompCount>{"GX_CLR_RGBA"} : GxConst<NG::CompCount>{"GX_CLR_RGB"},
+           color_type(s.color), 0);
+  if (v.t) format(tex0, {"GX_TEX_S"}, component_type(s.texcoord.type), fraction(s.texcoord));
+  if (v.uv) format(uv_va, {"GX_TEX_ST"}, component_type(s.texcoord.type), fraction(s.texcoord));
 }
 
 void light_object(Writer& w, const LightObjectPlan& o) {

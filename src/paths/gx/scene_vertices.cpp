@@ -1,6 +1,9 @@
 #include "paths/gx/scene_vertices.h"
 
+#include <algorithm>
 #include <glm/glm.hpp>
+#include <optional>
+#include <utility>
 
 #include "core/error.h"
 #include "gx/transform_unit.h"
@@ -164,6 +167,73 @@ VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,
     if (formats.kind[i] != TexCoordFormats::ST) d.texcoord_components[i] = 1;
   }
   return d;
+}
+
+namespace {
+
+// What a pass of `v` sends, as the pass's program declares it (plan_emitter.cpp vertex_format):
+// the descriptor and texture coordinate kinds pass_vertex_data reads.
+std::pair<VertexDescriptor, TexCoordFormats> planned_attributes(const VertexFormatPlan& v) {
+  VertexDescriptor sent;
+  TexCoordFormats formats;
+  const u8 direct = static_cast<u8>(AttributeInput::Direct);
+  sent.type[kVaPos] = sent.type[kVaNrm] = direct;
+  if (v.colour) sent.type[kVaClr0] = direct;
+  if (v.t) {
+    sent.type[kVaTex0] = direct;
+    formats.kind[0] = TexCoordFormats::S;
+  }
+  if (v.uv) {
+    sent.type[static_cast<size_t>(kVaTex0 + v.uv_attribute())] = direct;
+    formats.kind[static_cast<size_t>(v.uv_attribute())] = TexCoordFormats::ST;
+  }
+  return {sent, formats};
+}
+
+void keep_smallest(std::optional<int>& smallest, int frac) {
+  smallest = smallest ? std::min(*smallest, frac) : frac;
+}
+
+}  // namespace
+
+VertexDeclarations storage_declarations(const Scene& scene, const GxVariant& variant,
+                                        const ScenePlan& plan) {
+  VertexDeclarations out;
+  out.storage = variant.storage;
+  out.indexed = draws_indexed(variant.draw);
+  if (variant.storage.is_default() && !out.indexed) return out;
+  const bool stored = !variant.storage.is_default();
+  const SceneView view = SceneView::of(scene);
+  std::optional<int> position_frac, texcoord_frac;
+  for (const SceneObject& o : scene.objects) {
+    const auto m = std::find_if(plan.materials.begin(), plan.materials.end(),
+                                [&](const MaterialPlan& mp) { return mp.material == o.material; });
+    if (m == plan.materials.end()) continue;
+    const VertexStream stream = make_vertex_stream(scene, o, view);
+    const ObjectSpaceMesh mesh = stored ? object_space_mesh(o, view) : ObjectSpaceMesh{};
+    for (size_t p = 0; p < m->passes.size(); ++p) {
+      const VertexFormatPlan& v = m->passes[p].vertex;
+      const auto [sent, formats] = planned_attributes(v);
+      const VertexAttributeData data =
+          pass_vertex_data(stored ? mesh.position : stream.position,
+                           stored ? mesh.normal : stream.normal, stream, sent, formats, p);
+      const VertexAttributeFormat format = storage_format(variant.storage, data, "--variant");
+      keep_smallest(position_frac, format.position.frac);
+      if (v.t) keep_smallest(texcoord_frac, format.texcoord[0].frac);
+      if (v.uv)
+        keep_smallest(texcoord_frac, format.texcoord[static_cast<size_t>(v.uv_attribute())].frac);
+      if (!out.indexed) continue;
+      const IndexedArrays arrays = index_attributes(quantise_attributes(data, format), "--variant");
+      for (int a : arrays.arrays) {
+        const auto i = static_cast<size_t>(a);
+        out.index16[i] = out.index16[i] || arrays.input[i] == AttributeInput::Index16;
+      }
+    }
+  }
+  if (out.storage.position.auto_frac && position_frac) out.storage.position.frac = *position_frac;
+  if (out.storage.texcoord.auto_frac && texcoord_frac) out.storage.texcoord.frac = *texcoord_frac;
+  out.storage.position.auto_frac = out.storage.texcoord.auto_frac = false;
+  return out;
 }
 
 }  // namespace lt::gx

@@ -58,4 +58,15 @@ VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,
                                      const VertexDescriptor& sent, const TexCoordFormats& formats,
                                      size_t pass);
 
+// What the generated programs declare for the scene's vertices (pass_plan.h
+// VertexDeclarations): the variant's storage with each /auto fraction made the smallest any
+// object and pass of `plan` gets, its t and UVs alike (a program file declares one storage a
+// frame and one `uv`: the fraction that holds every one; it reads back to the /auto variant's
+// frame where they all get the same), and under an indexed :draw= each array's index as
+// index_attributes gives it (GX_INDEX16 where any object's array outgrows GX_INDEX8). The
+// default variant's are returned without looking at the meshes. A value the storage cannot hold
+// throws InputError("--variant", key, ...).
+VertexDeclarations storage_declarations(const Scene& scene, const GxVariant& variant,
+                                        const ScenePlan& plan);
+
 }  // namespace lt::gx

@@ -152,8 +152,8 @@ if (params.get('flip') === 'all') flipAll();
 arrange();
 
 // --- Self test (?selftest), once every image has loaded or failed: whether each card's images
-// loaded (their natural size), whether a flip changes the displayed image, and which cards the
-// "failing" filter shows. The result is JSON in #selftest-result, for `chromium --dump-dom`.
+// loaded (their natural size), whether a flip changes the displayed image, which cards the
+// "failing" filter shows, and each chart as laid out (title, points, size). The result is JSON in #selftest-result, for `chromium --dump-dom`.
 function selftest() {
   const result = { cards: cards.length, images: 0, not_loaded: [], flip: null, failing_shown: [] };
   for (const card of cards) {
@@ -185,6 +185,17 @@ function selftest() {
   result.failing_shown = cards.filter(c => c.offsetParent !== null).map(c => c.dataset.case);
   verdictFilter.value = saved;
   verdictFilter.dispatchEvent(new Event('change'));
+  // Each chart as drawn: its title, its points (hover labels) and its laid-out size.
+  result.charts = Array.from(document.querySelectorAll('figure.chart svg')).map(svg => {
+    const box = svg.getBoundingClientRect();
+    const title = svg.querySelector('text');
+    return {
+      title: title ? title.textContent : '',
+      points: svg.querySelectorAll('[data-label]').length,
+      width: Math.round(box.width),
+      height: Math.round(box.height),
+    };
+  });
   const out = document.createElement('pre');
   out.id = 'selftest-result';
   out.textContent = JSON.stringify(result);

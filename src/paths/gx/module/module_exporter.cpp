@@ -337,6 +337,13 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
     throw InputError("--variant", to_string(variant),
                      "gx: --format module does not carry base=tev: its setup recomputes the XF "
                      "light and a grey REG0 each frame, not the konst colour; use base=xf");
+  // The runtime's draw sends each vertex F32, GX_DIRECT, in immediate mode (ltrender_gx_draw.c):
+  // a module of a stored or indexed variant would declare one storage and send another.
+  if (!variant.storage.is_default() || variant.draw != GxVariant::Draw::Direct)
+    throw InputError("--variant", to_string(variant),
+                     "gx: --format module sends each vertex F32 and directly; a vertex storage "
+                     "(:vtx=, :nrm=, :clr=, :uv=) and :draw=indexed, strips and list are exported "
+                     "by --format c (its declarations) and dff, not yet by the module");
   const ScenePlan plan = plan_scene(scene, variant);
   const GeneratedPrograms g = emit_programs(plan);
   const bool t_from_normal = variant.t == GxVariant::TexCoord::Texgen;

@@ -13,8 +13,9 @@
 
 namespace lt::gx {
 
-// The module's text. Throws InputError for whatever plan_scene refuses. lobe=xf-spec's lobe is
-// fitted again every frame (ltr_fit_lobe, model/rational_fit.cpp in C).
+// The module's text. Throws InputError for whatever plan_scene refuses, and for a vertex storage
+// or an indexed :draw= (its runtime sends each vertex F32, GX_DIRECT: ltrender_gx_draw.c).
+// lobe=xf-spec's lobe is fitted again every frame (ltr_fit_lobe, model/rational_fit.cpp in C).
 std::string export_module(const Scene& scene, const GxVariant& variant,
                           const std::string& scene_argument);
 
