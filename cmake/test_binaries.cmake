@@ -4,6 +4,20 @@ enable_testing()
 # (tests/runner/: a process costs a case ~0.1 s of CPU before it starts; a crash or a hang still
 # fails only its own case, and the batch goes on in a new process). tests/schedule.json says
 # which cases get a process of their own, labels, costs and fixtures; docs/testing.md, "Test time".
+# The test binaries' precompiled header, owned by a target that compiles one empty file and links
+# nothing: REUSE_FROM makes the owner a dependency of every test binary, and when the owner was
+# dolphin_tests, whose link waits for the core, ltrender_tests' batches (the build's longest jobs)
+# could not start before the core was built. Its flags are the tests' (the same options and the
+# same libraries' definitions and include directories); -Winvalid-pch says so if one ever differs,
+# and GCC then parses the headers instead.
+file(WRITE ${CMAKE_BINARY_DIR}/generated/test_pch.cpp "// the test binaries' precompiled header\n")
+add_library(lt_test_pch OBJECT ${CMAKE_BINARY_DIR}/generated/test_pch.cpp)
+target_include_directories(lt_test_pch PRIVATE ${CMAKE_SOURCE_DIR}/src)
+target_compile_definitions(lt_test_pch PRIVATE GL_GLEXT_PROTOTYPES=1)
+target_link_libraries(lt_test_pch PRIVATE ${LT_CORE_LIBRARIES} GTest::gtest)
+target_compile_options(lt_test_pch PRIVATE -Og)
+target_precompile_headers(lt_test_pch PRIVATE ${CMAKE_SOURCE_DIR}/tests/precompiled.h)
+
 function(lt_test_binary name)
   cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
@@ -17,16 +31,9 @@ function(lt_test_binary name)
   # (arbfp's IR copies, OpenMesh's containers): ArbIr's sweep took 3 times as long. At -Og the
   # suites that showed it run as at -O1 (docs/testing.md "Test time").
   target_compile_options(${name} PRIVATE -Og)
-  # One precompiled header for every test binary, made by the first: each made its own, 9.7 s
-  # of CPU apiece (.ninja_log of a fresh clone). Their flags are the same (-Winvalid-pch says so
-  # if one ever is not: GCC then parses the headers instead).
-  get_property(owner GLOBAL PROPERTY LT_TEST_PCH_OWNER)
-  if(owner)
-    target_precompile_headers(${name} REUSE_FROM ${owner})
-  else()
-    target_precompile_headers(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/precompiled.h)
-    set_property(GLOBAL PROPERTY LT_TEST_PCH_OWNER ${name})
-  endif()
+  # One precompiled header for every test binary (lt_test_pch below): each made its own, 9.7 s
+  # of CPU apiece (.ninja_log of a fresh clone).
+  target_precompile_headers(${name} REUSE_FROM lt_test_pch)
   # A unity build too, with the core's rules (tests/source/ checks tests/ as it checks src/).
   # Sixty-four files a batch: a test file is mostly GoogleTest's macros and the templates they
   # instantiate, compiled once a batch; four batches of eight took 44.0 s of CPU as one and
