@@ -10,7 +10,9 @@ enable_testing()
 # could not start before the core was built. Its flags are the tests' (the same options and the
 # same libraries' definitions and include directories); -Winvalid-pch says so if one ever differs,
 # and GCC then parses the headers instead.
-file(WRITE ${CMAKE_BINARY_DIR}/generated/test_pch.cpp "// the test binaries' precompiled header\n")
+# Written only when its text changes, so a reconfigure leaves the object up to date.
+file(CONFIGURE OUTPUT ${CMAKE_BINARY_DIR}/generated/test_pch.cpp
+  CONTENT "// the test binaries' precompiled header\n")
 add_library(lt_test_pch OBJECT ${CMAKE_BINARY_DIR}/generated/test_pch.cpp)
 target_include_directories(lt_test_pch PRIVATE ${CMAKE_SOURCE_DIR}/src)
 target_compile_definitions(lt_test_pch PRIVATE GL_GLEXT_PROTOTYPES=1)
