@@ -76,7 +76,7 @@ lt_test_binary(dolphin_tests SOURCES ${LT_DOLPHIN_TEST_SOURCES} TIMEOUT 120 LABE
 # every test process, 1,818 processes, about half of the suite's CPU time (issue 28 measured
 # it). The other binaries reach it only through the image module, when a test reads or writes
 # an image. A test that includes an OpenImageIO header elsewhere fails to link: add it here.
-set(LT_OIIO_TEST_NAMES albedo_map albedo_paths arb_ramp combiners_ramp compare exr_map_paths gx_map_path regress regress_isolation thickness_map)
+set(LT_OIIO_TEST_NAMES albedo_map albedo_paths arb_ramp combiners_ramp compare exr_map_paths gx_map_path png_file regress regress_isolation thickness_map)
 set(LT_OIIO_TEST_SOURCES)
 foreach(name ${LT_OIIO_TEST_NAMES})
   list(APPEND LT_OIIO_TEST_SOURCES ${CMAKE_SOURCE_DIR}/tests/${name}_test.cpp)

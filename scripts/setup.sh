@@ -13,6 +13,7 @@ packages=(
   libopenmesh-dev                            # mesh I/O and processing
   libmeshoptimizer-dev                       # vertex-cache order and triangle strips (the Wii port)
   libopenimageio-dev                         # image I/O
+  libpng-dev                                 # PNG without loading OpenImageIO (image/png_file.h)
   libimath-dev                               # half (binary16) for the fp16 path
   libhwy-dev                                 # Highway: the CPU paths' vector lanes
   libembree-dev                              # ray casting for the thickness baker

@@ -690,8 +690,7 @@ TEST_F(CompareCli, HeaderSizeIsCheckedBeforeAllocating) {
                        "pixels\n");
 }
 
-// libpng prints "libpng error: ..." to stderr itself before OpenImageIO reports the failure: it
-// is folded into the one line.
+// libpng's words (the chunk it was reading) are kept in the one line.
 TEST_F(CompareCli, TruncatedPngIsOneLine) {
   Image noise(64, 64);
   for (size_t i = 0; i < noise.rgba.size(); ++i)

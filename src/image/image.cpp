@@ -9,6 +9,7 @@
 #include "core/fs.h"
 #include "core/stderr_capture.h"
 #include "image/image_codec.h"
+#include "image/png_file.h"
 
 namespace lt {
 
@@ -33,7 +34,8 @@ void write_image(const std::filesystem::path& path, const Image& image) {
       for (size_t i = 0; i < image.pixel_count(); ++i) {
         for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = to_unorm8(image.rgba[i * 4 + c]);
       }
-      ok = image_codec().write_rgb8(tmp.string(), image.width, image.height, bytes.data(), error);
+      // libpng in this process: no image module to load (image/png_file.h).
+      ok = write_png_rgb8(tmp.string(), image.width, image.height, bytes.data(), error);
     }
     if (!ok) throw InputError(path.string(), "", "cannot write image: " + error);
   });
@@ -62,7 +64,13 @@ class CheckedInput {
     // reader in turn once the one the extension names has failed) never returns.
     check_input_file(path, InputKind::Image);
     std::string error;
-    in_ = image_codec().open(path.string(), unassociated_alpha, error);
+    // A PNG is read with libpng in this process unless it needs OpenImageIO's associated alpha
+    // (image/png_file.h); anything else through the image module.
+    const PngOpen png = has_png_signature(path)
+                            ? open_png(path.string(), unassociated_alpha, in_, error)
+                            : PngOpen::kDeclined;
+    if (png == PngOpen::kDeclined)
+      in_ = image_codec().open(path.string(), unassociated_alpha, error);
     if (!in_) fail("cannot read image: " + error);
     const ImageFileSpec& spec = in_->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0) fail("image has no pixels");

@@ -4,7 +4,8 @@
 Usage: copied_binary_test.py SOURCE_DIR BUILD_DIR
 
 build/ltrender copied alone to another folder is not installed, so it must not fall back on the
-build or source tree (which another machine has not got): a command that writes an image fails
+build or source tree (which another machine has not got): a PNG it writes itself (libpng,
+image/png_file.h), but a command that writes an EXR image fails
 with one error line naming the module folder it looked in (../lib/ltrender/, as installed), and
 advise, which checks the material on model.md's hard cases, fails naming a scene of
 ../share/ltrender/scenes/hard/. Both exit
@@ -38,7 +39,7 @@ def bare_and_in_a_prefix(source, build, work, _hidden):
                               capture_output=True, text=True)
 
     for args, missing in (
-            (["render", scene, "--path", "reference", "-o", "r.png"],
+            (["render", scene, "--path", "reference", "-o", "r.exr"],
              os.path.join(work, "bare", "lib", "ltrender", "libltrender_imageio.so")),
             (["advise", scene, "--target", "wii-tev", "--max-lsb", "8", "--width", "16"],
              os.path.join(work, "bare", "share", "ltrender", "scenes", "hard") + "/")):
@@ -48,6 +49,10 @@ def bare_and_in_a_prefix(source, build, work, _hidden):
                 missing not in lines[0]:
             raise Failure("a bare copy's %s: expected one error line naming %s, got:\n%s" %
                           (args[0], missing, r.stderr))
+
+    expect(run(bare, "render", scene, "--path", "reference", "-o", "bare.png"),
+           "a bare copy: render to PNG")
+    expect_files([os.path.join(work, "bare.png")], "a bare copy: render to PNG")
 
     prefix = os.path.join(work, "by-hand")
     os.makedirs(os.path.join(prefix, "lib", "ltrender"))
@@ -60,9 +65,9 @@ def bare_and_in_a_prefix(source, build, work, _hidden):
     shutil.copytree(os.path.join(source, "meshes"),
                     os.path.join(prefix, "share", "ltrender", "meshes"))
     by_hand = os.path.join(prefix, "bin")
-    expect(run(by_hand, "render", scene, "--path", "reference", "-o", "r.png"),
+    expect(run(by_hand, "render", scene, "--path", "reference", "-o", "r.exr"),
            "a prefix by hand: render")
-    expect_files([os.path.join(work, "r.png")], "a prefix by hand: render")
+    expect_files([os.path.join(work, "r.exr")], "a prefix by hand: render")
     expect(run(by_hand, "advise", scene, "--target", "wii-tev", "--max-lsb", "8", "--width",
                "16"), "a prefix by hand: advise")
     return "a bare copy names what it misses; in a prefix it works"
