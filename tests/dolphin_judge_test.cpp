@@ -61,8 +61,9 @@ TEST_P(DolphinJudge, DolphinsFramesAreLtrendersXfbPictures) {
 // each with its own camera and vertices. Dolphin plays them in order; each dump must be
 // ltrender's `:out=xfb` picture of that frame, pixel for pixel (test::dolphin_pictures maps the
 // dumps to the frames). A dump matched to the wrong frame fails: the camera moves 10 degrees a
-// frame. Three modules: the sphere's default, and three_point_blob's two :view=object programs,
-// whose texture matrix and XF specular light the module recomputes each frame.
+// frame. Four modules: the sphere's default, three_point_blob's two :view=object programs,
+// whose texture matrix and XF specular light the module recomputes each frame, and the latter
+// stored (s16 positions, s8 normals, RGB565 colours) and drawn from a display list.
 struct AnimationCase {
   std::string scene, variant;
 };
@@ -111,7 +112,12 @@ INSTANTIATE_TEST_SUITE_P(
     ModuleAnimation, DolphinJudgeAnimation,
     ::testing::Values(AnimationCase{"scenes/backlit_sphere.json", "t=vertex"},
                       AnimationCase{"scenes/three_point_blob.json", "t=texgen:view=object"},
-                      AnimationCase{"scenes/three_point_blob.json", "lobe=xf-spec:view=object"}),
+                      AnimationCase{"scenes/three_point_blob.json", "lobe=xf-spec:view=object"},
+                      // A stored module's variant (module_stored.h): quantised arrays and a
+                      // display list, whose sends gx_module_stored_test.cpp holds to this log.
+                      AnimationCase{"scenes/three_point_blob.json",
+                                    "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:"
+                                    "draw=list"}),
     [](const auto& info) {
       return test::test_param_name(info.param.scene + "_" + info.param.variant);
     });

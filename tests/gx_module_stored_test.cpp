@@ -1,0 +1,182 @@
+// A module of a stored variant (issue 46: `export gx --variant vtx=s16/auto:nrm=s8:clr=rgb565
+// :draw=list --format module`) sends what ltrender's FIFO log sends, frame after frame. The module
+// is compiled on the host (tests/gx_module_host/), ltrender_stored_init builds its display lists
+// once, and along the camera path its pass functions drive the emulator (the frame must be the
+// variant's own, every channel) while its draw (ltrender_draw_stored) is recorded: every matrix
+// it loads (computed in its C from the camera, ltr_object_matrices) must be in the emulator's
+// FIFO log of that frame as the very bytes, every array it points the CP at and every display
+// list it calls must be a block of the log's memory (and every block one of them), and every
+// draw it sends must be in the log's FIFO as the very bytes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <set>
+
+#include "gx/fifo/fifo_log.h"
+#include "gx_module_host/host_module.h"
+#include "load/load_scene.h"
+#include "paths/gx/frame_recording.h"
+#include "paths/gx/gx_path.h"
+#include "paths/gx/indexed_recording.h"
+#include "paths/gx/module/module_exporter.h"
+#include "render/camera_path.h"
+#include "render/session.h"
+#include "test_util.h"
+
+namespace lt::gx::test_module {
+namespace {
+
+constexpr int kStoredFrameSize = 96;
+// Three frames of the path: the camera and lights move between them.
+constexpr int kStoredFramesChecked[] = {0, 3, 6};
+
+struct DrawSegment {
+  char kind = 0;
+  std::vector<u8> bytes;
+};
+
+std::vector<DrawSegment> draw_segments(const u8* p, u32 length) {
+  std::vector<DrawSegment> out;
+  for (u32 at = 0; at + 5 <= length;) {
+    u32 n = 0;
+    std::memcpy(&n, p + at + 1, 4);
+    out.push_back({static_cast<char>(p[at]), std::vector<u8>(p + at + 5, p + at + 5 + n)});
+    at += 5 + n;
+  }
+  return out;
+}
+
+bool holds_bytes(const std::vector<u8>& haystack, const std::vector<u8>& needle) {
+  return !needle.empty() && std::search(haystack.begin(), haystack.end(), needle.begin(),
+                                        needle.end()) != haystack.end();
+}
+
+struct StoredCase {
+  std::string scene, variant;
+};
+void PrintTo(const StoredCase& c, std::ostream* out) {
+  *out << c.scene << " --variant " << c.variant;
+}
+
+class GxModuleStored : public ::testing::TestWithParam<StoredCase> {};
+
+TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
+  Scene base = load_scene(test::source_dir() / GetParam().scene);
+  make_float(base);
+  const GxVariant variant = parse_gx_variant(GetParam().variant);
+  test::TempDir dir;
+  const HostModule host(dir, export_module(base, variant, GetParam().scene));
+  ASSERT_TRUE(host.compiled) << host.compiler_output;
+  auto* init = host.get<VoidFn>("ltrender_stored_init");
+  using DrawFn = void(const ltr_view*, ltr_pass_state* const[]);
+  auto* draw = host.get<DrawFn>("ltrender_draw_stored");
+  using BeginDrawsFn = void();
+  using DrawsFn = const u8*(u32*);
+  auto* begin_draws = host.get<BeginDrawsFn>("ltr_host_draws_begin");
+  auto* recorded = host.get<DrawsFn>("ltr_host_draws");
+  ASSERT_TRUE(init && draw && begin_draws && recorded);
+  init();
+  const ScenePlan plan = plan_scene(base, variant);
+  GxVariant undeclared = variant;
+  undeclared.storage = VertexStorage{};
+  size_t lists_called = 0;
+  for (int k : kStoredFramesChecked) {
+    const Scene s = scene_on_camera_path(base, k);
+    const std::string at = GetParam().scene + " frame " + std::to_string(k);
+    ltr_view view{};
+    std::vector<std::vector<ltr_pass_state>> states;
+    const std::string text =
+        drive_frame(host, plan, s,
+                    [&](const MaterialFrame& f, const ltr_view& v, const std::vector<ltr_light>&) {
+                      view = v;
+                      states.push_back(f.states);
+                    });
+    ASSERT_FALSE(text.empty()) << at;
+    // The pass functions drive the emulator to the variant's own frame: they declare the
+    // storage (with the fraction every object takes), so the variant given with them keeps only
+    // its other axes (program_storage.h declared_variant).
+    const fs::path file = dir / ("frame" + std::to_string(k) + ".c");
+    test::write_file(file, text);
+    const Image direct =
+        render_scene(s, "gx", GetParam().variant, kStoredFrameSize, kStoredFrameSize);
+    const Image driven = render_scene(s, "gx", to_string(undeclared), kStoredFrameSize,
+                                      kStoredFrameSize, {file.string()});
+    EXPECT_TRUE(direct.rgba == driven.rgba) << at << ": the module-driven frame differs";
+    // The draw, recorded.
+    std::vector<ltr_pass_state*> state_of(states.size());
+    for (size_t m = 0; m < states.size(); ++m) state_of[m] = states[m].data();
+    begin_draws();
+    draw(&view, state_of.data());
+    u32 length = 0;
+    const u8* bytes = recorded(&length);
+    const std::vector<DrawSegment> sent = draw_segments(bytes, length);
+    // The emulator's FIFO log of the same frame (its own programs).
+    const ScenePrograms programs = scene_programs_for(s, variant, "");
+    const fifo::FifoLog log =
+        fifo::record_frames(s, {{variant, &programs, &s}}, {kStoredFrameSize, kStoredFrameSize});
+    ASSERT_EQ(log.frames.size(), 1u);
+    const fifo::FifoFrame& frame = log.frames[0];
+    std::set<std::vector<u8>> blocks, module_blocks;
+    for (const fifo::MemoryUpdate& u : frame.updates)
+      if (u.type == fifo::kMemoryUpdateVertexStream) blocks.insert(u.data);
+    size_t matrices = 0, draws = 0;
+    for (const DrawSegment& g : sent) {
+      if (g.kind == 'P' || g.kind == 'N') {
+        ++matrices;
+        EXPECT_TRUE(holds_bytes(frame.fifo, g.bytes)) << at << ": a matrix the log does not load";
+      } else if (g.kind == 'D') {
+        ++draws;
+        EXPECT_TRUE(holds_bytes(frame.fifo, g.bytes)) << at << ": a draw the log does not send";
+      } else if (g.kind == 'A') {
+        module_blocks.insert(std::vector<u8>(g.bytes.begin() + 2, g.bytes.end()));
+      } else if (g.kind == 'L') {
+        ++lists_called;
+        module_blocks.insert(g.bytes);
+      }
+    }
+    EXPECT_GT(matrices, 0u) << at;
+    EXPECT_EQ(draws > 0, variant.draw != GxVariant::Draw::List) << at;
+    EXPECT_TRUE(module_blocks == blocks)
+        << at << ": the module's arrays and lists (" << module_blocks.size()
+        << ") are not the log's memory blocks (" << blocks.size() << ")";
+  }
+  EXPECT_EQ(lists_called > 0, variant.draw == GxVariant::Draw::List);
+}
+
+// Two demo scenes, one with a thickness map (its UVs an array of their own), each drawn as a
+// display list and as strips sent every frame. t=texgen:view=object: no per-vertex t (which a
+// stored module refuses).
+const StoredCase kStoredCases[] = {
+    {"scenes/three_point_blob.json",
+     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=list"},
+    {"scenes/three_point_blob.json",
+     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=strips"},
+    {"scenes/albedo_checker.json",
+     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
+};
+
+INSTANTIATE_TEST_SUITE_P(StoredScenes, GxModuleStored, ::testing::ValuesIn(kStoredCases),
+                         [](const auto& info) {
+                           return test::test_param_name(info.param.scene + "_" +
+                                                        info.param.variant);
+                         });
+
+// A stored module that would need its per-vertex t refreshed each frame (t=vertex), or a storage
+// sent directly: one line naming the variant, exit 2, no file.
+TEST(GxModuleExport, RefusesAStoredPerVertexTOrAStorageSentDirectly) {
+  test::TempDir dir;
+  const fs::path out = dir / "m.c";
+  for (const char* variant : {"t=vertex:vtx=s16/8:draw=list", "lobe=xf-spec:view=object:vtx=s16/8"}) {
+    const test::RunResult r =
+        test::run_ltrender("export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
+                           " --variant " + variant + " --format module -o " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << variant;
+    EXPECT_NE(r.err.find("--format module"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+}  // namespace
+}  // namespace lt::gx::test_module
