@@ -92,7 +92,11 @@ TEST_P(DolphinJudgeAnimation, EachFrameOfTheModuleDrivenLogIsLtrendersPicture) {
     ASSERT_FALSE(text.empty());
     const fs::path file = dir / ("frame" + std::to_string(k) + ".c");
     test::write_file(file, text);
-    programs.push_back(gx::scene_programs_for(scenes[k], variant, file.string()));
+    // A stored variant's programs declare its storage: read with the variant's other axes
+    // (program_storage.h declared_variant); the log still stores each object as the variant does.
+    gx::GxVariant undeclared = variant;
+    undeclared.storage = gx::VertexStorage{};
+    programs.push_back(gx::scene_programs_for(scenes[k], undeclared, file.string()));
   }
   std::vector<gx::fifo::FrameInput> inputs;
   for (int k = 0; k < kCameraPathFrames; ++k) inputs.push_back({variant, &programs[k], &scenes[k]});
