@@ -144,13 +144,14 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
   EXPECT_EQ(lists_called > 0, variant.draw == GxVariant::Draw::List);
 }
 
-// Two demo scenes, one with a thickness map (its UVs an array of their own), each drawn as a
-// display list and as strips sent every frame. t=texgen:view=object: no per-vertex t (which a
+// Three demo scenes: the blob's one mesh as a display list, coloured_cubes' two cubes (rotated,
+// scaled, moved: each its own matrices) as strips sent every frame, and albedo_checker's map (its
+// UVs an array of their own) as a display list. lobe=xf-spec:view=object: no per-vertex t (which a
 // stored module refuses).
 const StoredCase kStoredCases[] = {
     {"scenes/three_point_blob.json",
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=list"},
-    {"scenes/three_point_blob.json",
+    {"scenes/coloured_cubes.json",
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=strips"},
     {"scenes/albedo_checker.json",
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
@@ -167,7 +168,8 @@ INSTANTIATE_TEST_SUITE_P(StoredScenes, GxModuleStored, ::testing::ValuesIn(kStor
 TEST(GxModuleExport, RefusesAStoredPerVertexTOrAStorageSentDirectly) {
   test::TempDir dir;
   const fs::path out = dir / "m.c";
-  for (const char* variant : {"t=vertex:vtx=s16/8:draw=list", "lobe=xf-spec:view=object:vtx=s16/8"}) {
+  for (const char* variant :
+       {"t=vertex:vtx=s16/8:draw=list", "lobe=xf-spec:view=object:vtx=s16/8"}) {
     const test::RunResult r =
         test::run_ltrender("export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
                            " --variant " + variant + " --format module -o " + out.string());

@@ -413,6 +413,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
          "ltr_pass_state[]);\n"
       << "  void (*draw)(ltr_pass_state[], const ltr_view*, const ltr_light[], const ltr_mesh*, "
          "float*);\n"
+      << (stored ? "  /* draw is 0: a stored module draws with ltrender_draw_stored */\n" : "")
       << "} ltr_material_module;\n"
       << "#define LTRENDER_MATERIALS " << plan.materials.size() << "\n"
       << "#define LTRENDER_MAX_PASSES ";

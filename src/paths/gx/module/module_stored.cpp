@@ -60,7 +60,7 @@ std::string object_place(const SceneObject& o, const std::string& name) {
   auto rows = [&](const glm::dmat3& x) {
     out << "{";
     for (int r = 0; r < 3; ++r) {
-      out << (r ? ", {" : "{");
+      out << (r ? ",\n     {" : "{");
       for (int c = 0; c < 3; ++c) out << (c ? ", " : "") << c_double(x[c][r]);
       out << "}";
     }
@@ -68,8 +68,8 @@ std::string object_place(const SceneObject& o, const std::string& name) {
   };
   out << "static const ltr_object_place " << name << " = {";
   rows(a);
-  out << ", {" << c_double(m[3][0]) << ", " << c_double(m[3][1]) << ", " << c_double(m[3][2])
-      << "}, ";
+  out << ",\n    {" << c_double(m[3][0]) << ", " << c_double(m[3][1]) << ", " << c_double(m[3][2])
+      << "},\n    ";
   rows(normal);
   out << "};\n";
   return out.str();
@@ -241,7 +241,8 @@ std::string stored_cost_comment(const Scene& scene, const GxVariant& variant) {
     << stored.draw.display_list_bytes << " bytes;\n"
     << "//   FIFO a frame " << stored.draw.fifo_bytes << " bytes (F32 " << f32.draw.fifo_bytes
     << "); XF vertices " << stored.draw.vertices << " (F32 " << f32.draw.vertices
-    << ");\n//   triangles set up " << stored.draw.triangles << " (F32 " << f32.draw.triangles << ").\n";
+    << ");\n//   triangles set up " << stored.draw.triangles << " (F32 " << f32.draw.triangles
+    << ").\n";
   return o.str();
 }
 

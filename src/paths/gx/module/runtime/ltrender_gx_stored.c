@@ -1,13 +1,13 @@
-/* The GX side of a module of a stored variant (`export gx --variant
-   vtx=s16/auto:nrm=s8:...:draw=list
-   --format module`): the scene's meshes as a game ships them, converted once at export, in the
-   object's own coordinates, quantised as ltrender's emulator stores them (the very bytes:
-   gx/vertex_quantiser.h index_attributes), each attribute an array of its distinct elements,
-   32-byte aligned [OGC gc/ogc/cache.h L123-139]. ltr_stored_init flushes them from the CPU's
-   cache once and builds each display list once; every frame, each object loads its matrices
-   for the view and its format, points the CP at its arrays and sends its draws or calls its
-   list, in the order ltrender's FIFO log does (paths/gx/indexed_recording.cpp
-   draw_indexed_object). C99 over libogc's gccore.h, no allocation. */
+/* The GX side of a module of a stored variant (`export gx --variant V --format module`, V with
+   :vtx= :nrm= :clr= :uv= and :draw=indexed, strips or list): the scene's meshes as a game ships
+   them, converted once at export, in the object's own coordinates, quantised as ltrender's
+   emulator stores them (the very bytes: gx/vertex_quantiser.h index_attributes), each attribute
+   an array of its distinct elements, 32-byte aligned [OGC gc/ogc/cache.h L123-139].
+   ltr_stored_init flushes them from the CPU's cache once and builds each display list once;
+   every frame, each object loads its matrices for the view and its format, points the CP at its
+   arrays and sends its draws or calls its list, in the order ltrender's FIFO log does
+   (paths/gx/indexed_recording.cpp draw_indexed_object). C99 over libogc's gccore.h, no
+   allocation. */
 
 /* One attribute's array: GX_SetVtxDesc's index type, GX_SetVtxAttrFmt's count, type and
    fraction, and GX_SetArray's base and stride. */
