@@ -4,7 +4,8 @@
 // once, and along the camera path its pass functions drive the emulator (the frame must be the
 // variant's own, every channel) while its draw (ltrender_draw_stored) is recorded: every matrix
 // it loads (computed in its C from the camera, ltr_object_matrices) must be in the emulator's
-// FIFO log of that frame as the very bytes, every array it points the CP at and every display
+// FIFO log of that frame as the very bytes, each object's descriptor and format the VCD and VAT
+// the log loads for it, every array it points the CP at and every display
 // list it calls must be a block of the log's memory (and every block one of them), and every
 // draw it sends must be in the log's FIFO as the very bytes.
 #include <gtest/gtest.h>
@@ -13,7 +14,10 @@
 #include <cstring>
 #include <set>
 
+#include "gx/fifo/command_stream.h"
+#include "gx/fifo/cp_registers.h"
 #include "gx/fifo/fifo_log.h"
+#include "gx/vertex_format.h"
 #include "gx_module_host/host_module.h"
 #include "load/load_scene.h"
 #include "paths/gx/frame_recording.h"
@@ -50,6 +54,62 @@ std::vector<DrawSegment> draw_segments(const u8* p, u32 length) {
 bool holds_bytes(const std::vector<u8>& haystack, const std::vector<u8>& needle) {
   return !needle.empty() && std::search(haystack.begin(), haystack.end(), needle.begin(),
                                         needle.end()) != haystack.end();
+}
+
+u32 big_endian_word(const std::vector<u8>& b, size_t at) {
+  return static_cast<u32>(b[at]) << 24 | static_cast<u32>(b[at + 1]) << 16 |
+         static_cast<u32>(b[at + 2]) << 8 | b[at + 3];
+}
+
+// One object's GX_SetVtxDesc calls ('V': attribute, index type; after its GX_ClearVtxDesc) and
+// GX_SetVtxAttrFmt calls ('F': attribute, count, type, fraction) against the CP loads the log
+// sends for it (indexed_recording.cpp draw_indexed_object): the descriptor as the VCD pair, and
+// right after it VAT A, B, C holding each of those attributes as the module declares it.
+void expect_object_format(const std::vector<u8>& fifo_bytes, const std::vector<DrawSegment>& desc,
+                          const std::vector<DrawSegment>& fmt, const std::string& at) {
+  // GX_VA_POS 9, NRM 10, CLR0 11, CLR1 12, TEX0..7 13..20; GX_INDEX8/16 are the CP's 2 and 3
+  // [OGC gx.h L82-92] [DHW CPMemory.h VertexComponentFormat].
+  VertexInputs in;
+  for (const DrawSegment& g : desc) {
+    const auto input = static_cast<AttributeInput>(g.bytes[1]);
+    const int attribute = g.bytes[0];
+    if (attribute == 9) in.position = input;
+    if (attribute == 10) in.normal = input;
+    if (attribute == 11 || attribute == 12) in.color[static_cast<size_t>(attribute - 11)] = input;
+    if (attribute >= 13) in.texcoord[static_cast<size_t>(attribute - 13)] = input;
+  }
+  const std::array<u32, 2> vcd = pack_vertex_inputs(in);
+  fifo::CommandStream loads;
+  loads.load_cp(fifo::cp::kVcdLow, vcd[0]);
+  loads.load_cp(fifo::cp::kVcdHigh, vcd[1]);
+  const std::vector<u8> want = loads.bytes();
+  bool matched = false;
+  for (auto it = std::search(fifo_bytes.begin(), fifo_bytes.end(), want.begin(), want.end());
+       it != fifo_bytes.end() && !matched;
+       it = std::search(it + 1, fifo_bytes.end(), want.begin(), want.end())) {
+    const size_t vat = static_cast<size_t>(it - fifo_bytes.begin()) + want.size();
+    if (vat + 18 > fifo_bytes.size() || fifo_bytes[vat + 1] != fifo::cp::kVatA) continue;
+    const VertexAttributeFormat f = unpack_vertex_format(big_endian_word(fifo_bytes, vat + 2),
+                                                         big_endian_word(fifo_bytes, vat + 8),
+                                                         big_endian_word(fifo_bytes, vat + 14));
+    bool all = true;
+    for (const DrawSegment& g : fmt) {
+      const int attribute = g.bytes[0], count = g.bytes[1], type = g.bytes[2], frac = g.bytes[3];
+      if (attribute == 9)
+        all = all && static_cast<int>(f.position.type) == type && f.position.frac == frac;
+      else if (attribute == 10)
+        all = all && static_cast<int>(f.normal.type) == type;
+      else if (attribute == 11)
+        all = all && static_cast<int>(f.color[0].type) == type && f.color[0].alpha == (count == 1);
+      else {
+        const CoordinateFormat& c = f.texcoord[static_cast<size_t>(attribute - 13)];
+        all =
+            all && c.components == count + 1 && static_cast<int>(c.type) == type && c.frac == frac;
+      }
+    }
+    matched = all;
+  }
+  EXPECT_TRUE(matched) << at << ": an object's descriptor and format the log does not load";
 }
 
 struct StoredCase {
@@ -120,8 +180,22 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
     std::set<std::vector<u8>> blocks, module_blocks;
     for (const fifo::MemoryUpdate& u : frame.updates)
       if (u.type == fifo::kMemoryUpdateVertexStream) blocks.insert(u.data);
-    size_t matrices = 0, draws = 0;
+    size_t matrices = 0, draws = 0, formats = 0;
+    std::vector<DrawSegment> desc, fmt;  // the object's, after its matrices
+    bool object_format = false;
     for (const DrawSegment& g : sent) {
+      if (object_format && g.kind == 'A') {
+        ++formats;
+        expect_object_format(frame.fifo, desc, fmt, at);
+        object_format = false;
+      }
+      if (g.kind == 'N') {
+        object_format = true;
+        desc.clear();
+        fmt.clear();
+      }
+      if (object_format && g.kind == 'V') desc.push_back(g);
+      if (object_format && g.kind == 'F') fmt.push_back(g);
       if (g.kind == 'P' || g.kind == 'N') {
         ++matrices;
         EXPECT_TRUE(holds_bytes(frame.fifo, g.bytes)) << at << ": a matrix the log does not load";
@@ -136,6 +210,7 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
       }
     }
     EXPECT_GT(matrices, 0u) << at;
+    EXPECT_EQ(2 * formats, matrices) << at << ": an object drawn without its format";
     EXPECT_EQ(draws > 0, variant.draw != GxVariant::Draw::List) << at;
     EXPECT_TRUE(module_blocks == blocks)
         << at << ": the module's arrays and lists (" << module_blocks.size()
