@@ -61,8 +61,9 @@ TEST_P(DolphinJudge, DolphinsFramesAreLtrendersXfbPictures) {
 // each with its own camera and vertices. Dolphin plays them in order; each dump must be
 // ltrender's `:out=xfb` picture of that frame, pixel for pixel (test::dolphin_pictures maps the
 // dumps to the frames). A dump matched to the wrong frame fails: the camera moves 10 degrees a
-// frame. Three modules: the sphere's default, and three_point_blob's two :view=object programs,
-// whose texture matrix and XF specular light the module recomputes each frame.
+// frame. Four modules: the sphere's default, three_point_blob's two :view=object programs,
+// whose texture matrix and XF specular light the module recomputes each frame, and the latter
+// stored (s16 positions, s8 normals, RGB565 colours) and drawn from a display list.
 struct AnimationCase {
   std::string scene, variant;
 };
@@ -91,7 +92,11 @@ TEST_P(DolphinJudgeAnimation, EachFrameOfTheModuleDrivenLogIsLtrendersPicture) {
     ASSERT_FALSE(text.empty());
     const fs::path file = dir / ("frame" + std::to_string(k) + ".c");
     test::write_file(file, text);
-    programs.push_back(gx::scene_programs_for(scenes[k], variant, file.string()));
+    // A stored variant's programs declare its storage: read with the variant's other axes
+    // (program_storage.h declared_variant); the log still stores each object as the variant does.
+    gx::GxVariant undeclared = variant;
+    undeclared.storage = gx::VertexStorage{};
+    programs.push_back(gx::scene_programs_for(scenes[k], undeclared, file.string()));
   }
   std::vector<gx::fifo::FrameInput> inputs;
   for (int k = 0; k < kCameraPathFrames; ++k) inputs.push_back({variant, &programs[k], &scenes[k]});
@@ -111,7 +116,12 @@ INSTANTIATE_TEST_SUITE_P(
     ModuleAnimation, DolphinJudgeAnimation,
     ::testing::Values(AnimationCase{"scenes/backlit_sphere.json", "t=vertex"},
                       AnimationCase{"scenes/three_point_blob.json", "t=texgen:view=object"},
-                      AnimationCase{"scenes/three_point_blob.json", "lobe=xf-spec:view=object"}),
+                      AnimationCase{"scenes/three_point_blob.json", "lobe=xf-spec:view=object"},
+                      // A stored module's variant (module_stored.h): quantised arrays and a
+                      // display list, whose sends gx_module_stored_test.cpp holds to this log.
+                      AnimationCase{"scenes/three_point_blob.json",
+                                    "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:"
+                                    "draw=list"}),
     [](const auto& info) {
       return test::test_param_name(info.param.scene + "_" + info.param.variant);
     });

@@ -200,6 +200,35 @@ TEST(GxExportStoredDeclarations, CompileWithThePowerPcCompilerAgainstLibogc) {
   }
 }
 
+// The module of a stored variant (module_stored.h): its arrays (ATTRIBUTE_ALIGN(32)), its
+// display lists and indexed draws (GX_SetArray, GX_BeginDispList, GX_Position1x16, ...) are
+// libogc's calls, as a list and as strips, one scene with a map's UVs.
+TEST(GxModuleStoredCompiles, WithThePowerPcCompilerAgainstLibogc) {
+  const std::vector<fs::path> checkouts = libogc_checkouts();
+  if (checkouts.empty())
+    GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile a stored module";
+  test::TempDir dir;
+  const std::pair<const char*, const char*> cases[] = {
+      {"scenes/three_point_blob.json",
+       "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
+      {"scenes/albedo_checker.json",
+       "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=strips"}};
+  for (const auto& [scene, variant] : cases) {
+    const fs::path c = dir / "stored_module.c";
+    const test::RunResult r =
+        test::run_ltrender("export gx " + (test::source_dir() / scene).string() + " --variant " +
+                           variant + " --format module -o " + c.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(test::read_file(c).find("ltrender_draw_stored"), std::string::npos) << scene;
+    for (const fs::path& ogc : checkouts) {
+      const fs::path log = dir / "cc.log";
+      EXPECT_EQ(std::system(compile_command(c, ogc, log).c_str()), 0)
+          << scene << " against " << ogc << ":\n"
+          << test::read_file(log);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GxExportCompiles, ::testing::ValuesIn(export_scenes()),
                          [](const auto& info) { return test::test_param_name(info.param); });
 

@@ -193,22 +193,6 @@ TEST(GxModuleExport, RefusesALightRangeThatIsNoDistance) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-// The module's runtime sends each vertex F32, GX_DIRECT: a stored or indexed variant is one line,
-// exit 2, no file (`--format c` declares them).
-TEST(GxModuleExport, RefusesAVertexStorageOrAnIndexedDraw) {
-  test::TempDir dir;
-  const fs::path out = dir / "m.c";
-  for (const char* variant : {"t=vertex:vtx=s16/8", "t=vertex:draw=list"}) {
-    const test::RunResult r =
-        test::run_ltrender("export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
-                           " --variant " + variant + " --format module -o " + out.string());
-    EXPECT_EQ(r.exit_code, 2) << variant;
-    EXPECT_NE(r.err.find("not yet by the module"), std::string::npos) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_FALSE(fs::exists(out));
-  }
-}
-
 std::vector<Case> module_cases() {
   std::vector<Case> out;
   for (const std::string& s : test::json_files("scenes")) out.push_back({s, "t=vertex"});

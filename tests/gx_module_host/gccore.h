@@ -35,6 +35,7 @@ typedef struct {
 #include "gx_constants.h"
 /* Names the draw uses that no modelled call takes [OGC gx.h]. */
 #define GX_TRIANGLES 0x90
+#define GX_TRIANGLESTRIP 0x98
 #define GX_PNMTX0 0
 
 /* The recorder: each pass function's calls become `void name(void) { ... }` in the text. */
@@ -87,6 +88,22 @@ void GX_TexCoord1f32(f32 s);
 void GX_TexCoord2f32(f32 s, f32 t);
 void GX_End(void);
 void DCFlushRange(void* start, u32 length);
+/* A stored module's draw (ltrender_gx_stored.c): recorded, between ltr_host_draws_begin and
+   ltr_host_draws, as segments the test compares with ltrender's FIFO log (gx_host.c). */
+void ltr_host_draws_begin(void);
+const u8* ltr_host_draws(u32* length);
+void GX_SetArray(u32 attr, void* ptr, u8 stride);
+void GX_BeginDispList(void* list, u32 size);
+u32 GX_EndDispList(void);
+void GX_CallDispList(void* list, u32 nbytes);
+void GX_Position1x8(u8 i);
+void GX_Position1x16(u16 i);
+void GX_Normal1x8(u8 i);
+void GX_Normal1x16(u16 i);
+void GX_Color1x8(u8 i);
+void GX_Color1x16(u16 i);
+void GX_TexCoord1x8(u8 i);
+void GX_TexCoord1x16(u16 i);
 /* The module's textures come from its TPL: these read it as libogc's tpl.c does and call
    GX_InitTexObj, which records the texture. */
 s32 TPL_OpenTPLFromMemory(TPLFile* tdf, void* memory, u32 len);

@@ -10,10 +10,14 @@ static char* program;
 static size_t length, capacity;
 static char top[16 << 20];
 
+static int recording_draws;
+static void draw_segment(u8 kind, const u8* bytes, u32 n);
+
 static void append(const char* format, ...) {
   char line[4096];
   va_list args;
   int n;
+  if (recording_draws) return; /* a stored draw's pass functions: their text is the frame's */
   va_start(args, format);
   n = vsnprintf(line, sizeof line, format, args);
   va_end(args);
@@ -33,6 +37,7 @@ static int array_count;
 
 static int object_name(const void* p, const char* type) {
   int i;
+  if (recording_draws) return 0; /* names only the text's objects */
   for (i = 0; i < object_count; ++i)
     if (objects[i] == p) return i;
   objects[object_count] = p;
@@ -80,9 +85,13 @@ void GX_ClearVtxDesc(void) {
   append("  GX_ClearVtxDesc();\n");
 }
 void GX_SetVtxDesc(u8 attr, u8 type) {
+  const u8 bytes[2] = {attr, type};
+  if (recording_draws) draw_segment('V', bytes, 2);
   append("  GX_SetVtxDesc(%d, %d);\n", attr, type);
 }
 void GX_SetVtxAttrFmt(u8 f, u32 attr, u32 type, u32 size, u32 frac) {
+  const u8 bytes[4] = {(u8)attr, (u8)type, (u8)size, (u8)frac};
+  if (recording_draws) draw_segment('F', bytes, 4);
   append("  GX_SetVtxAttrFmt(%d, %u, %u, %u, %u);\n", f, attr, type, size, frac);
 }
 void GX_InitLightPos(GXLightObj* o, f32 x, f32 y, f32 z) {
@@ -206,18 +215,141 @@ void GX_SetCullMode(u8 mode) {
   append("  GX_SetCullMode(%d);\n", mode);
 }
 
-/* The draw is not recorded: the emulator takes geometry and matrices from the scene. */
+/* The F32 draw is not recorded: the emulator takes geometry and matrices from the scene. A
+   stored module's draw is (ltr_host_draws_begin .. ltr_host_draws), as segments: a kind byte,
+   a 4-byte host-order length, the bytes:
+     'P' GX_LoadPosMtxImm's 12 floats, 'N' GX_LoadNrmMtxImm's 9 (big-endian, as the FIFO has them)
+     'A' GX_SetArray's attribute and stride bytes, then the array's bytes (DCFlushRange's length)
+     'F' GX_SetVtxAttrFmt's attribute, count, type, fraction; 'V' GX_SetVtxDesc's attribute, type
+     'D' a GX_Begin .. GX_End sent to the FIFO: the command byte, the count (big-endian), indices
+     'L' a GX_CallDispList: the list's bytes as GX_EndDispList left them (padded to 32). */
+static u8* draws;
+static u32 draws_length, draws_capacity;
+static u8 scratch[1 << 22];
+static u32 scratch_length;
+static u8* list;
+static u32 list_capacity, list_length;
+static int in_list;
+static struct {
+  void* start;
+  u32 length;
+} flushed[4096];
+static int flushed_count;
+
+static void draw_segment(u8 kind, const u8* bytes, u32 n) {
+  if (draws_length + n + 5 > draws_capacity) {
+    draws_capacity = (draws_length + n + 5) * 2;
+    draws = realloc(draws, draws_capacity);
+  }
+  draws[draws_length] = kind;
+  memcpy(draws + draws_length + 1, &n, 4);
+  memcpy(draws + draws_length + 5, bytes, n);
+  draws_length += n + 5;
+}
+void ltr_host_draws_begin(void) {
+  draws_length = 0;
+  recording_draws = 1;
+}
+const u8* ltr_host_draws(u32* length) {
+  recording_draws = 0;
+  *length = draws_length;
+  return draws;
+}
+/* A byte written to the FIFO: into the display list being recorded, else the open draw. */
+static void put8(u8 b) {
+  if (in_list) {
+    if (list_length < list_capacity) list[list_length] = b;
+    ++list_length;
+  } else if (scratch_length < sizeof scratch) {
+    scratch[scratch_length++] = b;
+  }
+}
+static void put16(u16 v) {
+  put8((u8)(v >> 8));
+  put8((u8)v);
+}
+static void matrix(u8 kind, Mtx m, int columns) {
+  u8 bytes[48];
+  int r, c, i = 0;
+  for (r = 0; r < 3; ++r) {
+    for (c = 0; c < columns; ++c) {
+      u32 w;
+      memcpy(&w, &m[r][c], 4);
+      bytes[i++] = (u8)(w >> 24), bytes[i++] = (u8)(w >> 16), bytes[i++] = (u8)(w >> 8);
+      bytes[i++] = (u8)w;
+    }
+  }
+  if (recording_draws) draw_segment(kind, bytes, (u32)i);
+}
 void GX_LoadPosMtxImm(Mtx m, u32 id) {
-  (void)m, (void)id;
+  (void)id;
+  matrix('P', m, 4);
 }
 void GX_LoadNrmMtxImm(Mtx m, u32 id) {
-  (void)m, (void)id;
+  (void)id;
+  matrix('N', m, 3);
 }
 void GX_SetCurrentMtx(u32 id) {
   (void)id;
 }
 void GX_Begin(u8 p, u8 f, u16 n) {
-  (void)p, (void)f, (void)n;
+  if (!in_list) scratch_length = 0;
+  put8((u8)(p | f));
+  put16(n);
+}
+void GX_Position1x8(u8 i) {
+  put8(i);
+}
+void GX_Position1x16(u16 i) {
+  put16(i);
+}
+void GX_Normal1x8(u8 i) {
+  put8(i);
+}
+void GX_Normal1x16(u16 i) {
+  put16(i);
+}
+void GX_Color1x8(u8 i) {
+  put8(i);
+}
+void GX_Color1x16(u16 i) {
+  put16(i);
+}
+void GX_TexCoord1x8(u8 i) {
+  put8(i);
+}
+void GX_TexCoord1x16(u16 i) {
+  put16(i);
+}
+void GX_SetArray(u32 attr, void* ptr, u8 stride) {
+  int i;
+  u32 n = 0;
+  u8* bytes;
+  if (!recording_draws) return;
+  for (i = 0; i < flushed_count; ++i)
+    if (flushed[i].start == ptr) n = flushed[i].length;
+  bytes = malloc(n + 2);
+  bytes[0] = (u8)attr;
+  bytes[1] = stride;
+  memcpy(bytes + 2, ptr, n);
+  draw_segment('A', bytes, n + 2);
+  free(bytes);
+}
+void GX_BeginDispList(void* l, u32 size) {
+  list = l;
+  list_capacity = size;
+  list_length = 0;
+  in_list = 1;
+}
+/* Pads with GX_NOP to 32 bytes; 0 when the list overflowed its buffer (libogc's FIFO ends 4
+   bytes before it [OGC gx.c GX_BeginDispList]). */
+u32 GX_EndDispList(void) {
+  while (list_length % 32) put8(0);
+  in_list = 0;
+  return list_length + 4 > list_capacity ? 0 : list_length;
+}
+void GX_CallDispList(void* l, u32 n) {
+  if (recording_draws) draw_segment('L', l, n);
 }
 void GX_Position3f32(f32 x, f32 y, f32 z) {
   (void)x, (void)y, (void)z;
@@ -234,9 +366,17 @@ void GX_TexCoord1f32(f32 s) {
 void GX_TexCoord2f32(f32 s, f32 t) {
   (void)s, (void)t;
 }
-void GX_End(void) {}
+void GX_End(void) {
+  if (!in_list && recording_draws) draw_segment('D', scratch, scratch_length);
+}
 void DCFlushRange(void* p, u32 n) {
-  (void)p, (void)n;
+  int i;
+  for (i = 0; i < flushed_count; ++i)
+    if (flushed[i].start == p) break;
+  if (i == (int)(sizeof flushed / sizeof flushed[0])) return;
+  flushed[i].start = p;
+  flushed[i].length = n;
+  if (i == flushed_count) ++flushed_count;
 }
 void GX_InvalidateTexAll(void) {}
 

@@ -169,10 +169,6 @@ VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,
   return d;
 }
 
-namespace {
-
-// What a pass of `v` sends, as the pass's program declares it (plan_emitter.cpp vertex_format):
-// the descriptor and texture coordinate kinds pass_vertex_data reads.
 std::pair<VertexDescriptor, TexCoordFormats> planned_attributes(const VertexFormatPlan& v) {
   VertexDescriptor sent;
   TexCoordFormats formats;
@@ -189,6 +185,8 @@ std::pair<VertexDescriptor, TexCoordFormats> planned_attributes(const VertexForm
   }
   return {sent, formats};
 }
+
+namespace {
 
 void keep_smallest(std::optional<int>& smallest, int frac) {
   smallest = smallest ? std::min(*smallest, frac) : frac;

@@ -8,6 +8,7 @@
 
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gx/vertex_stage.h"
@@ -57,6 +58,10 @@ VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,
                                      std::span<const glm::vec3> normals, const VertexStream& stream,
                                      const VertexDescriptor& sent, const TexCoordFormats& formats,
                                      size_t pass);
+
+// What a pass of `v` sends, as the pass's program declares it (plan_emitter.cpp vertex_format):
+// the descriptor and texture coordinate kinds pass_vertex_data reads.
+std::pair<VertexDescriptor, TexCoordFormats> planned_attributes(const VertexFormatPlan& v);
 
 // What the generated programs declare for the scene's vertices (pass_plan.h
 // VertexDeclarations): the variant's storage with each /auto fraction made the smallest any

@@ -10,6 +10,7 @@
 #include "gx/program/pass_programs.h"
 #include "gx/program/printer.h"
 #include "paths/gx/generator.h"
+#include "paths/gx/module/module_stored.h"
 #include "paths/gx/module/module_textures.h"
 
 namespace lt::gx {
@@ -17,15 +18,6 @@ namespace lt::gx {
 namespace {
 
 constexpr const char* kRuntimeDir = "src/paths/gx/module/runtime/";
-
-// A double as C reads it back exactly (17 significant digits).
-std::string c_double(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  std::string s = buf;
-  if (s.find_first_of(".en") == std::string::npos) s += ".0";
-  return s;
-}
 
 std::string c_float(double v) {
   return print_arg(Arg::f32(static_cast<float>(v)));
@@ -205,7 +197,9 @@ std::string light_kinds(const Scene& scene, const GxVariant& variant) {
 }
 
 // The material's fixed constants, the shape of its passes, and its setup, t and draw functions.
-std::string material_functions(const Scene& scene, const MaterialPlan& m, const GxVariant& v) {
+// A stored module (module_stored.h) draws with ltrender_draw_stored: no per-mesh draw.
+std::string material_functions(const Scene& scene, const MaterialPlan& m, const GxVariant& v,
+                               bool stored) {
   const Material& mat = scene.materials[static_cast<size_t>(m.material)];
   const std::string id = "ltrender_" + m.c_name;
   const std::string passes = "LTRENDER_" + m.c_name + "_PASSES";
@@ -296,6 +290,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
       << "_material, mesh, t);\n"
       << "}\n";
   }
+  if (stored) return o.str();
   o << "\n// Draws one mesh of " << mat.name << " through every pass (after " << id
     << "_setup and\n"
     << "// ltr_load_view). t_scratch holds mesh->vertex_count floats"
@@ -337,14 +332,14 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
     throw InputError("--variant", to_string(variant),
                      "gx: --format module does not carry base=tev: its setup recomputes the XF "
                      "light and a grey REG0 each frame, not the konst colour; use base=xf");
-  // The runtime's draw sends each vertex F32, GX_DIRECT, in immediate mode (ltrender_gx_draw.c):
-  // a module of a stored or indexed variant would declare one storage and send another.
-  if (!variant.storage.is_default() || variant.draw != GxVariant::Draw::Direct)
-    throw InputError("--variant", to_string(variant),
-                     "gx: --format module sends each vertex F32 and directly; a vertex storage "
-                     "(:vtx=, :nrm=, :clr=, :uv=) and :draw=indexed, strips and list are exported "
-                     "by --format c (its declarations) and dff, not yet by the module");
   const ScenePlan plan = plan_scene(scene, variant);
+  // The F32 mesh goes in directly, every frame (ltrender_gx_draw.c); a stored one as the game
+  // ships it, indexed (module_stored.h, ltrender_gx_stored.c).
+  const bool stored = !variant.storage.is_default() || variant.draw != GxVariant::Draw::Direct;
+  if (stored) {
+    const std::string why = stored_module_refusal(variant, plan);
+    if (!why.empty()) throw InputError("--variant", to_string(variant), "gx: " + why);
+  }
   const GeneratedPrograms g = emit_programs(plan);
   const bool t_from_normal = variant.t == GxVariant::TexCoord::Texgen;
   std::ostringstream out;
@@ -372,6 +367,13 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << "// sends t, ltr_fill_t per vertex (both state their flops). One module per program: the "
          "ltr_\n"
       << "// runtime functions are not static.\n"
+      << (stored
+              ? "// Stored variant: the meshes are the module's own, converted once (object "
+                "space,\n// quantised, indexed); call ltrender_stored_init() once after GX_Init, "
+                "and each frame,\n// after the setups, ltrender_draw_stored(&view, states) "
+                "instead of the _draw functions.\n" +
+                    stored_cost_comment(scene, variant)
+              : std::string())
       << "\n#include <gccore.h>\n#include <math.h>\n\n"
       << "// ---- runtime: the per-frame maths (plain C99) ----\n"
       << module_runtime_source("ltrender_gx_runtime.h") << "\n"
@@ -379,6 +381,9 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
                       "#include \"ltrender_gx_runtime.h\"\n")
       << "\n// ---- runtime: the view matrix and the draw (libogc) ----\n"
       << module_runtime_source("ltrender_gx_draw.c") << "\n"
+      << (stored ? "// ---- runtime: the stored meshes' draw (libogc) ----\n" +
+                       module_runtime_source("ltrender_gx_stored.c") + "\n"
+                 : std::string())
       << "// ---- the scene ----\n"
       << light_kinds(scene, variant);
   ProgramFile file = g.file;
@@ -398,7 +403,8 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
   }
   file.functions = std::move(bound);
   out << "\n// ---- the passes ----\n" << print_program(file);
-  for (const MaterialPlan& m : plan.materials) out << material_functions(scene, m, variant);
+  for (const MaterialPlan& m : plan.materials) out << material_functions(scene, m, variant, stored);
+  if (stored) out << stored_meshes_c(scene, plan, variant);
   out << open_textures_function(textures) << "\n// ---- every material ----\n"
       << "typedef struct {\n"
       << "  const char* name; /* as the scene names it */\n"
@@ -407,6 +413,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
          "ltr_pass_state[]);\n"
       << "  void (*draw)(ltr_pass_state[], const ltr_view*, const ltr_light[], const ltr_mesh*, "
          "float*);\n"
+      << (stored ? "  /* draw is 0: a stored module draws with ltrender_draw_stored */\n" : "")
       << "} ltr_material_module;\n"
       << "#define LTRENDER_MATERIALS " << plan.materials.size() << "\n"
       << "#define LTRENDER_MAX_PASSES ";
@@ -422,7 +429,8 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
     for (char c : m.name)
       quoted += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
     out << (i ? ",\n    " : "\n    ") << "{\"" << quoted << "\", LTRENDER_" << m.c_name
-        << "_PASSES, ltrender_" << m.c_name << "_setup, ltrender_" << m.c_name << "_draw}";
+        << "_PASSES, ltrender_" << m.c_name << "_setup, "
+        << (stored ? std::string("0") : "ltrender_" + m.c_name + "_draw") << "}";
   }
   out << "};\n";
   return out.str();

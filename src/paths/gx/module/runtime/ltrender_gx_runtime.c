@@ -478,3 +478,20 @@ void ltr_pass_setup(const ltr_scene* scene, const ltr_material* material,
     ltr_light_pass(scene, material, shape, view, lights, ranges, centre, out);
   }
 }
+
+void ltr_object_matrices(const ltr_view* view, const ltr_object_place* place, float position[3][4],
+                         float normal[3][3]) {
+  const double(*R)[3] = view->rotation;
+  double rel[3];
+  int r, c;
+  for (c = 0; c < 3; ++c) rel[c] = place->move[c] - view->eye[c];
+  for (r = 0; r < 3; ++r) {
+    for (c = 0; c < 3; ++c) {
+      position[r][c] = (float)(R[r][0] * place->linear[0][c] + R[r][1] * place->linear[1][c] +
+                               R[r][2] * place->linear[2][c]);
+      normal[r][c] = (float)(R[r][0] * place->normal[0][c] + R[r][1] * place->normal[1][c] +
+                             R[r][2] * place->normal[2][c]);
+    }
+    position[r][3] = (float)(R[r][0] * rel[0] + R[r][1] * rel[1] + R[r][2] * rel[2]);
+  }
+}

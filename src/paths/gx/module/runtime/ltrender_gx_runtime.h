@@ -172,6 +172,23 @@ typedef struct {
 void ltr_fit_lobe(double c0, double sign, double x_max, double a, double s, double p,
                   ltr_rational* out);
 
+/* Where a stored mesh's object stands (a module of a stored variant, :vtx= :nrm= :clr= :uv=):
+   the mesh is kept in the object's own coordinates, and the scene's transform places it: its
+   3x3 part A (linear[row][column]), its move t (world space) and A^-T (normal), in double as the
+   scene gives them. */
+typedef struct {
+  double linear[3][3];
+  double move[3];
+  double normal[3][3];
+} ltr_object_place;
+
+/* The position and normal matrix GX_PNMTX0 takes for a stored object under `view`: R [A | t - eye]
+   and R A^-T (R the view's rotation), in double, then float: the matrices ltrender's emulator
+   loads for it (paths/gx/scene_vertices.cpp object_space_mesh, glm's products: each element
+   summed left to right, R(r,0) A(0,c) + R(r,1) A(1,c) + R(r,2) A(2,c)). Cost: 63 flops. */
+void ltr_object_matrices(const ltr_view* view, const ltr_object_place* place, float position[3][4],
+                         float normal[3][3]);
+
 /* One pass's per-frame state from the view, the lights and their ranges (one per light), and
    `centre` (ltr_centre_of of the meshes drawn with it; read only with :view=object). */
 void ltr_pass_setup(const ltr_scene* scene, const ltr_material* material,

@@ -1,0 +1,129 @@
+/* The GX side of a module of a stored variant (`export gx --variant V --format module`, V with
+   :vtx= :nrm= :clr= :uv= and :draw=indexed, strips or list): the scene's meshes as a game ships
+   them, converted once at export, in the object's own coordinates, quantised as ltrender's
+   emulator stores them (the very bytes: gx/vertex_quantiser.h index_attributes), each attribute
+   an array of its distinct elements, 32-byte aligned [OGC gc/ogc/cache.h L123-139].
+   ltr_stored_init flushes them from the CPU's cache once and builds each display list once;
+   every frame, each object loads its matrices for the view and its format, points the CP at its
+   arrays and sends its draws or calls its list, in the order ltrender's FIFO log does
+   (paths/gx/indexed_recording.cpp draw_indexed_object). C99 over libogc's gccore.h, no
+   allocation. */
+
+/* One attribute's array: GX_SetVtxDesc's index type, GX_SetVtxAttrFmt's count, type and
+   fraction, and GX_SetArray's base and stride. */
+typedef struct {
+  u8 attribute; /* GX_VA_POS, GX_VA_NRM, GX_VA_CLR0, GX_VA_TEXn */
+  u8 index;     /* GX_INDEX8 or GX_INDEX16 */
+  u8 count, type, frac;
+  void* data; /* 32-byte aligned */
+  u32 bytes;
+  u8 stride;
+} ltr_stored_array;
+
+/* One object in one pass: where it stands, its arrays, and its draws: draw_count GX_Begin's of
+   `primitive`, draw k sending draw_vertices[k] vertices, each vertex one index per array in
+   `indices` (in array order). Under :draw=list the draws are a display list, `list`
+   (list_capacity bytes, 32-byte aligned) holds it after ltr_stored_init, list_size its bytes. */
+typedef struct {
+  const ltr_object_place* place;
+  int array_count;
+  const ltr_stored_array* arrays;
+  u8 primitive; /* GX_TRIANGLES or GX_TRIANGLESTRIP */
+  int draw_count;
+  const u16* draw_vertices;
+  const u16* indices;
+  void* list; /* 0: the draws are sent every frame */
+  u32 list_capacity, list_size;
+} ltr_stored_draw;
+
+/* One index as the attribute's GX_INDEX8 or GX_INDEX16 (libogc's 1x8 and 1x16 writes). */
+static void ltr_send_index(const ltr_stored_array* a, u16 i) {
+  const int wide = a->index == GX_INDEX16;
+  if (a->attribute == GX_VA_POS) {
+    if (wide)
+      GX_Position1x16(i);
+    else
+      GX_Position1x8((u8)i);
+  } else if (a->attribute == GX_VA_NRM) {
+    if (wide)
+      GX_Normal1x16(i);
+    else
+      GX_Normal1x8((u8)i);
+  } else if (a->attribute == GX_VA_CLR0) {
+    if (wide)
+      GX_Color1x16(i);
+    else
+      GX_Color1x8((u8)i);
+  } else {
+    if (wide)
+      GX_TexCoord1x16(i);
+    else
+      GX_TexCoord1x8((u8)i);
+  }
+}
+
+static void ltr_send_draws(const ltr_stored_draw* d) {
+  const u16* index = d->indices;
+  int k, v, a;
+  for (k = 0; k < d->draw_count; ++k) {
+    GX_Begin(d->primitive, GX_VTXFMT0, d->draw_vertices[k]);
+    for (v = 0; v < d->draw_vertices[k]; ++v)
+      for (a = 0; a < d->array_count; ++a) ltr_send_index(&d->arrays[a], *index++);
+    GX_End();
+  }
+}
+
+/* The object's vertex descriptor and format (GX_VTXFMT0): each array indexed, its storage. */
+static void ltr_stored_format(const ltr_stored_draw* d) {
+  int a;
+  GX_ClearVtxDesc();
+  for (a = 0; a < d->array_count; ++a) {
+    const ltr_stored_array* x = &d->arrays[a];
+    GX_SetVtxDesc(x->attribute, x->index);
+    GX_SetVtxAttrFmt(GX_VTXFMT0, x->attribute, x->count, x->type, x->frac);
+  }
+}
+
+/* Once, before the first frame: every array flushed from the CPU's data cache (the GP reads
+   main memory), then each display list recorded. GX_BeginDispList sends the state set before it
+   to the FIFO, not the list [OGC gx.c GX_BeginDispList], so the list holds the draws alone;
+   GX_EndDispList pads it to 32 bytes and gives its size (0 had it overflowed: our bug). */
+void ltr_stored_init(ltr_stored_draw draws[], int count) {
+  int i, a;
+  for (i = 0; i < count; ++i)
+    for (a = 0; a < draws[i].array_count; ++a)
+      DCFlushRange(draws[i].arrays[a].data, draws[i].arrays[a].bytes);
+  for (i = 0; i < count; ++i) {
+    ltr_stored_draw* d = &draws[i];
+    if (!d->list) continue;
+    ltr_stored_format(d);
+    GX_BeginDispList(d->list, d->list_capacity);
+    ltr_send_draws(d);
+    d->list_size = GX_EndDispList();
+    DCFlushRange(d->list, d->list_capacity);
+  }
+}
+
+/* One object in one pass, after the pass function: its matrices under `view`
+   (ltr_object_matrices), its format, its arrays, then its draws or its list. */
+void ltr_stored_draw_object(const ltr_view* view, const ltr_stored_draw* d) {
+  Mtx position, normal;
+  float p[3][4], n[3][3];
+  int r, c, a;
+  ltr_object_matrices(view, d->place, p, n);
+  for (r = 0; r < 3; ++r) {
+    for (c = 0; c < 4; ++c) position[r][c] = p[r][c];
+    for (c = 0; c < 3; ++c) normal[r][c] = n[r][c];
+    normal[r][3] = 0;
+  }
+  GX_LoadPosMtxImm(position, GX_PNMTX0);
+  GX_LoadNrmMtxImm(normal, GX_PNMTX0);
+  GX_SetCurrentMtx(GX_PNMTX0);
+  ltr_stored_format(d);
+  for (a = 0; a < d->array_count; ++a)
+    GX_SetArray(d->arrays[a].attribute, d->arrays[a].data, d->arrays[a].stride);
+  if (d->list)
+    GX_CallDispList(d->list, d->list_size);
+  else
+    ltr_send_draws(d);
+}
