@@ -98,7 +98,9 @@ std::string stored_module_refusal(const GxVariant& variant, const ScenePlan& pla
 std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxVariant& variant) {
   const SceneView view = SceneView::of(scene);
   std::ostringstream data, table;
-  std::map<std::vector<u8>, std::string> array_names;
+  // Keyed by the bytes as a string: GCC 12 warns falsely (-Wstringop-overread) on comparing
+  // vector<u8> keys.
+  std::map<std::string, std::string> array_names;
   // draw_of[object][pass]: the object's entry in ltrender_stored_draws.
   std::vector<std::vector<size_t>> draw_of(scene.objects.size());
   std::vector<StoredDraw> draws;
@@ -129,7 +131,8 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
       size_t index_bytes = 0;
       for (int a : arrays.arrays) {
         const auto n = static_cast<size_t>(a);
-        std::string& name = array_names[arrays.bytes[n]];
+        std::string& name =
+            array_names[std::string(arrays.bytes[n].begin(), arrays.bytes[n].end())];
         if (name.empty()) {
           name = "ltrender_array_" + std::to_string(array_names.size() - 1);
           data << "static u8 " << name << "[" << arrays.bytes[n].size()
