@@ -48,9 +48,9 @@ function(lt_test_binary name)
     list(APPEND labels --label ${label})
   endforeach()
   add_custom_command(OUTPUT ${plan}
-    COMMAND python3 ${CMAKE_SOURCE_DIR}/tests/runner/plan_batches.py
+    COMMAND ${LT_PYTHON} ${CMAKE_SOURCE_DIR}/tests/runner/plan_batches.py
       --binary $<TARGET_FILE:${name}> --schedule ${CMAKE_SOURCE_DIR}/tests/schedule.json
-      --runner ${CMAKE_SOURCE_DIR}/tests/runner/run_batch.py --python python3
+      --runner ${CMAKE_SOURCE_DIR}/tests/runner/run_batch.py --python ${LT_PYTHON}
       --build-dir ${CMAKE_BINARY_DIR} --timeout ${T_TIMEOUT} ${labels} --out ${plan}
     DEPENDS ${name} ltrender ${CMAKE_SOURCE_DIR}/tests/schedule.json
       ${CMAKE_SOURCE_DIR}/tests/runner/plan_batches.py
