@@ -323,6 +323,17 @@ TEST(GxVariantParse, AcceptsTheGrammarAndRefusesTheRest) {
   EXPECT_EQ(parse_gx_variant("lobe=xf-spec:coverage=console").coverage, CoverageRule::Console);
   EXPECT_EQ(parse_gx_variant("t=vertex").coverage, CoverageRule::Dolphin);
   EXPECT_EQ(to_string(parse_gx_variant("t=vertex:coverage=dolphin")), "t=vertex");
+  // The mip axes: their canonical order after :map=, the bias as the shortest double.
+  EXPECT_EQ(to_string(parse_gx_variant("wrap=repeat:mip-bias=-1.25:mip=near:t=vertex")),
+            "t=vertex:mip=near:mip-bias=-1.25:wrap=repeat");
+  EXPECT_EQ(parse_gx_variant("t=vertex:mip=lin").mip, GxVariant::Mip::Linear);
+  EXPECT_EQ(to_string(parse_gx_variant("t=vertex:mip-bias=0:mip=lin:wrap=clamp")),
+            "t=vertex:mip=lin");
+  for (const char* bad :
+       {"t=vertex:mip=trilinear", "t=vertex:mip-bias=1", "t=vertex:mip=lin:mip-bias=4",
+        "t=vertex:mip=lin:mip-bias=-4.5", "t=vertex:mip=lin:mip-bias=x", "t=vertex:wrap=mirror"}) {
+    EXPECT_THROW(parse_gx_variant(bad), InputError) << bad;
+  }
   for (const char* bad :
        {"", "t=pixel", "lut=1", "lut=1025", "t=vertex:t=vertex", "lobe=xf-spec:lut=64", "pow=exact",
         "t=vertex:lut=64x", "light-range=-1", "light-range=x", "light-range=1:light-range=2",

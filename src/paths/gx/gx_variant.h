@@ -44,9 +44,10 @@
 //   :mip-bias=B         the LOD bias in levels, -4 <= B < 4 (GX_InitTexObjLOD's lodbias, stored
 //                       in 1/32 level steps; default 0); only with :mip=
 // and one the maps' wrap:
-//   :wrap=repeat        GX_REPEAT both ways (default :wrap=clamp, GX_CLAMP as the reference's
-//                       CLAMP_TO_EDGE); the console's repeat masks the texel index, so a map's
-//                       sides must be powers of two
+//   :wrap=repeat        the thickness maps GX_REPEAT both ways (default :wrap=clamp, GX_CLAMP as
+//                       the reference's CLAMP_TO_EDGE; an albedo map keeps its sampler's wrap);
+//                       the console's repeat masks the texel index, so the sides must be
+//                       powers of two
 // Mipmaps need power-of-two maps too (the console halves each level's size registers).
 // One axis picks where a directional light's translucency base (light x albedo x tint x (a + s))
 // is multiplied in (docs/advise.md, "What the gx error is made of"):
