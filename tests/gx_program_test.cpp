@@ -169,15 +169,53 @@ INSTANTIATE_TEST_SUITE_P(Cases, GxBadProgram, ::testing::ValuesIn(kBad),
 
 // fail_arg takes the argument's index: 8 (one past the end) read outside the call's arguments
 // (found by ./test.sh --sanitize), 5 named the wrap mode for a bad format.
-TEST(GxProgram, MipmappedTexturesAreRefusedAtTheirArgument) {
+// GX_InitTexObj with mipmaps and GX_InitTexObjLOD as libogc writes them [OGC gx.c L3236-3247,
+// L3310-3334]: 64 bytes hold an 8x4 I8 level (one 32-byte tile) and its 4x2 level (one tile).
+TEST(GxProgram, MipmappedTexturesTakeTheirLevelsAndLodFields) {
+  const GxState st = run(
+      "u8 a[64] = {0};\nGXTexObj t;\n"
+      "GX_InitTexObj(&t, a, 8, 4, GX_TF_I8, GX_REPEAT, GX_CLAMP, GX_TRUE);\n"
+      "GX_InitTexObjLOD(&t, GX_NEAR_MIP_LIN, GX_NEAR, 0.0, 1.0, -1.0, GX_FALSE, GX_TRUE, "
+      "GX_ANISO_2);\n"
+      "GX_LoadTexObj(&t, GX_TEXMAP0);\n");
+  ASSERT_TRUE(st.textures[0].has_value());
+  const TextureObject& t = *st.textures[0];
+  EXPECT_EQ(t.levels, 2);
+  EXPECT_EQ(t.data.size(), 64u);
+  EXPECT_FALSE(t.linear);  // mag GX_NEAR
+  ASSERT_TRUE(t.lod.has_value());
+  EXPECT_EQ(t.lod->min_filter, 2);  // GX_NEAR_MIP_LIN through _gx2HWFiltConv
+  EXPECT_EQ(t.lod->bias, -32);      // -1.0 in s2.5
+  EXPECT_EQ(t.lod->max_lod, 16);    // 1.0 in u4.4
+  EXPECT_EQ(t.lod->max_aniso, 1);
+  EXPECT_FALSE(t.lod->diagonal);  // edgelod GX_TRUE
+}
+
+// fail_arg takes the argument's index: 8 (one past the end) read outside the call's arguments
+// (found by ./test.sh --sanitize), 5 named the wrap mode for a bad format.
+TEST(GxProgram, MipmapsOnASizeThatDoesNotHalveAreRefusedAtTheWidth) {
   try {
-    run("u8 a[32] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 8, 1, GX_TF_I8, GX_CLAMP, GX_CLAMP, "
+    run("u8 a[64] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 6, 4, GX_TF_I8, GX_CLAMP, GX_CLAMP, "
         "GX_TRUE);\n");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(e.what_only().find("mipmapping is not modelled"), std::string::npos) << e.what();
-    EXPECT_EQ(e.where(), "3:58") << e.what();  // GX_TRUE
-    EXPECT_NE(e.what_only().find("argument 8:"), std::string::npos) << e.what();
+    EXPECT_NE(e.what_only().find("must be a power of two, found 6x4"), std::string::npos)
+        << e.what();
+    EXPECT_NE(e.what_only().find("argument 3:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GxProgram, ALodRangePastTheArraysLevelsIsRefusedAtTheLoad) {
+  try {
+    // 32 bytes: level 0 only; max LOD 1.0 reads level 1.
+    run("u8 a[32] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 8, 4, GX_TF_I8, GX_CLAMP, GX_CLAMP, "
+        "GX_TRUE);\nGX_InitTexObjLOD(&t, GX_LIN_MIP_LIN, GX_LINEAR, 0.0, 1.0, 0.0, GX_FALSE, "
+        "GX_TRUE, GX_ANISO_1);\nGX_LoadTexObj(&t, GX_TEXMAP0);\n");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.what_only().find("reads 2 levels, a holds 1 (32 bytes)"), std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.where().substr(0, 2), "5:") << e.what();
   }
 }
 
@@ -285,6 +323,17 @@ TEST(GxVariantParse, AcceptsTheGrammarAndRefusesTheRest) {
   EXPECT_EQ(parse_gx_variant("lobe=xf-spec:coverage=console").coverage, CoverageRule::Console);
   EXPECT_EQ(parse_gx_variant("t=vertex").coverage, CoverageRule::Dolphin);
   EXPECT_EQ(to_string(parse_gx_variant("t=vertex:coverage=dolphin")), "t=vertex");
+  // The mip axes: their canonical order after :map=, the bias as the shortest double.
+  EXPECT_EQ(to_string(parse_gx_variant("wrap=repeat:mip-bias=-1.25:mip=near:t=vertex")),
+            "t=vertex:mip=near:mip-bias=-1.25:wrap=repeat");
+  EXPECT_EQ(parse_gx_variant("t=vertex:mip=lin").mip, GxVariant::Mip::Linear);
+  EXPECT_EQ(to_string(parse_gx_variant("t=vertex:mip-bias=0:mip=lin:wrap=clamp")),
+            "t=vertex:mip=lin");
+  for (const char* bad :
+       {"t=vertex:mip=trilinear", "t=vertex:mip-bias=1", "t=vertex:mip=lin:mip-bias=4",
+        "t=vertex:mip=lin:mip-bias=-4.5", "t=vertex:mip=lin:mip-bias=x", "t=vertex:wrap=mirror"}) {
+    EXPECT_THROW(parse_gx_variant(bad), InputError) << bad;
+  }
   for (const char* bad :
        {"", "t=pixel", "lut=1", "lut=1025", "t=vertex:t=vertex", "lobe=xf-spec:lut=64", "pow=exact",
         "t=vertex:lut=64x", "light-range=-1", "light-range=x", "light-range=1:light-range=2",

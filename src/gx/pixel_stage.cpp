@@ -26,6 +26,10 @@ struct DrawPlan {
     int stage = 0;
     const TextureObject* texture = nullptr;
     size_t texcoord = 0;
+    // The texture's LOD can change its texels (mipmaps, or min and mag filters that differ):
+    // the LOD of each pixel's 2x2 block is computed. Otherwise level 0 with the mag filter, as
+    // every LOD would give, and nothing more is computed (TextureObject::needs_lod).
+    bool lod = false;
   };
   TevPlan tev;
   std::array<Fetch, kMaxTevStages> fetches{};
@@ -48,6 +52,7 @@ struct DrawPlan {
       int tc = stage.texcoord == kTexCoordNull ? 0 : stage.texcoord;
       if (tc >= texgens) tc = 0;
       f.texcoord = static_cast<size_t>(tc);
+      f.lod = f.texture != nullptr && f.texture->needs_lod();
     }
   }
 };
@@ -118,7 +123,21 @@ void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, b
         u[j] = uv[0][passed[j]];
         v[j] = uv[1][passed[j]];
       }
-      sample_texture_at(*f.texture, u, v, num_passed, texels);
+      if (f.lod) {
+        // [DSW Rasterizer.cpp BuildBlock, CalculateLOD]: one LOD per 2x2 block, from the
+        // texture coordinates of its pixels, the texture's LOD fields deciding the rest.
+        LodChoice lods[kPixelLanes];
+        const TextureObject& tex = *f.texture;
+        for (int j = 0; j < num_passed; ++j) {
+          const int i = passed[j];
+          lods[j] = quad_lod(*tex.lod, tex.linear,
+                             quad_texcoords(t, static_cast<int>(f.texcoord), pixels.x[i],
+                                            pixels.y[i]));
+        }
+        sample_texture_lod_at(tex, u, v, lods, num_passed, texels);
+      } else {
+        sample_texture_at(*f.texture, u, v, num_passed, texels);
+      }
     }
     for (int j = 0; j < num_passed; ++j) lanes.tev.set_texel(f.stage, passed[j], texels[j]);
   }

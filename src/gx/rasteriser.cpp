@@ -182,22 +182,35 @@ void raster_pixel_attributes(const Triangle& t, s32 x, s32 y, bool round_colors,
       out.color[static_cast<size_t>(c)][i] = round_colors ? rounded_color(v) : raster_color(v);
     }
   }
-  if (t.texgens == 0) return;
-  // [DSW BuildBlock]: "invW = 1.0f / WSlope.GetValue(x, y)"; "q = TexSlopes[i][2] * invW; if (q
-  // != 0.0f) projection = invW / q"; s and t times the projection.
-  const float inv_w = 1.0f / slope_value(t.w, t.origin, x, y);
   for (int g = 0; g < t.texgens; ++g) {
-    const auto& s = t.tex[static_cast<size_t>(g)];
-    float projection = inv_w;
-    const float q = slope_value(s[2], t.origin, x, y) * inv_w;
-    if (q != 0.0f) projection = inv_w / q;
-    out.uv[static_cast<size_t>(g)] = {
-        raster_texcoord(slope_value(s[0], t.origin, x, y) * projection),
-        raster_texcoord(slope_value(s[1], t.origin, x, y) * projection)};
+    const std::array<float, 2> st = raster_texcoord_float(t, g, x, y);
+    out.uv[static_cast<size_t>(g)] = {raster_texcoord(st[0]), raster_texcoord(st[1])};
   }
 }
 
 }  // namespace
+
+std::array<float, 2> raster_texcoord_float(const Triangle& t, int g, s32 x, s32 y) {
+  // [DSW BuildBlock]: "invW = 1.0f / WSlope.GetValue(x, y)"; "q = TexSlopes[i][2] * invW; if (q
+  // != 0.0f) projection = invW / q"; s and t times the projection.
+  const float inv_w = 1.0f / slope_value(t.w, t.origin, x, y);
+  const auto& s = t.tex[static_cast<size_t>(g)];
+  float projection = inv_w;
+  const float q = slope_value(s[2], t.origin, x, y) * inv_w;
+  if (q != 0.0f) projection = inv_w / q;
+  return {slope_value(s[0], t.origin, x, y) * projection,
+          slope_value(s[1], t.origin, x, y) * projection};
+}
+
+QuadTexcoords quad_texcoords(const Triangle& t, int g, s32 x, s32 y) {
+  // [DSW DrawTriangleFrontFace]: blocks start at "minx & ~(BLOCK_SIZE - 1)", so every block's
+  // corner is even; BuildBlock computes its four pixels' coordinates whether covered or not.
+  const s32 bx = x & ~1, by = y & ~1;
+  const std::array<float, 2> p00 = raster_texcoord_float(t, g, bx, by);
+  const std::array<float, 2> p10 = raster_texcoord_float(t, g, bx + 1, by);
+  const std::array<float, 2> p01 = raster_texcoord_float(t, g, bx, by + 1);
+  return {p00[0], p00[1], p10[0], p10[1], p01[0], p01[1]};
+}
 
 void raster_pixel(const Triangle& t, s32 x, s32 y, bool round_colors, RasterPixel& out) {
   out.z = raster_pixel_depth(t, x, y);

@@ -22,6 +22,7 @@
 #include <cstdint>
 
 #include "gx/clipper.h"
+#include "gx/texture_lod.h"
 
 namespace lt::gx {
 
@@ -148,6 +149,13 @@ bool setup_triangle(const RasterVertex& v0, const RasterVertex& v1, const Raster
 // half-space tests solved exactly in integers, which is the per-pixel test of
 // DrawTriangleFrontFace (its 2x2 blocks only skip pixels no edge test would pass).
 void covered_span(const Triangle& t, s32 y, s32& x_begin, s32& x_end);
+
+// Texture coordinate g (s, t) at pixel (x, y) in float, before raster_texcoord's conversion to
+// s17.7: what Dolphin's BuildBlock stores in its block's pixels [DSW BuildBlock].
+std::array<float, 2> raster_texcoord_float(const Triangle& t, int g, s32 x, s32 y);
+// Texture coordinate g at the three pixels of the 2x2 block holding (x, y) that Dolphin's LOD
+// reads (texture_lod.h QuadTexcoords) [DSW BuildBlock, CalculateLOD].
+QuadTexcoords quad_texcoords(const Triangle& t, int g, s32 x, s32 y);
 
 // What the TEV receives at one pixel [DSW Draw, BuildBlock].
 struct RasterPixel {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <type_traits>
 
 #include "core/error.h"
@@ -81,6 +82,17 @@ size_t texel_offset(const TileShape& shape, int width, int x, int y) {
          static_cast<size_t>(in_tile * shape.bytes_per_texel);
 }
 
+// One level of a texture: level 0, or one of its mip levels (the tiles right after the levels
+// before it). `texture` gives the format, the wraps and the palette.
+struct LevelView {
+  const TextureObject* texture = nullptr;
+  const u8* data = nullptr;
+  size_t bytes = 0;
+  int width = 0, height = 0;
+};
+
+LevelView level_view(const TextureObject& texture, int level);
+
 // One texel, decoded [DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel]:
 // - I8 replicates its one byte into every component.
 // - IA8 stores alpha in the first byte and intensity in the second: Dolphin reads the two bytes
@@ -91,12 +103,12 @@ size_t texel_offset(const TileShape& shape, int width, int x, int y) {
 // - RGBA8: a = byte 0, r = byte 1 of the texel's pair in the first half, g = byte 0 and b = byte
 //   1 of its pair in the second half (offset + 32).
 // Always inlined: the bilinear sampler calls it four times a pixel.
-// Texel (x, y) of a texture of format Format (tile_shape has refused the formats not modelled).
+// Texel (x, y) of a level of format Format (tile_shape has refused the formats not modelled).
 template <u8 Format>
-[[gnu::always_inline]] inline Color8 fetch(const TextureObject& tex, const TileShape& shape, int x,
+[[gnu::always_inline]] inline Color8 fetch(const LevelView& tex, const TileShape& shape, int x,
                                            int y) {
   const size_t o = texel_offset(shape, tex.width, x, y);
-  const u8* d = tex.data.data();
+  const u8* d = tex.data;
   if constexpr (Format == kTexFormatI8) {
     return {d[o], d[o], d[o], d[o]};
   } else if constexpr (Format == kTexFormatIA8) {
@@ -116,9 +128,11 @@ template <u8 Format>
 // TextureUnitDecodeByteIdentically holds them to it).
 constexpr u8 kAnyFormat = 0xff;
 template <>
-[[gnu::always_inline]] inline Color8 fetch<kAnyFormat>(const TextureObject& tex, const TileShape&,
+[[gnu::always_inline]] inline Color8 fetch<kAnyFormat>(const LevelView& level, const TileShape&,
                                                        int x, int y) {
-  const TextureView view{static_cast<TexFormat>(tex.format), tex.width, tex.height, tex.data};
+  const TextureObject& tex = *level.texture;
+  const TextureView view{static_cast<TexFormat>(tex.format), level.width, level.height,
+                         std::span<const u8>(level.data, level.bytes)};
   const TlutView tlut{static_cast<TlutFormat>(tex.tlut_format), tex.tlut};
   return decode_texel(view, x, y, &tlut);
 }
@@ -215,14 +229,33 @@ std::vector<u8> from_tiles(u8 format, int width, int height, const std::vector<u
 
 namespace {
 
+// Bytes of every level of `texture`.
+size_t data_bytes(const TextureObject& texture) {
+  const std::optional<TexFormat> f = tex_format_from_number(texture.format);
+  LT_CHECK(f.has_value(), "texture format must be a GX_TF_* format");
+  check_size(texture.width, texture.height);
+  return mip_chain_bytes(*f, texture.width, texture.height, texture.levels);
+}
+
 // What every sample of a texture relies on, checked once per call of sample_texture_at rather
 // than per texel.
 void check_texture(const TextureObject& texture) {
-  LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
-           "texture data must hold the whole tiles of its size");
+  LT_CHECK(texture.data.size() == data_bytes(texture),
+           "texture data must hold the whole tiles of its size and levels");
   for (u8 mode : {texture.wrap_s, texture.wrap_t})
     LT_CHECK(mode == kClamp || mode == kRepeat || mode == kMirror || mode == 3,
              "wrap mode must be GX_CLAMP, GX_REPEAT, GX_MIRROR (or 3)");
+}
+
+LevelView level_view(const TextureObject& texture, int level) {
+  LevelView view;
+  view.texture = &texture;
+  view.width = std::max(1, texture.width >> level);
+  view.height = std::max(1, texture.height >> level);
+  const size_t offset = level_offset(texture.format, texture.width, texture.height, level);
+  view.data = texture.data.data() + offset;
+  view.bytes = texture.data.size() - offset;
+  return view;
 }
 
 // One texture's format, picked once for a run of pixels.
@@ -243,13 +276,14 @@ void with_format(u8 format, Body&& body) {
 }
 
 template <u8 Format>
-Color8 sample_one(const TextureObject& texture, const TileShape& shape, s32 u, s32 v) {
-  const int w = texture.width, h = texture.height;
-  if (!texture.linear) {
+Color8 sample_one(const LevelView& level, const TileShape& shape, bool linear, s32 u, s32 v) {
+  const TextureObject& texture = *level.texture;
+  const int w = level.width, h = level.height;
+  if (!linear) {
     // Nearest: the texel containing (u, v), u >> 7 (flooring) [DSW SampleMip].
     const int x = static_cast<int>(wrap(std::int64_t{u} >> 7, texture.wrap_s, w));
     const int y = static_cast<int>(wrap(std::int64_t{v} >> 7, texture.wrap_t, h));
-    return fetch<Format>(texture, shape, x, y);
+    return fetch<Format>(level, shape, x, y);
   }
   // Bilinear [DSW SampleMip]: the -64 (half a texel) moves the sample to texel centres; the
   // arithmetic shift floors negative coordinates; 7-bit weights, products summed in 14
@@ -261,10 +295,10 @@ Color8 sample_one(const TextureObject& texture, const TileShape& shape, s32 u, s
   const int x1 = static_cast<int>(wrap((us >> 7) + 1, texture.wrap_s, w));
   const int y0 = static_cast<int>(wrap(vs >> 7, texture.wrap_t, h));
   const int y1 = static_cast<int>(wrap((vs >> 7) + 1, texture.wrap_t, h));
-  const Color8 t00 = fetch<Format>(texture, shape, x0, y0);
-  const Color8 t10 = fetch<Format>(texture, shape, x1, y0);
-  const Color8 t01 = fetch<Format>(texture, shape, x0, y1);
-  const Color8 t11 = fetch<Format>(texture, shape, x1, y1);
+  const Color8 t00 = fetch<Format>(level, shape, x0, y0);
+  const Color8 t10 = fetch<Format>(level, shape, x1, y0);
+  const Color8 t01 = fetch<Format>(level, shape, x0, y1);
+  const Color8 t11 = fetch<Format>(level, shape, x1, y1);
   const int w00 = (128 - fs) * (128 - ft), w10 = fs * (128 - ft);
   const int w01 = (128 - fs) * ft, w11 = fs * ft;
   Color8 out;
@@ -273,16 +307,45 @@ Color8 sample_one(const TextureObject& texture, const TileShape& shape, s32 u, s
   return out;
 }
 
+// [DSW TextureSampler.cpp Sample, SampleMip]: the level(s) the LOD picks, the coordinate shifted
+// down to the level ("s >>= mip", an arithmetic shift), and a linear mip filter's blend of two
+// levels, (16 - f) and f sixteenths of each component, summed and shifted down by 4.
+template <u8 Format>
+Color8 sample_lod(const std::vector<LevelView>& levels, const TileShape& shape,
+                  const TextureLod& mode, LodChoice choice, s32 u, s32 v) {
+  const MipChoice mip = mip_choice(mode, choice.lod);
+  const auto at = [&](int level) {
+    LT_CHECK(level < static_cast<int>(levels.size()), "a LOD past the texture's levels");
+    return sample_one<Format>(levels[static_cast<size_t>(level)], shape, choice.linear,
+                              u >> level, v >> level);
+  };
+  const Color8 base = at(mip.level);
+  if (mip.fraction == 0) return base;
+  const Color8 next = at(mip.level + 1);
+  Color8 out;
+  for (int c = 0; c < 4; ++c)
+    out[c] = static_cast<u8>((base[c] * (16 - mip.fraction) + next[c] * mip.fraction) >> 4);
+  return out;
+}
+
 }  // namespace
+
+size_t level_offset(u8 format, int width, int height, int level) {
+  if (level == 0) return 0;
+  const std::optional<TexFormat> f = tex_format_from_number(format);
+  LT_CHECK(f.has_value(), "texture format must be a GX_TF_* format");
+  return mip_chain_bytes(*f, width, height, level);
+}
 
 Color8 texel_at(const TextureObject& texture, int x, int y) {
   LT_CHECK(x >= 0 && x < texture.width && y >= 0 && y < texture.height, "texel out of range");
-  LT_CHECK(texture.data.size() == tiled_size(texture.format, texture.width, texture.height),
-           "texture data must hold the whole tiles of its size");
+  LT_CHECK(texture.data.size() == data_bytes(texture),
+           "texture data must hold the whole tiles of its size and levels");
   const TileShape shape = shape_for_sampling(texture.format);
+  const LevelView level = level_view(texture, 0);
   Color8 out;
   with_format(texture.format,
-              [&](auto format) { out = fetch<decltype(format)::value>(texture, shape, x, y); });
+              [&](auto format) { out = fetch<decltype(format)::value>(level, shape, x, y); });
   return out;
 }
 
@@ -290,9 +353,23 @@ void sample_texture_at(const TextureObject& texture, const s32* u, const s32* v,
                        Color8* out) {
   const TileShape shape = shape_for_sampling(texture.format);
   check_texture(texture);
+  const LevelView level = level_view(texture, 0);
   with_format(texture.format, [&](auto format) {
     for (int k = 0; k < n; ++k)
-      out[k] = sample_one<decltype(format)::value>(texture, shape, u[k], v[k]);
+      out[k] = sample_one<decltype(format)::value>(level, shape, texture.linear, u[k], v[k]);
+  });
+}
+
+void sample_texture_lod_at(const TextureObject& texture, const s32* u, const s32* v,
+                           const LodChoice* lod, int n, Color8* out) {
+  LT_CHECK(texture.lod.has_value(), "sampling by LOD needs the texture's LOD fields");
+  const TileShape shape = shape_for_sampling(texture.format);
+  check_texture(texture);
+  std::vector<LevelView> levels;
+  for (int k = 0; k < texture.levels; ++k) levels.push_back(level_view(texture, k));
+  with_format(texture.format, [&](auto format) {
+    for (int k = 0; k < n; ++k)
+      out[k] = sample_lod<decltype(format)::value>(levels, shape, *texture.lod, lod[k], u[k], v[k]);
   });
 }
 

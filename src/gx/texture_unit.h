@@ -4,10 +4,12 @@
 // colour formats a thickness map uses) decoded into TEXC = (r, g, b), TEXA = a.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gx/gx_types.h"
+#include "gx/texture_lod.h"
 
 namespace lt::gx {
 
@@ -27,7 +29,17 @@ struct TextureObject {
   // Where in TMEM the palette is loaded: the TLUT register's offset in 512-byte units
   // (gx/tmem.h tlut_tmem_offset), as GX_LoadTlut and GX_LoadTexObj leave it.
   u16 tlut_offset = 0;
+  // Mip levels (GX_InitTexObj with mipmap GX_TRUE): `data` holds `levels` levels, level k
+  // max(1, width >> k) x max(1, height >> k), each right after the whole tiles of the one before
+  // (gx/texture_format.h mip_chain_bytes), as the console lays them in memory.
+  int levels = 1;
+  // GX_InitTexObjLOD's fields, `linear` then being the mag filter. Empty: GX_InitTexObj's
+  // without mipmaps (min filter = mag filter = `linear`, LOD range 0), where no LOD changes a
+  // texel; such a texture is sampled as before mipmaps were modelled.
+  std::optional<TextureLod> lod;
   bool operator==(const TextureObject&) const = default;
+  // Whether the pixel stage must compute a LOD for this texture (texture_lod.h lod_matters).
+  bool needs_lod() const { return lod.has_value() && lod_matters(*lod, linear); }
 };
 
 inline constexpr u8 kTexFormatI8 = 1, kTexFormatIA8 = 3, kTexFormatRGB565 = 4,
@@ -62,6 +74,20 @@ Color8 sample_texture(const TextureObject& texture, s32 u, s32 v);
 // shape and checks are decoded once for all of them (the pixel stage's runs of pixels).
 void sample_texture_at(const TextureObject& texture, const s32* u, const s32* v, int n,
                        Color8* out);
+
+// The filtered texel at (u, v) for a LOD and filter quad_lod chose (texture_lod.h): level
+// mip_choice(lod).level, or the blend of it and the next [DSW TextureSampler.cpp Sample]; at a
+// level k the coordinate is u >> k (flooring) and the level's size max(1, size >> k) ("reduce
+// sample location and texture size to mip level" [DSW SampleMip]; equal to Dolphin's
+// ((size - 1) >> k) + 1 for the power-of-two sizes a mipmapped texture has). The texture's
+// `lod` must be set and its levels hold every level reachable_levels names (LT_CHECK: the
+// program reader and the scene refuse the rest).
+void sample_texture_lod_at(const TextureObject& texture, const s32* u, const s32* v,
+                           const LodChoice* lod, int n, Color8* out);
+
+// Byte offset of level `level` in a mipmapped texture's data: the sum of the levels before it,
+// each whole tiles [DSW SampleMip, "move texture pointer to mip location"].
+size_t level_offset(u8 format, int width, int height, int level);
 
 // One unfiltered texel (x, y) of a tiled texture, decoded as sample_texture reads it.
 Color8 texel_at(const TextureObject& texture, int x, int y);

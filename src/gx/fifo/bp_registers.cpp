@@ -135,19 +135,28 @@ u32 z_mode(const ZMode& z) {
   return place(z.enable, 0, 1) | place(z.func, 1, 3) | place(z.update, 4, 1);
 }
 
-// GX_InitTexObj [OGC gx.c L3226-3298]: mode0 wrap s 0-1, wrap t 2-3, mag filter 4 (1 linear),
-// min filter 5-7 (4 linear, 0 near: _gx2HWFiltConv), LOD fields zero; mode1 (LOD range) zero;
-// image0 width - 1 0-9, height - 1 10-19, format 20-23; image3 the physical address >> 5
-// [DHW BPMemory.h TexMode0, TexMode1, TexImage0, TexImage3]. image1 / image2: the TMEM region
-// (tmem_region).
+// GX_InitTexObj [OGC gx.c L3226-3298] and GX_InitTexObjLOD [L3310-3334]: mode0 wrap s 0-1,
+// wrap t 2-3, mag filter 4 (1 linear), min filter 5-7 (4 linear, 0 near, the mip filters 1, 2,
+// 5, 6: _gx2HWFiltConv), diagonal LOD 8 (!edgelod), LOD bias 9-16 (s2.5), max anisotropy 19-20,
+// bias clamp 21; mode1 min LOD 0-7, max LOD 8-15 (u4.4); without LOD fields (no mipmaps) the
+// min filter is the mag filter and the rest zero. image0 width - 1 0-9, height - 1 10-19,
+// format 20-23; image3 the physical address >> 5 [DHW BPMemory.h TexMode0, TexMode1, TexImage0,
+// TexImage3]. image1 / image2: the TMEM region (tmem_region), a mipmapped texture's when it has
+// levels past the first.
 TextureRegisters texture_registers(const TextureObject& t, int map, u32 address) {
   TextureRegisters r{};
+  TextureLod lod;
+  lod.min_filter = t.linear ? 4 : 0;
+  if (t.lod) lod = *t.lod;
   r.mode0 = place(t.wrap_s, 0, 2) | place(t.wrap_t, 2, 2) | place(t.linear, 4, 1) |
-            place(t.linear ? 4 : 0, 5, 3);
-  r.mode1 = 0;
+            place(lod.min_filter, 5, 3) | place(lod.diagonal, 8, 1) |
+            place(static_cast<u8>(lod.bias), 9, 8) | place(lod.max_aniso, 19, 2) |
+            place(lod.bias_clamp, 21, 1);
+  r.mode1 = place(lod.min_lod, 0, 8) | place(lod.max_lod, 8, 8);
   r.image0 = place(static_cast<u32>(t.width - 1), 0, 10) |
              place(static_cast<u32>(t.height - 1), 10, 10) | place(t.format, 20, 4);
-  const TexCacheRegion region = texture_cache_region(static_cast<TexFormat>(t.format), false, map);
+  const TexCacheRegion region =
+      texture_cache_region(static_cast<TexFormat>(t.format), t.levels > 1, map);
   r.image1 = tmem_region(region.even);
   r.image2 = tmem_region(region.odd);
   r.image3 = place(address >> 5, 0, 24);

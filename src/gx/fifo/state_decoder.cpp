@@ -111,6 +111,20 @@ DecodedPass decode_pass(const RegisterFile& r) {
     t.wrap_s = static_cast<u8>(field(mode0, 0, 2));
     t.wrap_t = static_cast<u8>(field(mode0, 2, 2));
     t.linear = field(mode0, 4, 1) != 0;
+    // The LOD fields (bp_registers.cpp texture_registers): absent when they are GX_InitTexObj's
+    // without mipmaps (min filter = mag filter, the rest zero).
+    const u32 mode1 = r.bp[static_cast<size_t>(0x84 + offset)];
+    TextureLod lod;
+    lod.min_filter = static_cast<u8>(field(mode0, 5, 3));
+    lod.diagonal = field(mode0, 8, 1) != 0;
+    lod.bias = static_cast<std::int8_t>(static_cast<u8>(field(mode0, 9, 8)));
+    lod.max_aniso = static_cast<u8>(field(mode0, 19, 2));
+    lod.bias_clamp = field(mode0, 21, 1) != 0;
+    lod.min_lod = static_cast<u8>(field(mode1, 0, 8));
+    lod.max_lod = static_cast<u8>(field(mode1, 8, 8));
+    TextureLod plain;
+    plain.min_filter = t.linear ? 4 : 0;
+    if (lod != plain) t.lod = lod;
     t.width = static_cast<int>(field(image0, 0, 10)) + 1;
     t.height = static_cast<int>(field(image0, 10, 10)) + 1;
     t.format = static_cast<u8>(field(image0, 20, 4));
@@ -196,6 +210,10 @@ GxState canonical_state(const GxState& in, const TextureObject* map0_fallback) {
   for (auto& t : s.textures)
     if (t) {
       t->data.clear();
+      t->levels = 1;  // the registers hold no level count: the LOD range says what is read
+      TextureLod plain;
+      plain.min_filter = t->linear ? 4 : 0;
+      if (t->lod && *t->lod == plain) t->lod.reset();
       t->tlut.clear();  // in memory, loaded by BP_LOADTLUT1; the register holds where and how
     }
   for (size_t i = 0; i < 10; ++i) s.texgen.matrices[i] = {};

@@ -5,6 +5,7 @@
 #include "gx/program/machine.h"
 #include "gx/program/vertex_declarations.h"
 #include "gx/texture_format.h"
+#include "gx/texture_lod.h"
 #include "gx/tmem.h"
 
 namespace lt::gx::interp {
@@ -12,9 +13,13 @@ namespace lt::gx::interp {
 namespace {
 
 // GX_InitTexObj's and GX_InitTexObjCI's shared arguments 0..7 (object, image, width, height,
-// format, wraps, mipmap) into the object, the image checked to hold the format's tiles.
+// format, wraps, mipmap) into the object, the image checked to hold the format's tiles. With
+// mipmap GX_TRUE the image holds as many levels as its bytes take (mip_chain_bytes), each half
+// the size of the one before: the size must be a power of two (the console halves the size
+// registers, and Dolphin's level addressing [DSW TextureSampler.cpp SampleMip] rounds no level
+// to whole tiles but the first: both agree only there); GX_LoadTexObj then checks the levels
+// against the LOD range.
 void init_texture_object(Machine& m) {
-  if (m.b(7)) m.fail_arg(7, "mipmapping is not modelled (pass GX_FALSE)");
   TexObject& t = m.tex(0);
   t.array = m.name(1);
   t.texture = TextureObject{};
@@ -23,13 +28,41 @@ void init_texture_object(Machine& m) {
   t.texture.format = m.u(4);
   t.texture.wrap_s = m.u(5);
   t.texture.wrap_t = m.u(6);
-  t.texture.linear = true;  // mipmap GX_FALSE: linear min and mag [OGC gx.c L3236]
+  t.texture.linear = true;  // linear mag (and min without mipmaps) [OGC gx.c L3236-3247]
   t.initialised = true;
   t.tlut_name = -1;
   const size_t need = tiled_size(t.texture.format, t.texture.width, t.texture.height);
   if (m.bytes(1).size() < need)
     m.fail_arg(1, m.name(1) + " holds " + std::to_string(m.bytes(1).size()) +
                       " bytes, the texture needs " + std::to_string(need));
+  if (!m.b(7)) return;
+  const int w = t.texture.width, h = t.texture.height;
+  if ((w & (w - 1)) != 0 || (h & (h - 1)) != 0)
+    m.fail_arg(2, "a mipmapped texture's size must be a power of two, found " +
+                      std::to_string(w) + "x" + std::to_string(h));
+  const auto format = static_cast<TexFormat>(t.texture.format);
+  t.texture.lod = mipmapped_texture_lod(is_indexed(format));
+  int levels = 1;
+  while (levels < full_mip_levels(w, h) &&
+         mip_chain_bytes(format, w, h, levels + 1) <= m.bytes(1).size())
+    ++levels;
+  t.texture.levels = levels;
+}
+
+// The LOD range a loaded texture's sampler can reach must lie in its image's levels (on the
+// console a LOD past them reads whatever memory follows).
+void check_lod_levels(const Machine& m, const TexObject& t) {
+  if (!t.texture.lod) return;
+  const int reach = reachable_levels(*t.texture.lod);
+  if (reach <= t.texture.levels) return;
+  const auto levels_of = [](u8 lod) {  // u4.4: whole levels and sixteenths
+    return std::to_string(lod >> 4) + ((lod & 15) ? " " + std::to_string(lod & 15) + "/16" : "");
+  };
+  m.fail_arg(0, m.name(0) + "'s LOD range (min " + levels_of(t.texture.lod->min_lod) +
+                    ", max " + levels_of(t.texture.lod->max_lod) + ") reads " +
+                    std::to_string(reach) + " levels, " + t.array + " holds " +
+                    std::to_string(t.texture.levels) + " (" +
+                    std::to_string(m.bytes_of(t.array).size()) + " bytes)");
 }
 
 // The largest palette index a colour-indexed image's bytes hold (padding texels included: the
@@ -163,29 +196,50 @@ void add_pixel_calls(CallTable& table) {
           m.tex(0).texture.wrap_s = m.u(1);
           m.tex(0).texture.wrap_t = m.u(2);
         }}},
+      // GX_InitTexObjFilterMode [OGC gx.c L3358-3364]: the min filter (through _gx2HWFiltConv)
+      // and the mag filter, the other LOD fields kept.
       {"GX_InitTexObjFilterMode",
        {{tex_p, integer(G::TexFilter, 0, 5), integer(G::TexFilter, 0, 1)},
         [](Machine& m) {
-          // Without mipmaps the sampler never minifies differently from magnifying a LUT here.
-          if (m.i(1) != m.i(2))
-            m.fail_call("different min and mag filters are not modelled (no mipmaps)");
-          m.tex(0).texture.linear = m.i(2) == 1;
+          TextureObject& t = m.tex(0).texture;
+          const TextureLod filters = libogc_texture_lod(static_cast<int>(m.i(1)), 0, 0, 0, false,
+                                                        true, 0);
+          const bool mag_linear = m.i(2) == 1;
+          if (!t.lod && filters.min_filter == (mag_linear ? 4 : 0)) {
+            t.linear = mag_linear;  // min = mag without mipmaps: no LOD fields needed
+            return;
+          }
+          if (!t.lod) t.lod = TextureLod{};
+          t.lod->min_filter = filters.min_filter;
+          t.linear = mag_linear;
+        }}},
+      // GX_InitTexObjLOD [OGC gx.c L3310-3334] (texture_lod.h libogc_texture_lod).
+      {"GX_InitTexObjLOD",
+       {{tex_p, integer(G::TexFilter, 0, 5), integer(G::TexFilter, 0, 1), f32(), f32(), f32(),
+         integer(G::Bool, 0, 1), integer(G::Bool, 0, 1), integer(G::Anisotropy, 0, 2)},
+        [](Machine& m) {
+          TextureObject& t = m.tex(0).texture;
+          t.lod = libogc_texture_lod(static_cast<int>(m.i(1)), m.f(3), m.f(4), m.f(5), m.b(6),
+                                     m.b(7), static_cast<int>(m.i(8)));
+          t.linear = m.i(2) == 1;
         }}},
       {"GX_LoadTexObj",
        {{tex_p, integer(G::TexMap, 0, 7)},
         [](Machine& m) {
           TexObject& t = m.tex(0);
           if (!t.initialised) m.fail_arg(0, m.name(0) + " was never given to GX_InitTexObj");
+          check_lod_levels(m, t);
           TextureObject loaded = t.texture;
+          const size_t image_bytes = mip_chain_bytes(static_cast<TexFormat>(loaded.format),
+                                                     loaded.width, loaded.height, loaded.levels);
           if (t.tlut_name >= 0) {
             // The palette loaded in the texture's TLUT region now (TMEM holds it from then on).
             const auto tlut = m.loaded_tluts.find(t.tlut_name);
             if (tlut == m.loaded_tluts.end())
               m.fail_arg(0, m.name(0) + "'s TLUT " + std::to_string(t.tlut_name) +
                                 " was never loaded (GX_LoadTlut)");
-            const size_t size = tiled_size(loaded.format, loaded.width, loaded.height);
-            const int top =
-                largest_index(static_cast<TexFormat>(loaded.format), m.bytes_of(t.array), size);
+            const int top = largest_index(static_cast<TexFormat>(loaded.format),
+                                          m.bytes_of(t.array), image_bytes);
             if (static_cast<size_t>(top) * 2 >= tlut->second.bytes.size())
               m.fail_arg(0, t.array + " holds palette index " + std::to_string(top) + ", TLUT " +
                                 std::to_string(t.tlut_name) + " has " +
@@ -195,9 +249,7 @@ void add_pixel_calls(CallTable& table) {
             loaded.tlut_offset = static_cast<u16>(tlut_tmem_offset(tlut_region(t.tlut_name)));
           }
           const std::vector<u8>& src = m.bytes_of(t.array);
-          loaded.data.assign(src.begin(),
-                             src.begin() + static_cast<std::ptrdiff_t>(tiled_size(
-                                               loaded.format, loaded.width, loaded.height)));
+          loaded.data.assign(src.begin(), src.begin() + static_cast<std::ptrdiff_t>(image_bytes));
           m.state.textures[m.u(1)] = std::move(loaded);
         }}},
       // Cache maintenance: the emulator's memory is always coherent, so these change nothing;

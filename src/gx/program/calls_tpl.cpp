@@ -9,6 +9,7 @@
 #include "core/fs.h"
 #include "gx/program/machine.h"
 #include "gx/texture_format.h"
+#include "gx/texture_lod.h"
 #include "gx/tmem.h"
 #include "gx/tpl_file.h"
 
@@ -35,11 +36,14 @@ const TplTexture& texture_of_tpl(Machine& m, const std::string& call) {
     m.fail_arg(1, "texture id " + std::to_string(id) + " is past the " +
                       std::to_string(t.textures.size()) + " textures of " + t.source);
   const TplTexture& tex = t.textures[static_cast<size_t>(id)];
-  // libogc turns a max LOD above 0 into GX_InitTexObj's mipmap flag [OGC tpl.c L241].
-  if (tex.levels > 1)
-    m.fail_arg(1, "texture " + std::to_string(id) + " of " + t.source +
-                      " is a mip chain (max LOD " + std::to_string(tex.levels - 1) +
-                      "): mipmapping is not modelled");
+  // libogc turns a max LOD above 0 into GX_InitTexObj's mipmap flag [OGC tpl.c L241]; the
+  // levels' addresses halve the size, which holds only for powers of two (calls_pixel.cpp).
+  const bool power_of_two =
+      (tex.width & (tex.width - 1)) == 0 && (tex.height & (tex.height - 1)) == 0;
+  if (tex.levels > 1 && !power_of_two)
+    m.fail_arg(1, "texture " + std::to_string(id) + " of " + t.source + " is a mip chain of " +
+                      std::to_string(tex.width) + "x" + std::to_string(tex.height) +
+                      " texels: a mipmapped texture's size must be a power of two");
   if (is_indexed(tex.format) != (call == "TPL_GetTextureCI"))
     m.fail_arg(1, "texture " + std::to_string(id) + " of " + t.source + " is " +
                       format_info(tex.format).name +
@@ -69,6 +73,17 @@ void init_from_tpl(Machine& m, size_t object, const TplTexture& tex) {
   t.texture.linear = true;
   t.initialised = true;
   t.tlut_name = -1;
+  if (tex.levels <= 1) return;
+  // A mip chain: GX_InitTexObj with mipmaps on, then GX_InitTexObjLOD(min filter, mag filter,
+  // min LOD, max LOD, bias, biasclamp, biasclamp, edgelod) [OGC tpl.c L242-248]: libogc passes
+  // its biasclamp (lodbias > 0) as the edge LOD flag too and the header's edge LOD byte as the
+  // max anisotropy, so a chain without a positive bias gets diagonal LOD.
+  const bool bias_clamp = tex.lod_bias > 0.0f;
+  t.texture.levels = tex.levels;
+  t.texture.lod = libogc_texture_lod(static_cast<int>(tex.min_filter), tex.min_lod,
+                                     static_cast<float>(tex.levels - 1), tex.lod_bias, bias_clamp,
+                                     bias_clamp, tex.edge_lod);
+  t.texture.linear = tex.mag_filter == 1;
 }
 
 }  // namespace

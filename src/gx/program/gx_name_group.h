@@ -46,6 +46,7 @@ enum class NameGroup {
   TexFormat,
   TexWrap,
   TexFilter,
+  Anisotropy,
   TlutFormat,
   TlutName,
   PosMtx,

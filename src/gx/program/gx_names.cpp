@@ -108,6 +108,8 @@ std::string describe(NameGroup group) {
       return "a wrap mode (GX_CLAMP, GX_REPEAT, GX_MIRROR)";
     case NameGroup::TexFilter:
       return "a filter (GX_NEAR, GX_LINEAR, ...)";
+    case NameGroup::Anisotropy:
+      return "a maximum anisotropy (GX_ANISO_1, GX_ANISO_2, GX_ANISO_4)";
     case NameGroup::TlutFormat:
       return "a TLUT format (GX_TL_IA8, GX_TL_RGB565, GX_TL_RGB5A3)";
     case NameGroup::TlutName:

@@ -19,6 +19,7 @@ const char* kValid =
     "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
     ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4; ci4, ci8), "
+    ":mip=lin | near with an optional :mip-bias=B (-4 <= B < 4), :wrap=repeat (or :wrap=clamp), "
     ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
     ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0), the vertex storage "
     ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto) and "
@@ -105,6 +106,15 @@ GxVariant parse_gx_variant(const std::string& text) {
             " is not a map format (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4; ci4, ci8)");
       if (named->format != TexFormat::RGBA8 && named->format != TexFormat::I8)
         v.map_format = named->format;
+    } else if (key == "mip" && first) {
+      v.mip = either("lin", "near") == "lin" ? GxVariant::Mip::Linear : GxVariant::Mip::Near;
+    } else if (key == "mip-bias" && first) {
+      double b = 0;
+      if (!parses_whole(value, b) || !std::isfinite(b) || b < -4 || b >= 4)
+        bad("mip-bias=" + value + " is not a LOD bias of -4 <= B < 4 levels");
+      v.mip_bias = b;
+    } else if (key == "wrap" && first) {
+      v.map_repeat = either("repeat", "clamp") == "repeat";
     } else if (key == "out" && first) {
       v.out = either("efb", "xfb") == "xfb" ? GxVariant::Output::Xfb : GxVariant::Output::Efb;
     } else if (key == "coverage" && first) {
@@ -135,6 +145,8 @@ GxVariant parse_gx_variant(const std::string& text) {
     }
   }
   if (text.empty()) bad("empty variant");
+  if (seen.count("mip-bias") && v.mip == GxVariant::Mip::Off)
+    bad("mip-bias= biases the LOD of mipmapped maps: give :mip=lin or :mip=near");
   if (v.lobe == GxVariant::Lobe::XfSpec && (seen.count("t") || seen.count("lut")))
     bad("lobe=xf-spec uses no texture, so it takes no t= or lut=");
   // t=vertex computes V and L exactly per vertex on the CPU: a per-object view would only lose.
@@ -162,6 +174,13 @@ std::string to_string(const GxVariant& v) {
     for (const MapFormatName& m : kMapFormats)
       if (m.format == *v.map_format) s += std::string(":map=") + m.name;
   }
+  if (v.mip != GxVariant::Mip::Off) s += v.mip == GxVariant::Mip::Linear ? ":mip=lin" : ":mip=near";
+  if (v.mip_bias != 0) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v.mip_bias);
+    s += ":mip-bias=" + std::string(buf, r.ptr);
+  }
+  if (v.map_repeat) s += ":wrap=repeat";
   if (v.out == GxVariant::Output::Xfb) s += ":out=xfb";
   if (v.coverage == CoverageRule::Console) s += ":coverage=console";
   if (v.light_range) {

@@ -37,6 +37,18 @@
 //                       its 16,384 entries need 32 KiB of TLUT, and libogc's GX_Init makes no
 //                       TLUT region over 1,024 entries (gx/tmem.h); at 16 bits a texel it is
 //                       RGB565's size anyway
+// Two axes mipmap the maps (thickness and albedo; docs/textures.md "Mipmaps"), each map's full
+// chain made by gx/mip_chain.h's box filter and stored after level 0 as the console lays it:
+//   :mip=lin            GX_LIN_MIP_LIN (trilinear), LOD range 0 .. the last level
+//   :mip=near           GX_NEAR_MIP_NEAR (nearest texel of the nearest level)
+//   :mip-bias=B         the LOD bias in levels, -4 <= B < 4 (GX_InitTexObjLOD's lodbias, stored
+//                       in 1/32 level steps; default 0); only with :mip=
+// and one the maps' wrap:
+//   :wrap=repeat        the thickness maps GX_REPEAT both ways (default :wrap=clamp, GX_CLAMP as
+//                       the reference's CLAMP_TO_EDGE; an albedo map keeps its sampler's wrap);
+//                       the console's repeat masks the texel index, so the sides must be
+//                       powers of two
+// Mipmaps need power-of-two maps too (the console halves each level's size registers).
 // One axis picks where a directional light's translucency base (light x albedo x tint x (a + s))
 // is multiplied in (docs/advise.md, "What the gx error is made of"):
 //   :base=tev           in the TEV, as a konst colour folded into the LUT stage, with COLOR0 the
@@ -94,6 +106,11 @@ struct GxVariant {
   // GX_TF_I8); never RGBA8 or I8 (the parser keeps the default unset, so equal images compare
   // equal).
   std::optional<TexFormat> map_format;
+  // :mip= and :mip-bias= (the maps' mip chains), :wrap= (their wrap mode).
+  enum class Mip { Off, Near, Linear };
+  Mip mip = Mip::Off;
+  double mip_bias = 0;
+  bool map_repeat = false;
   Output out = Output::Efb;
   CoverageRule coverage = CoverageRule::Dolphin;
   // A directional light's translucency base as a TEV konst colour instead of an XF light.

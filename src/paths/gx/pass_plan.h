@@ -102,6 +102,15 @@ struct TexturePlan {
     GxConst<NameGroup::TlutName> name{"GX_TLUT0"};
   };
   std::optional<Tlut> tlut;
+  // A mipmapped texture (:mip=, gx_variant.h): `levels` levels in the array, GX_InitTexObj with
+  // mipmap GX_TRUE then GX_InitTexObjLOD(min_filter, GX_LINEAR, 0, max_lod, bias, GX_FALSE,
+  // GX_TRUE, GX_ANISO_1) [OGC gx.c L3310].
+  struct Mip {
+    int levels = 1;
+    GxConst<NameGroup::TexFilter> min_filter{"GX_LIN_MIP_LIN"};
+    float max_lod = 0, bias = 0;
+  };
+  std::optional<Mip> mip;
 };
 
 // A texture matrix loaded before the texgens (GX_LoadTexMtxImm, 2x4): 12 floats row by row.

@@ -130,9 +130,22 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
                      std::string("gx: the ") + role.what + " is " + std::to_string(texels.width) +
                          "x" + std::to_string(texels.height) +
                          " texels; a GX texture is at most 1024 a side (resize the map)");
-  const ThicknessTexture tex =
+  ThicknessTexture tex =
       thickness_texture(texels.width, texels.height, *texels.rgb,
                         map_texture_format(variant_, texels.grey), map_tlut_format(texels.grey));
+  const bool mip = variant_.mip != GxVariant::Mip::Off;
+  const bool power_of_two = (texels.width & (texels.width - 1)) == 0 &&
+                            (texels.height & (texels.height - 1)) == 0;
+  if ((mip || variant_.map_repeat) && !power_of_two)
+    throw InputError(scene_.file.string(), "materials." + mat.name + role.key,
+                     std::string("gx: the ") + role.what + " is " + std::to_string(texels.width) +
+                         "x" + std::to_string(texels.height) + " texels; " +
+                         (mip ? ":mip=" : ":wrap=repeat") +
+                         " needs sides that are powers of two (the console halves and masks "
+                         "them; resize the map)");
+  if (mip)
+    add_mip_levels(tex, *texels.rgb, full_mip_levels(texels.width, texels.height),
+                   map_tlut_format(texels.grey));
   const TextureObject& o = tex.texture;
   MapTexture m;
   m.scale = tex.scale;
@@ -145,11 +158,26 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
   t.format = GxConst<NameGroup::TexFormat>::with_value(o.format);
   t.map = role.map;
   t.bytes = o.data.size();
-  t.what = std::string("The ") + role.what + ": " + t.format.name() + ", linear, clamped";
+  if (variant_.map_repeat) t.wrap_s = t.wrap_t = {"GX_REPEAT"};
+  t.what = std::string("The ") + role.what + ": " + t.format.name() + ", linear, " +
+           (variant_.map_repeat ? "repeated" : "clamped");
+  if (mip) {
+    TexturePlan::Mip m_plan;
+    m_plan.levels = o.levels;
+    if (variant_.mip == GxVariant::Mip::Near) m_plan.min_filter = {"GX_NEAR_MIP_NEAR"};
+    m_plan.max_lod = static_cast<float>(o.levels - 1);
+    m_plan.bias = static_cast<float>(variant_.mip_bias);
+    t.mip = m_plan;
+    t.what += ", " + std::to_string(o.levels) + " mip levels (" + m_plan.min_filter.name() + ")";
+  }
   mp.arrays.push_back(
       {t.array, std::vector<u8>(o.data.begin(), o.data.end()),
        std::string(role.title) + " of material " + mat.name + ": " + std::to_string(o.width) + "x" +
-           std::to_string(o.height) + " texels " + t.format.name() + " in GX tile order (" +
+           std::to_string(o.height) + " texels " + t.format.name() +
+           (mip ? " and its " + std::to_string(o.levels - 1) +
+                      " smaller mip levels after it (2x2 box filter)"
+                : std::string()) +
+           " in GX tile order (" +
            tile_order_note(static_cast<TexFormat>(o.format)) +
            "),\nrows from the image's bottom row up (v = 0 first), so the identity texgen's "
            "t = v reads the\ntexel a GL path samples at (u, v); a converter that stores the "

@@ -138,6 +138,8 @@ void channels(Writer& w, const PassPlan& p) {
 
 void texture(Writer& w, const TexturePlan& t) {
   const Arg self = Arg::address_of(t.object);
+  const GxConst<NG::Bool> mipmap =
+      t.mip ? GxConst<NG::Bool>{"GX_TRUE"} : GxConst<NG::Bool>{"GX_FALSE"};
   w.declare(Declaration::Type::TexObj, t.object);
   if (t.tlut) {
     const Arg tlut = Arg::address_of(t.tlut->object);
@@ -147,14 +149,21 @@ void texture(Writer& w, const TexturePlan& t) {
     w.call("GX_LoadTlut", {tlut, gx(t.tlut->name)});
     w.call("GX_InitTexObjCI",
            {self, Arg::identifier(t.array), lit(t.width), lit(t.height), gx(t.format), gx(t.wrap_s),
-            gx(t.wrap_t), gx(GxConst<NG::Bool>{"GX_FALSE"}), gx(t.tlut->name)},
+            gx(t.wrap_t), gx(mipmap), gx(t.tlut->name)},
            t.what);
   } else {
     w.call("GX_InitTexObj",
            {self, Arg::identifier(t.array), lit(t.width), lit(t.height), gx(t.format), gx(t.wrap_s),
-            gx(t.wrap_t), gx(GxConst<NG::Bool>{"GX_FALSE"})},
+            gx(t.wrap_t), gx(mipmap)},
            t.what);
   }
+  if (t.mip)
+    w.call("GX_InitTexObjLOD",
+           {self, gx(t.mip->min_filter), gx(GxConst<NG::TexFilter>{"GX_LINEAR"}),
+            Arg::f32(0.0f), Arg::f32(t.mip->max_lod), Arg::f32(t.mip->bias),
+            gx(GxConst<NG::Bool>{"GX_FALSE"}), gx(GxConst<NG::Bool>{"GX_TRUE"}),
+            gx(GxConst<NG::Anisotropy>{"GX_ANISO_1"})},
+           "LOD range 0 .. the last level, edge LOD");
   w.call("GX_LoadTexObj", {self, gx(t.map)});
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "gx/mip_chain.h"
 #include "gx/texture_encoder.h"
 #include "image/image.h"
 
@@ -78,6 +79,26 @@ ThicknessTexture thickness_texture(int width, int height, const std::vector<floa
   }
   tex.data = to_tiles(tex.format, width, height, row_major);
   return out;
+}
+
+void add_mip_levels(ThicknessTexture& tex, const std::vector<float>& rgb, int levels,
+                    TlutFormat tlut_format) {
+  TextureObject& o = tex.texture;
+  LT_CHECK(o.levels == 1 && levels >= 1 && levels <= full_mip_levels(o.width, o.height),
+           "a map's levels are 1 .. full_mip_levels");
+  const auto format = static_cast<TexFormat>(o.format);
+  const std::vector<EncodedLevel> chain =
+      encode_chain(mip_chain(map_image(o.width, o.height, rgb, tex.scale), levels), format,
+                   EncodeOptions{Rounding::Nearest, tlut_format});
+  if (is_indexed(format)) {
+    o.data.clear();
+    o.tlut = chain.front().tlut;
+  } else {
+    o.data.resize(level_bytes(format, o.width, o.height));  // thickness_texture's level 0
+  }
+  for (size_t k = is_indexed(format) ? 0 : 1; k < chain.size(); ++k)
+    o.data.insert(o.data.end(), chain[k].data.begin(), chain[k].data.end());
+  o.levels = levels;
 }
 
 std::optional<MapTexels> thickness_map_texels(const Material& material) {

@@ -54,6 +54,15 @@ struct ThicknessTexture {
 ThicknessTexture thickness_texture(int width, int height, const std::vector<float>& rgb,
                                    TexFormat format, TlutFormat tlut_format = TlutFormat::RGB565);
 
+// `levels` levels of `tex` (made by thickness_texture from the same texels, format and TLUT
+// format) instead of one: level 0 and each smaller one (gx/mip_chain.h's box filter of the map's
+// 8-bit texels), encoded by gx/texture_encoder.h with `nearest` rounding and stored one after
+// another (TextureObject::levels). A colour-indexed texture's palette is made again from every
+// level's texels (encode_chain: one TLUT for the chain), so its level 0 may change; the other
+// formats keep thickness_texture's level 0. Sides powers of two (the caller refuses others).
+void add_mip_levels(ThicknessTexture& tex, const std::vector<float>& rgb, int levels,
+                    TlutFormat tlut_format = TlutFormat::RGB565);
+
 // A material's thickness map as the scene loaded it (load/thickness_map.h): float rgb texels,
 // row 0 the image's bottom row; empty when the material's thickness is not a map.
 struct MapTexels {

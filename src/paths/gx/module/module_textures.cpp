@@ -30,6 +30,15 @@ TplTexture planned_tpl_texture(const MaterialPlan& m, const TexturePlan& t) {
   // GX_LINEAR both ways, what GX_InitTexObj sets without mipmaps [OGC gx.c L3236]; libogc reads
   // the header's filters only for a mip chain (max LOD > 0) [OGC tpl.c L241-247].
   out.min_filter = out.mag_filter = 1;
+  if (t.mip) {
+    // A mip chain (:mip=): max LOD = levels - 1 in the header makes TPL_GetTexture call
+    // GX_InitTexObj with mipmaps on and GX_InitTexObjLOD with the header's filters, bias and edge
+    // LOD [OGC tpl.c L241-250]; the program's own GX_InitTexObjLOD after it sets the same.
+    out.levels = t.mip->levels;
+    out.min_filter = static_cast<u32>(t.mip->min_filter.value());
+    out.lod_bias = t.mip->bias;
+    out.edge_lod = 1;
+  }
   if (t.tlut) {
     out.tlut_format = static_cast<TlutFormat>(t.tlut->format.value());
     const std::vector<u8>& tlut = plan_array_bytes(m, t.tlut->array);

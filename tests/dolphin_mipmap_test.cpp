@@ -1,0 +1,83 @@
+// Mipmapped maps (`:mip=`, `:mip-bias=`, `:wrap=`, gx_variant.h) judged by Dolphin: the map
+// scenes' colour map (scenes/maps/sphere_rgb_ramp.json) as CMPR, RGB565 and CI8 and their grey
+// map (scenes/maps/sphere_map.json) as I8 and CI4, each with its full mip chain in the log's
+// memory after level 0, GX_LIN_MIP_LIN or GX_NEAR_MIP_NEAR, LOD biases of both signs, clamped
+// and repeated, the spheres drawn small (a wide field of view) so the maps are minified, not
+// only biased down. The frames play in one FIFO log (one Dolphin start). Dolphin's software
+// renderer computes each 2x2 block's LOD and samples the levels [DSW Rasterizer.cpp
+// CalculateLOD] [DSW TextureSampler.cpp Sample, SampleMip]; its picture must be ltrender's
+// `:out=xfb` one, pixel for pixel.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <utility>
+
+#include "dolphin_util.h"
+#include "load/load_scene.h"
+#include "paths/gx/frame_recording.h"
+#include "paths/gx/gx_path.h"
+#include "render/session.h"
+#include "scene/scene.h"
+#include "test_util.h"
+
+namespace lt {
+namespace {
+
+struct MipFrame {
+  const char* scene;
+  const char* variant;
+  double fov_y_deg;  // the scenes' own 40, or wider: a smaller sphere, a minified map
+};
+
+TEST(DolphinMipmap, MipmappedMapsAreDolphinsPicture) {
+  // Debian's Dolphin takes the LOD from coordinates in units of the whole texture
+  // (texture_lod.h lod_coordinates), so a sphere of this size reaches level 1 and beyond only
+  // with a bias of a few levels, or at its rim.
+  const MipFrame cases[] = {
+      {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr:mip=lin:mip-bias=1.5", 40},
+      {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=rgb565:mip=lin:mip-bias=3.5:wrap=repeat",
+       40},
+      {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=ci8:mip=near:mip-bias=3", 40},
+      {"scenes/maps/sphere_map.json", "t=vertex:mip=near:mip-bias=3.75:wrap=repeat", 40},
+      {"scenes/maps/sphere_map.json", "t=vertex:map=ci4:mip=lin:mip-bias=2.5", 40},
+      {"scenes/maps/sphere_map.json", "t=vertex:mip=lin:mip-bias=3", 110}};
+  constexpr size_t kFrames = std::size(cases);
+  std::vector<Scene> scenes;
+  for (const MipFrame& c : cases) {
+    scenes.push_back(load_scene(test::source_dir() / c.scene));
+    scenes.back().width = test::kDolphinWidth;
+    scenes.back().height = test::kDolphinHeight;
+    scenes.back().camera.fov_y_deg = c.fov_y_deg;
+  }
+  std::vector<gx::ScenePrograms> programs;
+  for (size_t k = 0; k < kFrames; ++k)
+    programs.push_back(
+        gx::scene_programs_for(scenes[k], gx::parse_gx_variant(cases[k].variant), ""));
+  std::vector<gx::fifo::FrameInput> inputs;
+  for (size_t k = 0; k < kFrames; ++k)
+    inputs.push_back({gx::parse_gx_variant(cases[k].variant), &programs[k], &scenes[k]});
+  const std::vector<Image> dolphin = test::dolphin_pictures(scenes[0], inputs);
+  ASSERT_EQ(dolphin.size(), kFrames);
+  for (size_t k = 0; k < kFrames; ++k) {
+    const std::string variant = std::string(cases[k].variant) + ":out=xfb";
+    const Image ours =
+        render_scene(scenes[k], "gx", variant, test::kDolphinWidth, test::kDolphinHeight);
+    // The mip chain must change the picture, or the frame judges nothing the tree had before.
+    std::string plain = cases[k].variant;
+    plain = plain.substr(0, plain.find(":mip=")) + ":out=xfb";
+    const Image without =
+        render_scene(scenes[k], "gx", plain, test::kDolphinWidth, test::kDolphinHeight);
+    EXPECT_GT(test::picture_difference(ours, without).differ, 0u)
+        << cases[k].variant << " draws what " << plain << " draws";
+    const test::PictureDifference d = test::picture_difference(ours, dolphin[k]);
+    std::printf("| %s | %s | fov %g | %zu | %zu | %d |\n", cases[k].scene, cases[k].variant,
+                cases[k].fov_y_deg, test::covered_pixels(ours), d.differ, d.max);
+    EXPECT_GT(test::covered_pixels(ours), static_cast<size_t>(ours.pixel_count() / 400))
+        << cases[k].variant << ": the scene covers almost nothing";
+    EXPECT_EQ(d.differ, 0u) << cases[k].scene << " " << cases[k].variant << ": first at "
+                            << d.first_x << "," << d.first_y << ", max " << d.max << " LSB";
+  }
+}
+
+}  // namespace
+}  // namespace lt
