@@ -25,7 +25,7 @@ TextureLod lod_mode(u8 min_filter, s32 bias, u8 min_lod, u8 max_lod, bool diagon
 }
 
 // A quad whose u moves du_dx a pixel across and du_dy down, v likewise.
-QuadTexcoords quad(float du_dx, float dv_dx, float du_dy, float dv_dy) {
+QuadTexcoords quad_moving(float du_dx, float dv_dx, float du_dy, float dv_dy) {
   return {10.0f, 20.0f, 10.0f + du_dx, 20.0f + dv_dx, 10.0f + du_dy, 20.0f + dv_dy};
 }
 
@@ -47,37 +47,37 @@ TEST(GxTextureLod, FixedLog2IsTheExponentAndTheMantissasTopFourBits) {
 TEST(GxTextureLod, EdgeLodTakesTheLargerDeltaAndDiagonalTheirSums) {
   const TextureLod edge = lod_mode(6, 0, 0, 160);
   // du/dx 2, du/dy 2, dv 0: edge max(2, 2) = 2 -> 16; diagonal 2 + 2 = 4 -> 32.
-  EXPECT_EQ(quad_lod(edge, true, quad(2, 0, 2, 0)).lod, 16);
-  EXPECT_EQ(quad_lod(lod_mode(6, 0, 0, 160, true), true, quad(2, 0, 2, 0)).lod, 32);
+  EXPECT_EQ(quad_lod(edge, true, quad_moving(2, 0, 2, 0)).lod, 16);
+  EXPECT_EQ(quad_lod(lod_mode(6, 0, 0, 160, true), true, quad_moving(2, 0, 2, 0)).lod, 32);
   // v's delta wins when larger: du 1, dv/dy 8 -> 48.
-  EXPECT_EQ(quad_lod(edge, true, quad(1, 0, 0, 8)).lod, 48);
+  EXPECT_EQ(quad_lod(edge, true, quad_moving(1, 0, 0, 8)).lod, 48);
   // Deltas are absolute: a mirrored quad gives the same LOD.
-  EXPECT_EQ(quad_lod(edge, true, quad(-4, 0, 0, -1)).lod, 32);
+  EXPECT_EQ(quad_lod(edge, true, quad_moving(-4, 0, 0, -1)).lod, 32);
 }
 
 TEST(GxTextureLod, BiasIsS2_5HalvedArithmeticallyThenTheClampMaxFirst) {
   // Delta 4 -> 32; bias +1.0 (32 in s2.5) >> 1 = 16 -> 48; -1.0 (-32) -> -16 -> 16;
   // -3/32 (-3) >> 1 = -2 (the shift floors) -> 30.
-  EXPECT_EQ(quad_lod(lod_mode(6, 32, 0, 160), true, quad(4, 0, 0, 0)).lod, 48);
-  EXPECT_EQ(quad_lod(lod_mode(6, -32, 0, 160), true, quad(4, 0, 0, 0)).lod, 16);
-  EXPECT_EQ(quad_lod(lod_mode(6, -3, 0, 160), true, quad(4, 0, 0, 0)).lod, 30);
+  EXPECT_EQ(quad_lod(lod_mode(6, 32, 0, 160), true, quad_moving(4, 0, 0, 0)).lod, 48);
+  EXPECT_EQ(quad_lod(lod_mode(6, -32, 0, 160), true, quad_moving(4, 0, 0, 0)).lod, 16);
+  EXPECT_EQ(quad_lod(lod_mode(6, -3, 0, 160), true, quad_moving(4, 0, 0, 0)).lod, 30);
   // Clamped to max 40, or up to min 24 (delta 1 -> 0).
-  EXPECT_EQ(quad_lod(lod_mode(6, 0, 0, 40), true, quad(8, 0, 0, 0)).lod, 40);
-  EXPECT_EQ(quad_lod(lod_mode(6, 0, 24, 40), true, quad(1, 0, 0, 0)).lod, 24);
+  EXPECT_EQ(quad_lod(lod_mode(6, 0, 0, 40), true, quad_moving(8, 0, 0, 0)).lod, 40);
+  EXPECT_EQ(quad_lod(lod_mode(6, 0, 24, 40), true, quad_moving(1, 0, 0, 0)).lod, 24);
   // min 48 > max 32: above max gives max (32), below it gives min (48).
-  EXPECT_EQ(quad_lod(lod_mode(6, 0, 48, 32), true, quad(8, 0, 0, 0)).lod, 32);
-  EXPECT_EQ(quad_lod(lod_mode(6, 0, 48, 32), true, quad(2, 0, 0, 0)).lod, 48);
+  EXPECT_EQ(quad_lod(lod_mode(6, 0, 48, 32), true, quad_moving(8, 0, 0, 0)).lod, 32);
+  EXPECT_EQ(quad_lod(lod_mode(6, 0, 48, 32), true, quad_moving(2, 0, 0, 0)).lod, 48);
 }
 
 TEST(GxTextureLod, TheFilterIsChosenFromTheLodBeforeItsClamp) {
   // Min GX_NEAR (0), mag GX_LINEAR, max LOD 0: a minified quad (LOD 16) is nearest although the
   // clamp then leaves LOD 0; a magnified one (LOD -16) linear.
-  const LodChoice minified = quad_lod(lod_mode(0, 0, 0, 0), true, quad(2, 0, 0, 0));
+  const LodChoice minified = quad_lod(lod_mode(0, 0, 0, 0), true, quad_moving(2, 0, 0, 0));
   EXPECT_FALSE(minified.linear);
   EXPECT_EQ(minified.lod, 0);
-  EXPECT_TRUE(quad_lod(lod_mode(0, 0, 0, 0), true, quad(0.5f, 0, 0, 0)).linear);
+  EXPECT_TRUE(quad_lod(lod_mode(0, 0, 0, 0), true, quad_moving(0.5f, 0, 0, 0)).linear);
   // LOD exactly 0 is magnification: the mag filter (here near, min linear).
-  EXPECT_FALSE(quad_lod(lod_mode(4, 0, 0, 0), false, quad(1, 0, 0, 0)).linear);
+  EXPECT_FALSE(quad_lod(lod_mode(4, 0, 0, 0), false, quad_moving(1, 0, 0, 0)).linear);
 }
 
 TEST(GxTextureLod, PointMipRoundsAtHalfAndLinearMipBlendsSixteenths) {
