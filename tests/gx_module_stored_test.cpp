@@ -1,13 +1,13 @@
-// A module of a stored variant (issue 46: `export gx --variant lobe=xf-spec:view=object:vtx=s16/auto
-// :nrm=s8:clr=rgb565:draw=list --format module`) sends what ltrender's FIFO log sends, frame after
-// frame. The module is compiled on the host (tests/gx_module_host/), ltrender_stored_init builds
-// its display lists once, and along the camera path its pass functions drive the emulator (the
-// frame must be the variant's own, every channel) while its draw (ltrender_draw_stored) is
-// recorded: every matrix it loads (computed in its C from the camera, ltr_object_matrices) must be
-// in the emulator's FIFO log of that frame as the very bytes, each object's descriptor and format
-// the VCD and VAT the log loads for it, every array it points the CP at and every display list it
-// calls a block of the log's memory (and every block one of them), and every draw it sends in the
-// log's FIFO as the very bytes.
+// A module of a stored variant (issue 46: `export gx --variant
+// lobe=xf-spec:view=object:vtx=s16/auto :nrm=s8:clr=rgb565:draw=list --format module`) sends what
+// ltrender's FIFO log sends, frame after frame. The module is compiled on the host
+// (tests/gx_module_host/), ltrender_stored_init builds its display lists once, and along the camera
+// path its pass functions drive the emulator (the frame must be the variant's own, every channel)
+// while its draw (ltrender_draw_stored) is recorded: every matrix it loads (computed in its C from
+// the camera, ltr_object_matrices) must be in the emulator's FIFO log of that frame as the very
+// bytes, each object's descriptor and format the VCD and VAT the log loads for it, every array it
+// points the CP at and every display list it calls a block of the log's memory (and every block one
+// of them), and every draw it sends in the log's FIFO as the very bytes.
 #include <gtest/gtest.h>
 
 #include <algorithm>

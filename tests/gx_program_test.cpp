@@ -172,12 +172,12 @@ INSTANTIATE_TEST_SUITE_P(Cases, GxBadProgram, ::testing::ValuesIn(kBad),
 // GX_InitTexObj with mipmaps and GX_InitTexObjLOD as libogc writes them [OGC gx.c L3236-3247,
 // L3310-3334]: 64 bytes hold an 8x4 I8 level (one 32-byte tile) and its 4x2 level (one tile).
 TEST(GxProgram, MipmappedTexturesTakeTheirLevelsAndLodFields) {
-  const GxState st = run(
-      "u8 a[64] = {0};\nGXTexObj t;\n"
-      "GX_InitTexObj(&t, a, 8, 4, GX_TF_I8, GX_REPEAT, GX_CLAMP, GX_TRUE);\n"
-      "GX_InitTexObjLOD(&t, GX_NEAR_MIP_LIN, GX_NEAR, 0.0, 1.0, -1.0, GX_FALSE, GX_TRUE, "
-      "GX_ANISO_2);\n"
-      "GX_LoadTexObj(&t, GX_TEXMAP0);\n");
+  const GxState st =
+      run("u8 a[64] = {0};\nGXTexObj t;\n"
+          "GX_InitTexObj(&t, a, 8, 4, GX_TF_I8, GX_REPEAT, GX_CLAMP, GX_TRUE);\n"
+          "GX_InitTexObjLOD(&t, GX_NEAR_MIP_LIN, GX_NEAR, 0.0, 1.0, -1.0, GX_FALSE, GX_TRUE, "
+          "GX_ANISO_2);\n"
+          "GX_LoadTexObj(&t, GX_TEXMAP0);\n");
   ASSERT_TRUE(st.textures[0].has_value());
   const TextureObject& t = *st.textures[0];
   EXPECT_EQ(t.levels, 2);

@@ -87,7 +87,7 @@ TEST(GxTextureLod, PointMipRoundsAtHalfAndLinearMipBlendsSixteenths) {
   EXPECT_EQ(mip_choice(point, 24).fraction, 0);
   EXPECT_EQ(mip_choice(linear, 20).level, 1);
   EXPECT_EQ(mip_choice(linear, 20).fraction, 4);
-  EXPECT_EQ(mip_choice(linear, 0).level, 0);              // LOD 0: level 0
+  EXPECT_EQ(mip_choice(linear, 0).level, 0);                   // LOD 0: level 0
   EXPECT_EQ(mip_choice(lod_mode(4, 0, 0, 160), 40).level, 0);  // no mip filter
 }
 
@@ -132,7 +132,8 @@ TextureObject two_level_i8(u8 min_filter) {
   t.data = to_tiles(1, 8, 8, std::vector<u8>(64, 10));
   std::vector<u8> level1(16);
   for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 4; ++x) level1[static_cast<size_t>(y * 4 + x)] = static_cast<u8>(16 * y + x + 100);
+    for (int x = 0; x < 4; ++x)
+      level1[static_cast<size_t>(y * 4 + x)] = static_cast<u8>(16 * y + x + 100);
   const std::vector<u8> tiles1 = to_tiles(1, 4, 4, level1);
   t.data.insert(t.data.end(), tiles1.begin(), tiles1.end());
   return t;
@@ -141,7 +142,7 @@ TextureObject two_level_i8(u8 min_filter) {
 TEST(GxTextureLod, LevelsSitAfterTheWholeTilesBeforeThemAndTakeTheCoordinateShifted) {
   EXPECT_EQ(level_offset(1, 8, 8, 1), 64u);
   EXPECT_EQ(level_offset(0xE, 16, 16, 2), 128u + 32u);  // CMPR 8x8 blocks: 4 then 1 of 32 bytes
-  const TextureObject t = two_level_i8(1);                // NEAR_MIP_NEAR
+  const TextureObject t = two_level_i8(1);              // NEAR_MIP_NEAR
   // u = 3.5 texels of level 0 (448 in s17.7), v = 6.25 (800): level 1 reads (448 >> 1) >> 7 = 1
   // and (800 >> 1) >> 7 = 3: 16 * 3 + 1 + 100.
   const s32 u = 448, v = 800;

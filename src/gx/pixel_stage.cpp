@@ -130,9 +130,9 @@ void shade_run(const PixelProgram& p, const DrawPlan& plan, const Triangle& t, b
         const TextureObject& tex = *f.texture;
         for (int j = 0; j < num_passed; ++j) {
           const int i = passed[j];
-          lods[j] = quad_lod(*tex.lod, tex.linear,
-                             quad_texcoords(t, static_cast<int>(f.texcoord), pixels.x[i],
-                                            pixels.y[i]));
+          lods[j] =
+              quad_lod(*tex.lod, tex.linear,
+                       quad_texcoords(t, static_cast<int>(f.texcoord), pixels.x[i], pixels.y[i]));
         }
         sample_texture_lod_at(tex, u, v, lods, num_passed, texels);
       } else {

@@ -78,8 +78,8 @@ MipChoice mip_choice(const TextureLod& mode, s32 lod) {
   if (lod <= 0 || mip == 0) return out;
   out.level = lod >> 4;
   const int fraction = lod & 0xf;
-  if (mip == 2) out.fraction = fraction;         // MipMode::Linear
-  if (mip == 1 && fraction >= 8) ++out.level;    // MipMode::Point rounds to the nearer level
+  if (mip == 2) out.fraction = fraction;       // MipMode::Linear
+  if (mip == 1 && fraction >= 8) ++out.level;  // MipMode::Point rounds to the nearer level
   return out;
 }
 

@@ -19,10 +19,10 @@ struct TextureLod {
   // Bit 2 is the filter inside a level, bits 0-1 the mip filter (0 none, 1 point, 2 linear;
   // Dolphin's MipMode, which reads 3 as "some mip filter", neither point nor linear).
   u8 min_filter = 4;
-  std::int8_t bias = 0;          // bits 9-16: s2.5, (u32)(32 * lodbias) masked to 8 bits
-  bool diagonal = false;  // bit 8: GX_InitTexObjLOD's !edgelod (0 "edge" LOD, 1 "diagonal")
-  bool bias_clamp = false;  // bit 21, read by nothing in Dolphin's software renderer
-  u8 max_aniso = 0;         // bits 19-20, likewise
+  std::int8_t bias = 0;         // bits 9-16: s2.5, (u32)(32 * lodbias) masked to 8 bits
+  bool diagonal = false;        // bit 8: GX_InitTexObjLOD's !edgelod (0 "edge" LOD, 1 "diagonal")
+  bool bias_clamp = false;      // bit 21, read by nothing in Dolphin's software renderer
+  u8 max_aniso = 0;             // bits 19-20, likewise
   u8 min_lod = 0, max_lod = 0;  // TexMode1 bits 0-7 and 8-15: u4.4 (16 * lod), 0..160
   bool operator==(const TextureLod&) const = default;
 

@@ -316,8 +316,8 @@ Color8 sample_lod(const std::vector<LevelView>& levels, const TileShape& shape,
   const MipChoice mip = mip_choice(mode, choice.lod);
   const auto at = [&](int level) {
     LT_CHECK(level < static_cast<int>(levels.size()), "a LOD past the texture's levels");
-    return sample_one<Format>(levels[static_cast<size_t>(level)], shape, choice.linear,
-                              u >> level, v >> level);
+    return sample_one<Format>(levels[static_cast<size_t>(level)], shape, choice.linear, u >> level,
+                              v >> level);
   };
   const Color8 base = at(mip.level);
   if (mip.fraction == 0) return base;

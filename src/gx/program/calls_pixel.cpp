@@ -38,8 +38,8 @@ void init_texture_object(Machine& m) {
   if (!m.b(7)) return;
   const int w = t.texture.width, h = t.texture.height;
   if ((w & (w - 1)) != 0 || (h & (h - 1)) != 0)
-    m.fail_arg(2, "a mipmapped texture's size must be a power of two, found " +
-                      std::to_string(w) + "x" + std::to_string(h));
+    m.fail_arg(2, "a mipmapped texture's size must be a power of two, found " + std::to_string(w) +
+                      "x" + std::to_string(h));
   const auto format = static_cast<TexFormat>(t.texture.format);
   t.texture.lod = mipmapped_texture_lod(is_indexed(format));
   int levels = 1;
@@ -58,10 +58,9 @@ void check_lod_levels(const Machine& m, const TexObject& t) {
   const auto levels_of = [](u8 lod) {  // u4.4: whole levels and sixteenths
     return std::to_string(lod >> 4) + ((lod & 15) ? " " + std::to_string(lod & 15) + "/16" : "");
   };
-  m.fail_arg(0, m.name(0) + "'s LOD range (min " + levels_of(t.texture.lod->min_lod) +
-                    ", max " + levels_of(t.texture.lod->max_lod) + ") reads " +
-                    std::to_string(reach) + " levels, " + t.array + " holds " +
-                    std::to_string(t.texture.levels) + " (" +
+  m.fail_arg(0, m.name(0) + "'s LOD range (min " + levels_of(t.texture.lod->min_lod) + ", max " +
+                    levels_of(t.texture.lod->max_lod) + ") reads " + std::to_string(reach) +
+                    " levels, " + t.array + " holds " + std::to_string(t.texture.levels) + " (" +
                     std::to_string(m.bytes_of(t.array).size()) + " bytes)");
 }
 
@@ -202,8 +201,8 @@ void add_pixel_calls(CallTable& table) {
        {{tex_p, integer(G::TexFilter, 0, 5), integer(G::TexFilter, 0, 1)},
         [](Machine& m) {
           TextureObject& t = m.tex(0).texture;
-          const TextureLod filters = libogc_texture_lod(static_cast<int>(m.i(1)), 0, 0, 0, false,
-                                                        true, 0);
+          const TextureLod filters =
+              libogc_texture_lod(static_cast<int>(m.i(1)), 0, 0, 0, false, true, 0);
           const bool mag_linear = m.i(2) == 1;
           if (!t.lod && filters.min_filter == (mag_linear ? 4 : 0)) {
             t.linear = mag_linear;  // min = mag without mipmaps: no LOD fields needed

@@ -134,8 +134,8 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
       thickness_texture(texels.width, texels.height, *texels.rgb,
                         map_texture_format(variant_, texels.grey), map_tlut_format(texels.grey));
   const bool mip = variant_.mip != GxVariant::Mip::Off;
-  const bool power_of_two = (texels.width & (texels.width - 1)) == 0 &&
-                            (texels.height & (texels.height - 1)) == 0;
+  const bool power_of_two =
+      (texels.width & (texels.width - 1)) == 0 && (texels.height & (texels.height - 1)) == 0;
   if ((mip || variant_.map_repeat) && !power_of_two)
     throw InputError(scene_.file.string(), "materials." + mat.name + role.key,
                      std::string("gx: the ") + role.what + " is " + std::to_string(texels.width) +
@@ -177,8 +177,7 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
            (mip ? " and its " + std::to_string(o.levels - 1) +
                       " smaller mip levels after it (2x2 box filter)"
                 : std::string()) +
-           " in GX tile order (" +
-           tile_order_note(static_cast<TexFormat>(o.format)) +
+           " in GX tile order (" + tile_order_note(static_cast<TexFormat>(o.format)) +
            "),\nrows from the image's bottom row up (v = 0 first), so the identity texgen's "
            "t = v reads the\ntexel a GL path samples at (u, v); a converter that stores the "
            "top row first needs\nt = 1 - v (a texture matrix with row 1 = (0, -1, 0, 1)). A "

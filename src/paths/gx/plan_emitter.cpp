@@ -159,10 +159,9 @@ void texture(Writer& w, const TexturePlan& t) {
   }
   if (t.mip)
     w.call("GX_InitTexObjLOD",
-           {self, gx(t.mip->min_filter), gx(GxConst<NG::TexFilter>{"GX_LINEAR"}),
-            Arg::f32(0.0f), Arg::f32(t.mip->max_lod), Arg::f32(t.mip->bias),
-            gx(GxConst<NG::Bool>{"GX_FALSE"}), gx(GxConst<NG::Bool>{"GX_TRUE"}),
-            gx(GxConst<NG::Anisotropy>{"GX_ANISO_1"})},
+           {self, gx(t.mip->min_filter), gx(GxConst<NG::TexFilter>{"GX_LINEAR"}), Arg::f32(0.0f),
+            Arg::f32(t.mip->max_lod), Arg::f32(t.mip->bias), gx(GxConst<NG::Bool>{"GX_FALSE"}),
+            gx(GxConst<NG::Bool>{"GX_TRUE"}), gx(GxConst<NG::Anisotropy>{"GX_ANISO_1"})},
            "LOD range 0 .. the last level, edge LOD");
   w.call("GX_LoadTexObj", {self, gx(t.map)});
 }
