@@ -46,14 +46,9 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
     scenes.back().width = test::kDolphinWidth;
     scenes.back().height = test::kDolphinHeight;
   }
-  std::vector<gx::ScenePrograms> programs;
-  for (size_t k = 0; k < kFrames; ++k)
-    programs.push_back(
-        gx::scene_programs_for(scenes[k], gx::parse_gx_variant(cases[k].variant), ""));
-  std::vector<gx::fifo::FrameInput> inputs;
-  for (size_t k = 0; k < kFrames; ++k)
-    inputs.push_back({gx::parse_gx_variant(cases[k].variant), &programs[k], &scenes[k]});
-  const std::vector<Image> dolphin = test::dolphin_pictures(scenes[0], inputs);
+  std::vector<std::string> variants;
+  for (const MapFrame& c : cases) variants.push_back(c.variant);
+  const std::vector<Image> dolphin = test::dolphin_pictures_of(scenes, variants);
   ASSERT_EQ(dolphin.size(), kFrames);
   // The formats change the picture, so matching each frame means Dolphin decoded that frame's
   // format, not one format six times: RGB565, RGB5A3 and CMPR differ from each other, IA8 from

@@ -49,14 +49,9 @@ TEST(DolphinMipmap, MipmappedMapsAreDolphinsPicture) {
     scenes.back().height = test::kDolphinHeight;
     scenes.back().camera.fov_y_deg = c.fov_y_deg;
   }
-  std::vector<gx::ScenePrograms> programs;
-  for (size_t k = 0; k < kFrames; ++k)
-    programs.push_back(
-        gx::scene_programs_for(scenes[k], gx::parse_gx_variant(cases[k].variant), ""));
-  std::vector<gx::fifo::FrameInput> inputs;
-  for (size_t k = 0; k < kFrames; ++k)
-    inputs.push_back({gx::parse_gx_variant(cases[k].variant), &programs[k], &scenes[k]});
-  const std::vector<Image> dolphin = test::dolphin_pictures(scenes[0], inputs);
+  std::vector<std::string> variants;
+  for (const MipFrame& c : cases) variants.push_back(c.variant);
+  const std::vector<Image> dolphin = test::dolphin_pictures_of(scenes, variants);
   ASSERT_EQ(dolphin.size(), kFrames);
   for (size_t k = 0; k < kFrames; ++k) {
     const std::string variant = std::string(cases[k].variant) + ":out=xfb";

@@ -12,6 +12,7 @@
 #include "judge/dolphin_player.h"
 #include "paths/gx/frame_recording.h"
 #include "paths/gx/gx_path.h"
+#include "paths/gx/gx_variant.h"
 #include "paths/path.h"
 #include "render/session.h"
 #include "scene/scene.h"
@@ -39,6 +40,19 @@ inline std::vector<Image> dolphin_pictures(const Scene& scene,
     return {};
   }
   return std::vector<Image>(dumps.end() - 2 - K, dumps.end() - 2);
+}
+
+// Dolphin's picture of frame k = `scenes[k]` through `variants[k]`, all in one log (as
+// dolphin_pictures; `scenes` at the Dolphin size, the first one the log's scene).
+inline std::vector<Image> dolphin_pictures_of(const std::vector<Scene>& scenes,
+                                              const std::vector<std::string>& variants) {
+  std::vector<gx::ScenePrograms> programs;
+  for (size_t k = 0; k < scenes.size(); ++k)
+    programs.push_back(gx::scene_programs_for(scenes[k], gx::parse_gx_variant(variants[k]), ""));
+  std::vector<gx::fifo::FrameInput> inputs;
+  for (size_t k = 0; k < scenes.size(); ++k)
+    inputs.push_back({gx::parse_gx_variant(variants[k]), &programs[k], &scenes[k]});
+  return dolphin_pictures(scenes.front(), inputs);
 }
 
 // The gx variants a scene is judged through: every listed variant the path renders it with,
