@@ -39,12 +39,10 @@ class ImageCodec {
   // colour channels as stored, not multiplied by alpha (OpenImageIO's default for PNG and TGA).
   virtual std::unique_ptr<ImageFileReader> open(const std::string& path, bool unassociated_alpha,
                                                 std::string& error) const = 0;
-  // The format comes from the extension of `path`: EXR gets float RGBA with linear colour
-  // space, anything else 8-bit RGB.
+  // Float RGBA with linear colour space (EXR; a PNG is written by image/png_file.h, in the
+  // process).
   virtual bool write_rgba_float(const std::string& path, int width, int height, const float* rgba,
                                 std::string& error) const = 0;
-  virtual bool write_rgb8(const std::string& path, int width, int height, const uint8_t* rgb,
-                          std::string& error) const = 0;
   // FreeType text through OpenImageIO's render_text into float RGBA pixels.
   virtual bool draw_text(float* rgba, int width, int height, int x, int y, const std::string& text,
                          int size, const std::string& font, const float colour[4]) const = 0;

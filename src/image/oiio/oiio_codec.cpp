@@ -81,12 +81,6 @@ class OiioCodec final : public ImageCodec {
     return write_pixels(path, spec, OIIO::TypeDesc::FLOAT, rgba, error);
   }
 
-  bool write_rgb8(const std::string& path, int width, int height, const uint8_t* rgb,
-                  std::string& error) const override {
-    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    return write_pixels(path, spec, OIIO::TypeDesc::UINT8, rgb, error);
-  }
-
   bool draw_text(float* rgba, int width, int height, int x, int y, const std::string& text,
                  int size, const std::string& font, const float colour[4]) const override {
     // The caller's pixels as an ImageBuf: render_text draws straight into them.
