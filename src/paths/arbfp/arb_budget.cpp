@@ -27,13 +27,14 @@ TermCost term_cost(const Scene& scene, const Material& mat, const arbfp::PowVari
   TermCost tc;
   tc.material = mat.name;
   Scene partial = scene;
+  const arbfp::MaterialSurfaces surfaces = arbfp::material_surfaces(scene, mat);
   TermCost::Cost previous;
   for (size_t k = 1; k <= scene.lights.size(); ++k) {
     partial.lights.assign(scene.lights.begin(), scene.lights.begin() + static_cast<long>(k));
     const ProgramCounts with =
-        arbfp::ir::count(arbfp::generate_arb(partial, mat, v, true).fragment_program);
+        arbfp::ir::count(arbfp::generate_arb(partial, mat, v, surfaces, true).fragment_program);
     const ProgramCounts without =
-        arbfp::ir::count(arbfp::generate_arb(partial, mat, v, false).fragment_program);
+        arbfp::ir::count(arbfp::generate_arb(partial, mat, v, surfaces, false).fragment_program);
     const TermCost::Cost diff{with.alu - without.alu, with.tex - without.tex};
     tc.per_light.push_back({diff.alu - previous.alu, diff.tex - previous.tex});
     previous = diff;

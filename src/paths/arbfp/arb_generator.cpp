@@ -13,9 +13,9 @@ namespace lt::arbfp {
 namespace {
 
 ArbPrograms generate_with(const Scene& scene, const Material& material, const PowVariant& variant,
-                          bool translucency_term, const Layout& layout,
-                          const LightNumbers& numbers) {
-  const Key k = make_key(scene, material, variant, translucency_term, layout, numbers);
+                          bool translucency_term, const Layout& layout, const LightNumbers& numbers,
+                          const GuardNeeds& guards) {
+  const Key k = make_key(scene, material, variant, translucency_term, layout, numbers, guards);
   ArbPrograms out;
   out.notes = k.notes;
   out.fragment_program = fragment_program(k, material, out.lut, out.notes);
@@ -62,14 +62,17 @@ std::vector<Layout> candidate_layouts(const Scene& scene) {
 // (arb_guards_test), and the program without the term is the same program minus the term (the
 // budget's term cost).
 ArbPrograms generate_best(const Scene& scene, const Material& material, const PowVariant& variant,
-                          bool translucency_term, const LightNumbers& numbers) {
+                          const MaterialSurfaces& surfaces, bool translucency_term,
+                          const LightNumbers& numbers) {
   PowVariant chooser = variant;
   chooser.all_guards = false;
+  // Once, not once a layout (the layouts do not change what a guard can meet).
+  const GuardNeeds needed = guard_needs(scene, surfaces, false, numbers);
   std::optional<ArbPrograms> best;
   Layout best_layout;
   std::pair<int, int> least;
   for (const Layout& l : candidate_layouts(scene)) {
-    ArbPrograms p = generate_with(scene, material, chooser, true, l, numbers);
+    ArbPrograms p = generate_with(scene, material, chooser, true, l, numbers, needed);
     const budget::ProgramCounts c = ir::count(p.fragment_program);
     const std::pair<int, int> key(c.alu + c.tex, c.temporaries);
     if (best && !(key < least)) continue;
@@ -78,7 +81,8 @@ ArbPrograms generate_best(const Scene& scene, const Material& material, const Po
     least = key;
   }
   if (variant.all_guards || !translucency_term) {
-    return generate_with(scene, material, variant, translucency_term, best_layout, numbers);
+    return generate_with(scene, material, variant, translucency_term, best_layout, numbers,
+                         variant.all_guards ? guard_needs(scene, surfaces, true, numbers) : needed);
   }
   return std::move(*best);
 }
@@ -87,7 +91,14 @@ ArbPrograms generate_best(const Scene& scene, const Material& material, const Po
 
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
                          bool translucency_term, const LightNumbers& numbers) {
-  ArbPrograms out = generate_best(scene, material, variant, translucency_term, numbers);
+  return generate_arb(scene, material, variant, material_surfaces(scene, material),
+                      translucency_term, numbers);
+}
+
+ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
+                         const MaterialSurfaces& surfaces, bool translucency_term,
+                         const LightNumbers& numbers) {
+  ArbPrograms out = generate_best(scene, material, variant, surfaces, translucency_term, numbers);
   out.vertex = ir::print(out.vertex_program);
   out.fragment = ir::print(out.fragment_program);
   return out;

@@ -10,6 +10,7 @@
 #include "arb/arb_ir.h"
 #include "model/power_lut.h"
 #include "paths/arbfp/arb_emitters.h"
+#include "paths/arbfp/arb_guards.h"
 #include "paths/arbfp/arb_variant.h"
 #include "scene/scene.h"
 
@@ -42,5 +43,11 @@ inline bool lobe_varies(const Translucency& tr) {
 // larger scene's, arb_passes.h; empty: 0, 1, ...).
 ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
                          bool translucency_term = true, const LightNumbers& numbers = {});
+
+// The same with the material's surfaces scanned already (material_surfaces of `scene`'s objects,
+// or of a scene with the same objects and other lights): for callers that build many programs.
+ArbPrograms generate_arb(const Scene& scene, const Material& material, const PowVariant& variant,
+                         const MaterialSurfaces& surfaces, bool translucency_term = true,
+                         const LightNumbers& numbers = {});
 
 }  // namespace lt::arbfp

@@ -19,13 +19,7 @@ constexpr double kNormalMargin = 1e-3;
 constexpr double kBoundsMargin = 1e-3;
 constexpr double kFloatMargin = 1e-5;
 
-struct Bounds {
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
-  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
-  bool empty() const { return lo.x > hi.x; }
-};
-
-double distance_to_box(const glm::dvec3& p, const Bounds& b) {
+double distance_to_box(const glm::dvec3& p, const MaterialSurfaces& b) {
   const glm::dvec3 outside = glm::max(glm::max(b.lo - p, p - b.hi), glm::dvec3(0));
   return glm::length(outside);
 }
@@ -67,7 +61,24 @@ double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::d
   return glm::length(a + ab * (vb / denom) + ac * (vc / denom));
 }
 
-GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
+MaterialSurfaces material_surfaces(const Scene& scene, const Material& material) {
+  MaterialSurfaces s;
+  for (const SceneObject& o : scene.objects) {
+    if (scene.materials[static_cast<size_t>(o.material)].name != material.name) continue;
+    for (const glm::dvec3& p : o.mesh.positions) {
+      s.lo = glm::min(s.lo, p);
+      s.hi = glm::max(s.hi, p);
+    }
+    const auto& nr = o.mesh.normals;
+    for (const glm::uvec3& t : o.mesh.triangles) {
+      s.shortest_normal =
+          std::min(s.shortest_normal, distance_to_origin(nr[t.x], nr[t.y], nr[t.z]));
+    }
+  }
+  return s;
+}
+
+GuardNeeds guard_needs(const Scene& scene, const MaterialSurfaces& surfaces, bool all,
                        const LightNumbers& numbers) {
   GuardNeeds g;
   const size_t n = scene.lights.size();
@@ -78,34 +89,21 @@ GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
     g.distance_zero[i] = g.attenuation_floor[i] = point;
   }
   if (all) return g;
-  Bounds bounds;
-  double shortest_normal = std::numeric_limits<double>::infinity();
-  for (const SceneObject& o : scene.objects) {
-    if (scene.materials[static_cast<size_t>(o.material)].name != material.name) continue;
-    for (const glm::dvec3& p : o.mesh.positions) {
-      bounds.lo = glm::min(bounds.lo, p);
-      bounds.hi = glm::max(bounds.hi, p);
-    }
-    const auto& nr = o.mesh.normals;
-    for (const glm::uvec3& t : o.mesh.triangles) {
-      shortest_normal = std::min(shortest_normal, distance_to_origin(nr[t.x], nr[t.y], nr[t.z]));
-    }
-  }
-  if (bounds.empty()) return g;
-  if (shortest_normal > kNormalMargin) {
+  if (surfaces.empty()) return g;
+  if (surfaces.shortest_normal > kNormalMargin) {
     g.zero_normal = false;
     g.notes.push_back("zero-normal guard dropped: no interpolated normal is shorter than " +
-                      ir::num(shortest_normal) +
+                      ir::num(surfaces.shortest_normal) +
                       " (the origin is outside every triangle of "
                       "vertex normals)");
   }
-  const double diagonal = glm::length(bounds.hi - bounds.lo);
+  const double diagonal = glm::length(surfaces.hi - surfaces.lo);
   for (size_t i = 0; i < n; ++i) {
     const Light& l = scene.lights[i];
     if (l.type != Light::Type::Point) continue;
-    const double d = distance_to_box(l.position, bounds);
-    const double magnitude = std::max({glm::length(bounds.lo - scene.camera.eye),
-                                       glm::length(bounds.hi - scene.camera.eye),
+    const double d = distance_to_box(l.position, surfaces);
+    const double magnitude = std::max({glm::length(surfaces.lo - scene.camera.eye),
+                                       glm::length(surfaces.hi - scene.camera.eye),
                                        glm::length(l.position - scene.camera.eye)});
     const std::string light = "light " + std::to_string(light_number(numbers, i)) + ": ";
     if (d > std::max(kBoundsMargin * diagonal, kFloatMargin * magnitude)) {

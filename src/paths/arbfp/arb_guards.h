@@ -10,6 +10,7 @@
 // its case occurs), and `info` says why.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,22 @@ struct GuardNeeds {
   std::vector<std::string> notes;       // one per dropped guard, with the figure that allows it
 };
 
-// Every guard for `all` (the variant's :guards=all); otherwise those the objects drawn with
-// `material` can trigger. The notes number the lights by `numbers` (a pass's, arb_passes.h).
-GuardNeeds guard_needs(const Scene& scene, const Material& material, bool all,
+// What the guards read of the surfaces drawn with one material: their bounds and the shortest
+// interpolated normal. One scan of every triangle, which the lights do not enter: a caller that
+// builds programs for several layouts or light subsets of one scene (generate_arb, the pass
+// search) scans once and hands the result down.
+struct MaterialSurfaces {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  double shortest_normal = std::numeric_limits<double>::infinity();
+  bool empty() const { return lo.x > hi.x; }
+};
+MaterialSurfaces material_surfaces(const Scene& scene, const Material& material);
+
+// Every guard for `all` (the variant's :guards=all); otherwise those the surfaces of the
+// material (material_surfaces of the same scene's objects) can trigger under the scene's lights.
+// The notes number the lights by `numbers` (a pass's, arb_passes.h).
+GuardNeeds guard_needs(const Scene& scene, const MaterialSurfaces& surfaces, bool all,
                        const LightNumbers& numbers = {});
 
 // The smallest distance from the origin to the triangle (a, b, c), in double.

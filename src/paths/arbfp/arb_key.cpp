@@ -112,7 +112,8 @@ void apply_layout(Key& k, const Layout& layout) {
 }  // namespace
 
 Key make_key(const Scene& scene, const Material& material, const PowVariant& variant,
-             bool translucency_term, const Layout& layout, const LightNumbers& numbers) {
+             bool translucency_term, const Layout& layout, const LightNumbers& numbers,
+             const GuardNeeds& guards) {
   Key k{scene, material.translucency.value_or(Translucency{}), variant};
   k.term = translucency_term && material.translucency.has_value();
   k.lights = scene.lights.size();
@@ -145,7 +146,7 @@ Key make_key(const Scene& scene, const Material& material, const PowVariant& var
   if (k.flat_lobe) k.notes.push_back("power 0: the lobe is 1 everywhere (0^0 := 1), no pow");
   if (k.ramp_lobe) k.notes.push_back(ramp_note(variant, *k.tr.ramp));
   k.numbers = numbers;
-  k.guards = guard_needs(scene, material, variant.all_guards, numbers);
+  k.guards = guards;
   for (const std::string& n : k.guards.notes) k.notes.push_back(n);
   apply_layout(k, layout);
   if (k.vertex_lobe && !k.ramp_lobe) {

@@ -82,10 +82,13 @@ struct Key {
   }
 };
 
-// The key for one layout of the lights (generate_arb tries several, arb_generator.cpp). Throws
+// The key for one layout of the lights (generate_arb tries several, arb_generator.cpp), with the
+// guards guard_needs found for the material and the variant's :guards (they do not depend on the
+// layout, and finding them scans every triangle: generate_arb finds them once). Throws
 // InputError("--variant", ...) when the per-vertex lobe has more lights than texcoords.
 Key make_key(const Scene& scene, const Material& material, const PowVariant& variant,
-             bool translucency_term, const Layout& layout, const LightNumbers& numbers);
+             bool translucency_term, const Layout& layout, const LightNumbers& numbers,
+             const GuardNeeds& guards);
 
 inline bool any_of(const std::vector<bool>& v) {
   return std::find(v.begin(), v.end(), true) != v.end();

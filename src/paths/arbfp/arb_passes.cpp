@@ -13,7 +13,8 @@ namespace lt::arbfp {
 namespace {
 
 // The pass's programs on `sub`, a copy of the scene whose lights and ambient light are set here.
-Pass make_pass(Scene& sub, const Scene& scene, const Material& material, const PowVariant& variant,
+Pass make_pass(Scene& sub, const Scene& scene, const Material& material,
+               const MaterialSurfaces& surfaces, const PowVariant& variant,
                const std::vector<size_t>& lights, bool with_ambient) {
   Pass p;
   p.lights = lights;
@@ -21,7 +22,7 @@ Pass make_pass(Scene& sub, const Scene& scene, const Material& material, const P
   sub.lights.clear();
   for (size_t i : lights) sub.lights.push_back(scene.lights[i]);
   sub.ambient_light = with_ambient ? scene.ambient_light : glm::dvec3(0);
-  p.programs = generate_arb(sub, material, variant, true, lights);
+  p.programs = generate_arb(sub, material, variant, surfaces, true, lights);
   p.vertex_counts = ir::count(p.programs.vertex_program);
   p.fragment_counts = ir::count(p.programs.fragment_program);
   return p;
@@ -71,22 +72,24 @@ PassPlan plan_passes(const Scene& scene, const Material& material, const PowVari
   std::vector<size_t> all(n);
   for (size_t i = 0; i < n; ++i) all[i] = i;
   Scene sub = scene;
+  // Scanned once for every pass shape the search tries: the sub-scenes share the objects.
+  const MaterialSurfaces surfaces = material_surfaces(scene, material);
   if (profile.empty()) {
-    plan.passes.push_back(make_pass(sub, scene, material, variant, all, true));
+    plan.passes.push_back(make_pass(sub, scene, material, surfaces, variant, all, true));
     return plan;
   }
   const budget::Profile& chosen = budget::find_profile(profile);
   const budget::Profile& partner = budget::find_profile(chosen.partner);
   const budget::Profile& fragment = chosen.kind == budget::ProgramKind::Fragment ? chosen : partner;
   const budget::Profile& vertex = chosen.kind == budget::ProgramKind::Vertex ? chosen : partner;
-  Pass whole = make_pass(sub, scene, material, variant, all, true);
+  Pass whole = make_pass(sub, scene, material, surfaces, variant, all, true);
   if (overrun(whole, fragment, vertex).empty() || n == 0) {
     plan.passes.push_back(std::move(whole));
     return plan;
   }
   // A light that does not fit alone fits no pass (a program only grows with its lights).
   for (size_t i = 0; i < n; ++i) {
-    const Pass alone = make_pass(sub, scene, material, variant, {i}, i == 0);
+    const Pass alone = make_pass(sub, scene, material, surfaces, variant, {i}, i == 0);
     const std::string why = overrun(alone, fragment, vertex);
     if (why.empty()) continue;
     throw InputError(scene.file.string(), "--profile",
@@ -101,14 +104,14 @@ PassPlan plan_passes(const Scene& scene, const Material& material, const PowVari
     const auto key = std::tuple(s.point, s.points, s.directional, s.directionals, first);
     const auto it = fits_cache.find(key);
     if (it != fits_cache.end()) return it->second;
-    const Pass p =
-        make_pass(sub, scene, material, variant, lights_of(s, points, directionals), first);
+    const Pass p = make_pass(sub, scene, material, surfaces, variant,
+                             lights_of(s, points, directionals), first);
     return fits_cache[key] = overrun(p, fragment, vertex).empty();
   };
   const PassSearch search = fewest_passes(points.size(), directionals.size(), fits);
   LT_CHECK(!search.passes.empty(), "every light fits alone, so some plan fits");
   for (size_t k = 0; k < search.passes.size(); ++k) {
-    plan.passes.push_back(make_pass(sub, scene, material, variant,
+    plan.passes.push_back(make_pass(sub, scene, material, surfaces, variant,
                                     lights_of(search.passes[k], points, directionals), k == 0));
   }
   plan.most_lights = search.most_lights;
