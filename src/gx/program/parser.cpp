@@ -1,11 +1,13 @@
 #include "gx/program/parser.h"
 
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -26,37 +28,36 @@ struct Token {
   SourcePos pos;
 };
 
-// Splits the text into tokens. Comments (// and /* */) and preprocessor lines (#include, which
-// an exported file carries for the compiler) are skipped, as a C compiler's front end would.
+// Splits the text into tokens, one at a time as the parser asks (a texture's bytes are millions of
+// tokens: a vector of them all was most of what reading an exported program cost). Comments (//
+// and /* */) and preprocessor lines (#include, which an exported file carries for the compiler)
+// are skipped, as a C compiler's front end would.
 class Lexer {
  public:
-  Lexer(const std::string& text, const std::string& file) : s_(text), file_(file) {}
-
-  std::vector<Token> run() {
-    std::vector<Token> out;
-    // An upper bound for printed byte arrays ("255, " is two tokens in ~5 characters): one
-    // allocation, not a doubling that copies the tokens; the pages never written stay unused.
-    out.reserve(s_.size() / 2 + 1);
+  Lexer(const std::string& text, const std::string& file) : s_(text), file_(file) {
     // A UTF-8 byte-order mark (a Windows editor's) is skipped, as GCC skips it; positions count
     // from the character after it.
     if (starts_with_utf8_bom(s_)) i_ = kUtf8Bom.size();
-    bool line_start = true;
+  }
+
+  // The next token; at the end of the text, an End token (again on every later call).
+  Token next() {
     while (i_ < s_.size()) {
       const char c = s_[i_];
       if (c == '\n') {
         advance();
-        line_start = true;
+        line_start_ = true;
         continue;
       }
       if (std::isspace(static_cast<unsigned char>(c))) {
         advance();
         continue;
       }
-      if (c == '#' && line_start) {
+      if (c == '#' && line_start_) {
         while (i_ < s_.size() && s_[i_] != '\n') advance();
         continue;
       }
-      line_start = false;
+      line_start_ = false;
       if (c == '/' && peek(1) == '/') {
         while (i_ < s_.size() && s_[i_] != '\n') advance();
         continue;
@@ -85,7 +86,7 @@ class Lexer {
         t = number();
       } else if (c == '"') {
         t = string_literal();
-      } else if (std::string("(){}[],;&|=-+").find(c) != std::string::npos) {
+      } else if (std::string_view("(){}[],;&|=-+").find(c) != std::string_view::npos) {
         const size_t start = i_;
         advance();
         t.text = text_from(start);
@@ -98,12 +99,11 @@ class Lexer {
                       static_cast<unsigned char>(c));
         fail(pos_, std::string("unexpected character ") + shown);
       }
-      out.push_back(std::move(t));
+      return t;
     }
     Token end;
     end.pos = pos_;
-    out.push_back(end);
-    return out;
+    return end;
   }
 
  private:
@@ -192,11 +192,12 @@ class Lexer {
   const std::string& file_;
   size_t i_ = 0;
   SourcePos pos_{1, 1};
+  bool line_start_ = true;
 };
 
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, const std::string& file) : t_(std::move(tokens)), file_(file) {}
+  Parser(const std::string& text, const std::string& file) : lexer_(text, file), file_(file) {}
 
   ProgramFile run() {
     ProgramFile out;
@@ -212,13 +213,31 @@ class Parser {
   }
 
  private:
-  const Token& cur() const { return t_[k_]; }
-  const Token& ahead(size_t n) const { return t_[std::min(k_ + n, t_.size() - 1)]; }
-  bool is(const char* text) const {
+  const Token& cur() const { return ahead(0); }
+  // The token n after the current one (n < kLookahead); End past the end of the text. Read from
+  // the lexer on demand: filling the window does not change what the parser has taken.
+  const Token& ahead(size_t n) const {
+    LT_CHECK(n < kLookahead, "the parser looks at most three tokens ahead");
+    while (buffered_ <= n) {
+      window_[(first_ + buffered_) & (kLookahead - 1)] = lexer_.next();
+      ++buffered_;
+    }
+    return window_[(first_ + n) & (kLookahead - 1)];
+  }
+  // A view, not a C string: a literal's length is known where it is written (a byte array calls
+  // this twice a byte).
+  bool is(std::string_view text) const {
     return cur().kind != Token::Kind::End && cur().kind != Token::Kind::String &&
            cur().text == text;
   }
-  Token take() { return t_[k_ < t_.size() - 1 ? k_++ : k_]; }
+  Token take() {
+    Token t = cur();
+    if (t.kind != Token::Kind::End) {
+      first_ = (first_ + 1) & (kLookahead - 1);
+      --buffered_;
+    }
+    return t;
+  }
 
   [[noreturn]] void fail(const SourcePos& p, const std::string& what) const {
     throw InputError(file_, std::to_string(p.line) + ":" + std::to_string(p.column), what);
@@ -228,8 +247,8 @@ class Parser {
         cur().kind == Token::Kind::End ? "end of file" : "'" + std::string(cur().text) + "'";
     fail(cur().pos, "expected " + what + ", found " + got);
   }
-  void expect(const char* punct) {
-    if (!is(punct)) expected(std::string("'") + punct + "'");
+  void expect(std::string_view punct) {
+    if (!is(punct)) expected("'" + std::string(punct) + "'");
     take();
   }
   std::string identifier(const std::string& what) {
@@ -260,15 +279,22 @@ class Parser {
 
   Statement statement() {
     Statement s;
-    size_t save = k_;
-    while (is("static") || is("const")) take();
+    std::optional<Token> qualifier;
+    while (is("static") || is("const")) {
+      const Token q = take();
+      if (!qualifier) qualifier = q;
+    }
     if (is("GXLightObj") || is("GXTexObj") || is("GXTlutObj") || is("TPLFile") || is("Mtx") ||
         is("u8")) {
       s.kind = Statement::Kind::Declaration;
       s.declaration = declaration();
       return s;
     }
-    k_ = save;
+    // A qualifier starts nothing but a declaration here (a call cannot be static or const).
+    if (qualifier)
+      fail(qualifier->pos, "'" + std::string(qualifier->text) +
+                               "' before something that is not a declaration (GXLightObj, "
+                               "GXTexObj, GXTlutObj, TPLFile, Mtx or u8)");
     s.kind = Statement::Kind::Call;
     s.call = call();
     expect(";");
@@ -479,7 +505,10 @@ class Parser {
     return v;
   }
 
-  std::vector<Token> t_;
+  static constexpr size_t kLookahead = 4;  // a power of two: the window's index is a mask
+  mutable Lexer lexer_;
+  mutable std::array<Token, kLookahead> window_{};
+  mutable size_t first_ = 0, buffered_ = 0;
   const std::string& file_;
   size_t k_ = 0;
 };
@@ -487,7 +516,7 @@ class Parser {
 }  // namespace
 
 ProgramFile parse_program(const std::string& text, const std::string& file_for_errors) {
-  return Parser(Lexer(text, file_for_errors).run(), file_for_errors).run();
+  return Parser(text, file_for_errors).run();
 }
 
 ProgramFile load_program(const std::filesystem::path& path) {
