@@ -17,22 +17,35 @@ add_library(lt_test_pch OBJECT ${CMAKE_BINARY_DIR}/generated/test_pch.cpp)
 target_include_directories(lt_test_pch PRIVATE ${CMAKE_SOURCE_DIR}/src)
 target_compile_definitions(lt_test_pch PRIVATE GL_GLEXT_PROTOTYPES=1)
 target_link_libraries(lt_test_pch PRIVATE ${LT_CORE_LIBRARIES} GTest::gtest)
-target_compile_options(lt_test_pch PRIVATE -Og)
+target_compile_options(lt_test_pch PRIVATE -O0)
 target_precompile_headers(lt_test_pch PRIVATE ${CMAKE_SOURCE_DIR}/tests/precompiled.h)
+# The test helpers that walk every pixel (tests/test_pixels.cpp) at the build type's -O3: the
+# test files are compiled at -O0 (below), where such a loop ran slower than the render it checks
+# (non_finite: 4.7% of Demo/Bounded's CPU, `perf record`).
+add_library(lt_test_support STATIC ${CMAKE_SOURCE_DIR}/tests/test_pixels.cpp)
+target_include_directories(lt_test_support PRIVATE ${CMAKE_SOURCE_DIR}/src)
+target_link_libraries(lt_test_support PRIVATE ${LT_CORE_LIBRARIES} GTest::gtest)
+target_compile_options(lt_test_support PRIVATE ${LT_WARNINGS})
 
 function(lt_test_binary name)
   cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
-  target_link_libraries(${name} PRIVATE ltrender_cli ${T_LIBS} GTest::gtest GTest::gtest_main)
+  target_link_libraries(${name} PRIVATE lt_test_support ltrender_cli ${T_LIBS} GTest::gtest
+    GTest::gtest_main)
   # Compile time is most of ./test.sh from a fresh clone (issue 28): the tests were two thirds of
-  # the build, and their own code is thin (the work is in ltrender_core, still -O3). -Og and a
+  # the build, and their own code is thin (the work is in ltrender_core, still -O3). -O0 and a
   # precompiled header of what nearly every test includes make them much cheaper to compile:
   # a batch of 32 test files took 80.5 s of CPU at -O1, 62.6 s at -Og, 45.8 s at -O0
-  # (`/usr/bin/time` on its compile). Not -O0: the linker keeps the first copy of an inline
-  # function or template it meets, the tests' unoptimised one, and the core then calls it
-  # (arbfp's IR copies, OpenMesh's containers): ArbIr's sweep took 3 times as long. At -Og the
-  # suites that showed it run as at -O1 (docs/testing.md "Test time").
-  target_compile_options(${name} PRIVATE -Og)
+  # (`/usr/bin/time` on its compile).
+  target_compile_options(${name} PRIVATE -O0)
+  # -O0 has a price at link time, paid here: of the copies of an inline function or template
+  # (std::vector's growth, OpenMesh's containers, arbfp's IR), the linker keeps the first it meets,
+  # and the test files' unoptimised ones came first, so the core called them (ArbIr's sweep took
+  # 3 times as long). The core's and the commands' archives are read whole before the test
+  # files, so their -O3 / -O1 copies are the ones kept (GNU ld keeps the first COMDAT group of a
+  # name; `--whole-archive` loads every member where it stands on the command line).
+  target_link_options(${name} PRIVATE -Wl,--whole-archive $<TARGET_FILE:ltrender_core>
+    $<TARGET_FILE:ltrender_cli> -Wl,--no-whole-archive)
   # One precompiled header for every test binary (lt_test_pch below): each made its own, 9.7 s
   # of CPU apiece (.ninja_log of a fresh clone).
   target_precompile_headers(${name} REUSE_FROM lt_test_pch)
@@ -76,7 +89,7 @@ lt_test_binary(dolphin_tests SOURCES ${LT_DOLPHIN_TEST_SOURCES} TIMEOUT 120 LABE
 # every test process, 1,818 processes, about half of the suite's CPU time (issue 28 measured
 # it). The other binaries reach it only through the image module, when a test reads or writes
 # an image. A test that includes an OpenImageIO header elsewhere fails to link: add it here.
-set(LT_OIIO_TEST_NAMES albedo_map albedo_paths arb_ramp combiners_ramp compare exr_map_paths gx_map_path png_file regress regress_isolation thickness_map)
+set(LT_OIIO_TEST_NAMES albedo_map albedo_paths arb_ramp combiners_ramp compare exr_file exr_map_paths gx_map_path png_file regress regress_isolation thickness_map)
 set(LT_OIIO_TEST_SOURCES)
 foreach(name ${LT_OIIO_TEST_NAMES})
   list(APPEND LT_OIIO_TEST_SOURCES ${CMAKE_SOURCE_DIR}/tests/${name}_test.cpp)

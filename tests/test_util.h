@@ -162,20 +162,16 @@ inline std::string scene_param_name(const std::string& file) {
   return test_param_name(fs::path(file).stem().string());
 }
 
+// The helpers below walk every pixel. They are compiled optimised in tests/test_pixels.cpp, not
+// inline here: the test binaries are built at -O0 (cmake/test_binaries.cmake), where a loop of
+// std::isfinite and vector iterators ran several times slower than the render it checks.
+
 // NaN or Inf values anywhere in an image (all four channels): model.md's "no NaN or Inf ever
 // reaches an image" is this being 0.
-inline size_t non_finite(const Image& img) {
-  size_t n = 0;
-  for (float v : img.rgba) n += !std::isfinite(v);
-  return n;
-}
+size_t non_finite(const Image& img);
 
 // Pixels whose alpha (coverage) is over one half.
-inline size_t covered_pixels(const Image& img) {
-  size_t n = 0;
-  for (size_t i = 0; i < img.pixel_count(); ++i) n += img.rgba[i * 4 + 3] > 0.5f;
-  return n;
-}
+size_t covered_pixels(const Image& img);
 
 // Pixels whose 8-bit RGB differ between two pictures of one size, and the largest difference.
 struct PictureDifference {
@@ -183,27 +179,6 @@ struct PictureDifference {
   int max = 0;
   int first_x = -1, first_y = -1;
 };
-inline PictureDifference picture_difference(const Image& a, const Image& b) {
-  PictureDifference d;
-  if (a.width != b.width || a.height != b.height) {
-    ADD_FAILURE() << "pictures of " << a.width << "x" << a.height << " and " << b.width << "x"
-                  << b.height;
-    d.differ = a.pixel_count();
-    return d;
-  }
-  for (size_t i = 0; i < a.pixel_count(); ++i) {
-    int m = 0;
-    for (size_t ch = 0; ch < 3; ++ch)
-      m = std::max(m, std::abs(static_cast<int>(std::lround(a.rgba[i * 4 + ch] * 255.0f)) -
-                               static_cast<int>(std::lround(b.rgba[i * 4 + ch] * 255.0f))));
-    if (m == 0) continue;
-    if (d.differ++ == 0) {
-      d.first_x = static_cast<int>(i % static_cast<size_t>(a.width));
-      d.first_y = static_cast<int>(i / static_cast<size_t>(a.width));
-    }
-    d.max = std::max(d.max, m);
-  }
-  return d;
-}
+PictureDifference picture_difference(const Image& a, const Image& b);
 
 }  // namespace lt::test
