@@ -14,6 +14,7 @@ packages=(
   libmeshoptimizer-dev                       # vertex-cache order and triangle strips (the Wii port)
   libopenimageio-dev                         # image I/O
   libpng-dev                                 # PNG without loading OpenImageIO (image/png_file.h)
+  libopenexr-dev                             # EXR without loading OpenImageIO (image/exr_file.h)
   libimath-dev                               # half (binary16) for the fp16 path
   libhwy-dev                                 # Highway: the CPU paths' vector lanes
   libembree-dev                              # ray casting for the thickness baker

@@ -8,6 +8,7 @@
 #include "core/file_name.h"
 #include "core/fs.h"
 #include "core/stderr_capture.h"
+#include "image/exr_file.h"
 #include "image/image_codec.h"
 #include "image/png_file.h"
 
@@ -27,8 +28,8 @@ void write_image(const std::filesystem::path& path, const Image& image) {
     std::string error;
     bool ok = false;
     if (ext == ".exr") {
-      ok = image_codec().write_rgba_float(tmp.string(), image.width, image.height,
-                                          image.rgba.data(), error);
+      // OpenEXR in this process: no image module to load (image/exr_file.h).
+      ok = write_exr_rgba_float(tmp.string(), image.width, image.height, image.rgba.data(), error);
     } else {
       std::vector<uint8_t> bytes(image.pixel_count() * 3);
       for (size_t i = 0; i < image.pixel_count(); ++i) {
@@ -64,13 +65,15 @@ class CheckedInput {
     // reader in turn once the one the extension names has failed) never returns.
     check_input_file(path, InputKind::Image);
     std::string error;
-    // A PNG is read with libpng in this process unless it needs OpenImageIO's associated alpha
-    // (image/png_file.h); anything else through the image module.
-    const PngOpen png = has_png_signature(path)
-                            ? open_png(path.string(), unassociated_alpha, in_, error)
-                            : PngOpen::kDeclined;
-    if (png == PngOpen::kDeclined)
-      in_ = image_codec().open(path.string(), unassociated_alpha, error);
+    // A PNG is read with libpng and a plain EXR with OpenEXR in this process, unless it needs
+    // OpenImageIO's associated alpha or is an EXR of another kind (image/png_file.h,
+    // image/exr_file.h); anything else through the image module.
+    bool declined = true;
+    if (has_png_signature(path))
+      declined = open_png(path.string(), unassociated_alpha, in_, error) == PngOpen::kDeclined;
+    else if (has_exr_signature(path))
+      declined = open_exr(path.string(), in_, error) == ExrOpen::kDeclined;
+    if (declined) in_ = image_codec().open(path.string(), unassociated_alpha, error);
     if (!in_) fail("cannot read image: " + error);
     const ImageFileSpec& spec = in_->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0) fail("image has no pixels");
