@@ -427,8 +427,8 @@ s32 TPL_GetTexture(TPLFile* tdf, s32 id, GXTexObj* texObj) {
                 (u8)be32(image + 16), image[34] > 0);
   if (image[34] > 0) {
     const f32 bias = bef32(image + 28);
-    GX_InitTexObjLOD(texObj, (u8)be32(image + 20), (u8)be32(image + 24), image[33], image[34],
-                     bias, bias > 0, bias > 0, image[32]);
+    GX_InitTexObjLOD(texObj, (u8)be32(image + 20), (u8)be32(image + 24), image[33], image[34], bias,
+                     bias > 0, bias > 0, image[32]);
   }
   return 0;
 }
