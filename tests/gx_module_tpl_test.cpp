@@ -89,6 +89,8 @@ const Case kCases[] = {
     {"scenes/maps/sphere_map.json", "t=vertex:map=ci4", 2, "TPL_GetTextureCI"},
     {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr", 2, "TPL_GetTexture"},
     {"scenes/maps/sphere_map.json", "t=vertex:map=i4", 2, "TPL_GetTexture"},
+    // The power LUT as I4 (:lut-format=).
+    {"scenes/maps/sphere_map.json", "t=vertex:map=i4:lut-format=i4", 2, "TPL_GetTexture"},
     // A mip chain: the TPL holds every level (max LOD = levels - 1), the texels of each.
     {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr:mip=lin:mip-bias=1.5", 2,
      "TPL_GetTexture"},
