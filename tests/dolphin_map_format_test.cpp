@@ -1,6 +1,7 @@
 // Every map format `:map=FMT` offers (gx_variant.h) judged by Dolphin: the map scenes' colour
 // map (scenes/maps/sphere_rgb_ramp.json) as RGB565, RGB5A3, CMPR and CI8 (RGB565 TLUT), their
-// grey map (scenes/maps/sphere_map.json) as IA8, IA4, I4 and CI4 (IA8 TLUT), the eight frames in
+// grey map (scenes/maps/sphere_map.json) as IA8, IA4, I4 and CI4 (IA8 TLUT), and the I4 map with
+// the power LUT as I4 (:lut-format=i4), the nine frames in
 // one FIFO log (one Dolphin start: dolphin_util.h dolphin_pictures with a scene a frame), each
 // frame's texture in its format in the log's memory and TexImage0, a colour-indexed one's
 // palette in memory and loaded into TMEM by BP_LOADTLUT0/1, its TMEM offset and format in the
@@ -38,7 +39,9 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
                             {"scenes/maps/sphere_map.json", "t=vertex:map=ia4"},
                             {"scenes/maps/sphere_map.json", "t=vertex:map=i4"},
                             {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=ci8"},
-                            {"scenes/maps/sphere_map.json", "t=vertex:map=ci4"}};
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ci4"},
+                            // The power LUT as I4 (:lut-format=, docs/textures.md).
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4:lut-format=i4"}};
   constexpr size_t kFrames = std::size(cases);
   std::vector<Scene> scenes;
   for (const MapFrame& c : cases) {
@@ -55,9 +58,10 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
   // IA4. IA4 and I4 hold the same 4-bit intensity (the alpha is unused), so they draw one
   // picture from different tiles (8x4 of bytes, 8x8 of nibbles: a wrong format reads others).
   // The colour-indexed frames differ from the direct formats of their map (CI8's 256 RGB565
-  // entries from RGB565's texels, CI4's 16 IA8 entries from IA8's texels).
+  // entries from RGB565's texels, CI4's 16 IA8 entries from IA8's texels); the I4 LUT's frame
+  // from the I8 LUT's.
   const std::pair<size_t, size_t> differing[] = {{0, 1}, {0, 2}, {1, 2}, {3, 4},
-                                                 {3, 5}, {6, 0}, {7, 3}};
+                                                 {3, 5}, {6, 0}, {7, 3}, {8, 5}};
   for (const auto& [k, j] : differing)
     EXPECT_GT(test::picture_difference(dolphin[k], dolphin[j]).differ, 0u)
         << cases[k].variant << " and " << cases[j].variant << " draw the same picture";

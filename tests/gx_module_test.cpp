@@ -211,6 +211,9 @@ std::vector<Case> module_cases() {
   // lights: the safe bound D = 0, and a tighter D = 1.5 with the XF specular light.
   out.push_back({"scenes/coloured_cubes.json", "t=vertex:light-range=0"});
   out.push_back({"scenes/three_point_blob.json", "lobe=xf-spec:view=object:light-range=1.5"});
+  // A mipmapped albedo map: the module takes its chain from the TPL (TPL_GetTexture's
+  // GX_InitTexObjLOD from the header, then the pass's own).
+  out.push_back({"scenes/albedo_checker.json", "t=vertex:mip=lin:mip-bias=2"});
   return out;
 }
 

@@ -61,7 +61,7 @@ TEST_P(GxModuleTpl, HoldsTheTexturesTheEmulatorLoadsByteForByte) {
         const TplTexture& x = tpl[k];
         if (static_cast<u8>(x.format) != t->format || x.width != t->width ||
             x.height != t->height || x.data != t->data || x.wrap_s != t->wrap_s ||
-            x.wrap_t != t->wrap_t || x.tlut != t->tlut || x.levels != 1)
+            x.wrap_t != t->wrap_t || x.tlut != t->tlut || x.levels != t->levels)
           continue;
         if (!x.tlut.empty()) {
           EXPECT_EQ(static_cast<u8>(x.tlut_format), t->tlut_format);
@@ -76,7 +76,9 @@ TEST_P(GxModuleTpl, HoldsTheTexturesTheEmulatorLoadsByteForByte) {
   for (size_t k = 0; k < tpl.size(); ++k)
     EXPECT_GT(loads[k], 0) << "texture " << k << " of the TPL is loaded by no pass";
   EXPECT_NE(module.find(std::string(c.get_call) + "(&ltrender_tpl, "), std::string::npos);
-  EXPECT_EQ(module.find("  GX_InitTexObj"), std::string::npos) << "a texture over a raw array";
+  // GX_InitTexObj( or GX_InitTexObjCI( over a raw array; a mip chain's GX_InitTexObjLOD stays.
+  EXPECT_EQ(module.find("  GX_InitTexObj("), std::string::npos) << "a texture over a raw array";
+  EXPECT_EQ(module.find("  GX_InitTexObjCI("), std::string::npos) << "a texture over a raw array";
   EXPECT_NE(module.find("TPL_OpenTPLFromMemory(&ltrender_tpl, ltrender_textures_tpl, sizeof "
                         "ltrender_textures_tpl)"),
             std::string::npos);
@@ -87,6 +89,11 @@ const Case kCases[] = {
     {"scenes/maps/sphere_map.json", "t=vertex:map=ci4", 2, "TPL_GetTextureCI"},
     {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr", 2, "TPL_GetTexture"},
     {"scenes/maps/sphere_map.json", "t=vertex:map=i4", 2, "TPL_GetTexture"},
+    // The power LUT as I4 (:lut-format=).
+    {"scenes/maps/sphere_map.json", "t=vertex:map=i4:lut-format=i4", 2, "TPL_GetTexture"},
+    // A mip chain: the TPL holds every level (max LOD = levels - 1), the texels of each.
+    {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr:mip=lin:mip-bias=1.5", 2,
+     "TPL_GetTexture"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Maps, GxModuleTpl, ::testing::ValuesIn(kCases), [](const auto& info) {

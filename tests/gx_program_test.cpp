@@ -219,6 +219,108 @@ TEST(GxProgram, ALodRangePastTheArraysLevelsIsRefusedAtTheLoad) {
   }
 }
 
+// libogc's single-field setters [OGC gx.c L3353-3407] each write the field GX_InitTexObjLOD
+// writes with the same value, and nothing else: from one GX_InitTexObjLOD, a setter gives the
+// object GX_InitTexObjLOD's with that one argument changed; all of them together give the
+// object a second GX_InitTexObjLOD with every argument changed. The array is an 8x8 I8 chain of
+// 4 levels (64 + 32 + 32 + 32 bytes), so a max LOD up to 3 loads.
+struct LodArgs {
+  std::string min_filter = "GX_LIN_MIP_LIN", mag_filter = "GX_LINEAR", min_lod = "0.5",
+              max_lod = "1.0", bias = "0.0", bias_clamp = "GX_FALSE", edge = "GX_TRUE",
+              aniso = "GX_ANISO_1";
+  std::string call() const {
+    return "GX_InitTexObjLOD(&t, " + min_filter + ", " + mag_filter + ", " + min_lod + ", " +
+           max_lod + ", " + bias + ", " + bias_clamp + ", " + edge + ", " + aniso + ");\n";
+  }
+};
+TextureObject lod_texture(const std::string& calls) {
+  const GxState st =
+      run("u8 a[160] = {0};\nGXTexObj t;\n"
+          "GX_InitTexObj(&t, a, 8, 8, GX_TF_I8, GX_CLAMP, GX_CLAMP, GX_TRUE);\n" +
+          calls + "GX_LoadTexObj(&t, GX_TEXMAP0);\n");
+  EXPECT_TRUE(st.textures[0].has_value());
+  return st.textures[0].value_or(TextureObject{});
+}
+
+TEST(GxProgram, EachLodSetterWritesWhatGxInitTexObjLodWrites) {
+  const LodArgs base;
+  struct Setter {
+    std::string call;
+    void (*change)(LodArgs&);
+  };
+  const Setter setters[] = {
+      {"GX_InitTexObjMinLOD(&t, 0.25);\n", [](LodArgs& a) { a.min_lod = "0.25"; }},
+      {"GX_InitTexObjMaxLOD(&t, 2.5);\n", [](LodArgs& a) { a.max_lod = "2.5"; }},
+      {"GX_InitTexObjLODBias(&t, -1.5);\n", [](LodArgs& a) { a.bias = "-1.5"; }},
+      {"GX_InitTexObjBiasClamp(&t, GX_TRUE);\n", [](LodArgs& a) { a.bias_clamp = "GX_TRUE"; }},
+      {"GX_InitTexObjEdgeLOD(&t, GX_FALSE);\n", [](LodArgs& a) { a.edge = "GX_FALSE"; }},
+      {"GX_InitTexObjMaxAniso(&t, GX_ANISO_4);\n", [](LodArgs& a) { a.aniso = "GX_ANISO_4"; }},
+      {"GX_InitTexObjFilterMode(&t, GX_NEAR_MIP_NEAR, GX_NEAR);\n",
+       [](LodArgs& a) {
+         a.min_filter = "GX_NEAR_MIP_NEAR";
+         a.mag_filter = "GX_NEAR";
+       }},
+  };
+  LodArgs all = base;
+  std::string every_setter;
+  for (const Setter& s : setters) {
+    SCOPED_TRACE(s.call);
+    LodArgs changed = base;
+    s.change(changed);
+    s.change(all);
+    every_setter += s.call;
+    const TextureObject by_setter = lod_texture(base.call() + s.call);
+    const TextureObject by_lod = lod_texture(changed.call());
+    ASSERT_TRUE(by_setter.lod.has_value());
+    EXPECT_TRUE(by_setter.lod == by_lod.lod);
+    EXPECT_EQ(by_setter.linear, by_lod.linear);
+    EXPECT_FALSE(by_setter.lod == lod_texture(base.call()).lod) << "the setter changed nothing";
+  }
+  const TextureObject by_setters = lod_texture(base.call() + every_setter);
+  const TextureObject by_lod = lod_texture(all.call());
+  EXPECT_TRUE(by_setters.lod == by_lod.lod);
+  EXPECT_FALSE(by_setters.linear);
+  // The fields as libogc's conversions give them, worked by hand.
+  ASSERT_TRUE(by_setters.lod.has_value());
+  EXPECT_EQ(by_setters.lod->min_lod, 4);   // 16 * 0.25
+  EXPECT_EQ(by_setters.lod->max_lod, 40);  // 16 * 2.5
+  EXPECT_EQ(by_setters.lod->bias, -48);    // 32 * -1.5
+  EXPECT_TRUE(by_setters.lod->bias_clamp);
+  EXPECT_TRUE(by_setters.lod->diagonal);     // !edgelod
+  EXPECT_EQ(by_setters.lod->max_aniso, 2);   // GX_ANISO_4
+  EXPECT_EQ(by_setters.lod->min_filter, 1);  // GX_NEAR_MIP_NEAR through _gx2HWFiltConv
+  // The clamps: a bias of 4.0 is stored as 3.99 (127), a min LOD above 10 as 10 (160); without a
+  // mip filter the range reads level 0 alone, so the load takes it.
+  const TextureObject clamped = lod_texture(
+      base.call() +
+      "GX_InitTexObjFilterMode(&t, GX_LINEAR, GX_LINEAR);\nGX_InitTexObjLODBias(&t, 4.0);\n"
+      "GX_InitTexObjMinLOD(&t, 12.0);\n");
+  ASSERT_TRUE(clamped.lod.has_value());
+  EXPECT_EQ(clamped.lod->bias, 127);
+  EXPECT_EQ(clamped.lod->min_lod, 160);
+}
+
+// GX_REPEAT over a side that is not a power of two is refused at the load (the console masks the
+// coordinate with the size minus one: not a repeat), whether GX_InitTexObj or a later
+// GX_InitTexObjWrapMode asked for it; the same wrap over a power of two loads.
+TEST(GxProgram, RepeatOverASideThatIsNotAPowerOfTwoIsRefusedAtTheLoad) {
+  const std::string init =
+      "u8 a[64] = {0};\nGXTexObj t;\n"
+      "GX_InitTexObj(&t, a, 8, 6, GX_TF_I8, GX_REPEAT, GX_CLAMP, GX_FALSE);\n";
+  EXPECT_TRUE(run(init + "GX_LoadTexObj(&t, GX_TEXMAP0);\n").textures[0].has_value());
+  try {
+    run(init +
+        "GX_InitTexObjWrapMode(&t, GX_REPEAT, GX_REPEAT);\nGX_LoadTexObj(&t, GX_TEXMAP0);\n");
+    FAIL() << "GX_REPEAT over 6 texels loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.what_only().find("t repeats in t (GX_REPEAT) over 6 texels of a: repeat needs a "
+                                 "power of two"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.where().substr(0, 2), "5:") << e.what();
+  }
+}
+
 TEST(GxProgram, UnmodelledTextureFormatsAreRefusedAtTheirArgument) {
   try {
     run("u8 a[32] = {0};\nGXTexObj t;\nGX_InitTexObj(&t, a, 8, 1, GX_TF_CI8, GX_CLAMP, GX_CLAMP, "

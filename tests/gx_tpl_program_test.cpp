@@ -58,7 +58,10 @@ TplProgram tpl_program(const Scene& scene, const std::string& variant,
 TEST(GxTplProgram, DrawsTheVariantsFrameFromAFileAndFromMemory) {
   for (const auto& [scene_file, variant] :
        {std::pair<std::string, std::string>{"scenes/maps/sphere_map.json", "t=vertex:map=ci4"},
-        {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr"}}) {
+        {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr"},
+        // A mip chain: TPL_GetTexture gives the object the header's levels and LOD fields
+        // [OGC tpl.c L241-248], the program's GX_InitTexObjLOD after it its own.
+        {"scenes/maps/sphere_map.json", "t=vertex:mip=lin:mip-bias=2"}}) {
     SCOPED_TRACE(scene_file + " --variant " + variant);
     const Scene scene = load_scene(test::source_dir() / scene_file);
     const Image direct = render_scene(scene, "gx", variant, kSize, kSize);
@@ -77,7 +80,34 @@ TEST(GxTplProgram, DrawsTheVariantsFrameFromAFileAndFromMemory) {
     const Image by_memory = render_scene(scene, "gx", variant, kSize, kSize,
                                          PathOptions{(dir / "memory.c").string(), ""});
     EXPECT_TRUE(by_memory.rgba == direct.rgba) << "the frame drawn from the TPL array differs";
+    if (variant.find(":mip=") != std::string::npos) {
+      const Image level0 = render_scene(scene, "gx", "t=vertex", kSize, kSize);
+      EXPECT_FALSE(level0.rgba == direct.rgba) << "the chain changes no pixel: nothing is held";
+    }
   }
+}
+
+// `ltrender render --program` with a TPL cut short: exit 2, one line naming the TPL and the
+// offset, and no image written (the command's side of GxBadTpl's refusals).
+TEST(GxTplProgram, ATruncatedTplExitsTwoWithOneLineAndWritesNothing) {
+  const std::string scene_file = (test::source_dir() / "scenes/maps/sphere_map.json").string();
+  const Scene scene = load_scene(scene_file);
+  test::TempDir dir;
+  TplProgram p = tpl_program(scene, "t=vertex:map=ci4", "maps.tpl");
+  p.tpl.resize(p.tpl.size() - 40);  // into the last block
+  test::write_file(dir / "maps.tpl", std::string(p.tpl.begin(), p.tpl.end()));
+  test::write_file(dir / "bad.c", p.text);
+  const fs::path out = dir / "out.png";
+  const test::RunResult r =
+      test::run_ltrender("render " + scene_file +
+                         " --path gx --variant t=vertex:map=ci4 --width 32 --height 32 "
+                         "--program " +
+                         (dir / "bad.c").string() + " -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find((dir / "maps.tpl").string() + ":offset "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("past the end"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 // What TPL_GetTexture gives the texture object, from an array in the program: the header's

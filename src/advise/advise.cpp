@@ -424,6 +424,7 @@ Advice run_advise(const AdviseOptions& o) {
     }
   }
   add_storage_advice(a, scene, path, target.options, target.profile);
+  add_texture_advice(a, scene, path, target.options, target.profile);
   a.seconds = seconds_since(start);
   return a;
 }

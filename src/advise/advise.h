@@ -14,6 +14,7 @@
 
 #include "advise/hard_cases.h"
 #include "advise/storage_advice.h"
+#include "advise/texture_advice.h"
 #include "advise/variant_space.h"
 #include "metrics/compare.h"
 #include "scene/triangle_mesh.h"
@@ -111,6 +112,8 @@ struct MaterialAdvice {
   std::optional<size_t> closest;         // without a pick: the admissible one of least error
   std::optional<Refinement> refinement;  // with --max-vertices, for a material without a pick
   std::optional<StorageAdvice> storage;  // a console path's, for a material with a pick
+  // A console path's texture formats, for a pick whose material samples a map or the LUT.
+  std::optional<TextureAdvice> textures;
   // A pick, or a refined mesh within the budget.
   bool within_budget() const { return pick || (refinement && refinement->holds_at); }
 };

@@ -80,6 +80,75 @@ nlohmann::ordered_json storage_json(const StorageAdvice& s) {
   return j;
 }
 
+// A texture option's formats as the text shows them: "map ci4, LUT i8".
+std::string texture_label(const TextureOption& o) {
+  std::string s;
+  if (!o.map_format.empty()) s = "map " + o.map_format;
+  if (!o.lut_format.empty()) s += (s.empty() ? "LUT " : ", LUT ") + o.lut_format;
+  return s;
+}
+
+// The texture formats advised for a material and what each tried format measured.
+void textures_text(std::ostream& out, const TextureAdvice& t, Stat stat) {
+  if (t.pick) {
+    const TextureOption& p = t.options[*t.pick];
+    out << "  textures (" << t.maps << "): " << texture_label(p) << ": " << p.mem1_bytes()
+        << " MEM1 bytes (" << p.texture_bytes << " texels + " << p.tlut_bytes << " TLUT), "
+        << p.tmem_bytes << " TMEM bytes, " << to_string(stat) << " "
+        << fixed(stat_of(p.error, stat), 2) << " LSB (rendered: " << p.variant << ")\n";
+  } else {
+    out << "  textures (" << t.maps << "): none within the budget\n";
+  }
+  for (const TextureOption& o : t.options) {
+    out << "    " << (t.pick && &t.options[*t.pick] == &o ? "* " : "  ") << texture_label(o)
+        << ": ";
+    if (!o.failed.empty()) {
+      out << o.failed << "\n";
+      continue;
+    }
+    out << o.mem1_bytes() << " MEM1 B (" << o.tlut_bytes << " TLUT), " << o.tmem_bytes
+        << " TMEM B; max " << fixed(o.error.max_lsb, 2) << ", p99 " << fixed(o.error.p99_lsb, 2)
+        << ", mean " << fixed(o.error.mean_lsb, 2)
+        << (o.non_finite ? ", " + std::to_string(o.non_finite) + " non-finite pixels" : "") << "\n";
+  }
+}
+
+nlohmann::ordered_json textures_json(const TextureAdvice& t) {
+  nlohmann::ordered_json j;
+  j["maps"] = t.maps;
+  auto format_or_null = [](const std::string& f) {
+    return f.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(f);
+  };
+  j["pick"] = nullptr;
+  if (t.pick) {
+    const TextureOption& p = t.options[*t.pick];
+    j["pick"] = {{"map_format", format_or_null(p.map_format)},
+                 {"lut_format", format_or_null(p.lut_format)},
+                 {"variant", p.variant},
+                 {"mem1_bytes", p.mem1_bytes()},
+                 {"tmem_bytes", p.tmem_bytes}};
+  }
+  j["options"] = nlohmann::ordered_json::array();
+  for (const TextureOption& o : t.options) {
+    nlohmann::ordered_json jo;
+    jo["map_format"] = format_or_null(o.map_format);
+    jo["lut_format"] = format_or_null(o.lut_format);
+    jo["variant"] = o.variant;
+    jo["failed"] = o.failed;
+    if (o.failed.empty()) {
+      jo["texture_bytes"] = o.texture_bytes;
+      jo["tlut_bytes"] = o.tlut_bytes;
+      jo["mem1_bytes"] = o.mem1_bytes();
+      jo["tmem_bytes"] = o.tmem_bytes;
+      jo["error"] = {
+          {"max", o.error.max_lsb}, {"p99", o.error.p99_lsb}, {"mean", o.error.mean_lsb}};
+      jo["non_finite_pixels"] = o.non_finite;
+    }
+    j["options"].push_back(jo);
+  }
+  return j;
+}
+
 // How the pick compares with the path's default for one material.
 std::string against_default(const Advice& a, size_t m, size_t pick) {
   const CandidateResult& d = a.candidates.front();
@@ -140,6 +209,7 @@ std::string to_text(const Advice& a) {
           << error_text(p.error[m], p.edge_split[m]) << "\n  " << against_default(a, m, *ma.pick)
           << "\n";
       if (ma.storage) storage_text(out, *ma.storage, o.stat);
+      if (ma.textures) textures_text(out, *ma.textures, o.stat);
     } else if (ma.closest) {
       const CandidateResult& c = a.candidates[*ma.closest];
       out << "  no candidate within the budget; closest: " << c.candidate.variant << ": "
@@ -247,6 +317,7 @@ nlohmann::ordered_json to_json(const Advice& a) {
     jm["pick"] = name_of(ma.pick);
     jm["closest"] = name_of(ma.closest);
     if (ma.storage) jm["storage"] = storage_json(*ma.storage);
+    if (ma.textures) jm["textures"] = textures_json(*ma.textures);
     if (ma.refinement) {
       const Refinement& r = *ma.refinement;
       auto steps = [&](const std::vector<RefinementStep>& v) {

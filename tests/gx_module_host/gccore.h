@@ -63,6 +63,8 @@ void GX_LoadTexMtxImm(Mtx m, u32 id, u8 type);
 void GX_SetNumTexGens(u32 n);
 void GX_SetTexCoordGen(u16 coord, u32 type, u32 src, u32 mtx);
 void GX_InitTexObj(GXTexObj* o, void* image, u16 w, u16 h, u8 fmt, u8 wrap_s, u8 wrap_t, u8 mipmap);
+void GX_InitTexObjLOD(GXTexObj* o, u8 minfilt, u8 magfilt, f32 minlod, f32 maxlod, f32 lodbias,
+                      u8 biasclamp, u8 edgelod, u8 maxaniso);
 void GX_LoadTexObj(GXTexObj* o, u8 map);
 void GX_SetNumTevStages(u8 n);
 void GX_SetTevColor(u8 reg, GXColor c);

@@ -163,7 +163,15 @@ void GX_InitTexObj(GXTexObj* o, void* image, u16 w, u16 h, u8 fmt, u8 ws, u8 wt,
   for (a = 0; a < array_count; ++a)
     if (arrays[a] == image) break;
   if (a == array_count) {
-    const size_t bytes = texture_bytes(w, h, fmt);
+    /* A mip chain (power-of-two sides) holds every level after the one before, down to 1x1
+       (gx/mip_chain.h mip_chain_bytes); the interpreter counts the levels from the bytes. */
+    size_t bytes = texture_bytes(w, h, fmt);
+    int lw = w, lh = h;
+    while (mip && (lw > 1 || lh > 1)) {
+      lw = lw > 1 ? lw / 2 : 1;
+      lh = lh > 1 ? lh / 2 : 1;
+      bytes += texture_bytes(lw, lh, fmt);
+    }
     const u8* p = image;
     size_t i, at = strlen(top);
     arrays[array_count++] = image;
@@ -174,6 +182,13 @@ void GX_InitTexObj(GXTexObj* o, void* image, u16 w, u16 h, u8 fmt, u8 ws, u8 wt,
     snprintf(top + at, sizeof top - at, "};\n");
   }
   append("  GX_InitTexObj(&o%d, a%d, %d, %d, %d, %d, %d, %d);\n", n, a, w, h, fmt, ws, wt, mip);
+}
+void GX_InitTexObjLOD(GXTexObj* o, u8 minfilt, u8 magfilt, f32 minlod, f32 maxlod, f32 lodbias,
+                      u8 biasclamp, u8 edgelod, u8 maxaniso) {
+  char a[40], b[40], c[40];
+  append("  GX_InitTexObjLOD(&o%d, %d, %d, %s, %s, %s, %d, %d, %d);\n", object_name(o, "GXTexObj"),
+         minfilt, magfilt, flt(a, minlod), flt(b, maxlod), flt(c, lodbias), biasclamp, edgelod,
+         maxaniso);
 }
 void GX_LoadTexObj(GXTexObj* o, u8 map) {
   append("  GX_LoadTexObj(&o%d, %d);\n", object_name(o, "GXTexObj"), map);
@@ -382,9 +397,17 @@ void GX_InvalidateTexAll(void) {}
 
 /* TPL files as libogc reads them [OGC tpl.c L147-250], on a little-endian host: the file is
    big-endian, so every field is read byte by byte. The header's filters count only for a mip
-   chain, which the module never has. */
+   chain (max LOD > 0): then GX_InitTexObjLOD with them, libogc's biasclamp (bias > 0) passed as
+   both the bias clamp and the edge LOD, the edge LOD byte as the anisotropy [OGC tpl.c
+   L241-248]; the module's pass then sets its own LOD fields. */
 static u32 be32(const u8* p) {
   return (u32)p[0] << 24 | (u32)p[1] << 16 | (u32)p[2] << 8 | p[3];
+}
+static f32 bef32(const u8* p) {
+  const u32 bits = be32(p);
+  f32 v;
+  memcpy(&v, &bits, sizeof v);
+  return v;
 }
 s32 TPL_OpenTPLFromMemory(TPLFile* tdf, void* memory, u32 len) {
   if (!memory || !len) return -1;
@@ -402,5 +425,10 @@ s32 TPL_GetTexture(TPLFile* tdf, s32 id, GXTexObj* texObj) {
   GX_InitTexObj(texObj, (void*)(p + be32(image + 4 + 4)), (u16)(image[2] << 8 | image[3]),
                 (u16)(image[0] << 8 | image[1]), (u8)be32(image + 4), (u8)be32(image + 12),
                 (u8)be32(image + 16), image[34] > 0);
+  if (image[34] > 0) {
+    const f32 bias = bef32(image + 28);
+    GX_InitTexObjLOD(texObj, (u8)be32(image + 20), (u8)be32(image + 24), image[33], image[34], bias,
+                     bias > 0, bias > 0, image[32]);
+  }
   return 0;
 }

@@ -1,6 +1,7 @@
 // The pixel engine, texture object, vertex format and cache calls.
 #include <algorithm>
 #include <optional>
+#include <tuple>
 
 #include "gx/program/machine.h"
 #include "gx/program/vertex_declarations.h"
@@ -64,6 +65,84 @@ void check_lod_levels(const Machine& m, const TexObject& t) {
                     std::to_string(m.bytes_of(t.array).size()) + " bytes)");
 }
 
+// GX_REPEAT on a side that is not a power of two: the texture unit wraps a coordinate by masking
+// it with the size minus one [DSW TextureSampler.cpp WrapCoord, quoting YAGCD], which repeats
+// only a power of two (W = 3 reads texels 0, 0, 2, 2, ...), so the picture would not be the
+// repeated image the program asks for (issue 47 "Bad input"). Checked at the load: the wrap can
+// change after GX_InitTexObj (GX_InitTexObjWrapMode) and TPL_GetTexture takes the TPL's.
+void check_repeat_sizes(const Machine& m, const TexObject& t) {
+  constexpr u8 kRepeat = 1;  // GX_REPEAT
+  for (const auto& [wrap, size, axis] : {std::tuple{t.texture.wrap_s, t.texture.width, "s"},
+                                         std::tuple{t.texture.wrap_t, t.texture.height, "t"}}) {
+    if (wrap == kRepeat && (size & (size - 1)) != 0)
+      m.fail_arg(0, m.name(0) + " repeats in " + axis + " (GX_REPEAT) over " +
+                        std::to_string(size) + " texels of " + t.array +
+                        ": repeat needs a power of two (the console masks the coordinate "
+                        "with the size minus one)");
+  }
+}
+
+// The LOD fields a single-field setter writes into: the object's own, or, for an object that
+// has none yet (no mipmaps, min filter = mag filter), GX_InitTexObj's, whose min filter is the
+// mag filter (linear unless GX_InitTexObjFilterMode made both GX_NEAR).
+TextureLod& lod_fields(TextureObject& t) {
+  if (!t.lod) {
+    t.lod = TextureLod{};
+    t.lod->min_filter = t.linear ? 4 : 0;
+  }
+  return *t.lod;
+}
+
+// libogc's single-field LOD setters, each one field of GX_InitTexObjLOD's with its conversion
+// [OGC gx.c L3361-3407]: GX_InitTexObjMinLOD and MaxLOD clamp to 0..10 and store 16 * lod
+// (TX_SETMODE1), LODBias clamps to -4 (4.0 as 3.99) and stores 32 * bias, BiasClamp, EdgeLOD
+// (stored inverted: the register's bit is "diagonal") and MaxAniso one bit field each of
+// TX_SETMODE0. Each takes its field from libogc_texture_lod, the conversion GX_InitTexObjLOD's
+// reading shares, so the two cannot disagree.
+void add_lod_field_calls(CallTable& table) {
+  using K = ParamKind;
+  using G = NameGroup;
+  const Param tex_p = of(K::TexRef);
+  // GX_InitTexObjLOD's conversions of (minlod, maxlod, lodbias, biasclamp, edgelod, maxaniso).
+  const auto conversion = [](float minlod, float maxlod, float bias, bool biasclamp, bool edgelod,
+                             int aniso) {
+    return libogc_texture_lod(0, minlod, maxlod, bias, biasclamp, edgelod, aniso);
+  };
+  table.insert({
+      {"GX_InitTexObjMinLOD",
+       {{tex_p, f32()},
+        [conversion](Machine& m) {
+          lod_fields(m.tex(0).texture).min_lod = conversion(m.f(1), 0, 0, false, true, 0).min_lod;
+        }}},
+      {"GX_InitTexObjMaxLOD",
+       {{tex_p, f32()},
+        [conversion](Machine& m) {
+          lod_fields(m.tex(0).texture).max_lod = conversion(0, m.f(1), 0, false, true, 0).max_lod;
+        }}},
+      {"GX_InitTexObjLODBias",
+       {{tex_p, f32()},
+        [conversion](Machine& m) {
+          lod_fields(m.tex(0).texture).bias = conversion(0, 0, m.f(1), false, true, 0).bias;
+        }}},
+      {"GX_InitTexObjBiasClamp",
+       {{tex_p, integer(G::Bool, 0, 1)},
+        [conversion](Machine& m) {
+          lod_fields(m.tex(0).texture).bias_clamp = conversion(0, 0, 0, m.b(1), true, 0).bias_clamp;
+        }}},
+      {"GX_InitTexObjEdgeLOD",
+       {{tex_p, integer(G::Bool, 0, 1)},
+        [conversion](Machine& m) {
+          lod_fields(m.tex(0).texture).diagonal = conversion(0, 0, 0, false, m.b(1), 0).diagonal;
+        }}},
+      {"GX_InitTexObjMaxAniso",
+       {{tex_p, integer(G::Anisotropy, 0, 2)},
+        [conversion](Machine& m) {
+          lod_fields(m.tex(0).texture).max_aniso =
+              conversion(0, 0, 0, false, true, static_cast<int>(m.i(1))).max_aniso;
+        }}},
+  });
+}
+
 // The largest palette index a colour-indexed image's bytes hold (padding texels included: the
 // sampler can fetch them at the edges): CI4 a nibble, CI8 a byte, CI14X2 a big-endian u16's low
 // 14 bits [DHW TextureDecoder_Common.cpp TexDecoder_DecodeTexel, case CI14X2 `& 0x3FFF`].
@@ -84,6 +163,7 @@ int largest_index(TexFormat format, const std::vector<u8>& bytes, size_t size) {
 }  // namespace
 
 void add_pixel_calls(CallTable& table) {
+  add_lod_field_calls(table);
   using K = ParamKind;
   using G = NameGroup;
   const Param tex_p = of(K::TexRef);
@@ -228,6 +308,7 @@ void add_pixel_calls(CallTable& table) {
           TexObject& t = m.tex(0);
           if (!t.initialised) m.fail_arg(0, m.name(0) + " was never given to GX_InitTexObj");
           check_lod_levels(m, t);
+          check_repeat_sizes(m, t);
           TextureObject loaded = t.texture;
           const size_t image_bytes = mip_chain_bytes(static_cast<TexFormat>(loaded.format),
                                                      loaded.width, loaded.height, loaded.levels);

@@ -180,7 +180,8 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     const Color8 background{to_unorm8(bg.r), to_unorm8(bg.g), to_unorm8(bg.b), 255};
     const ScenePrograms& programs = *in.programs;
     std::vector<TextureObject> luts;  // GX_TEXMAP0's fallback (gx.md §1), as the emulator's
-    for (const Material& m : scene.materials) luts.push_back(lobe_lut(m, in.variant.lut_size));
+    for (const Material& m : scene.materials)
+      luts.push_back(lobe_lut(m, in.variant.lut_size, in.variant.lut_format));
     CommandStream out;
     FifoFrame frame;
     TextureMemory memory(scene.file.string());

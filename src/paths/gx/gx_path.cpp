@@ -142,7 +142,8 @@ class GxPath final : public Path {
       if (!why.empty()) throw InputError("--variant", to_string(variant_), "gx: " + why);
     }
     for (const Material& m : s.materials)
-      luts_.push_back(lobe_lut(m, variant_.lut_size));  // GX_TEXMAP0's fallback (gx.md §1)
+      luts_.push_back(
+          lobe_lut(m, variant_.lut_size, variant_.lut_format));  // GX_TEXMAP0's fallback (gx.md §1)
     // The camera as the FIFO log loads it (fifo/xf_registers.h write_view_xf), so every vertex
     // starts from the clip-space position Dolphin computes.
     const ViewTransform view =

@@ -16,7 +16,8 @@ namespace lt::gx {
 namespace {
 
 const char* kValid =
-    "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024), or lobe=xf-spec; "
+    "valid: t=vertex | t=texgen, each with an optional :lut=N (N = 2..1024) and "
+    ":lut-format=FMT (i8, i4, ia4, ia8), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
     ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4; ci4, ci8), "
     ":mip=lin | near with an optional :mip-bias=B (-4 <= B < 4), :wrap=repeat (or :wrap=clamp), "
@@ -38,6 +39,10 @@ constexpr MapFormatName kMapFormats[] = {
     {"cmpr", TexFormat::CMPR},   {"i8", TexFormat::I8},         {"ia8", TexFormat::IA8},
     {"ia4", TexFormat::IA4},     {"i4", TexFormat::I4},         {"ci4", TexFormat::CI4},
     {"ci8", TexFormat::CI8}};
+
+// The :lut-format= values (gx_variant.h): the grey formats, each holding the LUT's intensity.
+constexpr MapFormatName kLutFormats[] = {
+    {"i8", TexFormat::I8}, {"i4", TexFormat::I4}, {"ia4", TexFormat::IA4}, {"ia8", TexFormat::IA8}};
 
 // Whether all of `text` reads as one number into `out`.
 template <class T>
@@ -86,6 +91,12 @@ GxVariant parse_gx_variant(const std::string& text) {
       if (!parses_whole(value, n) || n < 2 || n > 1024)
         bad("lut=" + value + " is not a LUT width of 2..1024 texels");
       v.lut_size = n;
+    } else if (key == "lut-format" && first) {
+      const auto named = std::find_if(std::begin(kLutFormats), std::end(kLutFormats),
+                                      [&](const MapFormatName& m) { return value == m.name; });
+      if (named == std::end(kLutFormats))
+        bad("lut-format=" + value + " is not a LUT format (i8, i4, ia4, ia8)");
+      if (named->format != TexFormat::I8) v.lut_format = named->format;
     } else if (key == "lobe" && first) {
       if (value == "xf-spec") {
         v.lobe = GxVariant::Lobe::XfSpec;
@@ -147,8 +158,9 @@ GxVariant parse_gx_variant(const std::string& text) {
   if (text.empty()) bad("empty variant");
   if (seen.count("mip-bias") && v.mip == GxVariant::Mip::Off)
     bad("mip-bias= biases the LOD of mipmapped maps: give :mip=lin or :mip=near");
-  if (v.lobe == GxVariant::Lobe::XfSpec && (seen.count("t") || seen.count("lut")))
-    bad("lobe=xf-spec uses no texture, so it takes no t= or lut=");
+  if (v.lobe == GxVariant::Lobe::XfSpec &&
+      (seen.count("t") || seen.count("lut") || seen.count("lut-format")))
+    bad("lobe=xf-spec uses no texture, so it takes no t=, lut= or lut-format=");
   // t=vertex computes V and L exactly per vertex on the CPU: a per-object view would only lose.
   // lobe=xf-spec has no LUT stage to fold the base into.
   if (v.base_in_tev && v.lobe == GxVariant::Lobe::XfSpec)
@@ -165,6 +177,10 @@ std::string to_string(const GxVariant& v) {
   } else {
     s = v.t == GxVariant::TexCoord::Vertex ? "t=vertex" : "t=texgen";
     if (v.lut_size != kDefaultLutSize) s += ":lut=" + std::to_string(v.lut_size);
+    if (v.lut_format) {
+      for (const MapFormatName& m : kLutFormats)
+        if (m.format == *v.lut_format) s += std::string(":lut-format=") + m.name;
+    }
   }
   if (v.view_object) s += ":view=object";
   if (v.base_in_tev) s += ":base=tev";

@@ -6,7 +6,10 @@
 // and for t=texgen and lobe=xf-spec `:view=object`: V and L taken once per object (object_view.h)
 // instead of exactly, so t is affine in the normal under a perspective camera and point lights,
 // e.g. `t=texgen:view=object` (an approximation: its error is the bench's to say).
-// and for the LUT variants `:lut=N` (2..1024 texels, default 256), e.g. `t=vertex:lut=64`.
+// and for the LUT variants `:lut=N` (2..1024 texels, default 256), e.g. `t=vertex:lut=64`,
+// and `:lut-format=FMT`, the power LUT's texture format (docs/textures.md "The LUT's format"):
+//   i8 (default, GX_TF_I8), i4 (GX_TF_I4: 16 levels), ia4, ia8 (the intensity also in alpha, so
+//   the TEV reads what I8 or I4 gives it); a lobe ramp in colour keeps GX_TF_RGBA8.
 // Two axes pick the other side where the sources disagree on the hardware (gx-hardware.md §2.4,
 // §2.5), so docs/porting-to-the-wii.md can say how far each choice moves the image:
 //   :colors=round       interpolated channel colours rounded, as Dolphin's shader backends do
@@ -100,6 +103,9 @@ struct GxVariant {
   Lobe lobe = Lobe::Lut;
   TexCoord t = TexCoord::Vertex;
   int lut_size = 256;
+  // :lut-format=: the grey LUT's format when it is not GX_TF_I8 (unset: I8; never I8, so equal
+  // images compare equal); one of I4, IA4, IA8.
+  std::optional<TexFormat> lut_format;
   bool round_colors = false;
   bool round_each_light = false;
   // The maps' format when it is not the default (unset: colour maps GX_TF_RGBA8, grey maps

@@ -1,5 +1,6 @@
 #include "paths/gx/lobe_lut.h"
 
+#include "gx/texture_encoder.h"
 #include "image/image.h"
 #include "model/power_lut.h"
 #include "model/texture_sampling.h"
@@ -33,16 +34,37 @@ TextureObject ramp_lut(const TextureMap& ramp, int width) {
   return one_row(format, width, row);
 }
 
+// The grey row in another grey format: each texel (v, v, v, v) encoded to nearest.
+TextureObject grey_row(TexFormat format, int width, const std::vector<u8>& row) {
+  Rgba8Image image;
+  image.width = width;
+  image.height = 1;
+  for (u8 v : row) image.texels.push_back({v, v, v, v});
+  TextureObject t;
+  t.width = width;
+  t.height = 1;
+  t.format = static_cast<u8>(format);
+  t.data = encode_level(image, format, EncodeOptions{}).data;
+  return t;
+}
+
 }  // namespace
 
-TextureObject lobe_lut(const Material& material, int width) {
-  if (material.translucency && material.translucency->ramp)
-    return ramp_lut(*material.translucency->ramp, width);
+TextureObject lobe_lut(const Material& material, int width, std::optional<TexFormat> grey_format) {
+  const bool in_i8 = !grey_format || *grey_format == TexFormat::I8;
+  if (material.translucency && material.translucency->ramp) {
+    const TextureMap& ramp = *material.translucency->ramp;
+    if (in_i8 || !ramp.grey) return ramp_lut(ramp, width);
+    const TextureObject i8 = ramp_lut(ramp, width);
+    std::vector<u8> row(static_cast<size_t>(width));
+    for (int i = 0; i < width; ++i) row[static_cast<size_t>(i)] = texel_at(i8, i, 0).r;
+    return grey_row(*grey_format, width, row);
+  }
   const double power = material.translucency ? material.translucency->power : 0.0;
   const model::PowerLut lut = model::PowerLut::build(width, model::LutFormat::U8, {power});
   std::vector<u8> row(static_cast<size_t>(width));
   for (int i = 0; i < width; ++i) row[static_cast<size_t>(i)] = to_unorm8(lut.texel(0, i));
-  return one_row(kTexFormatI8, width, row);
+  return in_i8 ? one_row(kTexFormatI8, width, row) : grey_row(*grey_format, width, row);
 }
 
 }  // namespace lt::gx

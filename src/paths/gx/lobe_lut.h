@@ -5,6 +5,9 @@
 // file loads none. One function, so the two can never differ.
 #pragma once
 
+#include <optional>
+
+#include "gx/texture_format.h"
 #include "gx/texture_unit.h"
 #include "scene/scene.h"
 
@@ -14,6 +17,12 @@ namespace lt::gx {
 // (load/thickness_map.h) replaces t^power by the ramp at t_i (model::sample_ramp, linear between
 // its texel centres, as the reference reads it): GX_TF_I8 for a grey ramp, GX_TF_RGBA8 for a
 // coloured one, whose TEXC = (r, g, b) tints stage 0's lerp per channel.
-TextureObject lobe_lut(const Material& material, int width);
+// `grey_format` (the variant's :lut-format=) stores a grey LUT in I4, IA4 or IA8 instead of I8:
+// the same 8-bit texels encoded by gx/texture_encoder.h with `nearest` rounding, the intensity
+// also in alpha (as I8's TEXA is its intensity [DHW TextureDecoder_Common.cpp
+// TexDecoder_DecodeTexel, case I8]), so the TEV reads the picture of I8 (IA8) or I4 (IA4). A
+// colour ramp keeps GX_TF_RGBA8.
+TextureObject lobe_lut(const Material& material, int width,
+                       std::optional<TexFormat> grey_format = std::nullopt);
 
 }  // namespace lt::gx

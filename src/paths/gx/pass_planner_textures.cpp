@@ -75,16 +75,16 @@ TexturePlan PassPlanner::lut_texture(MaterialPlan& mp) const {
                        "gx: the ramp holds values up to " + note_number(top) +
                            "; the 8-bit lobe LUT holds 0..1");
   }
-  const TextureObject lut = lobe_lut(mat, w);
+  const TextureObject lut = lobe_lut(mat, w, variant_.lut_format);
   const bool i8 = lut.format == kTexFormatI8;
+  const bool rgba8 = lut.format == kTexFormatRGBA8;
   TexturePlan t;
   t.role = TexturePlan::Role::Lut;
   t.object = "lut";
   t.array = "ltrender_lut_" + mp.c_name;
   t.width = w;
   t.height = 1;
-  t.format =
-      i8 ? GxConst<NameGroup::TexFormat>{"GX_TF_I8"} : GxConst<NameGroup::TexFormat>{"GX_TF_RGBA8"};
+  t.format = GxConst<NameGroup::TexFormat>::with_value(lut.format);
   t.map = {"GX_TEXMAP0"};
   t.bytes = lut.data.size();
   t.what = std::string("The LUT: ") + (t.format.name() + 6) +
@@ -96,7 +96,10 @@ TexturePlan PassPlanner::lut_texture(MaterialPlan& mp) const {
       {t.array, std::vector<u8>(lut.data.begin(), lut.data.end()),
        (tr.ramp ? "Lobe LUT" : "Power LUT") + std::string(" of material ") + mat.name + ": " +
            what + ", " + std::to_string(w) + " texels " + t.format.name() + " in GX tile order (" +
-           (i8 ? "8x4 tiles, 32 bytes" : "4x4 tiles, 64 bytes: (a, r) then (g, b) pairs") +
+           (i8      ? std::string("8x4 tiles, 32 bytes")
+            : rgba8 ? std::string("4x4 tiles, 64 bytes: (a, r) then (g, b) pairs")
+                    : tile_order_note(static_cast<TexFormat>(lut.format)) +
+                          ", nearest, the intensity also in alpha") +
            ";\nrow 0 of each tile used). Flush it (DCFlushRange) before the GPU reads it."});
   return t;
 }
