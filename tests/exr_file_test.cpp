@@ -26,46 +26,24 @@
 #include <vector>
 
 #include "core/error.h"
+#include "decoded_image.h"
 #include "image/image.h"
 #include "test_util.h"
 
 namespace lt {
 namespace {
 
-struct DecodedExr {
-  ImageFileSpec spec;
-  std::vector<float> samples;  // every channel, row-major
-};
+using test::DecodedImage;
 
-// OpenImageIO's reading, as floats (its "unassociated alpha" asked for or not).
-DecodedExr exr_read_with_oiio(const fs::path& path, bool unassociated_alpha) {
-  OIIO::ImageSpec config;
-  if (unassociated_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path.string(), &config);
-  EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
-  DecodedExr d;
-  if (!in) return d;
-  const OIIO::ImageSpec& s = in->spec();
-  d.spec.width = s.width, d.spec.height = s.height, d.spec.channels = s.nchannels;
-  d.spec.alpha_channel = s.alpha_channel;
-  d.spec.bits = static_cast<int>(s.format.size()) * 8;
-  d.samples.resize(static_cast<size_t>(s.width) * s.height * s.nchannels);
-  EXPECT_TRUE(in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::FLOAT, d.samples.data()));
-  return d;
-}
-
-DecodedExr exr_read_in_process(const fs::path& path) {
+DecodedImage exr_read_in_process(const fs::path& path) {
   std::unique_ptr<ImageFileReader> reader;
   std::string error;
-  DecodedExr d;
   EXPECT_EQ(open_exr(path.string(), reader, error), ExrOpen::kOpened) << path << error;
-  if (!reader) return d;
-  d.spec = reader->spec();
-  EXPECT_TRUE(d.spec.floating);
-  EXPECT_FALSE(d.spec.is_8bit);
-  d.samples.resize(static_cast<size_t>(d.spec.width) * d.spec.height * d.spec.channels);
-  EXPECT_TRUE(reader->read_channels(0, d.spec.channels, d.samples.data(), error)) << error;
-  return d;
+  if (reader) {
+    EXPECT_TRUE(reader->spec().floating);
+    EXPECT_FALSE(reader->spec().is_8bit);
+  }
+  return test::read_all_channels(reader.get());
 }
 
 // Bit for bit: NaN's payload and zero's sign included.
@@ -150,9 +128,9 @@ TEST(ExrFile, HalfAndFloatRgbAndRgbaDecodeToOpenImageIosFloats) {
          {std::vector<std::string>{"R", "G", "B"}, std::vector<std::string>{"R", "G", "B", "A"}}) {
       const fs::path path = dir / ("t" + std::to_string(checked) + ".exr");
       write_exr(path, w, h, channels, type, awkward_samples(w * h * channels.size(), checked + 1));
-      const DecodedExr ours = exr_read_in_process(path);
+      const DecodedImage ours = exr_read_in_process(path);
       for (bool unassociated : {false, true}) {
-        const DecodedExr theirs = exr_read_with_oiio(path, unassociated);
+        const DecodedImage theirs = test::read_with_oiio(path, unassociated);
         const std::string what = path.filename().string() + (unassociated ? " unassociated" : "");
         EXPECT_EQ(ours.spec.width, theirs.spec.width) << what;
         EXPECT_EQ(ours.spec.height, theirs.spec.height) << what;
@@ -172,7 +150,7 @@ TEST(ExrFile, AChannelRangeIsThoseChannelsOfTheWhole) {
   test::TempDir dir;
   const int w = 9, h = 5;
   write_exr(dir / "a.exr", w, h, {"R", "G", "B", "A"}, Imf::FLOAT, awkward_samples(w * h * 4, 7));
-  const DecodedExr whole = exr_read_in_process(dir / "a.exr");
+  const DecodedImage whole = exr_read_in_process(dir / "a.exr");
   std::unique_ptr<ImageFileReader> reader;
   std::string error;
   ASSERT_EQ(open_exr((dir / "a.exr").string(), reader, error), ExrOpen::kOpened) << error;
@@ -192,7 +170,7 @@ TEST(ExrFile, WrittenRgbaReadsBackThroughOpenImageIoWithItsCompression) {
   const std::vector<float> rgba = awkward_samples(w * h * 4, 11);
   std::string error;
   ASSERT_TRUE(write_exr_rgba_float((dir / "ours.exr").string(), w, h, rgba.data(), error)) << error;
-  const DecodedExr back = exr_read_with_oiio(dir / "ours.exr", false);
+  const DecodedImage back = test::read_with_oiio(dir / "ours.exr", false);
   EXPECT_EQ(back.spec.channels, 4);
   EXPECT_EQ(back.spec.alpha_channel, 3);
   EXPECT_EQ(back.spec.bits, 32);

@@ -18,49 +18,25 @@
 #include <vector>
 
 #include "core/error.h"
+#include "decoded_image.h"
 #include "image/image.h"
 #include "test_util.h"
 
 namespace lt {
 namespace {
 
-struct DecodedPng {
-  ImageFileSpec spec;
-  std::vector<float> samples;  // every channel, row-major
-};
+using test::DecodedImage;
 
-// OpenImageIO's reading, colour as stored (its oiio:UnassociatedAlpha), as floats.
-DecodedPng read_with_oiio(const fs::path& path) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path.string(), &config);
-  EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
-  DecodedPng d;
-  if (!in) return d;
-  const OIIO::ImageSpec& s = in->spec();
-  d.spec.width = s.width, d.spec.height = s.height, d.spec.channels = s.nchannels;
-  d.spec.alpha_channel = s.alpha_channel;
-  d.spec.bits = static_cast<int>(s.format.size()) * 8;
-  d.samples.resize(static_cast<size_t>(s.width) * s.height * s.nchannels);
-  EXPECT_TRUE(in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::FLOAT, d.samples.data()));
-  return d;
-}
-
-DecodedPng read_with_libpng(const fs::path& path) {
+DecodedImage read_with_libpng(const fs::path& path) {
   std::unique_ptr<ImageFileReader> reader;
   std::string error;
-  DecodedPng d;
   EXPECT_EQ(open_png(path.string(), true, reader, error), PngOpen::kOpened) << path << error;
-  if (!reader) return d;
-  d.spec = reader->spec();
-  d.samples.resize(static_cast<size_t>(d.spec.width) * d.spec.height * d.spec.channels);
-  EXPECT_TRUE(reader->read_channels(0, d.spec.channels, d.samples.data(), error)) << error;
-  return d;
+  return test::read_all_channels(reader.get());
 }
 
 void expect_same_decoding(const fs::path& path) {
   SCOPED_TRACE(path.string());
-  const DecodedPng oiio = read_with_oiio(path), ours = read_with_libpng(path);
+  const DecodedImage oiio = test::read_with_oiio(path, true), ours = read_with_libpng(path);
   EXPECT_EQ(ours.spec.width, oiio.spec.width);
   EXPECT_EQ(ours.spec.height, oiio.spec.height);
   EXPECT_EQ(ours.spec.channels, oiio.spec.channels);

@@ -6,9 +6,8 @@
 
 #include "advise/advise.h"
 #include "advise/material_error.h"
+#include "advise/variant_trials.h"
 #include "core/error.h"
-#include "render/evaluate.h"
-#include "render/session.h"
 
 namespace lt::advise {
 
@@ -27,35 +26,7 @@ void add_storage_advice(Advice& a, const Scene& scene, const PathInfo& path,
   const bool any_pick = std::any_of(a.materials.begin(), a.materials.end(),
                                     [](const MaterialAdvice& ma) { return ma.pick.has_value(); });
   if (!any_pick) return;
-  RenderSession session(scene, a.width, a.height);
-  const Image reference = render_reference(session);
-  const std::vector<int> material_of_pixel = material_per_pixel(session.context());
-  // Each variant measured once: its bytes, or why the mesh does not fit it, and the image.
-  struct Measured {
-    std::string failed;
-    ConsoleBytes bytes;
-    Image image;
-    TestEncoding encoding{};
-  };
-  std::map<std::string, Measured> measured;
-  auto measure = [&](const std::string& variant) -> const Measured& {
-    if (auto it = measured.find(variant); it != measured.end()) return it->second;
-    Measured m;
-    const std::optional<ConsoleBytes> bytes = console_bytes(path.budget(scene, variant, profile));
-    if (!bytes) {
-      m.failed = "the scene's mesh does not fit this storage (`ltrender budget --path " +
-                 path.name + " --variant " + variant + "` says why)";
-    } else if (std::string refused = path.refusal(scene, variant); !refused.empty()) {
-      m.failed = refused;
-    } else {
-      m.bytes = *bytes;
-      auto built = session.build(path, variant, options);
-      built->frame();
-      m.image = built->result();
-      m.encoding = test_encoding(*built);
-    }
-    return measured.emplace(variant, std::move(m)).first->second;
-  };
+  VariantTrials trials(scene, path, options, profile, a.width, a.height);
   for (MaterialAdvice& ma : a.materials) {
     if (!ma.pick) continue;
     const std::string& picked = a.candidates[*ma.pick].candidate.variant;
@@ -64,12 +35,17 @@ void add_storage_advice(Advice& a, const Scene& scene, const PathInfo& path,
       StorageOption o;
       o.storage = storage;
       o.variant = with_storage(picked, storage);
-      const Measured& m = measure(o.variant);
-      o.failed = m.failed;
+      // A storage the scene's mesh does not fit has no console bytes.
+      const VariantTrials::Trial& t =
+          trials.trial(o.variant, [&](const budget::Report& report) -> std::string {
+            if (console_bytes(report)) return "";
+            return "the scene's mesh does not fit this storage (`ltrender budget --path " +
+                   path.name + " --variant " + o.variant + "` says why)";
+          });
+      o.failed = t.failed;
       if (o.failed.empty()) {
-        o.bytes = m.bytes;
-        const Comparison c = compare_material(m.image, reference, m.encoding, material_of_pixel,
-                                              static_cast<int>(ma.index));
+        o.bytes = *console_bytes(t.budget);
+        const Comparison c = trials.compare(t, ma.index);
         o.error = c.covered;
         o.non_finite = non_finite_pixels(c);
       }

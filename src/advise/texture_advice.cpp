@@ -6,10 +6,9 @@
 
 #include "advise/advise.h"
 #include "advise/material_error.h"
+#include "advise/variant_trials.h"
 #include "budget/report.h"
 #include "paths/gx/gx_variant.h"
-#include "render/evaluate.h"
-#include "render/session.h"
 
 namespace lt::advise {
 
@@ -71,30 +70,7 @@ void add_texture_advice(Advice& a, const Scene& scene, const PathInfo& path,
   const bool any_pick = std::any_of(a.materials.begin(), a.materials.end(),
                                     [](const MaterialAdvice& ma) { return ma.pick.has_value(); });
   if (!any_pick) return;
-  RenderSession session(scene, a.width, a.height);
-  const Image reference = render_reference(session);
-  const std::vector<int> material_of_pixel = material_per_pixel(session.context());
-  struct Measured {
-    std::string failed;
-    budget::Report budget;
-    Image image;
-    TestEncoding encoding{};
-  };
-  std::map<std::string, Measured> measured;
-  auto measure = [&](const std::string& variant) -> const Measured& {
-    if (auto it = measured.find(variant); it != measured.end()) return it->second;
-    Measured m;
-    if (std::string refused = path.refusal(scene, variant); !refused.empty()) {
-      m.failed = refused;
-    } else {
-      m.budget = path.budget(scene, variant, profile);
-      auto built = session.build(path, variant, options);
-      built->frame();
-      m.image = built->result();
-      m.encoding = test_encoding(*built);
-    }
-    return measured.emplace(variant, std::move(m)).first->second;
-  };
+  VariantTrials trials(scene, path, options, profile, a.width, a.height);
   for (MaterialAdvice& ma : a.materials) {
     if (!ma.pick) continue;
     const std::string& picked = a.candidates[*ma.pick].candidate.variant;
@@ -128,14 +104,13 @@ void add_texture_advice(Advice& a, const Scene& scene, const PathInfo& path,
         o.failed = e.what_only();
       }
       if (o.failed.empty()) {
-        const Measured& m = measure(o.variant);
-        o.failed = m.failed;
-        o.texture_bytes = budget_number(m.budget, "texture_bytes");
-        o.tlut_bytes = budget_number(m.budget, "tlut_bytes");
-        o.tmem_bytes = budget_number(m.budget, "tmem_bytes");
+        const VariantTrials::Trial& t = trials.trial(o.variant);
+        o.failed = t.failed;
+        o.texture_bytes = budget_number(t.budget, "texture_bytes");
+        o.tlut_bytes = budget_number(t.budget, "tlut_bytes");
+        o.tmem_bytes = budget_number(t.budget, "tmem_bytes");
         if (o.failed.empty()) {
-          const Comparison c = compare_material(m.image, reference, m.encoding, material_of_pixel,
-                                                static_cast<int>(ma.index));
+          const Comparison c = trials.compare(t, ma.index);
           o.error = c.covered;
           o.non_finite = non_finite_pixels(c);
         }
