@@ -129,7 +129,7 @@ std::vector<FormatDraw> frame_draws(const std::string& variant, const std::strin
 }
 
 TEST(GxVertexFormats, EveryDrawOfAVariantNamesItsFormatAndReadsWhatFormatZeroWould) {
-  for (const std::string stored : {"", ":vtx=s16/8:nrm=s8:clr=rgb565:draw=strips"}) {
+  for (const std::string stored : {"", ":vtx=s16/8:nrm=s8:clr=rgb565:draw=indexed"}) {
     const std::vector<FormatDraw> zero = frame_draws("t=vertex" + stored);
     for (int n : {3, 7}) {
       const std::string variant = "t=vertex" + stored + ":vat=" + std::to_string(n);
