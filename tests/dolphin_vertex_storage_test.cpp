@@ -9,7 +9,11 @@
 // = dot(V, -H) is signed, so an unsigned texture coordinate cannot hold it, and the demo meshes'
 // positions are centred on their origin. A third frame is a program file declaring the storage
 // as a game does (the generated F32 program with GX_S16, 8 positions and GX_S8 normals, issue 46
-// step 4): Dolphin plays the log the declarations give, ltrender renders the file.
+// step 4): Dolphin plays the log the declarations give, ltrender renders the file. Two more
+// frames (issue 46 step 8) draw with other vertex formats and an NBT: GX_VTXFMT3 with s8 NBT
+// normals sent directly, and GX_VTXFMT7 with s16 NBT3 normals indexed in a display list (three
+// indices a normal), so Dolphin's loader is looked up by the draw's format and reads the NBT's
+// vectors where ltrender's does.
 #include <gtest/gtest.h>
 
 #include "dolphin_util.h"
@@ -38,7 +42,9 @@ TEST_P(DolphinVertexStorage, DolphinsFramesOfAStoredMeshAreLtrendersXfbPictures)
   const std::vector<test::JudgedFrame> frames{
       {"t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto", ""},
       {"t=vertex:vtx=s8/auto:nrm=s16:clr=rgba4:uv=s8/auto", ""},
-      {"t=vertex", (dir / "declared.c").string()}};
+      {"t=vertex", (dir / "declared.c").string()},
+      {"t=vertex:vtx=s16/auto:nrm=s8/nbt:clr=rgb565:uv=s16/auto:vat=3", ""},
+      {"t=vertex:vtx=s16/auto:nrm=s16/nbt3:clr=rgba4:uv=s16/auto:draw=list:vat=7", ""}};
   const std::vector<test::JudgedRow> rows =
       test::expect_dolphins_pictures(scene, frames, GetParam());
   for (size_t k = 0; k < rows.size(); ++k)

@@ -354,7 +354,7 @@ TEST_P(GxFifoScene, FrameDrawsEveryPassWithItsStateTexturesAndVertices) {
         const Expected& e = expected[k++];
         const std::string where = GetParam() + " draw " + std::to_string(k - 1);
         const TextureObject lut = lobe_lut(scene.materials[e.material], gv.lut_size);
-        DecodedPass dp = decode_pass(r);
+        DecodedPass dp = decode_pass(r, d.vat);
         const GxState want = canonical_state(*e.state, &lut);
         // A map an earlier pass loaded keeps its registers; the pass test above checks that each
         // pass writes exactly its own maps.

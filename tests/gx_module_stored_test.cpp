@@ -64,9 +64,11 @@ u32 big_endian_word(const std::vector<u8>& b, size_t at) {
 // One object's GX_SetVtxDesc calls ('V': attribute, index type; after its GX_ClearVtxDesc) and
 // GX_SetVtxAttrFmt calls ('F': attribute, count, type, fraction) against the CP loads the log
 // sends for it (indexed_recording.cpp draw_indexed_object): the descriptor as the VCD pair, and
-// right after it VAT A, B, C holding each of those attributes as the module declares it.
+// right after it (past an NBT's XF vertex specs) VAT A, B, C of the variant's vertex format (`vat`,
+// :vat=N: CP 0x70 + N ..) holding each of those attributes as the module declares it.
 void expect_object_format(const std::vector<u8>& fifo_bytes, const std::vector<DrawSegment>& desc,
-                          const std::vector<DrawSegment>& fmt, const std::string& at) {
+                          const std::vector<DrawSegment>& fmt, int vat_number,
+                          const std::string& at) {
   // GX_VA_POS 9, NRM 10, CLR0 11, CLR1 12, TEX0..7 13..20; GX_INDEX8/16 are the CP's 2 and 3
   // [OGC gx.h L82-92] [DHW CPMemory.h VertexComponentFormat].
   VertexInputs in;
@@ -74,9 +76,10 @@ void expect_object_format(const std::vector<u8>& fifo_bytes, const std::vector<D
     const auto input = static_cast<AttributeInput>(g.bytes[1]);
     const int attribute = g.bytes[0];
     if (attribute == 9) in.position = input;
-    if (attribute == 10) in.normal = input;
+    if (attribute == 10 || attribute == 25) in.normal = input;  // GX_VA_NRM, GX_VA_NBT
     if (attribute == 11 || attribute == 12) in.color[static_cast<size_t>(attribute - 11)] = input;
-    if (attribute >= 13) in.texcoord[static_cast<size_t>(attribute - 13)] = input;
+    if (attribute >= 13 && attribute <= 20)
+      in.texcoord[static_cast<size_t>(attribute - 13)] = input;
   }
   const std::array<u32, 2> vcd = pack_vertex_inputs(in);
   fifo::CommandStream loads;
@@ -87,8 +90,12 @@ void expect_object_format(const std::vector<u8>& fifo_bytes, const std::vector<D
   for (auto it = std::search(fifo_bytes.begin(), fifo_bytes.end(), want.begin(), want.end());
        it != fifo_bytes.end() && !matched;
        it = std::search(it + 1, fifo_bytes.end(), want.begin(), want.end())) {
-    const size_t vat = static_cast<size_t>(it - fifo_bytes.begin()) + want.size();
-    if (vat + 18 > fifo_bytes.size() || fifo_bytes[vat + 1] != fifo::cp::kVatA) continue;
+    size_t vat = static_cast<size_t>(it - fifo_bytes.begin()) + want.size();
+    // An NBT's XF 0x1008 (two normals) comes between, as libogc's __GX_SetVCD sends it: one XF
+    // load of one word, 9 bytes (indexed_recording.cpp).
+    if (vat < fifo_bytes.size() && fifo_bytes[vat] == 0x10) vat += 9;
+    if (vat + 18 > fifo_bytes.size() || fifo_bytes[vat + 1] != fifo::cp::kVatA + vat_number)
+      continue;
     const VertexAttributeFormat f = unpack_vertex_format(big_endian_word(fifo_bytes, vat + 2),
                                                          big_endian_word(fifo_bytes, vat + 8),
                                                          big_endian_word(fifo_bytes, vat + 14));
@@ -97,8 +104,9 @@ void expect_object_format(const std::vector<u8>& fifo_bytes, const std::vector<D
       const int attribute = g.bytes[0], count = g.bytes[1], type = g.bytes[2], frac = g.bytes[3];
       if (attribute == 9)
         all = all && static_cast<int>(f.position.type) == type && f.position.frac == frac;
-      else if (attribute == 10)
-        all = all && static_cast<int>(f.normal.type) == type;
+      else if (attribute == 10 || attribute == 25)  // GX_NRM_XYZ 0, GX_NRM_NBT 1, NBT3 2
+        all = all && static_cast<int>(f.normal.type) == type && f.normal.nbt == (count > 0) &&
+              f.normal.index3 == (count == 2);
       else if (attribute == 11)
         all = all && static_cast<int>(f.color[0].type) == type && f.color[0].alpha == (count == 1);
       else {
@@ -186,7 +194,7 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
     for (const DrawSegment& g : sent) {
       if (object_format && g.kind == 'A') {
         ++formats;
-        expect_object_format(frame.fifo, desc, fmt, at);
+        expect_object_format(frame.fifo, desc, fmt, variant.vat, at);
         object_format = false;
       }
       if (g.kind == 'N') {
@@ -219,15 +227,17 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
   EXPECT_EQ(lists_called > 0, variant.draw == GxVariant::Draw::List);
 }
 
-// Three demo scenes: the blob's one mesh as a display list, coloured_cubes' two cubes (rotated,
-// scaled, moved: each its own matrices) as strips sent every frame, and albedo_checker's map (its
+// Three demo scenes: the blob's one mesh as a display list with NBT3 normals (three indices a
+// normal), coloured_cubes' two cubes (rotated,
+// scaled, moved: each its own matrices) as strips sent every frame in GX_VTXFMT5 (the module's
+// LTRENDER_VTXFMT: its VAT and draw commands must be the log's), and albedo_checker's map (its
 // UVs an array of their own) as a display list. lobe=xf-spec:view=object: no per-vertex t (which a
 // stored module refuses).
 const StoredCase kStoredCases[] = {
     {"scenes/three_point_blob.json",
-     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=list"},
+     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8/nbt3:clr=rgb565:draw=list"},
     {"scenes/coloured_cubes.json",
-     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=strips"},
+     "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=strips:vat=5"},
     {"scenes/albedo_checker.json",
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
 };

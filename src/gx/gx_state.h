@@ -21,6 +21,10 @@ namespace lt::gx {
 inline constexpr int kVaPos = 9, kVaNrm = 10, kVaClr0 = 11, kVaClr1 = 12, kVaTex0 = 13,
                      kVaTex7 = 20;
 inline constexpr int kVertexAttributes = 21;
+// GX_VA_NBT: the normal sent as normal, binormal and tangent; it shares GX_VA_NRM's descriptor
+// field and array [OGC gx.c __SETVCDATTR "case GX_VA_NBT", GX_SetArray "if(attr==GX_VA_NBT)
+// attr = GX_VA_NRM"], so the descriptor keeps it in kVaNrm's slot.
+inline constexpr int kVaNbt = 25;
 struct VertexDescriptor {
   std::array<u8, kVertexAttributes> type{};
   bool has(int attribute) const { return type[static_cast<size_t>(attribute)] != 0; }
@@ -78,15 +82,37 @@ struct PixelFormat {
 };
 
 // What a program file declares of how the scene's mesh is stored and sent: each attribute's
-// GX_SetVtxAttrFmt on GX_VTXFMT0 (the format the scene draws with) as a storage key's attribute
+// GX_SetVtxAttrFmt on the format the scene draws with as a storage key's attribute
 // (gx/vertex_storage.h), and whether GX_SetVtxDesc sends the position GX_DIRECT or indexed. The
-// gx path turns it into the variant's own storage and :draw= (paths/gx/program_storage.h): one
-// representation. Positions are (line, column) of the call, line 0 where nothing was declared.
-struct DeclaredStorage {
+// gx path turns it into the variant's own storage, :vat= and :draw= (paths/gx/
+// program_storage.h): one representation. Positions are (line, column) of the call, line 0 where
+// nothing was declared.
+//
+// Which of the eight formats draws: a program has no GX_Begin (the scene's geometry is drawn for
+// it), so the format whose GX_SetVtxAttrFmt declares GX_VA_POS is the one the draws use (a
+// vertex without a position format draws nothing a port would want), GX_VTXFMT0 where none
+// does. The other formats are kept apart in `by_format` as the CP keeps its eight VATs
+// [DHW VertexLoaderManager.cpp RefreshLoader: g_main_cp_state.vtx_attr[vtx_attr_group]]: a
+// declaration in a format that does not draw changes nothing read.
+struct FormatDeclarations {
   using At = std::array<int, 2>;
   VertexStorage storage;
+  std::array<At, 4> storage_at{};               // per kVertexStorageKeys entry (vtx, nrm, clr, uv)
+  std::array<u8, kMaxTexGens> texcoord_kind{};  // TexCoordFormats::Kind of each GX_VA_TEXn
+  std::array<At, 2> color_at{};                 // GX_VA_CLR0's and GX_VA_CLR1's declaration
+  bool operator==(const FormatDeclarations&) const = default;
+};
+inline constexpr int kVertexFormats = 8;  // GX_VTXFMT0..7 [OGC gx.h GX_MAXVTXFMT]
+
+struct DeclaredStorage {
+  using At = std::array<int, 2>;
+  // The drawing format's declarations (a copy of by_format[format]).
+  VertexStorage storage;
   std::array<At, 4> storage_at{};  // per kVertexStorageKeys entry (vtx, nrm, clr, uv)
-  bool indexed = false;            // GX_VA_POS is GX_INDEX8 or GX_INDEX16
+  int format = 0;                  // GX_VTXFMTn the scene draws with
+  At format_at{};                  // the GX_SetVtxAttrFmt of GX_VA_POS that picked it
+  std::array<FormatDeclarations, kVertexFormats> by_format{};
+  bool indexed = false;  // GX_VA_POS is GX_INDEX8 or GX_INDEX16
   // Each attribute's GX_SetVtxDesc in force, by array number (kArrayPosition: GX_VA_POS's).
   std::array<At, kVertexArrays> input_at{};
   // GX_SetArray(attr, array, stride): each array's stride (0: not set) and where; the bytes are

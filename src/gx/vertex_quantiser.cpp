@@ -147,6 +147,25 @@ void append_color(std::vector<u8>& out, Color8 c, ColorType type) {
   }
 }
 
+std::pair<glm::vec3, glm::vec3> normal_frame(const glm::vec3& n) {
+  // Duff et al. 2017, listing 3: continuous but for n.z = 0's sign, exact to float rounding.
+  const float sign = std::copysign(1.0f, n.z);
+  const float a = -1.0f / (sign + n.z);
+  const float b = n.x * n.y * a;
+  return {glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x),
+          glm::vec3(b, sign + n.y * n.y * a, -n.y)};
+}
+
+void add_normal_frames(VertexAttributeData& d) {
+  d.binormal.clear();
+  d.tangent.clear();
+  for (const glm::vec3& n : d.normal) {
+    const auto [b, t] = normal_frame(n);
+    d.binormal.push_back(b);
+    d.tangent.push_back(t);
+  }
+}
+
 void ValueBounds::add(double v) {
   lo = empty ? v : std::min(lo, v);
   hi = empty ? v : std::max(hi, v);
@@ -196,12 +215,24 @@ std::vector<AttributeElements> quantise_attributes(const VertexAttributeData& d,
   }
   out.push_back(std::move(position));
   if (!d.normal.empty()) {
-    LT_CHECK(d.normal.size() == n && !f.normal.nbt, "one normal per vertex, no NBT");
-    AttributeElements normal{
-        kArrayNormal, 3 * static_cast<size_t>(component_bytes(f.normal.type)), {}};
-    for (const glm::vec3& v : d.normal) {
-      const std::array<float, 3> xyz{v.x, v.y, v.z};
-      append_components(normal.bytes, xyz, f.normal.type, normal_exponent(f.normal.type));
+    LT_CHECK(d.normal.size() == n, "one normal per vertex");
+    LT_CHECK(!f.normal.nbt || (d.binormal.size() == n && d.tangent.size() == n),
+             "an NBT needs a binormal and a tangent per vertex");
+    // An NBT element is the normal, the binormal and the tangent, nine components in the
+    // normal's type [DHW VertexLoader_Normal.cpp: 3 vectors x 3 components].
+    const size_t vectors = f.normal.nbt ? 3 : 1;
+    AttributeElements normal{kArrayNormal,
+                             vectors * 3 * static_cast<size_t>(component_bytes(f.normal.type)),
+                             {},
+                             f.normal.nbt && f.normal.index3 ? 3 : 1};
+    const int e = normal_exponent(f.normal.type);
+    for (size_t v = 0; v < n; ++v) {
+      for (const std::vector<glm::vec3>* vs : {&d.normal, &d.binormal, &d.tangent}) {
+        if (vs != &d.normal && !f.normal.nbt) continue;
+        const glm::vec3& x = (*vs)[v];
+        const std::array<float, 3> xyz{x.x, x.y, x.z};
+        append_components(normal.bytes, xyz, f.normal.type, e);
+      }
     }
     out.push_back(std::move(normal));
   }
@@ -292,6 +323,7 @@ IndexedArrays index_attributes(const std::vector<AttributeElements>& elements,
                            "drops its vertex)");
     }
     out.input[a] = seen.size() <= 255 ? AttributeInput::Index8 : AttributeInput::Index16;
+    out.indices[a] = e.indices;
   }
   return out;
 }
@@ -317,8 +349,9 @@ std::vector<u8> indexed_vertex_stream(const IndexedArrays& arrays, std::span<con
   for (u32 v : vertices) {
     for (int a : arrays.arrays) {
       const auto i = static_cast<size_t>(a);
-      append_big_endian(out, arrays.element_of_vertex[i][v],
-                        arrays.input[i] == AttributeInput::Index8 ? 1 : 2);
+      for (int k = 0; k < arrays.indices[i]; ++k)
+        append_big_endian(out, arrays.element_of_vertex[i][v],
+                          arrays.input[i] == AttributeInput::Index8 ? 1 : 2);
     }
   }
   return out;

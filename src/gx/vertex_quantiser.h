@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "gx/vertex_loader.h"
@@ -49,6 +50,9 @@ void append_color(std::vector<u8>& out, Color8 c, ColorType type);
 struct VertexAttributeData {
   std::vector<glm::vec3> position;
   std::vector<glm::vec3> normal;
+  // Each vertex's binormal and tangent, stored after its normal where the format sends an NBT
+  // (NormalFormat::nbt) and ignored otherwise (normal_frame gives them).
+  std::vector<glm::vec3> binormal, tangent;
   std::array<std::vector<Color8>, kVertexColors> color;
   std::array<std::vector<glm::vec2>, kVertexTexCoords> texcoord;
   std::array<int, kVertexTexCoords> texcoord_components{2, 2, 2, 2, 2, 2, 2, 2};
@@ -71,12 +75,25 @@ AttributeBounds attribute_bounds(const VertexAttributeData& data);
 // The attributes `data` sends, each sent as `input` (position always; GX_NONE where empty).
 VertexInputs sent_inputs(const VertexAttributeData& data, AttributeInput input);
 
+// An orthonormal binormal and tangent for unit normal `n`, a fixed function of n alone (Duff
+// et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1) 2017): what ltrender sends as
+// an NBT's second and third vectors. Nothing the translucency term draws reads them (the XF
+// lights the normal alone; they feed GX_TG_BUMP texgens), so a mesh's UV tangents are not
+// computed; a port with bump maps sends its own.
+std::pair<glm::vec3, glm::vec3> normal_frame(const glm::vec3& n);
+// Fills `data`'s binormals and tangents from its normals (normal_frame).
+void add_normal_frames(VertexAttributeData& data);
+
 // Each sent attribute's stored element per vertex, in vertex order: array number (kArray*),
-// element size and the elements' bytes (vertex v's at v * element_bytes).
+// element size and the elements' bytes (vertex v's at v * element_bytes). `indices` is how many
+// indices an indexed vertex sends for it: 3 for an NBT3 normal (one per vector, each the same
+// element: vector k is read 3k components into the element it names [DHW
+// VertexLoader_Normal.cpp Normal_ReadIndex_Offset]), else 1.
 struct AttributeElements {
   int array = 0;
   size_t element_bytes = 0;
   std::vector<u8> bytes;
+  int indices = 1;
 };
 // `format` must hold every value (storage_format checks it); the attributes in stream order.
 std::vector<AttributeElements> quantise_attributes(const VertexAttributeData& data,
@@ -96,14 +113,16 @@ struct IndexedArrays {
   std::array<unsigned, kVertexArrays> stride{};
   std::array<AttributeInput, kVertexArrays> input{};
   std::array<std::vector<u32>, kVertexArrays> element_of_vertex;
-  std::vector<int> arrays;  // the sent attributes' array numbers, in stream order
+  std::array<int, kVertexArrays> indices{};  // a vertex's indices into each (AttributeElements)
+  std::vector<int> arrays;                   // the sent attributes' array numbers, in stream order
   VertexArrays views() const;
 };
 IndexedArrays index_attributes(const std::vector<AttributeElements>& elements,
                                const std::string& origin);
 // The descriptor an indexed draw of these arrays sends.
 VertexInputs indexed_inputs(const IndexedArrays& arrays);
-// The index stream of `vertices`: each vertex's indices, one per attribute, big-endian.
+// The index stream of `vertices`: each vertex's indices, one per attribute (three for an NBT3
+// normal), big-endian.
 std::vector<u8> indexed_vertex_stream(const IndexedArrays& arrays, std::span<const u32> vertices);
 
 }  // namespace lt::gx

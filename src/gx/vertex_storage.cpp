@@ -104,12 +104,23 @@ void set_vertex_storage(VertexStorage& s, std::string_view name, std::string_vie
   } else if (name == "uv") {
     s.texcoord = parse_coordinate(name, value, origin);
   } else if (name == "nrm") {
-    const std::optional<ComponentType> t = component_named(value);
+    const size_t slash = value.find('/');
+    const std::string_view type_name = value.substr(0, slash);
+    const std::optional<ComponentType> t = component_named(type_name);
     if (!t || (*t != ComponentType::F32 && *t != ComponentType::S16 && *t != ComponentType::S8)) {
       throw InputError(origin, "nrm",
-                       "'" + std::string(value) + "' is not a normal type (f32, s16, s8)");
+                       "'" + std::string(type_name) + "' is not a normal type (f32, s16, s8)");
     }
     s.normal = *t;
+    s.normal_vectors = NormalVectors::Normal;
+    if (slash != std::string_view::npos) {
+      const std::string_view vectors = value.substr(slash + 1);
+      if (vectors != "nbt" && vectors != "nbt3")
+        throw InputError(origin, "nrm",
+                         "'" + std::string(value) +
+                             "': a normal type takes /nbt or /nbt3 (normal, binormal, tangent)");
+      s.normal_vectors = vectors == "nbt" ? NormalVectors::Nbt : NormalVectors::Nbt3;
+    }
   } else if (name == "clr") {
     size_t c = std::size(kColorNames);
     for (size_t i = 0; i < std::size(kColorNames); ++i) {
@@ -159,7 +170,11 @@ VertexStorage parse_vertex_storage(std::string_view key, const std::string& orig
 std::string vertex_storage_value(const VertexStorage& s, std::string_view name) {
   if (name == "vtx") return coordinate_key(s.position);
   if (name == "uv") return coordinate_key(s.texcoord);
-  if (name == "nrm") return std::string(kComponentNames[static_cast<size_t>(s.normal)]);
+  if (name == "nrm") {
+    const std::string type(kComponentNames[static_cast<size_t>(s.normal)]);
+    if (s.normal_vectors == NormalVectors::Normal) return type;
+    return type + (s.normal_vectors == NormalVectors::Nbt ? "/nbt" : "/nbt3");
+  }
   LT_CHECK(name == "clr", "not a vertex storage key");
   return std::string(kColorNames[static_cast<size_t>(s.color)]);
 }
@@ -180,6 +195,8 @@ VertexAttributeFormat storage_format(const VertexStorage& s, const VertexAttribu
   f.position = {3, s.position.type,
                 resolved_fraction(s.position, bounds.position, "vtx", "positions", origin)};
   f.normal.type = s.normal;
+  f.normal.nbt = s.normal_vectors != NormalVectors::Normal;
+  f.normal.index3 = s.normal_vectors == NormalVectors::Nbt3;
   if (s.normal != ComponentType::F32 && !bounds.normal.empty) {
     const int e = normal_exponent(s.normal);
     if (!quantise_component(bounds.normal.lo, s.normal, e) ||

@@ -9,7 +9,10 @@
 //             | u8/auto ... s16/auto, or the type alone: the widest fraction that holds the
 //               mesh's bounds (widest_fraction, vertex_quantiser.h)
 //   nrm       f32 | s16 | s8 (exponents 14 and 6, fixed by the type; libogc takes no other
-//             normal type [OGC gx.c __SETVCDFMT L2545-2555])
+//             normal type [OGC gx.c __SETVCDFMT L2545-2555]), alone or followed by /nbt or
+//             /nbt3: the normal sent as an NBT (normal, binormal, tangent: libogc's GX_VA_NBT
+//             with GX_NRM_NBT or GX_NRM_NBT3 [OGC gx.c __SETVCDFMT L2549-2554]); nbt3 sends an
+//             indexed NBT one index per vector (the same for direct input)
 //   clr       rgba8 | rgbx8 | rgb8 | rgba6 | rgba4 | rgb565
 // `uv` covers every texture coordinate the stream sends (the pass's t and the mesh's UVs); with
 // auto, each gets the widest fraction its own bounds allow.
@@ -29,11 +32,16 @@ struct CoordinateStorage {
   bool operator==(const CoordinateStorage&) const = default;
 };
 
+// How many vectors the normal sends: the normal alone (GX_NRM_XYZ), or an NBT (GX_NRM_NBT), or
+// an NBT indexed one index per vector (GX_NRM_NBT3).
+enum class NormalVectors : u8 { Normal, Nbt, Nbt3 };
+
 struct VertexStorage {
-  CoordinateStorage position;                 // vtx
-  ComponentType normal = ComponentType::F32;  // nrm
-  ColorType color = ColorType::Rgba8;         // clr (both colours)
-  CoordinateStorage texcoord;                 // uv
+  CoordinateStorage position;                            // vtx
+  ComponentType normal = ComponentType::F32;             // nrm
+  NormalVectors normal_vectors = NormalVectors::Normal;  // nrm's /nbt or /nbt3
+  ColorType color = ColorType::Rgba8;                    // clr (both colours)
+  CoordinateStorage texcoord;                            // uv
   bool operator==(const VertexStorage&) const = default;
   bool is_default() const { return *this == VertexStorage{}; }
 };

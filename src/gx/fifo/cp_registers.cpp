@@ -1,5 +1,6 @@
 #include "gx/fifo/cp_registers.h"
 
+#include "core/error.h"
 #include "gx/fifo/xf_registers.h"
 
 namespace lt::gx::fifo {
@@ -73,11 +74,12 @@ std::array<u32, 3> vertex_attribute_formats(const TexCoordFormats& formats) {
   return {a, b, c};
 }
 
-u32 vertex_specs(const VertexDescriptor& v) {
+u32 vertex_specs(const VertexDescriptor& v, bool nbt) {
   const u32 colours = (v.has(kVaClr0) ? 1u : 0u) + (v.has(kVaClr1) ? 1u : 0u);
   u32 texcoords = 0;
   for (int n = 0; n < kMaxTexGens; ++n) texcoords += v.has(kVaTex0 + n) ? 1u : 0u;
-  return place(colours, 0, 2) | place(v.has(kVaNrm) ? 1 : 0, 2, 2) | place(texcoords, 4, 4);
+  const u32 normals = v.has(kVaNrm) ? (nbt ? 2u : 1u) : 0u;
+  return place(colours, 0, 2) | place(normals, 2, 2) | place(texcoords, 4, 4);
 }
 
 size_t vertex_size(const VertexDescriptor& v, const TexCoordFormats& formats) {
@@ -93,15 +95,20 @@ size_t vertex_size(const VertexDescriptor& v, const TexCoordFormats& formats) {
   return n;
 }
 
-void write_pass_cp(CommandStream& out, const GxState& s) {
+void write_vat(CommandStream& out, const std::array<u32, 3>& vat, int format) {
+  LT_CHECK(format >= 0 && format < 8, "a vertex format is GX_VTXFMT0..7");
+  const auto n = static_cast<u8>(format);
+  out.load_cp(static_cast<u8>(cp::kVatA + n), vat[0]);
+  out.load_cp(static_cast<u8>(cp::kVatB + n), vat[1]);
+  out.load_cp(static_cast<u8>(cp::kVatC + n), vat[2]);
+}
+
+void write_pass_cp(CommandStream& out, const GxState& s, int format) {
   const VertexDescriptor v = sent_attributes(s);
   out.load_cp(cp::kVcdLow, vcd_low(v));
   out.load_cp(cp::kVcdHigh, vcd_high(v));
   out.load_xf(xf::kVertexSpecs, vertex_specs(v));
-  const auto vat = vertex_attribute_formats(s.texcoord_formats);
-  out.load_cp(cp::kVatA, vat[0]);
-  out.load_cp(cp::kVatB, vat[1]);
-  out.load_cp(cp::kVatC, vat[2]);
+  write_vat(out, vertex_attribute_formats(s.texcoord_formats), format);
   const auto idx = matrix_indices(s.texgen);
   out.load_cp(cp::kMatrixIndexA, idx[0]);
   out.load_xf(xf::kMatrixIndexA, idx[0]);

@@ -11,7 +11,7 @@
 namespace lt::gx::fifo {
 
 // CP addresses [DHW CPMemory.h] [OGC gx.c GX_LOAD_CP_REG calls]; the VAT registers of format n
-// are kVat* + n: the stream uses GX_VTXFMT0.
+// are kVat* + n [DHW CPMemory.h CP_VAT_REG_A..C: "+ n"] (the gx variant's :vat=n; default 0).
 namespace cp {
 inline constexpr u8 kMatrixIndexA = 0x30, kMatrixIndexB = 0x40, kVcdLow = 0x50, kVcdHigh = 0x60,
                     kVatA = 0x70, kVatB = 0x80, kVatC = 0x90;
@@ -34,15 +34,20 @@ u32 vcd_high(const VertexDescriptor& vertex);
 // RGBA8, texture coordinates F32 with S or ST [OGC gx.c __SETVCDFMT L2533-2620, GX_Init's
 // __GX_InitRevBits: VAT A bit 30 and VAT B bit 31 set] [DHW CPMemory.h UVAT_group0..2].
 std::array<u32, 3> vertex_attribute_formats(const TexCoordFormats& formats);
-// XF 0x1008: colours 0-1, normals 2-3, texture coordinates 4-7, counted from the descriptor
-// [OGC gx.c __GX_XfVtxSpecs L751-776] [DHW XFMemory.h INVTXSPEC].
-u32 vertex_specs(const VertexDescriptor& vertex);
+// XF 0x1008: colours 0-1, normals 2-3, texture coordinates 4-7, counted from the descriptor;
+// the normals 2 where the normal is sent as an NBT (`nbt`: libogc's vcdNrms, set by
+// GX_SetVtxDesc(GX_VA_NBT, ...)) [OGC gx.c __GX_XfVtxSpecs L751-776, __SETVCDATTR "case
+// GX_VA_NBT"] [DHW XFMemory.h INVTXSPEC].
+u32 vertex_specs(const VertexDescriptor& vertex, bool nbt = false);
 
 // Bytes one vertex of the stream takes (F32 positions and normals, RGBA8 colours, F32 S or ST).
 size_t vertex_size(const VertexDescriptor& vertex, const TexCoordFormats& formats);
 
 // The pass's descriptor, formats and matrix indices, as libogc's __GX_SetDirtyState sends them
-// before a draw: VCD (with the XF's vertex specs), VAT, matrix indices (CP and XF).
-void write_pass_cp(CommandStream& out, const GxState& state);
+// before a draw: VCD (with the XF's vertex specs), VAT of vertex format `format` (0..7: the one
+// the pass's draws name), matrix indices (CP and XF).
+void write_pass_cp(CommandStream& out, const GxState& state, int format = 0);
+// VAT A/B/C of vertex format `format` (CP 0x70/0x80/0x90 + format) set to `vat`.
+void write_vat(CommandStream& out, const std::array<u32, 3>& vat, int format);
 
 }  // namespace lt::gx::fifo

@@ -44,7 +44,7 @@ TevCombiner combiner(u32 env, bool alpha) {
 
 }  // namespace
 
-DecodedPass decode_pass(const RegisterFile& r) {
+DecodedPass decode_pass(const RegisterFile& r, u32 vat) {
   DecodedPass out;
   GxState& s = out.state;
   // BP 0x00 GenMode.
@@ -180,7 +180,7 @@ DecodedPass decode_pass(const RegisterFile& r) {
     for (u32 row = 0; row < 3; ++row)
       for (u32 c = 0; c < 4; ++c)
         s.texgen.matrices[id / 3][row][c] = xf_float(r, 4 * id + 4 * row + c);
-  // CP: descriptor and the texture coordinate formats of VAT 0.
+  // CP: descriptor and the texture coordinate formats of the draw's VAT.
   const u32 lo = r.cp[0x50], hi = r.cp[0x60];
   s.vertex = {};
   s.vertex.type[kVaPos] = static_cast<u8>(field(lo, 9, 2));
@@ -189,7 +189,7 @@ DecodedPass decode_pass(const RegisterFile& r) {
   s.vertex.type[kVaClr1] = static_cast<u8>(field(lo, 15, 2));
   for (int n = 0; n < kMaxTexGens; ++n)
     s.vertex.type[static_cast<size_t>(kVaTex0 + n)] = static_cast<u8>(field(hi, 2 * n, 2));
-  const u32 vat_a = r.cp[0x70], vat_b = r.cp[0x80], vat_c = r.cp[0x90];
+  const u32 vat_a = r.cp[0x70 + vat], vat_b = r.cp[0x80 + vat], vat_c = r.cp[0x90 + vat];
   const u32 st[8] = {field(vat_a, 21, 1), field(vat_b, 0, 1),  field(vat_b, 9, 1),
                      field(vat_b, 18, 1), field(vat_b, 27, 1), field(vat_c, 5, 1),
                      field(vat_c, 14, 1), field(vat_c, 23, 1)};

@@ -18,8 +18,9 @@ struct DecodedPass {
 };
 
 // Maps count as loaded where their image registers were written since the register file's
-// bp_written was last cleared.
-DecodedPass decode_pass(const RegisterFile& regs);
+// bp_written was last cleared. The texture coordinate formats are read from the VAT of vertex
+// format `vat` (the draw command's StreamDraw::vat).
+DecodedPass decode_pass(const RegisterFile& regs, u32 vat = 0);
 
 // `state` as the registers hold it: a TEV order's null colour channel is the zero channel (both
 // write 7), a null texcoord is texcoord 0, the descriptor is what is sent (cp_registers.h

@@ -17,20 +17,28 @@ size_t stream_color_bytes(u32 type) {
   return type < 6 ? kSizes[type] : 4;
 }
 
-// The bytes one vertex takes under the CP registers' descriptor and VAT 0: each attribute's
-// direct bytes (F32 by default, a stored mesh's types otherwise; no NBT), or its index, 1 byte
-// for GX_INDEX8 (2) and 2 for GX_INDEX16 (3) [OGC gx.h L82-85] [DHW VertexLoaderBase.cpp
-// GetVertexSize].
-size_t stream_vertex_size(const RegisterFile& r) {
+// The bytes one vertex takes under the CP registers' descriptor and the VAT of format `format` (the
+// draw command's low three bits pick it [DHW OpcodeDecoding.h RunCommand: cmd & GX_VAT_MASK]
+// [DHW VertexLoaderManager.cpp RunVertices]): each attribute's direct bytes (F32 by default, a
+// stored mesh's types otherwise), or its index, 1 byte for GX_INDEX8 (2) and 2 for GX_INDEX16
+// (3) [OGC gx.h L82-85] [DHW VertexLoaderBase.cpp GetVertexSize].
+size_t stream_vertex_size(const RegisterFile& r, u32 format) {
   const u32 lo = r.cp[0x50], hi = r.cp[0x60];
-  const u32 vat_a = r.cp[0x70], vat_b = r.cp[0x80], vat_c = r.cp[0x90];
+  const u32 vat_a = r.cp[0x70 + format], vat_b = r.cp[0x80 + format], vat_c = r.cp[0x90 + format];
   size_t n = 0;
-  // `input` the descriptor's 2-bit field, `direct` the bytes sent directly.
-  auto add = [&](u32 input, size_t direct) { n += input >= 2 ? input - 1 : input ? direct : 0; };
-  // VAT A: position count bit 0 (XY, XYZ) and type 1-3, normal type 10-12, colour types 14-16
-  // and 18-20 [DHW CPMemory.h UVAT_group0].
+  // `input` the descriptor's 2-bit field, `direct` the bytes sent directly, `indices` how many
+  // indices an indexed attribute sends.
+  auto add = [&](u32 input, size_t direct, size_t indices = 1) {
+    n += input >= 2 ? (input - 1) * indices : input ? direct : 0;
+  };
+  // VAT A: position count bit 0 (XY, XYZ) and type 1-3, normal count bit 9 (XYZ, NBT) and type
+  // 10-12, colour types 14-16 and 18-20, NormalIndex3 bit 31 [DHW CPMemory.h UVAT_group0]. An
+  // NBT sends three vectors; indexed with NormalIndex3 one index each, else one for all three
+  // [DHW VertexLoader_Normal.cpp GetSize].
+  const bool nbt = field(vat_a, 9, 1) != 0, index3 = field(vat_a, 31, 1) != 0;
   add(field(lo, 9, 2), (field(vat_a, 0, 1) ? 3 : 2) * stream_component_bytes(field(vat_a, 1, 3)));
-  add(field(lo, 11, 2), 3 * stream_component_bytes(field(vat_a, 10, 3)));
+  add(field(lo, 11, 2), (nbt ? 9 : 3) * stream_component_bytes(field(vat_a, 10, 3)),
+      nbt && index3 ? 3 : 1);
   add(field(lo, 13, 2), stream_color_bytes(field(vat_a, 14, 3)));
   add(field(lo, 15, 2), stream_color_bytes(field(vat_a, 18, 3)));
   // Each TEXn's element count bit: VAT A 21; VAT B 0, 9, 18, 27; VAT C 5, 14, 23; its type the
@@ -108,7 +116,7 @@ StreamEvents read_stream(const std::vector<u8>& b, RegisterFile& r, const std::s
       d.count = (u32{b[at]} << 8) | b[at + 1];
       at += 2;
       d.offset = at;
-      d.vertex_size = stream_vertex_size(r);
+      d.vertex_size = stream_vertex_size(r, d.vat);
       need(d.count * d.vertex_size);
       at += d.count * d.vertex_size;
       if (on_draw) on_draw(r, d);

@@ -342,15 +342,15 @@ void add_pixel_calls(CallTable& table) {
       // alike (the :draw= axis's indexed draws give each attribute the index its array needs:
       // paths/gx/program_storage.h).
       {"GX_SetVtxDesc",
-       {{integer(G::VtxAttr, 9, 20), integer(G::VtxAttrType, 0, 3)},
+       {{integer(G::VtxAttr, 9, kVaNbt), integer(G::VtxAttrType, 0, 3)},
         [](Machine& m) { set_vertex_input(m); }}},
       // GX_SetArray(attr, array, stride) [OGC gx.h L1929]: the array holds the scene's mesh as
       // stored; its stride is checked against the declared storage (paths/gx/program_storage.h).
       {"GX_SetArray",
-       {{integer(G::VtxAttr, 9, 20), of(K::MeshArray), integer(G::Number, 0, kMaxArrayStride)},
+       {{integer(G::VtxAttr, 9, kVaNbt), of(K::MeshArray), integer(G::Number, 0, kMaxArrayStride)},
         [](Machine& m) { set_vertex_array(m); }}},
       {"GX_SetVtxAttrFmt",
-       {{integer(G::VtxFmt, 0, 7), integer(G::VtxAttr, 9, 20), integer(G::CompCount, 0, 2),
+       {{integer(G::VtxFmt, 0, 7), integer(G::VtxAttr, 9, kVaNbt), integer(G::CompCount, 0, 2),
          integer(G::CompType, 0, 5), integer(G::Number, 0, 31)},
         [](Machine& m) { set_vertex_attribute_format(m); }}},
   });

@@ -318,6 +318,7 @@ inline constexpr GxName kGxNames[] = {
     {"GX_VA_TEX5", 18, NameGroup::VtxAttr},
     {"GX_VA_TEX6", 19, NameGroup::VtxAttr},
     {"GX_VA_TEX7", 20, NameGroup::VtxAttr},
+    {"GX_VA_NBT", 25, NameGroup::VtxAttr},
     {"GX_NONE", 0, NameGroup::VtxAttrType},
     {"GX_DIRECT", 1, NameGroup::VtxAttrType},
     {"GX_INDEX8", 2, NameGroup::VtxAttrType},

@@ -27,6 +27,16 @@ size_t storage_key_index(std::string_view key) {
   return 0;
 }
 
+// Argument `arg`'s attribute, GX_VA_NBT read as GX_VA_NRM: their descriptor field and array are
+// one (gx_state.h kVaNbt). 21..24 are GX_POSMTXARRAY .. GX_LIGHTARRAY, the XF's indexed matrix
+// and light arrays, no vertex attribute [OGC gx.h GX_POSMTXARRAY .. GX_VA_NBT].
+long long declared_attribute(Machine& m, size_t arg) {
+  const long long attribute = m.i(arg);
+  if (attribute > kVaTex7 && attribute < kVaNbt)
+    m.fail_arg(arg, "not a vertex attribute (GX_VA_POS .. GX_VA_TEX7, GX_VA_NBT)");
+  return attribute == kVaNbt ? kVaNrm : attribute;
+}
+
 }  // namespace
 
 void clear_vertex_inputs(Machine& m) {
@@ -36,8 +46,7 @@ void clear_vertex_inputs(Machine& m) {
 }
 
 void set_vertex_input(Machine& m) {
-  const long long attribute = m.i(0), input = m.i(1);
-  if (attribute == kVaClr1) m.fail_arg(0, "the scene has one vertex colour (GX_VA_CLR0)");
+  const long long attribute = declared_attribute(m, 0), input = m.i(1);
   // The :draw= axis sends a vertex one way: every attribute in the stream, or every one an index
   // into its array (GX_INDEX8 or GX_INDEX16 alike: each array gets the index its size needs).
   if (input != 0) {
@@ -56,13 +65,23 @@ void set_vertex_input(Machine& m) {
 }
 
 void set_vertex_attribute_format(Machine& m) {
-  const long long format = m.i(0), attribute = m.i(1), count = m.i(2), type = m.i(3), frac = m.i(4);
+  const long long format = m.i(0), count = m.i(2), type = m.i(3), frac = m.i(4);
+  const bool nbt = m.i(1) == kVaNbt;
+  const long long attribute = declared_attribute(m, 1);
   const bool texcoord = attribute >= kVaTex0 && attribute <= kVaTex7;
-  if (attribute == kVaClr1) m.fail_arg(1, "the scene has one vertex colour (GX_VA_CLR0)");
   if (attribute == kVaPos && count != 1)
     m.fail_arg(2, "the scene's positions have three components (GX_POS_XYZ)");
-  if (attribute == kVaNrm && count != 0)
-    m.fail_arg(2, "the scene sends the normal alone (GX_NRM_XYZ)");
+  // libogc writes GX_VA_NRM's format only with GX_NRM_XYZ and GX_VA_NBT's only with GX_NRM_NBT
+  // or GX_NRM_NBT3, and silently ignores any other pairing [OGC gx.c __SETVCDFMT L2545-2554]:
+  // the console would keep the format it had, so the pairing is refused.
+  if (!nbt && attribute == kVaNrm && count != 0)
+    m.fail_arg(2,
+               "libogc ignores GX_VA_NRM with " + m.text(2) +
+                   ": an NBT is GX_SetVtxAttrFmt(fmt, GX_VA_NBT, GX_NRM_NBT or GX_NRM_NBT3, ...)");
+  if (nbt && count == 0)
+    m.fail_arg(2,
+               "libogc ignores GX_VA_NBT with GX_NRM_XYZ: give GX_NRM_NBT or GX_NRM_NBT3 (or "
+               "GX_VA_NRM)");
   if (texcoord && count > 1)
     m.fail_arg(2, "a texture coordinate is GX_TEX_S (the CPU's t) or GX_TEX_ST (the mesh's UV)");
   // GX_SetVtxAttrFmt's type argument is one field for both kinds: the colour encodings for
@@ -76,11 +95,11 @@ void set_vertex_attribute_format(Machine& m) {
     named_colour |= m.text(3) == color_type_name(static_cast<ColorType>(t));
   }
   std::string key, value;
-  if (attribute == kVaClr0) {
+  const bool colour = attribute == kVaClr0 || attribute == kVaClr1;
+  if (colour) {
     if (named_component)
-      m.fail_arg(3, m.text(3) +
-                        " is a component type; GX_VA_CLR0 takes GX_RGB565, GX_RGB8, "
-                        "GX_RGBX8, GX_RGBA4, GX_RGBA6 or GX_RGBA8");
+      m.fail_arg(3, m.text(3) + " is a component type; " + gx_attribute_name(attribute) +
+                        " takes GX_RGB565, GX_RGB8, GX_RGBX8, GX_RGBA4, GX_RGBA6 or GX_RGBA8");
     key = "clr";
     value = storage_name(color_type_name(static_cast<ColorType>(type)));
   } else {
@@ -99,40 +118,71 @@ void set_vertex_attribute_format(Machine& m) {
                    "a normal's exponent is fixed by its type (GX_S8: 6, GX_S16: 14) and libogc "
                    "writes no fraction for GX_VA_NRM: give 0 or " +
                        std::to_string(normal_exponent(t)));
+      // GX_NRM_NBT 1, GX_NRM_NBT3 2. libogc's GX_NRM_NBT leaves NormalIndex3 (VAT A bit 31) as
+      // it was, so after a GX_NRM_NBT3 in this format the console still reads three indices
+      // [OGC gx.c __SETVCDFMT L2549-2554] (docs/spec/gx-hardware.md §8.2).
+      const bool index3_kept =
+          m.state.declared.by_format[static_cast<size_t>(format)].storage.normal_vectors ==
+          NormalVectors::Nbt3;
+      if (nbt) value += count == 2 || index3_kept ? "/nbt3" : "/nbt";
     } else if (t != ComponentType::F32) {
       // An F32's frac is written to the VAT, and the loader reads a float as it is
       // (vertex_loader.h): the storage key's f32 takes none.
       value += "/" + std::to_string(frac);
     }
   }
-  VertexStorage storage = m.state.declared.storage;
+  // Each format keeps its own declarations, as the CP keeps eight VATs (gx_state.h
+  // DeclaredStorage); the one that declares GX_VA_POS is the one the scene draws with.
+  DeclaredStorage& declared = m.state.declared;
+  FormatDeclarations& mine = declared.by_format[static_cast<size_t>(format)];
+  VertexStorage storage = mine.storage;
   try {
     set_vertex_storage(storage, key, value, "GX_SetVtxAttrFmt");
   } catch (const InputError& e) {
     m.fail_arg(3, e.what_only());
   }
-  // The scene draws with GX_VTXFMT0: the other formats are checked, not stored.
-  if (format != 0) return;
   if (texcoord)
-    m.state.texcoord_formats.kind[static_cast<size_t>(attribute - kVaTex0)] =
+    mine.texcoord_kind[static_cast<size_t>(attribute - kVaTex0)] =
         count == 0 ? TexCoordFormats::S : TexCoordFormats::ST;
-  DeclaredStorage& declared = m.state.declared;
   const size_t k = storage_key_index(key);
-  // The storage key stores every texture coordinate alike (its uv).
-  const std::string before = vertex_storage_value(declared.storage, key);
-  if (texcoord && declared.storage_at[k][0] != 0 && before != value)
+  // The storage key stores every texture coordinate alike (its uv), and both colours alike (its
+  // clr: the scene has one vertex colour, which GX_VA_CLR1 sends too, docs/porting-to-the-wii.md
+  // "GX_VA_CLR1"); a colour re-declared replaces itself.
+  const std::string before = vertex_storage_value(mine.storage, key);
+  const auto other_colour = static_cast<size_t>(attribute == kVaClr0 ? 1 : 0);
+  if (texcoord && mine.storage_at[k][0] != 0 && before != value)
     m.fail_call(gx_attribute_name(attribute) + " stored as " + value + " where line " +
-                std::to_string(declared.storage_at[k][0]) + " stores a texture coordinate as " +
+                std::to_string(mine.storage_at[k][0]) + " stores a texture coordinate as " +
                 before +
                 ": the stored mesh keeps every texture coordinate alike (the storage "
                 "key's uv)");
-  declared.storage = storage;
-  declared.storage_at[k] = {m.line(), m.column()};
+  if (colour && mine.color_at[other_colour][0] != 0 && before != value)
+    m.fail_call(gx_attribute_name(attribute) + " stored as " + value + " where line " +
+                std::to_string(mine.color_at[other_colour][0]) + " stores " +
+                gx_attribute_name(kVaClr0 + static_cast<int>(other_colour)) + " as " + before +
+                ": both send the scene's one vertex colour, stored alike (the storage key's clr)");
+  if (colour) mine.color_at[static_cast<size_t>(attribute - kVaClr0)] = {m.line(), m.column()};
+  mine.storage = storage;
+  mine.storage_at[k] = {m.line(), m.column()};
+  if (attribute == kVaPos) {
+    if (declared.format_at[0] != 0 && declared.format != format)
+      m.fail_arg(0, "GX_VA_POS is declared in GX_VTXFMT" + std::to_string(declared.format) +
+                        " at line " + std::to_string(declared.format_at[0]) +
+                        ": a program has no GX_Begin, so the format that declares the position "
+                        "is the one the scene draws with, and a pass draws with one");
+    declared.format = static_cast<int>(format);
+    declared.format_at = {m.line(), m.column()};
+  }
+  // The drawing format's declarations are the pass's storage and texture coordinate kinds.
+  const FormatDeclarations& drawn = declared.by_format[static_cast<size_t>(declared.format)];
+  declared.storage = drawn.storage;
+  declared.storage_at = drawn.storage_at;
+  for (size_t n = 0; n < drawn.texcoord_kind.size(); ++n)
+    m.state.texcoord_formats.kind[n] = drawn.texcoord_kind[n];
 }
 
 void set_vertex_array(Machine& m) {
-  const long long attribute = m.i(0);
-  if (attribute == kVaClr1) m.fail_arg(0, "the scene has one vertex colour (GX_VA_CLR0)");
+  const long long attribute = declared_attribute(m, 0);
   // The CP's arrays are numbered from GX_VA_POS (vertex_format.h kArrayPosition).
   const auto n = static_cast<size_t>(attribute - kVaPos);
   m.state.declared.array_stride[n] = static_cast<int>(m.i(2));

@@ -20,7 +20,8 @@ std::string stored_note(const GxVariant& v) {
     << "Vertex storage " << vertex_storage_key(v.storage) << " (--variant " << to_string(v)
     << "):\n";
   if (!v.storage.is_default())
-    o << "each pass declares GX_VTXFMT0 as the variant stores the mesh: positions and normals in\n"
+    o << "each pass declares GX_VTXFMT" << v.vat
+      << " as the variant stores the mesh: positions and normals in\n"
       << "the object's own coordinates, quantised as docs/porting-to-the-wii.md says (round to\n"
       << "nearest), placed by GX_PNMTX0 = view x model (the normal matrix its inverse transpose);\n"
       << "send each attribute in its declared type (GX_Position3s16, GX_Normal3s8, ...).\n";
@@ -71,7 +72,7 @@ std::string export_c(const ScenePrograms& programs, const ExportFigures& f) {
     << "  GX_SetCurrentMtx(GX_PNMTX0);    // view = this scene's camera rotation, positions sent\n"
     << "                                  // relative to the eye; light positions are eye space\n"
     << "  ltrender_<material>_pass<N>();\n"
-    << "  GX_Begin(GX_TRIANGLES, GX_VTXFMT0, count); per vertex:\n"
+    << "  GX_Begin(GX_TRIANGLES, GX_VTXFMT" << programs.variant.vat << ", count); per vertex:\n"
     << "    GX_Position3f32(x, y, z); GX_Normal3f32(nx, ny, nz);\n"
     << "    GX_Color4u8(r, g, b, 255);  // if the pass declares GX_VA_CLR0: the baked thickness\n"
     << "    GX_TexCoord1f32(t);         // if it declares GX_VA_TEX0 as GX_TEX_S: t = dot(V, -(L "

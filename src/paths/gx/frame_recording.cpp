@@ -59,7 +59,7 @@ std::vector<u32> triangle_vertices(const TriangleMesh& mesh) {
 // emulator's XF reads), triangles expanded, in draws of at most 65,535 vertices (a multiple
 // of 3, so no triangle is split).
 void draw_object(CommandStream& out, const GxState& s, const VertexStream& stream,
-                 const TriangleMesh& mesh, size_t pass) {
+                 const TriangleMesh& mesh, size_t pass, int format) {
   const VertexDescriptor v = sent_attributes(s);
   const TexCoordFormats f = sent_formats(s.texcoord_formats);
   const std::vector<float>* t =
@@ -68,7 +68,7 @@ void draw_object(CommandStream& out, const GxState& s, const VertexStream& strea
   static_assert(kMaxDrawVertices % 3 == 0);
   for (size_t start = 0; start < indices.size(); start += kMaxDrawVertices) {
     const size_t n = std::min(kMaxDrawVertices, indices.size() - start);
-    out.begin(kPrimitiveTriangles, 0, static_cast<u16>(n));
+    out.begin(kPrimitiveTriangles, static_cast<u8>(format), static_cast<u16>(n));
     for (size_t k = start; k < start + n; ++k) {
       const u32 i = indices[k];
       auto vec3 = [&](const glm::vec3& p) {
@@ -101,20 +101,18 @@ void draw_object(CommandStream& out, const GxState& s, const VertexStream& strea
 // stored bytes of each vertex sent directly, triangles expanded as draw_object's.
 void draw_stored_object(CommandStream& out, const GxState& s, const VertexStream& f32,
                         const ObjectSpaceMesh& mesh, const TriangleMesh& triangles,
-                        const VertexStorage& storage, size_t pass) {
+                        const VertexStorage& storage, size_t pass, int vertex_format) {
   const VertexAttributeData data = pass_vertex_data(
       mesh.position, mesh.normal, f32, sent_attributes(s), sent_formats(s.texcoord_formats), pass);
   const VertexAttributeFormat format = storage_format(storage, data, "--variant");
   write_matrices_xf(out, mesh.matrices.position, mesh.matrices.normal);
-  const std::array<u32, 3> vat = pack_vertex_format(format);
-  out.load_cp(cp::kVatA, vat[0]);
-  out.load_cp(cp::kVatB, vat[1]);
-  out.load_cp(cp::kVatC, vat[2]);
+  if (format.normal.nbt) out.load_xf(xf::kVertexSpecs, vertex_specs(sent_attributes(s), true));
+  write_vat(out, pack_vertex_format(format), vertex_format);
   const std::vector<AttributeElements> elements = quantise_attributes(data, format);
   const std::vector<u32> indices = triangle_vertices(triangles);
   for (size_t start = 0; start < indices.size(); start += kMaxDrawVertices) {
     const size_t n = std::min(kMaxDrawVertices, indices.size() - start);
-    out.begin(kPrimitiveTriangles, 0, static_cast<u16>(n));
+    out.begin(kPrimitiveTriangles, static_cast<u8>(vertex_format), static_cast<u16>(n));
     for (u8 b : direct_vertex_stream(elements, std::span(indices).subspan(start, n))) out.put_u8(b);
   }
 }
@@ -216,7 +214,7 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
           frame.updates.push_back({static_cast<u32>(out.position()), tlut_address,
                                    kMemoryUpdateTmem, textures[map]->tlut});
       }
-      write_pass_cp(out, state);
+      write_pass_cp(out, state, in.variant.vat);
       write_pass_xf(out, state);
       write_pass_bp(out, state, textures, addresses, tlut_addresses);
       for (size_t i : d.objects) {
@@ -226,9 +224,10 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
                               in.variant, static_cast<size_t>(d.pass));
         else if (stored)
           draw_stored_object(out, state, streams[i], object_meshes[i], scene.objects[i].mesh,
-                             in.variant.storage, static_cast<size_t>(d.pass));
+                             in.variant.storage, static_cast<size_t>(d.pass), in.variant.vat);
         else
-          draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(d.pass));
+          draw_object(out, state, streams[i], scene.objects[i].mesh, static_cast<size_t>(d.pass),
+                      in.variant.vat);
       }
     }
     write_display_copy(out, size, kXfbAddress);

@@ -24,7 +24,7 @@ const char* kValid =
     ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
     ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0), the vertex storage "
     ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto) and "
-    ":draw=direct | indexed | strips | list";
+    ":draw=direct | indexed | strips | list, :vat=N (the vertex format GX_VTXFMTN, N = 0..7)";
 
 // The :draw= values, in GxVariant::Draw's order.
 constexpr const char* kDrawNames[] = {"direct", "indexed", "strips", "list"};
@@ -145,6 +145,10 @@ GxVariant parse_gx_variant(const std::string& text) {
       if (named == std::end(kDrawNames))
         bad("draw=" + value + " is not a way of sending vertices (direct, indexed, strips, list)");
       v.draw = static_cast<GxVariant::Draw>(named - std::begin(kDrawNames));
+    } else if (key == "vat" && first) {
+      // GX_VTXFMT0..7: the draw command's three low bits [OGC gx.h GX_MAXVTXFMT 8].
+      if (!parses_whole(value, v.vat) || v.vat < 0 || v.vat > 7)
+        bad("vat=" + value + " is not a vertex format number (0..7: GX_VTXFMT0..7)");
     } else if (is_storage_key(key) && first) {
       try {
         set_vertex_storage(v.storage, key, value, "--variant");
@@ -213,6 +217,7 @@ std::string to_string(const GxVariant& v) {
   }
   if (v.draw != GxVariant::Draw::Direct)
     s += std::string(":draw=") + kDrawNames[static_cast<int>(v.draw)];
+  if (v.vat != 0) s += ":vat=" + std::to_string(v.vat);
   return s;
 }
 

@@ -67,10 +67,20 @@
 // Four axes store the mesh as a port does (docs/porting-to-the-wii.md "Vertex storage"), one
 // attribute each, with the values of a storage key (gx/vertex_storage.h, its one parser):
 //   :vtx=s16/8  positions (f32 | u8, s8, u16, s16 with /N fractional bits or /auto),
-//   :nrm=s8     normals (f32 | s16 | s8), :clr=rgb565 colours (rgba8 | rgbx8 | rgb8 | rgba6 |
-//   rgba4 | rgb565), :uv=u16/auto texture coordinates (the pass's t and the mesh's UVs);
+//   :nrm=s8     normals (f32 | s16 | s8, each alone or as an NBT: s8/nbt, s8/nbt3),
+//   :clr=rgb565 colours (rgba8 | rgbx8 | rgb8 | rgba6 | rgba4 | rgb565), :uv=u16/auto texture
+//   coordinates (the pass's t and the mesh's UVs);
 // e.g. `t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto`. Default f32 / rgba8: the F32
 // direct stream. A stored mesh goes through the console's vertex loader (scene_vertices.h).
+// One axis picks the vertex format (GX_VTXFMT0..7) the passes declare their storage in and draw
+// with (docs/porting-to-the-wii.md "Vertex storage"):
+//   :vat=N              N = 0..7 (default 0): the FIFO log writes VAT A/B/C of format N (CP
+//                       0x70/0x80/0x90 + N) and each draw command carries N in its low three
+//                       bits, which pick the VAT the CP reads the vertices with [DHW
+//                       OpcodeDecoding.h RunCommand: cmd & GX_VAT_MASK] [DHW
+//                       VertexLoaderManager.cpp RunVertices, RefreshLoader]; the module and
+//                       `--format c` declare GX_SetVtxAttrFmt(GX_VTXFMTN, ...) and draw with it.
+//                       The pixels do not move: the eight VATs are alike but for their number.
 // One axis picks how the vertices are sent (docs/porting-to-the-wii.md "How the vertices are
 // sent"; paths/gx/object_draw.h):
 //   :draw=direct        every triangle's three vertices in the FIFO, GX_TRIANGLES (default)
@@ -133,6 +143,8 @@ struct GxVariant {
   VertexStorage storage;
   // :draw=: how the vertices are sent (object_draw.h); default each vertex direct, GX_TRIANGLES.
   Draw draw = Draw::Direct;
+  // :vat=N: the vertex format (GX_VTXFMTN) the passes declare and draw with.
+  int vat = 0;
 
   bool operator==(const GxVariant&) const = default;
 };

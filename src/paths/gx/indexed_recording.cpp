@@ -21,10 +21,11 @@ constexpr u8 kArrayBase = 0xa0, kArrayStride = 0xb0;
 // triangles, or one strip in draws that each start two vertices back on an even vertex
 // (vertex_cost.h strip_draw_counts), so every triangle is set up as in one long strip.
 void put_draws(CommandStream& out, const IndexedArrays& arrays, const std::vector<u32>& order,
-               bool strip) {
+               bool strip, int format) {
   size_t start = 0;
   for (size_t n : strip ? strip_draw_counts(order.size()) : list_draw_counts(order.size())) {
-    out.begin(strip ? kPrimitiveTriangleStrip : kPrimitiveTriangles, 0, static_cast<u16>(n));
+    out.begin(strip ? kPrimitiveTriangleStrip : kPrimitiveTriangles, static_cast<u8>(format),
+              static_cast<u16>(n));
     for (u8 b : indexed_vertex_stream(arrays, std::span(order).subspan(start, n))) out.put_u8(b);
     start += strip ? n - 2 : n;
   }
@@ -62,10 +63,8 @@ void draw_indexed_object(CommandStream& out, FifoFrame& frame, VertexMemory& mem
   const std::array<u32, 2> vcd = pack_vertex_inputs(indexed_inputs(arrays));
   out.load_cp(cp::kVcdLow, vcd[0]);
   out.load_cp(cp::kVcdHigh, vcd[1]);
-  const std::array<u32, 3> vat = pack_vertex_format(format);
-  out.load_cp(cp::kVatA, vat[0]);
-  out.load_cp(cp::kVatB, vat[1]);
-  out.load_cp(cp::kVatC, vat[2]);
+  if (format.normal.nbt) out.load_xf(xf::kVertexSpecs, vertex_specs(sent_attributes(state), true));
+  write_vat(out, pack_vertex_format(format), variant.vat);
   auto send_block = [&](const std::vector<u8>& bytes) {
     const auto [address, is_new] = memory.place(bytes);
     if (is_new)
@@ -80,11 +79,11 @@ void draw_indexed_object(CommandStream& out, FifoFrame& frame, VertexMemory& mem
   }
   const std::vector<u32> order = sent_vertex_order(mesh, variant.draw);
   if (variant.draw != GxVariant::Draw::List) {
-    put_draws(out, arrays, order, draws_strip(variant.draw));
+    put_draws(out, arrays, order, draws_strip(variant.draw), variant.vat);
     return;
   }
   CommandStream list;
-  put_draws(list, arrays, order, true);
+  put_draws(list, arrays, order, true, variant.vat);
   std::vector<u8> bytes = list.bytes();
   bytes.resize(cache_lines_bytes(bytes.size()), kNop);
   const u32 address = send_block(bytes);

@@ -21,15 +21,17 @@
 
 namespace lt::gx {
 
-// GX_VTXFMT0's attributes: position and normal (XYZ) always, then the baked thickness colour
+// The vertex format's attributes: position and normal (XYZ) always, then the baked thickness colour
 // (GX_VA_CLR0), the CPU's t (GX_VA_TEX0, GX_TEX_S) and the mesh's UV (GX_VA_TEX<uv_attribute>,
 // GX_TEX_ST).
-// How GX_VTXFMT0 declares them (VertexDeclarations): the variant's vertex storage (:vtx= :nrm=
+// How the format declares them (VertexDeclarations): the variant's vertex storage (:vtx= :nrm=
 // :clr= :uv=) with each /auto fraction resolved once for the scene (storage_declarations,
 // scene_vertices.h), and, where :draw= sends indices, GX_INDEX8 or GX_INDEX16 per array (the
-// index the FIFO log gives it). The default variant's: GX_F32, GX_RGBA8, GX_DIRECT.
+// index the FIFO log gives it), in the variant's vertex format (:vat=N: GX_VTXFMTN). The default
+// variant's: GX_VTXFMT0, GX_F32, GX_RGBA8, GX_DIRECT.
 struct VertexDeclarations {
   VertexStorage storage;  // no auto_frac left
+  int format = 0;         // GX_VTXFMTn
   bool indexed = false;
   std::array<bool, kVertexArrays> index16{};  // by array number (vertex_format.h)
   bool operator==(const VertexDeclarations&) const = default;

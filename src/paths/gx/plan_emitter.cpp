@@ -52,19 +52,25 @@ Arg color_type(ColorType t) {
 
 void vertex_format(Writer& w, const VertexFormatPlan& v) {
   const VertexDeclarations& d = v.declared;
-  const GxConst<NG::VtxFmt> fmt0{"GX_VTXFMT0"};
+  const auto fmt = GxConst<NG::VtxFmt>::with_value(d.format);
   w.call("GX_ClearVtxDesc", {},
          v.uv ? "Vertex format: position and normal (and t) as sent, and the mesh's UV for the "
                 "thickness map"
               : "Vertex format: position and normal (and the baked thickness colour / t) as sent");
-  const GxConst<NG::VtxAttr> pos{"GX_VA_POS"}, nrm{"GX_VA_NRM"}, clr0{"GX_VA_CLR0"},
-      tex0{"GX_VA_TEX0"};
+  // An NBT is declared as libogc takes it: GX_VA_NBT in the descriptor and the format, with
+  // GX_NRM_NBT or GX_NRM_NBT3 [OGC gx.c __SETVCDATTR, __SETVCDFMT L2549-2554].
+  const NormalVectors vectors = d.storage.normal_vectors;
+  const GxConst<NG::VtxAttr> pos{"GX_VA_POS"}, clr0{"GX_VA_CLR0"}, tex0{"GX_VA_TEX0"},
+      nrm = vectors == NormalVectors::Normal ? GxConst<NG::VtxAttr>{"GX_VA_NRM"}
+                                             : GxConst<NG::VtxAttr>{"GX_VA_NBT"};
   const auto uv_va = GxConst<NG::VtxAttr>::with_value(tex0.value() + v.uv_attribute());
   // Each attribute GX_DIRECT, or under an indexed :draw= the index its array takes (the GX_VA_*
   // values are the array numbers plus GX_VA_POS [OGC gx.h L82-92]).
   auto input = [&](GxConst<NG::VtxAttr> a) {
     if (!d.indexed) return gx(GxConst<NG::VtxAttrType>{"GX_DIRECT"});
-    const bool wide = d.index16[static_cast<size_t>(a.value() - pos.value())];
+    const auto array =
+        a.value() == nrm.value() ? kArrayNormal : static_cast<int>(a.value() - pos.value());
+    const bool wide = d.index16[static_cast<size_t>(array)];
     return wide ? gx(GxConst<NG::VtxAttrType>{"GX_INDEX16"})
                 : gx(GxConst<NG::VtxAttrType>{"GX_INDEX8"});
   };
@@ -75,7 +81,7 @@ void vertex_format(Writer& w, const VertexFormatPlan& v) {
   if (v.t) w.call("GX_SetVtxDesc", {gx(tex0), input(tex0)});
   if (v.uv) w.call("GX_SetVtxDesc", {gx(uv_va), input(uv_va)});
   auto format = [&](GxConst<NG::VtxAttr> a, GxConst<NG::CompCount> n, Arg type, int frac) {
-    w.call("GX_SetVtxAttrFmt", {gx(fmt0), gx(a), gx(n), std::move(type), lit(frac)});
+    w.call("GX_SetVtxAttrFmt", {gx(fmt), gx(a), gx(n), std::move(type), lit(frac)});
   };
   const VertexStorage& s = d.storage;
   // A position's and texture coordinate's fraction as stored; F32 takes none. A normal's exponent
@@ -84,7 +90,11 @@ void vertex_format(Writer& w, const VertexFormatPlan& v) {
     return c.type == ComponentType::F32 ? 0 : c.frac;
   };
   format(pos, {"GX_POS_XYZ"}, component_type(s.position.type), fraction(s.position));
-  format(nrm, {"GX_NRM_XYZ"}, component_type(s.normal), 0);
+  format(nrm,
+         vectors == NormalVectors::Normal ? GxConst<NG::CompCount>{"GX_NRM_XYZ"}
+         : vectors == NormalVectors::Nbt  ? GxConst<NG::CompCount>{"GX_NRM_NBT"}
+                                          : GxConst<NG::CompCount>{"GX_NRM_NBT3"},
+         component_type(s.normal), 0);
   // GX_CLR_RGB for an encoding without alpha, as a port writes it; the loader reads the
   // encoding alone (vertex_format.h ColorFormat).
   const bool alpha =

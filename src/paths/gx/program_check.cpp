@@ -53,12 +53,19 @@ void check_renderable(const PassProgram& p, const std::string& file, bool has_lu
       const bool reads_vertex =
           ctl.material_source == 1 || (ctl.lighting && ctl.ambient_source == 1);
       if (!reads_vertex) continue;
-      if (c == 1)
+      // The scene's one vertex colour may go in GX_VA_CLR0, GX_VA_CLR1 or both (stored alike).
+      // A colour sent alone feeds channel 0, and channel 1 then gets no vertex colour [DSW
+      // SWVertexLoader.cpp ParseColorAttributes: "If only one of the color attributes is
+      // enabled, it is directed to color 0"].
+      // (A program that declares no format gets CLR0 alone: cp_registers.h sent_attributes.)
+      if (c == 1 && !(st.vertex.has(kVaClr0) && st.vertex.has(kVaClr1)))
         fail(
-            "channel GX_COLOR1A1 reads a vertex colour, but the scene sends one (GX_VA_CLR0, "
-            "routed to GX_COLOR0A0)");
-      if (!sent(kVaClr0))
-        fail("channel GX_COLOR0A0 reads a vertex colour, but the vertex format has no GX_VA_CLR0");
+            "channel GX_COLOR1A1 reads a vertex colour, but the vertex format sends one colour, "
+            "which feeds GX_COLOR0A0: send GX_VA_CLR1 beside GX_VA_CLR0");
+      if (!sent(kVaClr0) && !sent(kVaClr1))
+        fail(
+            "channel GX_COLOR0A0 reads a vertex colour, but the vertex format has no GX_VA_CLR0 "
+            "or GX_VA_CLR1");
     }
     const ChannelControl& ctl = st.lighting.control[static_cast<size_t>(c)];
     if (ctl.lighting && ctl.light_mask && !sent(kVaNrm) &&

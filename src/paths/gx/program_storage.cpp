@@ -24,6 +24,8 @@ struct FileDeclarations {
   std::array<DeclaredStorage::At, 4> storage_at{};
   std::optional<bool> indexed;
   DeclaredStorage::At input_at{};
+  int format = 0;                   // GX_VTXFMTn the passes draw with
+  DeclaredStorage::At format_at{};  // where a pass declared it (line 0: none did)
 };
 
 FileDeclarations merged_declarations(const Scene& scene, const ScenePrograms& programs) {
@@ -47,6 +49,18 @@ FileDeclarations merged_declarations(const Scene& scene, const ScenePrograms& pr
                              ": the scene's mesh is stored once a frame, alike in every pass");
       }
     }
+    if (st.format_at[0] != 0) {
+      if (out.format_at[0] == 0) {
+        out.format = st.format;
+        out.format_at = st.format_at;
+      } else if (out.format != st.format) {
+        throw InputError(file, source_at(st.format_at),
+                         "GX_SetVtxAttrFmt: GX_VA_POS in GX_VTXFMT" + std::to_string(st.format) +
+                             " where line " + std::to_string(out.format_at[0]) +
+                             " declares it in GX_VTXFMT" + std::to_string(out.format) +
+                             ": the scene's draws use one vertex format, alike in every pass");
+      }
+    }
     if (st.input_at[kArrayPosition][0] == 0) continue;
     if (!out.indexed) {
       out.indexed = st.indexed;
@@ -66,8 +80,10 @@ FileDeclarations merged_declarations(const Scene& scene, const ScenePrograms& pr
 // pass that reads its texture coordinates as `formats`: the scene's arrays are packed.
 int stored_element_bytes(size_t n, const VertexStorage& storage, const TexCoordFormats& formats) {
   if (n == kArrayPosition) return 3 * component_bytes(storage.position.type);
-  if (n == kArrayNormal) return 3 * component_bytes(storage.normal);
-  if (n == kArrayColor0) return color_bytes(storage.color);
+  if (n == kArrayNormal)  // an NBT element is three vectors (GX_VA_NBT shares the array)
+    return (storage.normal_vectors == NormalVectors::Normal ? 3 : 9) *
+           component_bytes(storage.normal);
+  if (n == kArrayColor0 || n == kArrayColor0 + 1) return color_bytes(storage.color);
   const int t = static_cast<int>(n) - kArrayTexCoord0;
   return (formats.is_uv(t) ? 2 : 1) * component_bytes(storage.texcoord.type);
 }
@@ -80,7 +96,8 @@ void check_array_strides(const Scene& scene, const ScenePrograms& programs,
     for (size_t n = 0; n < st.declared.array_stride.size(); ++n) {
       if (st.declared.array_at[n][0] == 0) continue;
       const int need = stored_element_bytes(n, storage, st.texcoord_formats);
-      const std::string_view key = kVertexStorageKeys[std::min<size_t>(n, 3)];  // vtx nrm clr uv
+      // vtx, nrm, clr (both colours' arrays), uv (the texture coordinates').
+      const std::string_view key = kVertexStorageKeys[std::min<size_t>(n, 3) - (n == 3 ? 1 : 0)];
       if (st.declared.array_stride[n] != need)
         throw InputError(programs.file.file, source_at(st.declared.array_at[n]),
                          "GX_SetArray: stride " + std::to_string(st.declared.array_stride[n]) +
@@ -146,6 +163,15 @@ GxVariant declared_variant(const Scene& scene, const GxVariant& given,
                            source_at(declared.storage_at[k]) + " declares " + mine +
                            " (store an attribute in one place: drop the axis or the declaration)");
     set_vertex_storage(v.storage, key, mine, file);
+  }
+  if (declared.format_at[0] != 0) {
+    if (given.vat != 0 && given.vat != declared.format)
+      throw InputError("--variant", to_string(given),
+                       "gx: :vat=" + std::to_string(given.vat) + " where " + file + ":" +
+                           source_at(declared.format_at) + " draws with GX_VTXFMT" +
+                           std::to_string(declared.format) +
+                           " (name the format in one place: drop the axis or the declaration)");
+    v.vat = declared.format;
   }
   if (declared.indexed) {
     if (*declared.indexed && v.draw == GxVariant::Draw::Direct) v.draw = GxVariant::Draw::Indexed;

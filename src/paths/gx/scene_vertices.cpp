@@ -113,6 +113,7 @@ VertexStream stored_vertex_stream(const Scene& scene, const SceneObject& object,
   VertexAttributeData shared;
   shared.position = mesh.position;
   shared.normal = mesh.normal;
+  add_normal_frames(shared);  // sent only where the storage says /nbt
   shared.color[0] = f32.color;
   if (!f32.uv.empty()) shared.texcoord[1] = f32.uv;
   for (const LoadedVertex& v : load_stored(shared, storage, indexed, origin)) {
@@ -150,7 +151,10 @@ VertexAttributeData pass_vertex_data(std::span<const glm::vec3> positions,
                                      size_t pass) {
   VertexAttributeData d;
   d.position.assign(positions.begin(), positions.end());
-  if (sent.has(kVaNrm)) d.normal.assign(normals.begin(), normals.end());
+  if (sent.has(kVaNrm)) {
+    d.normal.assign(normals.begin(), normals.end());
+    add_normal_frames(d);  // an NBT's binormal and tangent, sent only where the storage says /nbt
+  }
   if (sent.has(kVaClr0)) d.color[0] = stream.color;
   if (sent.has(kVaClr1)) d.color[1] = stream.color;
   const std::vector<float>* t =
@@ -199,6 +203,7 @@ VertexDeclarations storage_declarations(const Scene& scene, const GxVariant& var
   VertexDeclarations out;
   out.storage = variant.storage;
   out.indexed = draws_indexed(variant.draw);
+  out.format = variant.vat;
   if (variant.storage.is_default() && !out.indexed) return out;
   const bool stored = !variant.storage.is_default();
   const SceneView view = SceneView::of(scene);

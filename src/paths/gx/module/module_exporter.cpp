@@ -375,6 +375,11 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
                     stored_cost_comment(scene, variant)
               : std::string())
       << "\n#include <gccore.h>\n#include <math.h>\n\n"
+      << (variant.vat != 0 ? "// :vat=" + std::to_string(variant.vat) +
+                                 ": the passes declare and the draws name this vertex format.\n"
+                                 "#define LTRENDER_VTXFMT GX_VTXFMT" +
+                                 std::to_string(variant.vat) + "\n\n"
+                           : std::string())
       << "// ---- runtime: the per-frame maths (plain C99) ----\n"
       << module_runtime_source("ltrender_gx_runtime.h") << "\n"
       << without_line(module_runtime_source("ltrender_gx_runtime.c"),

@@ -34,7 +34,13 @@ std::string format_arguments(int a, const VertexAttributeFormat& format) {
     const CoordinateFormat& c = format.position;
     return "GX_POS_XYZ, " + component_type_name(c.type) + ", " + std::to_string(c.frac);
   }
-  if (a == kArrayNormal) return "GX_NRM_XYZ, " + component_type_name(format.normal.type) + ", 0";
+  if (a == kArrayNormal) {
+    const NormalFormat& n = format.normal;
+    return std::string(!n.nbt     ? "GX_NRM_XYZ, "
+                       : n.index3 ? "GX_NRM_NBT3, "
+                                  : "GX_NRM_NBT, ") +
+           component_type_name(n.type) + ", 0";
+  }
   if (a < kArrayTexCoord0) {
     const ColorFormat& c = format.color[static_cast<size_t>(a - kArrayColor0)];
     return std::string(c.alpha ? "GX_CLR_RGBA, " : "GX_CLR_RGB, ") + color_type_name(c.type) +
@@ -141,8 +147,11 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
           data << "};\n";
         }
         const bool wide = arrays.input[n] == AttributeInput::Index16;
-        index_bytes += wide ? 2 : 1;
-        arr << (arr.tellp() > 0 ? ",\n    " : "\n    ") << "{" << attribute_name(a) << ", "
+        index_bytes += (wide ? 2 : 1) * static_cast<size_t>(arrays.indices[n]);
+        // An NBT is declared and its array set as GX_VA_NBT, as libogc takes it (plan_emitter.cpp).
+        const std::string attribute =
+            a == kArrayNormal && format.normal.nbt ? "GX_VA_NBT" : attribute_name(a);
+        arr << (arr.tellp() > 0 ? ",\n    " : "\n    ") << "{" << attribute << ", "
             << (wide ? "GX_INDEX16" : "GX_INDEX8") << ", " << format_arguments(a, format) << ", "
             << name << ", " << arrays.bytes[n].size() << ", " << arrays.stride[n] << "}";
       }

@@ -1,6 +1,13 @@
 /* The GX side of a module (`ltrender export gx --format module`): the view matrix and the
    immediate-mode draw of one mesh. C99 over libogc's gccore.h, no allocation. */
 
+/* The vertex format the passes declare and the draws name: the gx variant's :vat=N defines it
+   as GX_VTXFMTN before this runtime (the draw command's low three bits pick the VAT the CP reads
+   the vertices with [DHW OpcodeDecoding.h RunCommand]). */
+#ifndef LTRENDER_VTXFMT
+#define LTRENDER_VTXFMT GX_VTXFMT0
+#endif
+
 /* A colour byte quadruple of the per-frame state as the GXColor a call passes. */
 #define LTR_GXCOLOR(c) ((GXColor){(c)[0], (c)[1], (c)[2], (c)[3]})
 /* A TEV scale factor (1, 2, 4) as GX_SetTevColorOp's tevscale [OGC gx.h L578-640]. */
@@ -27,7 +34,7 @@ void ltr_load_view(const ltr_view* view) {
   GX_SetCurrentMtx(GX_PNMTX0);
 }
 
-/* The mesh's triangles in the vertex format a pass declared (GX_VTXFMT0, every attribute
+/* The mesh's triangles in the vertex format a pass declared (LTRENDER_VTXFMT, every attribute
    GX_DIRECT): position and normal always, then the thickness colour, t and the UV where the
    pass sends them. GX_Begin counts vertices in a u16, so a long list goes in several batches. */
 void ltr_draw_mesh(const ltr_mesh* mesh, int colour, const float* t, int uv) {
@@ -36,7 +43,7 @@ void ltr_draw_mesh(const ltr_mesh* mesh, int colour, const float* t, int uv) {
   while (first < mesh->index_count) {
     const int n = mesh->index_count - first < batch ? mesh->index_count - first : batch;
     int i;
-    GX_Begin(GX_TRIANGLES, GX_VTXFMT0, (u16)n);
+    GX_Begin(GX_TRIANGLES, LTRENDER_VTXFMT, (u16)n);
     for (i = first; i < first + n; ++i) {
       const int v = mesh->indices[i];
       GX_Position3f32(mesh->positions[3 * v], mesh->positions[3 * v + 1],

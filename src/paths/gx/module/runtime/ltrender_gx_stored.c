@@ -12,7 +12,7 @@
 /* One attribute's array: GX_SetVtxDesc's index type, GX_SetVtxAttrFmt's count, type and
    fraction, and GX_SetArray's base and stride. */
 typedef struct {
-  u8 attribute; /* GX_VA_POS, GX_VA_NRM, GX_VA_CLR0, GX_VA_TEXn */
+  u8 attribute; /* GX_VA_POS, GX_VA_NRM (GX_VA_NBT), GX_VA_CLR0, GX_VA_TEXn */
   u8 index;     /* GX_INDEX8 or GX_INDEX16 */
   u8 count, type, frac;
   void* data; /* 32-byte aligned */
@@ -44,11 +44,16 @@ static void ltr_send_index(const ltr_stored_array* a, u16 i) {
       GX_Position1x16(i);
     else
       GX_Position1x8((u8)i);
-  } else if (a->attribute == GX_VA_NRM) {
-    if (wide)
-      GX_Normal1x16(i);
-    else
-      GX_Normal1x8((u8)i);
+  } else if (a->attribute == GX_VA_NRM || a->attribute == GX_VA_NBT) {
+    /* GX_NRM_NBT3: one index per vector, each the same element (the k-th vector is read from
+       its k-th third [DHW VertexLoader_Normal.cpp Normal_ReadIndex_Offset]). */
+    int k;
+    for (k = 0; k < (a->count == GX_NRM_NBT3 ? 3 : 1); ++k) {
+      if (wide)
+        GX_Normal1x16(i);
+      else
+        GX_Normal1x8((u8)i);
+    }
   } else if (a->attribute == GX_VA_CLR0) {
     if (wide)
       GX_Color1x16(i);
@@ -66,21 +71,21 @@ static void ltr_send_draws(const ltr_stored_draw* d) {
   const u16* index = d->indices;
   int k, v, a;
   for (k = 0; k < d->draw_count; ++k) {
-    GX_Begin(d->primitive, GX_VTXFMT0, d->draw_vertices[k]);
+    GX_Begin(d->primitive, LTRENDER_VTXFMT, d->draw_vertices[k]);
     for (v = 0; v < d->draw_vertices[k]; ++v)
       for (a = 0; a < d->array_count; ++a) ltr_send_index(&d->arrays[a], *index++);
     GX_End();
   }
 }
 
-/* The object's vertex descriptor and format (GX_VTXFMT0): each array indexed, its storage. */
+/* The object's vertex descriptor and format (LTRENDER_VTXFMT): each array indexed, its storage. */
 static void ltr_stored_format(const ltr_stored_draw* d) {
   int a;
   GX_ClearVtxDesc();
   for (a = 0; a < d->array_count; ++a) {
     const ltr_stored_array* x = &d->arrays[a];
     GX_SetVtxDesc(x->attribute, x->index);
-    GX_SetVtxAttrFmt(GX_VTXFMT0, x->attribute, x->count, x->type, x->frac);
+    GX_SetVtxAttrFmt(LTRENDER_VTXFMT, x->attribute, x->count, x->type, x->frac);
   }
 }
 
