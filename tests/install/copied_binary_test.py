@@ -4,8 +4,9 @@
 Usage: copied_binary_test.py SOURCE_DIR BUILD_DIR
 
 build/ltrender copied alone to another folder is not installed, so it must not fall back on the
-build or source tree (which another machine has not got): a PNG it writes itself (libpng,
-image/png_file.h), but a command that writes an EXR image fails
+build or source tree (which another machine has not got): a PNG or an EXR it writes itself
+(libpng, OpenEXR: image/png_file.h, image/exr_file.h), but a command that needs OpenImageIO
+(`compare` of a PNG with alpha, read with its colour multiplied by alpha) fails
 with one error line naming the module folder it looked in (../lib/ltrender/, as installed), and
 advise, which checks the material on model.md's hard cases, fails naming a scene of
 ../share/ltrender/scenes/hard/. Both exit
@@ -15,11 +16,25 @@ share/ltrender/) works: where it looks is relative to the binary, nothing else.
 import json
 import os
 import shutil
+import struct
 import subprocess
 import sys
+import zlib
 
 import installed
 from installed import Failure, expect, expect_files
+
+
+def write_rgba_png(path, width, height):
+    """A PNG with an alpha channel (colour type 6), which `compare` reads through OpenImageIO."""
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+    rows = b"".join(b"\0" + bytes([200, 100, 50, 128] * width) for _ in range(height))
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" +
+                chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
 
 
 def bare_and_in_a_prefix(source, build, work, _hidden):
@@ -38,8 +53,10 @@ def bare_and_in_a_prefix(source, build, work, _hidden):
         return subprocess.run([os.path.join(binary, "ltrender")] + list(args), cwd=work,
                               capture_output=True, text=True)
 
+    rgba = os.path.join(work, "rgba.png")
+    write_rgba_png(rgba, 4, 3)
     for args, missing in (
-            (["render", scene, "--path", "reference", "-o", "r.exr"],
+            (["compare", rgba, rgba],
              os.path.join(work, "bare", "lib", "ltrender", "libltrender_imageio.so")),
             (["advise", scene, "--target", "wii-tev", "--max-lsb", "8", "--width", "16"],
              os.path.join(work, "bare", "share", "ltrender", "scenes", "hard") + "/")):
@@ -50,9 +67,10 @@ def bare_and_in_a_prefix(source, build, work, _hidden):
             raise Failure("a bare copy's %s: expected one error line naming %s, got:\n%s" %
                           (args[0], missing, r.stderr))
 
-    expect(run(bare, "render", scene, "--path", "reference", "-o", "bare.png"),
-           "a bare copy: render to PNG")
-    expect_files([os.path.join(work, "bare.png")], "a bare copy: render to PNG")
+    for image in ("bare.png", "bare.exr"):
+        expect(run(bare, "render", scene, "--path", "reference", "-o", image),
+               "a bare copy: render to " + image)
+        expect_files([os.path.join(work, image)], "a bare copy: render to " + image)
 
     prefix = os.path.join(work, "by-hand")
     os.makedirs(os.path.join(prefix, "lib", "ltrender"))
@@ -68,6 +86,7 @@ def bare_and_in_a_prefix(source, build, work, _hidden):
     expect(run(by_hand, "render", scene, "--path", "reference", "-o", "r.exr"),
            "a prefix by hand: render")
     expect_files([os.path.join(work, "r.exr")], "a prefix by hand: render")
+    expect(run(by_hand, "compare", rgba, rgba), "a prefix by hand: compare of a PNG with alpha")
     expect(run(by_hand, "advise", scene, "--target", "wii-tev", "--max-lsb", "8", "--width",
                "16"), "a prefix by hand: advise")
     return "a bare copy names what it misses; in a prefix it works"
