@@ -41,25 +41,6 @@ const std::string& f32_program_text() {
   return text;
 }
 
-// `text` with every `from` replaced by `to` (each must occur).
-std::string with_edits(std::string text,
-                       const std::vector<std::pair<std::string, std::string>>& edits) {
-  for (const auto& [from, to] : edits) {
-    size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    for (; at != std::string::npos; at = text.find(from, at + to.size()))
-      text.replace(at, from.size(), to);
-  }
-  return text;
-}
-
-// The line (1-based) of the first occurrence of `needle` in `text`.
-int line_holding(const std::string& text, const std::string& needle) {
-  const size_t at = text.find(needle);
-  EXPECT_NE(at, std::string::npos) << needle;
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-}
-
 const std::vector<std::pair<std::string, std::string>> kS16S8Rgb565 = {
     {"GX_VA_POS, GX_POS_XYZ, GX_F32, 0", "GX_VA_POS, GX_POS_XYZ, GX_S16, 8"},
     {"GX_VA_NRM, GX_NRM_XYZ, GX_F32, 0", "GX_VA_NRM, GX_NRM_XYZ, GX_S8, 0"},
@@ -68,7 +49,7 @@ const std::vector<std::pair<std::string, std::string>> kS16S8Rgb565 = {
 TEST(GxProgramStorage, ADeclaredStorageRendersTheVariantsFrameByteForByte) {
   test::TempDir dir;
   const fs::path file = dir / "stored.c";
-  test::write_file(file, with_edits(f32_program_text(), kS16S8Rgb565));
+  test::write_file(file, test::with_edits(f32_program_text(), kS16S8Rgb565));
   PathOptions options;
   options.program_file = file.string();
   const Image declared = render_scene(baked_blob(), "gx", "t=vertex", kWidth, kHeight, options);
@@ -94,7 +75,7 @@ TEST(GxProgramStorage, AnIndexedDeclarationWritesTheVariantsIndexedFifoLog) {
                    "GX_ClearVtxDesc();\n  GX_SetArray(GX_VA_POS, positions, 6);\n"
                    "  GX_SetArray(GX_VA_NRM, normals, 3);\n  GX_SetArray(GX_VA_CLR0, colours, 2);\n"
                    "  GX_SetArray(GX_VA_TEX0, t, 4);"});
-  test::write_file(file, with_edits(f32_program_text(), edits));
+  test::write_file(file, test::with_edits(f32_program_text(), edits));
   const PathInfo& gx = gx_path_info();
   const std::vector<std::uint8_t> declared =
       gx.fifo_log(baked_blob(), "t=vertex", PathOptions{file.string(), ""}, kWidth, kHeight);
@@ -119,7 +100,7 @@ TEST_P(GxBadStorageDeclaration, IsRefusedNamingTheFileAndLine) {
   const BadDeclaration& c = GetParam();
   test::TempDir dir;
   const fs::path file = dir / "bad.c";
-  const std::string text = with_edits(f32_program_text(), c.edits);
+  const std::string text = test::with_edits(f32_program_text(), c.edits);
   test::write_file(file, text);
   try {
     (void)scene_programs_for(baked_blob(), parse_gx_variant("t=vertex"), file.string());
@@ -127,7 +108,7 @@ TEST_P(GxBadStorageDeclaration, IsRefusedNamingTheFileAndLine) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), file.string()) << e.what();
     EXPECT_EQ(e.where().substr(0, e.where().find(':')),
-              std::to_string(line_holding(text, c.line_holds)))
+              std::to_string(test::line_holding(text, c.line_holds)))
         << e.what();
     EXPECT_NE(e.what_only().find(c.message), std::string::npos) << e.what();
     EXPECT_EQ(test::count_lines(std::string(e.what()) + "\n"), 1);
@@ -193,7 +174,7 @@ TEST(GxProgramStorage, PassesDeclaringTheMeshOtherwiseAreRefusedAtTheSecond) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), file.string());
     EXPECT_EQ(e.where().substr(0, e.where().find(':')),
-              std::to_string(line_holding(text, "GX_S16, 8")));
+              std::to_string(test::line_holding(text, "GX_S16, 8")));
     EXPECT_NE(e.what_only().find("stored once a frame"), std::string::npos) << e.what();
   }
 }
@@ -201,7 +182,7 @@ TEST(GxProgramStorage, PassesDeclaringTheMeshOtherwiseAreRefusedAtTheSecond) {
 TEST(GxProgramStorage, AVariantAxisThatSaysOtherwiseIsRefusedNamingBoth) {
   test::TempDir dir;
   const fs::path file = dir / "stored.c";
-  test::write_file(file, with_edits(f32_program_text(), kS16S8Rgb565));
+  test::write_file(file, test::with_edits(f32_program_text(), kS16S8Rgb565));
   try {
     (void)scene_programs_for(baked_blob(), parse_gx_variant("t=vertex:vtx=s16/7"), file.string());
     FAIL() << "accepted";
@@ -220,7 +201,7 @@ TEST(GxProgramStorage, AVariantAxisThatSaysOtherwiseIsRefusedNamingBoth) {
 // frame of the variant that says the same.
 TEST(GxExportDeclaresStorage, AsThePorterWritesItByHand) {
   EXPECT_EQ(print_program(generate_programs(baked_blob(), parse_gx_variant(kStored)).file),
-            with_edits(f32_program_text(), kS16S8Rgb565));
+            test::with_edits(f32_program_text(), kS16S8Rgb565));
 }
 
 // The exported file (`ltrender export gx`, comment block and all) under --program.
@@ -242,7 +223,7 @@ TEST(GxExportDeclaresStorage, TheExportedFileRendersTheVariantsFrameAndAnEditedO
   const Image s16_8 = render_scene(baked_blob(), "gx", kStored, kWidth, kHeight);
   EXPECT_EQ(read_back.rgba, s16_8.rgba);
   // The porter moves the positions to 10 fractional bits.
-  test::write_file(file, with_edits(test::read_file(file), {{"GX_S16, 8", "GX_S16, 10"}}));
+  test::write_file(file, test::with_edits(test::read_file(file), {{"GX_S16, 8", "GX_S16, 10"}}));
   const Image edited = render_scene(baked_blob(), "gx", "t=vertex", kWidth, kHeight, options);
   const Image s16_10 =
       render_scene(baked_blob(), "gx", "t=vertex:vtx=s16/10:nrm=s8:clr=rgb565", kWidth, kHeight);

@@ -31,24 +31,6 @@ const Scene& format_scene() {
   return scene;
 }
 
-// `text` with every `from` replaced by `to` (each must occur).
-std::string with_program_edits(std::string text,
-                               const std::vector<std::pair<std::string, std::string>>& edits) {
-  for (const auto& [from, to] : edits) {
-    size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    for (; at != std::string::npos; at = text.find(from, at + to.size()))
-      text.replace(at, from.size(), to);
-  }
-  return text;
-}
-
-int program_line_of(const std::string& text, const std::string& needle) {
-  const size_t at = text.find(needle);
-  EXPECT_NE(at, std::string::npos) << needle;
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-}
-
 // A format unlike the default F32 one in every field the size depends on: s16/8 positions, an
 // NBT of s8 normals (NBT3 when `index3`), RGB565 colour 0, RGBA4 colour 1, s16 ST in TEX0.
 VertexAttributeFormat unusual_format(bool index3) {
@@ -178,7 +160,7 @@ TEST(GxVertexFormats, AProgramIsReadInTheFormatThatDeclaresThePosition) {
                    "GX_S16, 0);\n  GX_SetVtxAttrFmt(GX_VTXFMT0, GX_VA_CLR0, GX_CLR_RGB, "
                    "GX_RGBA4, 0);"});
   const fs::path file = dir / "format3.c";
-  test::write_file(file, with_program_edits(f32_program(), edits));
+  test::write_file(file, test::with_edits(f32_program(), edits));
   const PathInfo& gx = gx_path_info();
   const std::string variant = "t=vertex:vtx=s16/8:nrm=s8:vat=3";
   EXPECT_EQ(gx.fifo_log(format_scene(), "t=vertex", PathOptions{file.string(), ""}, kFormatWidth,
@@ -186,7 +168,7 @@ TEST(GxVertexFormats, AProgramIsReadInTheFormatThatDeclaresThePosition) {
             gx.fifo_log(format_scene(), variant, {}, kFormatWidth, kFormatHeight));
   const std::string generated =
       print_program(generate_programs(format_scene(), parse_gx_variant(variant)).file);
-  EXPECT_EQ(generated, with_program_edits(f32_program(), kFormat3S16));
+  EXPECT_EQ(generated, test::with_edits(f32_program(), kFormat3S16));
   EXPECT_EQ(generated.find("GX_VTXFMT0"), std::string::npos);
 }
 
@@ -214,17 +196,17 @@ TEST(GxVertexFormats, TwoFormatsForTheDrawsAreRefusedNamingTheLine) {
   std::string twice = f32;
   twice.replace(twice.find(pos), pos.size(),
                 pos + "\n  GX_SetVtxAttrFmt(GX_VTXFMT5, GX_VA_POS, GX_POS_XYZ, GX_S16, 8);");
-  refused_at(twice, "t=vertex", "file", program_line_of(twice, "GX_VTXFMT5"),
+  refused_at(twice, "t=vertex", "file", test::line_holding(twice, "GX_VTXFMT5"),
              "is declared in GX_VTXFMT0");
   // The second pass alone draws with GX_VTXFMT6.
   std::string second = f32;
   const size_t at = second.find(pos, second.find(pos) + 1);
   ASSERT_NE(at, std::string::npos) << "baked_blob has one pass";
   second.replace(at, pos.size(), "GX_SetVtxAttrFmt(GX_VTXFMT6, GX_VA_POS, GX_POS_XYZ, GX_F32, 0);");
-  refused_at(second, "t=vertex", "file", program_line_of(second, "GX_VTXFMT6"),
+  refused_at(second, "t=vertex", "file", test::line_holding(second, "GX_VTXFMT6"),
              "alike in every pass");
   // The file draws with GX_VTXFMT3, the axis says 5.
-  refused_at(with_program_edits(f32, kFormat3S16), "t=vertex:vat=5", "--variant", 0,
+  refused_at(test::with_edits(f32, kFormat3S16), "t=vertex:vat=5", "--variant", 0,
              "draws with GX_VTXFMT3");
 }
 
@@ -313,7 +295,7 @@ TEST(GxVertexFormats, AProgramDeclaringGxVaNbtIsTheVariant) {
     ADD_FAILURE() << "GX_VA_NRM with GX_NRM_NBT accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().substr(0, e.where().find(':')),
-              std::to_string(program_line_of(wrong, "GX_NRM_NBT")));
+              std::to_string(test::line_holding(wrong, "GX_NRM_NBT")));
     EXPECT_NE(std::string(e.what()).find("libogc ignores"), std::string::npos) << e.what();
   }
 }
@@ -331,7 +313,7 @@ TEST(GxVertexFormats, AColourSentInClr1AloneDrawsTheClr0Frame) {
   const std::vector<std::pair<std::string, std::string>> to_clr1 = {
       {"GX_SetVtxDesc(GX_VA_CLR0", "GX_SetVtxDesc(GX_VA_CLR1"},
       {"GX_VA_CLR0, GX_CLR_RGBA, GX_RGBA8, 0", "GX_VA_CLR1, GX_CLR_RGB, GX_RGB565, 0"}};
-  const std::string text = with_program_edits(f32_program(), to_clr1);
+  const std::string text = test::with_edits(f32_program(), to_clr1);
   ASSERT_EQ(text.find("GX_VA_CLR0"), std::string::npos);
   test::write_file(file, text);
   PathOptions options;
@@ -365,7 +347,7 @@ TEST(GxVertexFormats, AColourSentInClr1AloneDrawsTheClr0Frame) {
     ADD_FAILURE() << "two colour encodings accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().substr(0, e.where().find(':')),
-              std::to_string(program_line_of(both, "GX_RGBA4")));
+              std::to_string(test::line_holding(both, "GX_RGBA4")));
     EXPECT_NE(std::string(e.what()).find("stored alike"), std::string::npos) << e.what();
   }
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/build_paths.h"
@@ -160,6 +161,26 @@ inline std::string test_param_name(const std::string& s) {
 // A scene file's gtest parameter name: its stem, anything but letters and digits as _.
 inline std::string scene_param_name(const std::string& file) {
   return test_param_name(fs::path(file).stem().string());
+}
+
+// `text` with every `from` replaced by `to` (each must occur): a program file edited as a user
+// would edit it.
+inline std::string with_edits(std::string text,
+                              const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    for (; at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// The line (1-based) of the first occurrence of `needle` in `text`.
+inline int line_holding(const std::string& text, const std::string& needle) {
+  const size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
 }
 
 // The helpers below walk every pixel. They are compiled optimised in tests/test_pixels.cpp, not

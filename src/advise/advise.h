@@ -130,6 +130,13 @@ struct Advice {
   size_t rendered() const;
 };
 
+// True when some material of `a` has a pick (the storage and texture steps start from one).
+inline bool has_any_pick(const Advice& a) {
+  for (const MaterialAdvice& ma : a.materials)
+    if (ma.pick) return true;
+  return false;
+}
+
 // Throws InputError for a bad scene, profile or budget (exit 2).
 Advice run_advise(const AdviseOptions& options);
 

@@ -67,9 +67,7 @@ std::string with_formats(const std::string& variant, const std::string& map,
 void add_texture_advice(Advice& a, const Scene& scene, const PathInfo& path,
                         const PathOptions& options, const std::string& profile) {
   if (!path.writes_fifo_log || path.name != "gx") return;
-  const bool any_pick = std::any_of(a.materials.begin(), a.materials.end(),
-                                    [](const MaterialAdvice& ma) { return ma.pick.has_value(); });
-  if (!any_pick) return;
+  if (!has_any_pick(a)) return;
   VariantTrials trials(scene, path, options, profile, a.width, a.height);
   for (MaterialAdvice& ma : a.materials) {
     if (!ma.pick) continue;
