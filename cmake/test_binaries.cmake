@@ -20,8 +20,8 @@ target_link_libraries(lt_test_pch PRIVATE ${LT_CORE_LIBRARIES} GTest::gtest)
 target_compile_options(lt_test_pch PRIVATE -O0)
 target_precompile_headers(lt_test_pch PRIVATE ${CMAKE_SOURCE_DIR}/tests/precompiled.h)
 # The test helpers that walk every pixel (tests/test_pixels.cpp) at the build type's -O3: the
-# test files are compiled at -O0 (below), where such a loop ran slower than the render it checks
-# (non_finite: 4.7% of Demo/Bounded's CPU, `perf record`).
+# test files are compiled at -O0 (below), where non_finite's loop of std::isfinite calls and vector
+# iterators was ~10% of Demo/Bounded's CPU (`perf record`), ~1% optimised.
 add_library(lt_test_support STATIC ${CMAKE_SOURCE_DIR}/tests/test_pixels.cpp)
 target_include_directories(lt_test_support PRIVATE ${CMAKE_SOURCE_DIR}/src)
 target_link_libraries(lt_test_support PRIVATE ${LT_CORE_LIBRARIES} GTest::gtest)
@@ -36,7 +36,8 @@ function(lt_test_binary name)
   # the build, and their own code is thin (the work is in ltrender_core, still -O3). -O0 and a
   # precompiled header of what nearly every test includes make them much cheaper to compile:
   # a batch of 32 test files took 80.5 s of CPU at -O1, 62.6 s at -Og, 45.8 s at -O0
-  # (`/usr/bin/time` on its compile).
+  # (`/usr/bin/time` on its compile); in whole fresh clones the test binaries' steps took 150-160 s
+  # at -O0 against 169 s at -Og (`.ninja_log`, docs/testing.md "Test time").
   target_compile_options(${name} PRIVATE -O0)
   # -O0 has a price at link time, paid here: of the copies of an inline function or template
   # (std::vector's growth, OpenMesh's containers, arbfp's IR), the linker keeps the first it meets,

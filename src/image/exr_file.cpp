@@ -18,8 +18,8 @@ namespace lt {
 
 namespace {
 
-// The channels in the order OpenImageIO gives them (R, G, B, then A) [OpenImageIO exrinput.cpp
-// "Put R, G, B, A first"].
+// The channels in the order OpenImageIO gives them, R, G, B, then A (its exrinput.cpp orders
+// the colour and alpha channels first; ExrFile.* holds this reader to its spec and samples).
 constexpr std::array<const char*, 4> kChannelOrder = {"R", "G", "B", "A"};
 
 class ExrReader final : public ImageFileReader {

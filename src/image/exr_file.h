@@ -1,9 +1,9 @@
 // OpenEXR files read and written with the OpenEXR library itself, in this process, without
 // loading the image module. The module's load is ~0.35-0.45 s of CPU before it reads a byte
 // (image/png_file.h says where it goes); a reference render written as EXR, a `compare` or a
-// `regress` against float goldens, a bench run's reference images: each paid it, about ninety
-// processes of the test suite (counted with a temporary trace in `load_codec`), where the file
-// itself takes milliseconds.
+// `regress` against float goldens, a bench run's reference images: each paid it, fifty of the
+// test suite's hundred processes that loaded the module (counted with a temporary trace in
+// `load_codec`), where the file itself takes milliseconds.
 //
 // OpenImageIO reads an EXR through this same library: half samples widened to float (exact) and
 // float samples as stored, channels R, G, B, A in that order (the file stores them sorted by name,

@@ -3,7 +3,8 @@
 // command, `ltrender --help` and a `budget` of one program file included, paid 0.2 s and 180 MB
 // before main() (docs/command-line.md "Start-up" has the measurements; issue 11). Only the code in
 // image/oiio/ includes OpenImageIO; it is built as the module libltrender_imageio.so, which
-// image_codec() loads with dlopen the first time a command reads, writes or draws an image.
+// image_codec() loads with dlopen the first time a command reads an image that image/png_file.h
+// and image/exr_file.h leave to it, or draws text or thumbnails.
 //
 // The table passes plain data and error strings, never exceptions: the module has its own copy
 // of no ltrender code, so every check, InputError and stderr capture stays in image/.
@@ -39,10 +40,6 @@ class ImageCodec {
   // colour channels as stored, not multiplied by alpha (OpenImageIO's default for PNG and TGA).
   virtual std::unique_ptr<ImageFileReader> open(const std::string& path, bool unassociated_alpha,
                                                 std::string& error) const = 0;
-  // Float RGBA with linear colour space (EXR; a PNG is written by image/png_file.h, in the
-  // process).
-  virtual bool write_rgba_float(const std::string& path, int width, int height, const float* rgba,
-                                std::string& error) const = 0;
   // FreeType text through OpenImageIO's render_text into float RGBA pixels.
   virtual bool draw_text(float* rgba, int width, int height, int x, int y, const std::string& text,
                          int size, const std::string& font, const float colour[4]) const = 0;

