@@ -24,14 +24,15 @@ namespace lt::test {
 inline constexpr int kDolphinWidth = 320, kDolphinHeight = 240;
 
 // Dolphin's picture of each of `frames` (all of `scene`'s objects and materials), played as one
-// FIFO log: one Dolphin start for many frames. The log has a lead-in copy of the first frame and
-// three trailing copies of the last (for_dolphin_animation), so Dolphin's dumps end at the log's
-// last frame but one and frame k of K is dump D - 2 - K + k (dolphin_player.h). Empty, with a
-// failure, when Dolphin dumped fewer than K + 2.
+// FIFO log: one Dolphin start for many frames. The log has a blank lead-in frame and three blank
+// trailing frames (for_dolphin_judging), so Dolphin's dumps end at the log's last frame but one
+// and frame k of K is dump D - 2 - K + k (dolphin_player.h). Empty, with a failure, when Dolphin
+// dumped fewer than K + 2.
 inline std::vector<Image> dolphin_pictures(const Scene& scene,
                                            const std::vector<gx::fifo::FrameInput>& frames) {
-  const std::vector<std::uint8_t> log = gx::fifo::write_fifo_log(gx::fifo::for_dolphin_animation(
-      gx::fifo::record_frames(scene, frames, {kDolphinWidth, kDolphinHeight})));
+  const gx::FrameSize size{kDolphinWidth, kDolphinHeight};
+  const std::vector<std::uint8_t> log = gx::fifo::write_fifo_log(
+      gx::fifo::for_dolphin_judging(gx::fifo::record_frames(scene, frames, size), size));
   judge::DolphinOptions options;
   const std::vector<Image> dumps = judge::play_fifo_log(log, options);
   const int K = static_cast<int>(frames.size()), D = static_cast<int>(dumps.size());

@@ -428,6 +428,38 @@ TEST(GxFifoLog, HeaderSnapshotIsGxInitsState) {
   EXPECT_EQ(log.bp[0xfe], 0xffffffu);     // the BP mask reads all ones
 }
 
+// The Dolphin tests' layout (for_dolphin_judging): the judged frames as recorded, between a
+// blank lead-in and kDolphinTrailingCopies blank frames, each blank one GX_Init's registers, a
+// clear and the display copy that ends a frame: no draw, no memory update, one EFB copy, and
+// that copy the drawn frames' own (the XFB, with clear).
+TEST(GxFifoLog, JudgedFramesSitBetweenBlankFramesThatEndInTheDisplayCopy) {
+  const Scene scene = load_scene(test::source_dir() / "scenes/backlit_sphere.json");
+  const GxVariant a = parse_gx_variant("t=vertex"), b = parse_gx_variant("t=vertex:lut=32");
+  const ScenePrograms pa = scene_programs_for(scene, a, ""), pb = scene_programs_for(scene, b, "");
+  const FrameSize size{160, 120};
+  const FifoLog recorded = record_frames(scene, {{a, &pa}, {b, &pb}}, size);
+  const FifoLog judged = for_dolphin_judging(recorded, size);
+  ASSERT_EQ(judged.frames.size(), 1u + 2u + static_cast<size_t>(kDolphinTrailingCopies));
+  EXPECT_EQ(judged.frames[1], recorded.frames[0]);
+  EXPECT_EQ(judged.frames[2], recorded.frames[1]);
+  const FifoFrame& blank = judged.frames[0];
+  for (size_t i = 3; i < judged.frames.size(); ++i) EXPECT_EQ(judged.frames[i], blank) << i;
+  EXPECT_TRUE(blank.updates.empty());
+  RegisterFile blank_regs, drawn_regs;
+  const StreamEvents blank_events = read_stream(blank.fifo, blank_regs, "blank");
+  const StreamEvents drawn_events = read_stream(recorded.frames[0].fifo, drawn_regs, "drawn");
+  EXPECT_TRUE(blank_events.draws.empty());
+  EXPECT_FALSE(drawn_events.draws.empty());
+  ASSERT_EQ(blank_events.copies.size(), 1u);
+  ASSERT_FALSE(drawn_events.copies.empty());
+  EXPECT_EQ(blank_events.copies.back(), drawn_events.copies.back());
+  // The frame ends at the copy's trigger, as Dolphin's FIFO player requires of a frame.
+  for (const std::vector<u8>* fifo : {&blank.fifo, &recorded.frames[0].fifo})
+    EXPECT_EQ((*fifo)[fifo->size() - 4], bp::kCopyTrigger) << "the last command: the trigger";
+  for (u8 r : {bp::kCopySourceTopLeft, bp::kCopySourceSize, bp::kCopyDestination})
+    EXPECT_EQ(blank_regs.bp[r], drawn_regs.bp[r]) << "BP " << int(r);
+}
+
 // The container: header fields at the offsets FifoDataFile.cpp gives, read back by the reader.
 TEST(GxFifoLog, ContainerHasDolphinsLayout) {
   FifoLog log;

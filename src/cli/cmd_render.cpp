@@ -61,7 +61,7 @@ Image render_via_dolphin(const RenderArgs& a, const PathInfo& info, const Scene&
   options.deadline_seconds = a.dolphin_deadline;
   std::vector<Image> frames;
   if (!a.keep_fifo_log.empty()) {
-    write_text_file(a.keep_fifo_log, std::string(log.begin(), log.end()));
+    write_binary_file(a.keep_fifo_log, log);
     frames = judge::play_fifo_log(fs::path(a.keep_fifo_log), options);
   } else {
     frames = judge::play_fifo_log(log, options);

@@ -134,13 +134,25 @@ void write_directory_atomically(const fs::path& dir,
   if (moved) throw InputError(dir.string(), "", "cannot write output: " + moved.message());
 }
 
-void write_text_file(const fs::path& target, const std::string& text) {
+namespace {
+
+void write_chars(const fs::path& target, const char* data, std::size_t size) {
   write_atomically(target, [&](const fs::path& tmp) {
     std::ofstream out(tmp, std::ios::binary);
-    out << text;
+    out.write(data, static_cast<std::streamsize>(size));
     out.close();
     if (!out) throw InputError(target.string(), "", "cannot write");
   });
+}
+
+}  // namespace
+
+void write_text_file(const fs::path& target, const std::string& text) {
+  write_chars(target, text.data(), text.size());
+}
+
+void write_binary_file(const fs::path& target, std::span<const std::uint8_t> bytes) {
+  write_chars(target, reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
 void ensure_not_an_input(const fs::path& output, const std::vector<fs::path>& inputs) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,8 @@ void write_directory_atomically(const fs::path& dir,
 
 // write_atomically of a text file (reports, XML, JSON). Throws InputError naming the target.
 void write_text_file(const fs::path& target, const std::string& text);
+// write_atomically of bytes as they are (a FIFO log), without a copy into a string.
+void write_binary_file(const fs::path& target, std::span<const std::uint8_t> bytes);
 
 // Every temporary's name holds this: ".out.png.ltrender-partial.1234.png" for out.png, pid 1234.
 inline constexpr const char* kPartialOutputTag = ".ltrender-partial.";

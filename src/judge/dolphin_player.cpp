@@ -232,11 +232,8 @@ std::vector<Image> play_fifo_log(const std::filesystem::path& dff, const Dolphin
 
 std::vector<Image> play_fifo_log(const std::vector<std::uint8_t>& dff,
                                  const DolphinOptions& options) {
-  return play(
-      [&](const std::filesystem::path& in_session) {
-        write_text_file(in_session, std::string(dff.begin(), dff.end()));
-      },
-      options);
+  return play([&](const std::filesystem::path& in_session) { write_binary_file(in_session, dff); },
+              options);
 }
 
 bool dumped_unscaled(int width, int height) {

@@ -1,6 +1,7 @@
 #include "paths/gx/frame_recording.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/error.h"
 #include "gx/fifo/cp_registers.h"
@@ -117,6 +118,9 @@ void draw_stored_object(CommandStream& out, const GxState& s, const VertexStream
   }
 }
 
+// The clear colour GX_Init sets: GX_DEFAULT_BG [OGC gx.c L66].
+constexpr Color8 kGxDefaultBackground{64, 64, 64, 255};
+
 void write_gx_init(CommandStream& out, FrameSize size) {
   write_gx_init_bp(out, size);
   write_gx_init_xf(out);
@@ -149,7 +153,7 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
     write_pass_cp(init, gx_init);
     write_pass_xf(init, gx_init);
     write_pass_bp(init, gx_init, {}, {});
-    write_copy_clear(init, Color8{64, 64, 64, 255});  // GX_DEFAULT_BG [OGC gx.c L66]
+    write_copy_clear(init, kGxDefaultBackground);
     log.bp = init.bp;
     // BP 0xFE, the mask of the next BP write, reads all ones: the hardware resets it after every
     // write [DHW BPMemory.h BPMEM_BP_MASK].
@@ -237,15 +241,42 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
   return log;
 }
 
-FifoLog for_dolphin(FifoLog log) {
-  for (int i = 0; i < kDolphinTrailingCopies && !log.frames.empty(); ++i)
-    log.frames.push_back(log.frames.back());
+namespace {
+
+// `log` with `lead_in` (if any) in front and kDolphinTrailingCopies of `trailing` behind.
+FifoLog padded(FifoLog log, const std::optional<FifoFrame>& lead_in, const FifoFrame& trailing) {
+  if (lead_in) log.frames.insert(log.frames.begin(), *lead_in);
+  log.frames.insert(log.frames.end(), kDolphinTrailingCopies, trailing);
   return log;
 }
 
+// GX_Init's registers, the clear colour GX_Init sets and the display copy that ends a frame.
+FifoFrame blank_frame(FrameSize size) {
+  CommandStream out;
+  write_gx_init(out, size);
+  write_copy_clear(out, kGxDefaultBackground);
+  write_display_copy(out, size, kXfbAddress);
+  return FifoFrame{out.bytes(), {}};
+}
+
+}  // namespace
+
+FifoLog for_dolphin(FifoLog log) {
+  if (log.frames.empty()) return log;
+  const FifoFrame last = log.frames.back();
+  return padded(std::move(log), std::nullopt, last);
+}
+
 FifoLog for_dolphin_animation(FifoLog log) {
-  if (!log.frames.empty()) log.frames.insert(log.frames.begin(), log.frames.front());
-  return for_dolphin(std::move(log));
+  if (log.frames.empty()) return log;
+  const FifoFrame first = log.frames.front(), last = log.frames.back();
+  return padded(std::move(log), first, last);
+}
+
+FifoLog for_dolphin_judging(FifoLog log, FrameSize size) {
+  if (log.frames.empty()) return log;
+  const FifoFrame blank = blank_frame(size);
+  return padded(std::move(log), blank, blank);
 }
 
 }  // namespace lt::gx::fifo
