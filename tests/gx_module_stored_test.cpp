@@ -7,7 +7,10 @@
 // the camera, ltr_object_matrices) must be in the emulator's FIFO log of that frame as the very
 // bytes, each object's descriptor and format the VCD and VAT the log loads for it, every array it
 // points the CP at and every display list it calls a block of the log's memory (and every block one
-// of them), and every draw it sends in the log's FIFO as the very bytes.
+// of them), and every draw it sends in the log's FIFO as the very bytes. Under t=vertex the arrays
+// include each pass's t, which the module computes (ltr_fill_t over the game's world-space meshes),
+// stores and flushes every frame (ltr_stored_write_t): the log's t blocks of that frame, byte for
+// byte, under the display lists built once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
