@@ -14,6 +14,7 @@
 #include "paths/gx/gx_path.h"
 #include "paths/gx/gx_variant.h"
 #include "paths/path.h"
+#include "render/camera_path.h"
 #include "render/session.h"
 #include "scene/scene.h"
 #include "test_util.h"
@@ -77,9 +78,11 @@ inline std::vector<std::string> judged_variants(const Scene& scene) {
   return out;
 }
 
-// One frame to judge: a gx variant, and the program file it reads ("" for the generated ones).
+// One frame to judge: a gx variant, the program file it reads ("" for the generated ones), and
+// the frame of the camera path (render/camera_path.h) the scene is moved to (0: as it is).
 struct JudgedFrame {
   std::string variant, program_file;
+  int path_frame = 0;
 };
 
 // What one judged frame gave: ltrender's covered pixels, and how it differs from Dolphin's.
@@ -94,13 +97,16 @@ struct JudgedRow {
 inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
                                                        const std::vector<JudgedFrame>& frames,
                                                        const std::string& label) {
+  std::vector<Scene> scenes;
+  for (const JudgedFrame& f : frames) scenes.push_back(scene_on_camera_path(scene, f.path_frame));
   std::vector<gx::ScenePrograms> programs;
-  for (const JudgedFrame& f : frames)
-    programs.push_back(
-        gx::scene_programs_for(scene, gx::parse_gx_variant(f.variant), f.program_file));
+  for (size_t k = 0; k < frames.size(); ++k)
+    programs.push_back(gx::scene_programs_for(scenes[k], gx::parse_gx_variant(frames[k].variant),
+                                              frames[k].program_file));
   std::vector<gx::fifo::FrameInput> inputs;
   for (size_t k = 0; k < frames.size(); ++k)
-    inputs.push_back({programs[k].variant, &programs[k], nullptr});
+    inputs.push_back(
+        {programs[k].variant, &programs[k], frames[k].path_frame == 0 ? nullptr : &scenes[k]});
   const std::vector<Image> dolphin = dolphin_pictures(scene, inputs);
   std::vector<JudgedRow> rows;
   if (dolphin.size() != frames.size()) {
@@ -111,10 +117,13 @@ inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
   for (size_t k = 0; k < frames.size(); ++k) {
     PathOptions options;
     options.program_file = frames[k].program_file;
-    const Image ours = render_scene(scene, "gx", frames[k].variant + ":out=xfb", kDolphinWidth,
+    const Image ours = render_scene(scenes[k], "gx", frames[k].variant + ":out=xfb", kDolphinWidth,
                                     kDolphinHeight, options);
     const std::string name =
-        frames[k].variant + (frames[k].program_file.empty() ? "" : " --program (edited)");
+        frames[k].variant + (frames[k].program_file.empty() ? "" : " --program (edited)") +
+        (frames[k].path_frame == 0
+             ? ""
+             : " (camera path frame " + std::to_string(frames[k].path_frame) + ")");
     const JudgedRow row{covered_pixels(ours), picture_difference(ours, dolphin[k])};
     std::printf("| %s | %s | %zu | %zu | %d |\n", label.c_str(), name.c_str(), row.covered,
                 row.difference.differ, row.difference.max);

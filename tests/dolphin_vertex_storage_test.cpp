@@ -13,7 +13,10 @@
 // frames (issue 46 step 8) draw with other vertex formats and an NBT: GX_VTXFMT3 with s8 NBT
 // normals sent directly, and GX_VTXFMT7 with s16 NBT3 normals indexed in a display list (three
 // indices a normal), so Dolphin's loader is looked up by the draw's format and reads the NBT's
-// vectors where ltrender's does.
+// vectors where ltrender's does. Two more (issue 46 step 9) are two frames of the camera path
+// under t=vertex stored in a display list: the list's bytes are the same each frame, the t array
+// it indexes (one element per vertex, its s16 fraction chosen from the frame's t) is rewritten,
+// as a stored module does it (gx_module_stored_test.cpp holds the module's sends to this log).
 #include <gtest/gtest.h>
 
 #include "dolphin_util.h"
@@ -44,7 +47,9 @@ TEST_P(DolphinVertexStorage, DolphinsFramesOfAStoredMeshAreLtrendersXfbPictures)
       {"t=vertex:vtx=s8/auto:nrm=s16:clr=rgba4:uv=s8/auto", ""},
       {"t=vertex", (dir / "declared.c").string()},
       {"t=vertex:vtx=s16/auto:nrm=s8/nbt:clr=rgb565:uv=s16/auto:vat=3", ""},
-      {"t=vertex:vtx=s16/auto:nrm=s16/nbt3:clr=rgba4:uv=s16/auto:draw=list:vat=7", ""}};
+      {"t=vertex:vtx=s16/auto:nrm=s16/nbt3:clr=rgba4:uv=s16/auto:draw=list:vat=7", ""},
+      {"t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list", "", 3},
+      {"t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list", "", 6}};
   const std::vector<test::JudgedRow> rows =
       test::expect_dolphins_pictures(scene, frames, GetParam());
   for (size_t k = 0; k < rows.size(); ++k)

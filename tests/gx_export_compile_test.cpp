@@ -202,7 +202,8 @@ TEST(GxExportStoredDeclarations, CompileWithThePowerPcCompilerAgainstLibogc) {
 
 // The module of a stored variant (module_stored.h): its arrays (ATTRIBUTE_ALIGN(32)), its
 // display lists and indexed draws (GX_SetArray, GX_BeginDispList, GX_Position1x16, ...) are
-// libogc's calls, as a list and as strips, one scene with a map's UVs.
+// libogc's calls, as a list with the per-vertex t the CPU rewrites every frame (t=vertex, its
+// fraction chosen per frame: ltr_stored_write_t), and as strips, one scene with a map's UVs.
 TEST(GxModuleStoredCompiles, WithThePowerPcCompilerAgainstLibogc) {
   const std::vector<fs::path> checkouts = libogc_checkouts();
   if (checkouts.empty())
@@ -210,7 +211,7 @@ TEST(GxModuleStoredCompiles, WithThePowerPcCompilerAgainstLibogc) {
   test::TempDir dir;
   const std::pair<const char*, const char*> cases[] = {
       {"scenes/three_point_blob.json",
-       "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
+       "t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
       {"scenes/albedo_checker.json",
        "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=strips"}};
   for (const auto& [scene, variant] : cases) {

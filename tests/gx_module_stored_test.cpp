@@ -7,11 +7,15 @@
 // the camera, ltr_object_matrices) must be in the emulator's FIFO log of that frame as the very
 // bytes, each object's descriptor and format the VCD and VAT the log loads for it, every array it
 // points the CP at and every display list it calls a block of the log's memory (and every block one
-// of them), and every draw it sends in the log's FIFO as the very bytes.
+// of them), and every draw it sends in the log's FIFO as the very bytes. Under t=vertex the arrays
+// include each pass's t, which the module computes (ltr_fill_t over the game's world-space meshes),
+// stores and flushes every frame (ltr_stored_write_t): the log's t blocks of that frame, byte for
+// byte, under the display lists built once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <set>
 
 #include "gx/fifo/command_stream.h"
@@ -137,7 +141,8 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
   const HostModule host(dir, export_module(base, variant, GetParam().scene));
   ASSERT_TRUE(host.compiled) << host.compiler_output;
   auto* init = host.get<VoidFn>("ltrender_stored_init");
-  using DrawFn = void(const ltr_view*, ltr_pass_state* const[]);
+  using DrawFn =
+      void(const ltr_view*, const ltr_light[], const ltr_mesh[], ltr_pass_state* const[]);
   auto* draw = host.get<DrawFn>("ltrender_draw_stored");
   using BeginDrawsFn = void();
   using DrawsFn = const u8*(u32*);
@@ -149,17 +154,23 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
   GxVariant undeclared = variant;
   undeclared.storage = VertexStorage{};
   size_t lists_called = 0;
+  std::map<int, std::set<std::vector<u8>>> t_blocks;  // by frame
+  bool sends_t = false;
+  for (const MaterialPlan& m : plan.materials)
+    for (const PassPlan& p : m.passes) sends_t = sends_t || p.vertex.t;
   for (int k : kStoredFramesChecked) {
     const Scene s = scene_on_camera_path(base, k);
     const std::string at = GetParam().scene + " frame " + std::to_string(k);
     ltr_view view{};
     std::vector<std::vector<ltr_pass_state>> states;
-    const std::string text =
-        drive_frame(host, plan, s,
-                    [&](const MaterialFrame& f, const ltr_view& v, const std::vector<ltr_light>&) {
-                      view = v;
-                      states.push_back(f.states);
-                    });
+    std::vector<ltr_light> lights;
+    const std::string text = drive_frame(
+        host, plan, s,
+        [&](const MaterialFrame& f, const ltr_view& v, const std::vector<ltr_light>& l) {
+          view = v;
+          lights = l;
+          states.push_back(f.states);
+        });
     ASSERT_FALSE(text.empty()) << at;
     // The pass functions drive the emulator to the variant's own frame: they declare the
     // storage (with the fraction every object takes), so the variant given with them keeps only
@@ -174,8 +185,18 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
     // The draw, recorded.
     std::vector<ltr_pass_state*> state_of(states.size());
     for (size_t m = 0; m < states.size(); ++m) state_of[m] = states[m].data();
+    // Every object's world-space mesh, as the game gives it to the setups: a pass that sends t
+    // computes it there (ltr_fill_t).
+    std::vector<MeshArrays> objects;
+    for (const SceneObject& o : s.objects) objects.push_back(arrays_of(o));
+    std::vector<ltr_mesh> meshes;
+    for (MeshArrays& a : objects) {
+      a.mesh.positions = a.positions.data();
+      a.mesh.normals = a.normals.data();
+      meshes.push_back(a.mesh);
+    }
     begin_draws();
-    draw(&view, state_of.data());
+    draw(&view, lights.data(), meshes.data(), state_of.data());
     u32 length = 0;
     const u8* bytes = recorded(&length);
     const std::vector<DrawSegment> sent = draw_segments(bytes, length);
@@ -188,7 +209,7 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
     std::set<std::vector<u8>> blocks, module_blocks;
     for (const fifo::MemoryUpdate& u : frame.updates)
       if (u.type == fifo::kMemoryUpdateVertexStream) blocks.insert(u.data);
-    size_t matrices = 0, draws = 0, formats = 0;
+    size_t matrices = 0, draws = 0, formats = 0, t_arrays = 0;
     std::vector<DrawSegment> desc, fmt;  // the object's, after its matrices
     bool object_format = false;
     for (const DrawSegment& g : sent) {
@@ -212,6 +233,11 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
         EXPECT_TRUE(holds_bytes(frame.fifo, g.bytes)) << at << ": a draw the log does not send";
       } else if (g.kind == 'A') {
         module_blocks.insert(std::vector<u8>(g.bytes.begin() + 2, g.bytes.end()));
+        // GX_VA_TEX0 (13) of a variant that sends t: a t array, written by the CPU this frame.
+        if (g.bytes[0] == 13 && sends_t) {
+          ++t_arrays;
+          t_blocks[k].insert(std::vector<u8>(g.bytes.begin() + 2, g.bytes.end()));
+        }
       } else if (g.kind == 'L') {
         ++lists_called;
         module_blocks.insert(g.bytes);
@@ -220,19 +246,23 @@ TEST_P(GxModuleStored, SendsTheEmulatorsMatricesArraysListsAndDrawsAlongAPath) {
     EXPECT_GT(matrices, 0u) << at;
     EXPECT_EQ(2 * formats, matrices) << at << ": an object drawn without its format";
     EXPECT_EQ(draws > 0, variant.draw != GxVariant::Draw::List) << at;
+    EXPECT_EQ(t_arrays > 0, sends_t) << at << ": " << t_arrays << " t arrays set";
     EXPECT_TRUE(module_blocks == blocks)
         << at << ": the module's arrays and lists (" << module_blocks.size()
         << ") are not the log's memory blocks (" << blocks.size() << ")";
   }
   EXPECT_EQ(lists_called > 0, variant.draw == GxVariant::Draw::List);
+  // The camera and lights move along the path: the t the CPU writes is not the same each frame.
+  if (sends_t) EXPECT_NE(t_blocks[kStoredFramesChecked[0]], t_blocks[kStoredFramesChecked[1]]);
 }
 
-// Three demo scenes: the blob's one mesh as a display list with NBT3 normals (three indices a
-// normal), coloured_cubes' two cubes (rotated,
-// scaled, moved: each its own matrices) as strips sent every frame in GX_VTXFMT5 (the module's
-// LTRENDER_VTXFMT: its VAT and draw commands must be the log's), and albedo_checker's map (its
-// UVs an array of their own) as a display list. lobe=xf-spec:view=object: no per-vertex t (which a
-// stored module refuses).
+// Four demo scenes: the blob's one mesh as a display list with NBT3 normals (three indices a
+// normal), coloured_cubes' two cubes (rotated, scaled, moved: each its own matrices) as strips
+// sent every frame in GX_VTXFMT5 (the module's LTRENDER_VTXFMT: its VAT and draw commands must be
+// the log's), and albedo_checker's map (its UVs an array of their own) as a display list, all
+// lobe=xf-spec:view=object (no per-vertex t); and thin_vs_thick's two slabs with t=vertex: each
+// pass's t computed by the CPU (ltr_fill_t), stored as s16 with the fraction the frame's t allows
+// and flushed every frame into arrays the lists, built once, index.
 const StoredCase kStoredCases[] = {
     {"scenes/three_point_blob.json",
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8/nbt3:clr=rgb565:draw=list"},
@@ -240,6 +270,7 @@ const StoredCase kStoredCases[] = {
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:draw=strips:vat=5"},
     {"scenes/albedo_checker.json",
      "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
+    {"scenes/thin_vs_thick.json", "t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
 };
 
 INSTANTIATE_TEST_SUITE_P(StoredScenes, GxModuleStored, ::testing::ValuesIn(kStoredCases),
@@ -248,13 +279,12 @@ INSTANTIATE_TEST_SUITE_P(StoredScenes, GxModuleStored, ::testing::ValuesIn(kStor
                                                         info.param.variant);
                          });
 
-// A stored module that would need its per-vertex t refreshed each frame (t=vertex), or a storage
-// sent directly: one line naming the variant, exit 2, no file.
-TEST(GxModuleExport, RefusesAStoredPerVertexTOrAStorageSentDirectly) {
+// A storage sent directly (a stored module indexes its mesh): one line naming the variant, exit
+// 2, no file.
+TEST(GxModuleExport, RefusesAStorageSentDirectly) {
   test::TempDir dir;
   const fs::path out = dir / "m.c";
-  for (const char* variant :
-       {"t=vertex:vtx=s16/8:draw=list", "lobe=xf-spec:view=object:vtx=s16/8"}) {
+  for (const char* variant : {"t=vertex:vtx=s16/8", "lobe=xf-spec:view=object:vtx=s16/8"}) {
     const test::RunResult r =
         test::run_ltrender("export gx " + (test::source_dir() / "scenes/baked_blob.json").string() +
                            " --variant " + variant + " --format module -o " + out.string());

@@ -171,8 +171,9 @@ TEST(GxVertexStorage, OverflowIsRefusedNamingTheKeyAndTheFractionThatHolds) {
                        "vtx", "at 0 fractional bits; the mesh's positions reach 40000");
   VertexAttributeData bent = seeded_mesh(4, 1.0f, 3);
   bent.normal[0] = {2.5f, 0.0f, 0.0f};  // past s8's -2 .. 1.984
-  expect_storage_error([&] { storage_format(parse_vertex_storage("nrm=s8", origin), bent, origin); },
-                       "nrm", "the mesh's normals reach 2.5");
+  expect_storage_error(
+      [&] { storage_format(parse_vertex_storage("nrm=s8", origin), bent, origin); }, "nrm",
+      "the mesh's normals reach 2.5");
 }
 
 TEST(GxVertexStorage, TheKeyParsesBackAndBadKeysNameTheKey) {
@@ -236,6 +237,31 @@ TEST(GxVertexStorage, IndexedArraysHoldEachDistinctElementOnceAndReadBackTheSame
   }
   // Indices: 1 (position) + 2 (normal) + 1 (colour) + 2 + 2 (t and UV, 300 distinct each).
   EXPECT_EQ(indexed_loader.vertex_size(), 8u);
+}
+
+// A pass's t (a one-component coordinate) is an array of one element per vertex, equal or not:
+// the CPU rewrites it every frame, so each vertex's index into it (and a display list of those
+// indices) must not depend on the frame's values. The UVs beside it keep their distinct elements.
+TEST(GxVertexStorage, ATArrayKeepsOneElementPerVertexUnderTheSameIndices) {
+  VertexAttributeData d = seeded_mesh(300, 2.0f, 9);
+  for (size_t v = 0; v < 300; ++v) {
+    d.texcoord[0][v].x = v % 2 ? 0.5f : -0.25f;  // two values
+    d.texcoord[1][v] = glm::vec2(0.25f, 0.75f);  // one UV
+  }
+  const VertexAttributeFormat f =
+      storage_format(parse_vertex_storage("vtx=s16,nrm=s16,clr=rgb565,uv=s16/8", "t"), d, "t");
+  const IndexedArrays arrays = index_attributes(quantise_attributes(d, f), "t");
+  const auto t = static_cast<size_t>(kArrayTexCoord0);
+  EXPECT_EQ(arrays.bytes[t].size(), 300u * 2);  // 300 s16 elements, not 2
+  EXPECT_EQ(arrays.input[t], AttributeInput::Index16);
+  for (u32 v = 0; v < 300; ++v) EXPECT_EQ(arrays.element_of_vertex[t][v], v);
+  // Element v is vertex v's t: 0.5 x 2^8 = 128 = 0x0080, -0.25 x 2^8 = -64 = 0xFFC0.
+  EXPECT_EQ(arrays.bytes[t][2], 0x00);
+  EXPECT_EQ(arrays.bytes[t][3], 0x80);
+  EXPECT_EQ(arrays.bytes[t][0], 0xFF);
+  EXPECT_EQ(arrays.bytes[t][1], 0xC0);
+  EXPECT_EQ(arrays.bytes[t + 1].size(), 2u * 2);  // the one UV, s16 s and t
+  EXPECT_EQ(arrays.input[t + 1], AttributeInput::Index8);
 }
 
 TEST(GxVertexStorage, MoreThan65535DistinctElementsAreRefused) {

@@ -251,7 +251,8 @@ std::vector<AttributeElements> quantise_attributes(const VertexAttributeData& d,
     LT_CHECK(d.texcoord[i].size() == n, "one texture coordinate per vertex");
     const CoordinateFormat& cf = f.texcoord[i];
     LT_CHECK(cf.components == d.texcoord_components[i], "the format's count is the data's");
-    AttributeElements tc{kArrayTexCoord0 + t, coordinate_bytes(cf), {}};
+    // A one-component coordinate is a pass's t (scene_vertices.h pass_vertex_data): per vertex.
+    AttributeElements tc{kArrayTexCoord0 + t, coordinate_bytes(cf), {}, 1, cf.components == 1};
     for (const glm::vec2& uv : d.texcoord[i]) {
       const std::array<float, 2> st{uv.x, uv.y};
       append_components(tc.bytes, std::span(st).first(static_cast<size_t>(cf.components)), cf.type,
@@ -310,19 +311,25 @@ IndexedArrays index_attributes(const std::vector<AttributeElements>& elements,
     for (size_t v = 0; v < n; ++v) {
       const auto begin = e.bytes.begin() + static_cast<long>(v * e.element_bytes);
       const auto end = begin + static_cast<long>(e.element_bytes);
+      if (e.per_vertex) {
+        out.element_of_vertex[a].push_back(static_cast<u32>(v));
+        continue;
+      }
       IndexElementKey key{};
       std::copy(begin, end, key.begin());
       const auto [it, added] = seen.emplace(key, static_cast<u32>(seen.size()));
       if (added) out.bytes[a].insert(out.bytes[a].end(), begin, end);
       out.element_of_vertex[a].push_back(it->second);
     }
-    if (seen.size() > 65535) {
+    if (e.per_vertex) out.bytes[a] = e.bytes;
+    const size_t count = e.per_vertex ? n : seen.size();
+    if (count > 65535) {
       throw InputError(origin, attribute_name(e.array),
-                       std::to_string(seen.size()) +
-                           " distinct elements: GX_INDEX16 reaches 65,535 (an index of 0xFFFF "
+                       std::to_string(count) + (e.per_vertex ? " elements" : " distinct elements") +
+                           ": GX_INDEX16 reaches 65,535 (an index of 0xFFFF "
                            "drops its vertex)");
     }
-    out.input[a] = seen.size() <= 255 ? AttributeInput::Index8 : AttributeInput::Index16;
+    out.input[a] = count <= 255 ? AttributeInput::Index8 : AttributeInput::Index16;
     out.indices[a] = e.indices;
   }
   return out;

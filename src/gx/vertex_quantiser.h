@@ -88,12 +88,16 @@ void add_normal_frames(VertexAttributeData& data);
 // element size and the elements' bytes (vertex v's at v * element_bytes). `indices` is how many
 // indices an indexed vertex sends for it: 3 for an NBT3 normal (one per vector, each the same
 // element: vector k is read 3k components into the element it names [DHW
-// VertexLoader_Normal.cpp Normal_ReadIndex_Offset]), else 1.
+// VertexLoader_Normal.cpp Normal_ReadIndex_Offset]), else 1. `per_vertex`: the array keeps one
+// element per vertex, equal or not (a GX_TEX_S coordinate: the per-vertex t the CPU rewrites every
+// frame, so a vertex's index into it, and a display list of those indices, stays the same from
+// frame to frame while the values change).
 struct AttributeElements {
   int array = 0;
   size_t element_bytes = 0;
   std::vector<u8> bytes;
   int indices = 1;
+  bool per_vertex = false;
 };
 // `format` must hold every value (storage_format checks it); the attributes in stream order.
 std::vector<AttributeElements> quantise_attributes(const VertexAttributeData& data,
@@ -104,8 +108,9 @@ std::vector<AttributeElements> quantise_attributes(const VertexAttributeData& da
 std::vector<u8> direct_vertex_stream(const std::vector<AttributeElements>& elements,
                                      std::span<const u32> vertices);
 
-// The mesh as indexed arrays: per attribute its distinct elements (first use first), tightly
-// strided, and each vertex's element number. An attribute of at most 255 elements is indexed
+// The mesh as indexed arrays: per attribute its distinct elements (first use first; a
+// `per_vertex` attribute every vertex's, in vertex order), tightly strided, and each vertex's
+// element number. An attribute of at most 255 elements is indexed
 // with GX_INDEX8, of at most 65,535 with GX_INDEX16 (an index of all ones drops a vertex,
 // vertex_loader.h); more is refused with InputError(origin, attribute, ...).
 struct IndexedArrays {

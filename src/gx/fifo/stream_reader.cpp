@@ -18,7 +18,8 @@ size_t stream_color_bytes(u32 type) {
 }
 
 // The bytes one vertex takes under the CP registers' descriptor and the VAT of format `format` (the
-// draw command's low three bits pick it [DHW OpcodeDecoding.h RunCommand: cmd & GX_VAT_MASK]
+// draw command's low three bits pick it [DHW OpcodeDecoding.h detail::RunCommand: vat = cmdbyte &
+// GX_VAT_MASK, 0x07, in its case for opcodes GX_PRIMITIVE_START 0x80 .. GX_PRIMITIVE_END 0xBF]
 // [DHW VertexLoaderManager.cpp RunVertices]): each attribute's direct bytes (F32 by default, a
 // stored mesh's types otherwise), or its index, 1 byte for GX_INDEX8 (2) and 2 for GX_INDEX16
 // (3) [OGC gx.h L82-85] [DHW VertexLoaderBase.cpp GetVertexSize].

@@ -77,7 +77,8 @@
 //   :vat=N              N = 0..7 (default 0): the FIFO log writes VAT A/B/C of format N (CP
 //                       0x70/0x80/0x90 + N) and each draw command carries N in its low three
 //                       bits, which pick the VAT the CP reads the vertices with [DHW
-//                       OpcodeDecoding.h RunCommand: cmd & GX_VAT_MASK] [DHW
+//                       OpcodeDecoding.h detail::RunCommand: vat = cmdbyte & GX_VAT_MASK,
+//                       0x07, for opcodes 0x80-0xBF] [DHW
 //                       VertexLoaderManager.cpp RunVertices, RefreshLoader]; the module and
 //                       `--format c` declare GX_SetVtxAttrFmt(GX_VTXFMTN, ...) and draw with it.
 //                       The pixels do not move: the eight VATs are alike but for their number.

@@ -3,9 +3,10 @@
 // - The pass's attributes, stored as the variant says (F32 for the default storage: the
 //   camera-relative stream; else the object's own coordinates with its matrices), quantised and
 //   put in arrays of their distinct elements (gx/vertex_quantiser.h index_attributes: GX_INDEX8
-//   for at most 255 elements, else GX_INDEX16), each array's bytes a memory update at a 32-byte
-//   aligned address (GX_SetArray keeps the base's 26 bits; libogc's own arrays are 32-byte
-//   aligned for DCFlushRange [OGC gc/ogc/cache.h L123-139]).
+//   for at most 255 elements, else GX_INDEX16; a pass's t one element per vertex, the array a
+//   port's CPU rewrites every frame under the same indices), each array's bytes a memory update at
+//   a 32-byte aligned address (GX_SetArray keeps the base's 26 bits; libogc's own arrays are
+//   32-byte aligned for DCFlushRange [OGC gc/ogc/cache.h L123-139]).
 // - CP: VCD with each attribute's index type, the VAT of the storage, and each array's base
 //   (CP 0xA0 + n, a physical address) and stride (CP 0xB0 + n) [OGC gx.c GX_SetArray
 //   L2283-2293] [DHW CPMemory.h CPArray].

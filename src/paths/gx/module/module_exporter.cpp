@@ -337,7 +337,7 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
   // ships it, indexed (module_stored.h, ltrender_gx_stored.c).
   const bool stored = !variant.storage.is_default() || variant.draw != GxVariant::Draw::Direct;
   if (stored) {
-    const std::string why = stored_module_refusal(variant, plan);
+    const std::string why = stored_module_refusal(variant);
     if (!why.empty()) throw InputError("--variant", to_string(variant), "gx: " + why);
   }
   const GeneratedPrograms g = emit_programs(plan);
@@ -370,8 +370,10 @@ std::string export_module(const Scene& scene, const GxVariant& variant,
       << (stored
               ? "// Stored variant: the meshes are the module's own, converted once (object "
                 "space,\n// quantised, indexed); call ltrender_stored_init() once after GX_Init, "
-                "and each frame,\n// after the setups, ltrender_draw_stored(&view, states) "
-                "instead of the _draw functions.\n" +
+                "and each frame,\n// after the setups, ltrender_draw_stored(&view, lights, "
+                "objects, states) "
+                "instead of the\n// _draw functions (objects[o]: scene object o's world-space "
+                "mesh, where a pass's t comes from).\n" +
                     stored_cost_comment(scene, variant)
               : std::string())
       << "\n#include <gccore.h>\n#include <math.h>\n\n"

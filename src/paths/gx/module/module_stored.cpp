@@ -85,19 +85,23 @@ struct StoredDraw {
   std::string place, arrays, draw_vertices, indices, list;
   size_t array_count = 0, draw_count = 0, list_capacity = 0;
   bool strip = false;
+  // t=vertex: arrays[t_array] is the pass's t, which the CPU rewrites every frame (-1: none).
+  int t_array = -1;
+  bool t_auto_frac = false;
 };
+
+// The pass's t (t=vertex): the one-component coordinate pass_vertex_data puts in GX_VA_TEX0.
+bool is_t_array(int a, const VertexAttributeData& attributes) {
+  return a >= kArrayTexCoord0 &&
+         attributes.texcoord_components[static_cast<size_t>(a - kArrayTexCoord0)] == 1;
+}
 
 }  // namespace
 
-std::string stored_module_refusal(const GxVariant& variant, const ScenePlan& plan) {
+std::string stored_module_refusal(const GxVariant& variant) {
   if (variant.storage.is_default() || !draws_indexed(variant.draw))
     return "--format module sends a stored mesh indexed (:draw=indexed, strips or list with a "
            "storage :vtx= :nrm= :clr= :uv=) or the F32 mesh directly, not this combination";
-  for (const MaterialPlan& m : plan.materials)
-    for (const PassPlan& p : m.passes)
-      if (p.vertex.t)
-        return "--format module does not yet refresh a stored per-vertex t (t=vertex) each frame; "
-               "use t=texgen or lobe=xf-spec (with :view=object under a perspective camera)";
   return "";
 }
 
@@ -110,6 +114,7 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
   // draw_of[object][pass]: the object's entry in ltrender_stored_draws.
   std::vector<std::vector<size_t>> draw_of(scene.objects.size());
   std::vector<StoredDraw> draws;
+  size_t most_t_vertices = 0;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     const auto m = std::find_if(plan.materials.begin(), plan.materials.end(),
@@ -137,8 +142,21 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
       size_t index_bytes = 0;
       for (int a : arrays.arrays) {
         const auto n = static_cast<size_t>(a);
+        // The pass's t array is this object's and pass's own, rewritten every frame
+        // (ltr_stored_write_t): zeros until then, shared with nothing.
+        const bool t = is_t_array(a, attributes);
+        std::string t_name = id + "_t";
+        if (t) {
+          d.t_array = static_cast<int>(std::find(arrays.arrays.begin(), arrays.arrays.end(), a) -
+                                       arrays.arrays.begin());
+          d.t_auto_frac = variant.storage.texcoord.auto_frac &&
+                          variant.storage.texcoord.type != ComponentType::F32;
+          most_t_vertices = std::max(most_t_vertices, attributes.vertex_count());
+          data << "static u8 " << t_name << "[" << arrays.bytes[n].size()
+               << "] ATTRIBUTE_ALIGN(32);\n";
+        }
         std::string& name =
-            array_names[std::string(arrays.bytes[n].begin(), arrays.bytes[n].end())];
+            t ? t_name : array_names[std::string(arrays.bytes[n].begin(), arrays.bytes[n].end())];
         if (name.empty()) {
           name = "ltrender_array_" + std::to_string(array_names.size() - 1);
           data << "static u8 " << name << "[" << arrays.bytes[n].size()
@@ -155,7 +173,7 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
             << (wide ? "GX_INDEX16" : "GX_INDEX8") << ", " << format_arguments(a, format) << ", "
             << name << ", " << arrays.bytes[n].size() << ", " << arrays.stride[n] << "}";
       }
-      data << "static const ltr_stored_array " << id << "_arrays[" << d.array_count << "] = {"
+      data << "static ltr_stored_array " << id << "_arrays[" << d.array_count << "] = {"
            << arr.str() << "};\n";
       // The draws as put_draws sends them: whole triangles, or a strip whose every next draw
       // starts two vertices back.
@@ -200,13 +218,14 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
       << "#define LTRENDER_STORED_DRAWS " << draws.size() << "\n"
       << "static ltr_stored_draw ltrender_stored_draws[" << std::max<size_t>(draws.size(), 1)
       << "] = {";
-  if (draws.empty()) out << "{0, 0, 0, 0, 0, 0, 0, 0, 0, 0}";
+  if (draws.empty()) out << "{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0}";
   for (size_t k = 0; k < draws.size(); ++k) {
     const StoredDraw& d = draws[k];
     out << (k ? ",\n    " : "\n    ") << "{&" << d.place << ", " << d.array_count << ", "
         << d.arrays << ", " << (d.strip ? "GX_TRIANGLESTRIP" : "GX_TRIANGLES") << ", "
         << d.draw_count << ", " << d.draw_vertices << ", " << d.indices << ", "
-        << (d.list.empty() ? "0" : d.list) << ", " << d.list_capacity << ", 0}";
+        << (d.list.empty() ? "0" : d.list) << ", " << d.list_capacity << ", 0, " << d.t_array
+        << ", " << d.t_auto_frac << "}";
   }
   out << "};\n\n"
       << "// Once, before the first frame (after GX_Init): flushes the arrays and builds the "
@@ -218,7 +237,15 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
          "states):\n"
       << "// every pass of every material, each of its objects, in ltrender's order (pass by "
          "pass).\n"
-      << "void ltrender_draw_stored(const ltr_view* view, ltr_pass_state* const states[]) {\n";
+      << "// A pass that sends t (t=vertex) first computes it at every vertex of the object's "
+         "world-space\n"
+      << "// mesh, objects[o] for scene object o (what the setups take; lights[] this frame's), "
+         "and\n"
+      << "// rewrites and flushes its t array (ltr_stored_write_t); the display list stays.\n";
+  if (most_t_vertices > 0) out << "static float ltrender_t_scratch[" << most_t_vertices << "];\n";
+  out << "void ltrender_draw_stored(const ltr_view* view, const ltr_light lights[],\n"
+      << "    const ltr_mesh objects[], ltr_pass_state* const states[]) {\n";
+  if (most_t_vertices == 0) out << "  (void)lights;\n  (void)objects;\n";
   size_t most = 0;
   for (const MaterialPlan& m : plan.materials) most = std::max(most, m.passes.size());
   for (size_t p = 0; p < most; ++p) {
@@ -231,8 +258,14 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
       if (objects.empty()) continue;
       out << "  " << pass_function_name(m.c_name, static_cast<int>(p)) << "(&states[" << mi << "]["
           << p << "]);\n";
-      for (size_t i : objects)
-        out << "  ltr_stored_draw_object(view, &ltrender_stored_draws[" << draw_of[i][p] << "]);\n";
+      for (size_t i : objects) {
+        const std::string draw = "&ltrender_stored_draws[" + std::to_string(draw_of[i][p]) + "]";
+        if (m.passes[p].vertex.t)
+          out << "  ltrender_" << m.c_name << "_fill_t(view, lights, " << m.passes[p].figures.light
+              << ", &objects[" << i << "], ltrender_t_scratch);\n"
+              << "  ltr_stored_write_t(" << draw << ", ltrender_t_scratch);\n";
+        out << "  ltr_stored_draw_object(view, " << draw << ");\n";
+      }
     }
   }
   out << "}\n";

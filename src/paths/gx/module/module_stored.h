@@ -21,15 +21,18 @@ namespace lt::gx {
 std::string c_double(double v);
 
 // Why the module cannot carry the variant's stored mesh, or "" when it can: it stores a mesh
-// (a storage axis) and indexes it (:draw=indexed, strips or list), and no pass sends the per-vertex
-// t (t=vertex), whose array the CPU would rewrite every frame (not in this module yet).
-std::string stored_module_refusal(const GxVariant& variant, const ScenePlan& plan);
+// (a storage axis) and indexes it (:draw=indexed, strips or list).
+std::string stored_module_refusal(const GxVariant& variant);
 
 // The stored meshes as C: the arrays (32-byte aligned), each object's place, the draw table
 // ltr_stored_init and ltr_stored_draw_object take, ltrender_stored_init() and
-// ltrender_draw_stored(view, states), which draws every pass of every material in the emulator's
-// order (gx_path.h ScenePrograms::draws). Throws InputError("--variant", ...) where the storage
-// cannot hold a mesh's values.
+// ltrender_draw_stored(view, lights, objects, states), which draws every pass of every material
+// in the emulator's order (gx_path.h ScenePrograms::draws). A pass that sends t (t=vertex) has a
+// t array of its own per object, one element per vertex (vertex_quantiser.h AttributeElements
+// per_vertex, as the FIFO log's), which ltrender_draw_stored fills each frame (the material's
+// _fill_t over objects[o], the game's world-space mesh, then ltr_stored_write_t: quantised as the
+// log's, flushed) before the object's draw; the display lists index it and never change. Throws
+// InputError("--variant", ...) where the storage cannot hold a mesh's values.
 std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxVariant& variant);
 
 // The module's comment on the stored variant's cost (scene_draw_cost.h, what `budget --path gx`

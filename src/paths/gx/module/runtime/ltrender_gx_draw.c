@@ -3,7 +3,7 @@
 
 /* The vertex format the passes declare and the draws name: the gx variant's :vat=N defines it
    as GX_VTXFMTN before this runtime (the draw command's low three bits pick the VAT the CP reads
-   the vertices with [DHW OpcodeDecoding.h RunCommand]). */
+   the vertices with [DHW OpcodeDecoding.h detail::RunCommand: vat = cmdbyte & GX_VAT_MASK]). */
 #ifndef LTRENDER_VTXFMT
 #define LTRENDER_VTXFMT GX_VTXFMT0
 #endif

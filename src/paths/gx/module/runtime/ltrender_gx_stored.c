@@ -6,8 +6,10 @@
    ltr_stored_init flushes them from the CPU's cache once and builds each display list once;
    every frame, each object loads its matrices for the view and its format, points the CP at its
    arrays and sends its draws or calls its list, in the order ltrender's FIFO log does
-   (paths/gx/indexed_recording.cpp draw_indexed_object). C99 over libogc's gccore.h, no
-   allocation. */
+   (paths/gx/indexed_recording.cpp draw_indexed_object). A pass that sends t (t=vertex) has a t
+   array of its own, one element per vertex of the mesh, which ltr_stored_write_t rewrites and
+   flushes every frame before the draw; its indices, and so the display list, never change.
+   C99 over libogc's gccore.h, no allocation. */
 
 /* One attribute's array: GX_SetVtxDesc's index type, GX_SetVtxAttrFmt's count, type and
    fraction, and GX_SetArray's base and stride. */
@@ -23,18 +25,96 @@ typedef struct {
 /* One object in one pass: where it stands, its arrays, and its draws: draw_count GX_Begin's of
    `primitive`, draw k sending draw_vertices[k] vertices, each vertex one index per array in
    `indices` (in array order). Under :draw=list the draws are a display list, `list`
-   (list_capacity bytes, 32-byte aligned) holds it after ltr_stored_init, list_size its bytes. */
+   (list_capacity bytes, 32-byte aligned) holds it after ltr_stored_init, list_size its bytes.
+   arrays[t_array] is the pass's t (GX_TEX_S), or t_array is -1; t_auto_frac: its fraction is
+   chosen again every frame from the frame's t (:uv=TYPE/auto). */
 typedef struct {
   const ltr_object_place* place;
   int array_count;
-  const ltr_stored_array* arrays;
+  ltr_stored_array* arrays;
   u8 primitive; /* GX_TRIANGLES or GX_TRIANGLESTRIP */
   int draw_count;
   const u16* draw_vertices;
   const u16* indices;
   void* list; /* 0: the draws are sent every frame */
   u32 list_capacity, list_size;
+  int t_array;
+  int t_auto_frac;
 } ltr_stored_draw;
+
+/* ---- the per-vertex t, stored each frame as ltrender's converter stores it ----
+   gx/vertex_quantiser.cpp quantise_component (what the FIFO log's arrays hold): v 2^frac rounded
+   to the nearest integer, halves away from zero (C99 round, as std::round), the half step past
+   either end of the type clamped to it; F32 the float's bits. Big-endian, as the GP reads memory.
+   Where the emulator refuses a value (more than half a step outside the type, e.g. a negative t
+   in u16), the module cannot refuse a frame: it clamps to the type's end. */
+
+/* GX_U8, GX_S8, GX_U16, GX_S16's integers (vertex_quantiser.h integer_range). */
+static void ltr_integer_range(u8 type, double* lo, double* hi) {
+  *lo = type == GX_S8 ? -128.0 : type == GX_S16 ? -32768.0 : 0.0;
+  *hi = type == GX_U8 ? 255.0 : type == GX_S8 ? 127.0 : type == GX_U16 ? 65535.0 : 32767.0;
+}
+
+/* Whether v 2^frac is within half a step of the type's integers (quantise_component). */
+static int ltr_holds(double v, u8 type, int frac) {
+  double lo, hi;
+  const double scaled = ldexp(v, frac);
+  ltr_integer_range(type, &lo, &hi);
+  return scaled >= lo - 0.5 && scaled <= hi + 0.5; /* false for NaN and the infinities */
+}
+
+/* The widest fraction (31 .. 0) that holds lo and hi (vertex_quantiser.h widest_fraction); 0
+   where none does (the emulator refuses such a frame). */
+static int ltr_widest_fraction(double lo, double hi, u8 type) {
+  int frac;
+  for (frac = 31; frac > 0; --frac)
+    if (ltr_holds(lo, type, frac) && ltr_holds(hi, type, frac)) return frac;
+  return 0;
+}
+
+static void ltr_put_be(u8* out, u32 v, int bytes) {
+  int i;
+  for (i = 0; i < bytes; ++i) out[i] = (u8)(v >> (8 * (bytes - 1 - i)));
+}
+
+/* Writes the frame's t (one float per vertex, ltr_fill_t's) into the draw's t array as its
+   storage holds it, then flushes the array from the CPU's data cache [OGC gc/ogc/cache.h
+   L123-139] (the array is 32-byte aligned: whole cache lines). */
+void ltr_stored_write_t(ltr_stored_draw* d, const float* t) {
+  ltr_stored_array* a = &d->arrays[d->t_array];
+  u8* out = (u8*)a->data;
+  const u32 n = a->bytes / a->stride;
+  u32 v;
+  if (a->type == GX_F32) {
+    for (v = 0; v < n; ++v) {
+      union {
+        float f;
+        u32 bits;
+      } x;
+      x.f = t[v];
+      ltr_put_be(out + 4 * v, x.bits, 4);
+    }
+  } else {
+    double lo = 0, hi = 0, type_lo, type_hi;
+    ltr_integer_range(a->type, &type_lo, &type_hi);
+    /* :uv=TYPE/auto: the widest fraction the frame's t allows, as storage_format picks it from
+       the values' bounds (gx/vertex_storage.cpp resolved_fraction). */
+    if (d->t_auto_frac) {
+      for (v = 0; v < n; ++v) {
+        if (v == 0 || t[v] < lo) lo = t[v];
+        if (v == 0 || t[v] > hi) hi = t[v];
+      }
+      a->frac = (u8)ltr_widest_fraction(lo, hi, a->type);
+    }
+    for (v = 0; v < n; ++v) {
+      double q = round(ldexp((double)t[v], a->frac));
+      if (!(q >= type_lo)) q = type_lo; /* NaN too */
+      if (q > type_hi) q = type_hi;
+      ltr_put_be(out + a->stride * v, (u32)(long)q, (int)a->stride);
+    }
+  }
+  DCFlushRange(a->data, a->bytes);
+}
 
 /* One index as the attribute's GX_INDEX8 or GX_INDEX16 (libogc's 1x8 and 1x16 writes). */
 static void ltr_send_index(const ltr_stored_array* a, u16 i) {
