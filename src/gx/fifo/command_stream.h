@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "gx/gx_types.h"
@@ -45,6 +46,8 @@ class CommandStream {
   void put_f32(float v);
 
   const std::vector<u8>& bytes() const { return bytes_; }
+  // The stream's bytes, moved out (a recorded frame keeps them: a seeded scene's is ~16 MB).
+  std::vector<u8> take_bytes() && { return std::move(bytes_); }
   size_t position() const { return bytes_.size(); }
 
   std::array<u32, kBpRegisters> bp{};

@@ -235,7 +235,7 @@ FifoLog record_frames(const Scene& first_scene, const std::vector<FrameInput>& f
       }
     }
     write_display_copy(out, size, kXfbAddress);
-    frame.fifo = out.bytes();
+    frame.fifo = std::move(out).take_bytes();
     log.frames.push_back(std::move(frame));
   }
   return log;
@@ -256,7 +256,7 @@ FifoFrame blank_frame(FrameSize size) {
   write_gx_init(out, size);
   write_copy_clear(out, kGxDefaultBackground);
   write_display_copy(out, size, kXfbAddress);
-  return FifoFrame{out.bytes(), {}};
+  return FifoFrame{std::move(out).take_bytes(), {}};
 }
 
 }  // namespace
