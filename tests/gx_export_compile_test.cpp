@@ -209,17 +209,30 @@ TEST(GxModuleStoredCompiles, WithThePowerPcCompilerAgainstLibogc) {
   if (checkouts.empty())
     GTEST_SKIP() << "set LTRENDER_LIBOGC to a libogc checkout to compile a stored module";
   test::TempDir dir;
-  const std::pair<const char*, const char*> cases[] = {
+  struct Case {
+    const char *scene, *variant, *declares;  // `declares`: a call the variant's storage needs
+  };
+  const Case cases[] = {
       {"scenes/three_point_blob.json",
-       "t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list"},
+       "t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list", "ltr_stored_write_t("},
       {"scenes/albedo_checker.json",
-       "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=strips"}};
-  for (const auto& [scene, variant] : cases) {
+       "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=strips",
+       "GX_TRIANGLESTRIP"},
+      // NBT normals (GX_NRM_NBT, GX_NRM_NBT3 with its three indices) in formats 3 and 5: the
+      // module's GX_SetVtxAttrFmt(GX_VTXFMTn, GX_VA_NBT, GX_NRM_NBT...) and its draws' format.
+      {"scenes/coloured_cubes.json",
+       "t=vertex:vtx=s16/auto:nrm=s8/nbt:clr=rgb565:uv=s16/auto:vat=3:draw=list",
+       "GX_SetVtxAttrFmt(GX_VTXFMT3, GX_VA_NBT, GX_NRM_NBT, "},
+      {"scenes/coloured_cubes.json",
+       "lobe=xf-spec:view=object:vtx=s16/auto:nrm=s16/nbt3:clr=rgba4:vat=5:draw=indexed",
+       "GX_SetVtxAttrFmt(GX_VTXFMT5, GX_VA_NBT, GX_NRM_NBT3, "}};
+  for (const auto& [scene, variant, declares] : cases) {
     const fs::path c = dir / "stored_module.c";
     const test::RunResult r =
         test::run_ltrender("export gx " + (test::source_dir() / scene).string() + " --variant " +
                            variant + " --format module -o " + c.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(test::read_file(c).find(declares), std::string::npos) << variant;
     EXPECT_NE(test::read_file(c).find("ltrender_draw_stored"), std::string::npos) << scene;
     for (const fs::path& ogc : checkouts) {
       const fs::path log = dir / "cc.log";
