@@ -10,13 +10,24 @@
 // texMem[offset << 9] [DSW TextureSampler.cpp SampleMip]), and its picture must be ltrender's
 // `:out=xfb` one, pixel for pixel. The defaults (RGBA8, I8) are
 // judged by dolphin_judge_test.cpp's demo scenes.
+//
+// Then the same formats, the defaults too, from seeded images (issue 47 item 6): a 16 x 16 RGBA
+// PNG of random bytes from a fixed seed, written into the test's directory, is the colour map
+// (its RGB) of RGBA8, RGB565, RGB5A3, CMPR, CI8 and CI4 frames and the grey map (its alpha, the
+// scene's `"channels": "a"`) of I8, IA8, IA4, I4, CI8 and CI4 frames: every texel differs from
+// its neighbours, so a texel decoded from the wrong bytes, tile or palette entry shows. CI14X2
+// is not a map format (gx_variant.h says why). The map path stores no alpha of its own (alpha
+// 255: thickness_texture.h), so the formats' alpha bits are the same in every frame.
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <random>
 #include <utility>
 
 #include "dolphin_util.h"
+#include "image/png_file.h"
 #include "load/load_scene.h"
+#include "load/thickness_map.h"
 #include "paths/gx/frame_recording.h"
 #include "paths/gx/gx_path.h"
 #include "render/session.h"
@@ -29,7 +40,17 @@ namespace {
 struct MapFrame {
   const char* scene;
   const char* variant;
+  const char* seeded_channels = nullptr;  // the seeded PNG's channels as the map ("rgb", "a")
 };
+
+// A side x side RGBA PNG of bytes from std::mt19937(seed), every channel and alpha random.
+void write_seeded_png(const std::filesystem::path& file, int side, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::vector<std::uint8_t> rgba(static_cast<size_t>(side) * side * 4);
+  for (std::uint8_t& b : rgba) b = static_cast<std::uint8_t>(rng() >> 24);
+  std::string error;
+  ASSERT_TRUE(write_png_rgba8(file.string(), side, side, rgba.data(), error)) << error;
+}
 
 TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
   const MapFrame cases[] = {{"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=rgb565"},
@@ -41,13 +62,36 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
                             {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=ci8"},
                             {"scenes/maps/sphere_map.json", "t=vertex:map=ci4"},
                             // The power LUT as I4 (:lut-format=, docs/textures.md).
-                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4:lut-format=i4"}};
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4:lut-format=i4"},
+                            // The seeded image: colour formats from its RGB...
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex", "rgb"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=rgb565", "rgb"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=rgb5a3", "rgb"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=cmpr", "rgb"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=ci8", "rgb"},
+                            {"scenes/maps/sphere_rgb_ramp.json", "t=vertex:map=ci4", "rgb"},
+                            // ... grey ones from its alpha.
+                            {"scenes/maps/sphere_map.json", "t=vertex", "a"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ia8", "a"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ia4", "a"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=i4", "a"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ci8", "a"},
+                            {"scenes/maps/sphere_map.json", "t=vertex:map=ci4", "a"}};
   constexpr size_t kFrames = std::size(cases);
+  test::TempDir dir;
+  const std::filesystem::path seeded = dir / "seeded_rgba.png";
+  write_seeded_png(seeded, 16, 47);
   std::vector<Scene> scenes;
   for (const MapFrame& c : cases) {
     scenes.push_back(load_scene(test::source_dir() / c.scene));
     scenes.back().width = test::kDolphinWidth;
     scenes.back().height = test::kDolphinHeight;
+    // The seeded frames draw the sphere smaller (a quarter of its pixels): the random texels
+    // still cover it with every texel magnified, at less of the suite's time.
+    if (c.seeded_channels) scenes.back().camera.fov_y_deg = 80;
+    if (c.seeded_channels)
+      scenes.back().materials.at(0).translucency->thickness_map =
+          load_thickness_map(seeded, c.seeded_channels, scenes.back().file.string(), "thickness");
   }
   std::vector<std::string> variants;
   for (const MapFrame& c : cases) variants.push_back(c.variant);
@@ -60,8 +104,13 @@ TEST(DolphinMapFormat, EveryMapFormatIsDolphinsPicture) {
   // The colour-indexed frames differ from the direct formats of their map (CI8's 256 RGB565
   // entries from RGB565's texels, CI4's 16 IA8 entries from IA8's texels); the I4 LUT's frame
   // from the I8 LUT's.
-  const std::pair<size_t, size_t> differing[] = {{0, 1}, {0, 2}, {1, 2}, {3, 4},
-                                                 {3, 5}, {6, 0}, {7, 3}, {8, 5}};
+  // The seeded frames: each colour format from RGBA8's, each grey one from I8's but IA8's and
+  // CI8's, which keep the 8-bit greys exactly (IA8's intensity byte; CI8's 256 IA8 entries for
+  // 256 texels) and so draw I8's picture from other bytes (IA8's 4x4 tiles of 16 bits); IA4 and
+  // I4 again draw one picture.
+  const std::pair<size_t, size_t> differing[] = {
+      {0, 1},  {0, 2},  {1, 2},  {3, 4},  {3, 5},  {6, 0},   {7, 3},   {8, 5},
+      {10, 9}, {11, 9}, {12, 9}, {13, 9}, {14, 9}, {17, 15}, {18, 15}, {20, 15}};
   for (const auto& [k, j] : differing)
     EXPECT_GT(test::picture_difference(dolphin[k], dolphin[j]).differ, 0u)
         << cases[k].variant << " and " << cases[j].variant << " draw the same picture";

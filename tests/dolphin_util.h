@@ -37,8 +37,21 @@ inline std::vector<Image> dolphin_pictures(const Scene& scene,
   judge::DolphinOptions options;
   const std::vector<Image> dumps = judge::play_fifo_log(log, options);
   const int K = static_cast<int>(frames.size()), D = static_cast<int>(dumps.size());
-  if (D < K + 2) {
+  if (D < K + 2 || D > K + 3) {
     ADD_FAILURE() << "Dolphin dumped " << D << " frames of a log of " << K + 4;
+    return {};
+  }
+  // The dumps are matched to frames by their count, so a frame Dolphin showed twice or never
+  // would give frame k a neighbour's picture: the copies around the frames must be where the
+  // count puts them. The last three dumps are the last frame and its two copies; with K + 3 the
+  // first is the lead-in, frame 0 again (docs/textures.md "What carried over").
+  const auto same = [](const Image& a, const Image& b) {
+    return picture_difference(a, b).differ == 0;
+  };
+  if (!same(dumps[D - 1], dumps[D - 2]) || !same(dumps[D - 2], dumps[D - 3]) ||
+      (D == K + 3 && !same(dumps[0], dumps[1]))) {
+    ADD_FAILURE() << "Dolphin's " << D << " dumps of a log of " << K + 4
+                  << " frames are out of step with its frames (a frame shown twice or never)";
     return {};
   }
   return std::vector<Image>(dumps.end() - 2 - K, dumps.end() - 2);

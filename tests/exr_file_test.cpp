@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -251,6 +252,41 @@ TEST(ExrFile, ADamagedFileFailsOnOneLine) {
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("cut.exr"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+// A header claiming more pixels than the limit is refused from the header, naming the size,
+// before OpenEXR's reader is made (which said "invalid display window" here, the library's
+// words): 2 x 2,000,000,000 pixels in a file of a few hundred bytes, its data and display
+// windows patched in a written 2 x 2 EXR.
+TEST(ExrFile, AHugeHeaderIsRefusedFromTheHeader) {
+  test::TempDir dir;
+  const std::vector<float> rgba(2 * 2 * 4, 0.5f);
+  std::string error;
+  ASSERT_TRUE(write_exr_rgba_float((dir / "small.exr").string(), 2, 2, rgba.data(), error));
+  std::ifstream in(dir / "small.exr", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // An attribute is its name, its type name (both NUL-terminated), a 4-byte size, the value; a
+  // box2i is x min, y min, x max, y max, little-endian [OpenEXR ImfBoxAttribute].
+  for (const char* name : {"dataWindow", "displayWindow"}) {
+    const std::string key = std::string(name) + '\0' + "box2i" + '\0';
+    const size_t at = bytes.find(key);
+    ASSERT_NE(at, std::string::npos) << name;
+    const size_t y_max = at + key.size() + 4 + 12;
+    const std::int32_t claimed = 1999999999;
+    std::memcpy(&bytes[y_max], &claimed, 4);
+  }
+  std::ofstream(dir / "huge.exr", std::ios::binary) << bytes;
+  try {
+    (void)read_image(dir / "huge.exr");
+    ADD_FAILURE() << "an EXR of 2 x 2,000,000,000 pixels was read";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("huge.exr"), std::string::npos) << what;
+    EXPECT_NE(what.find("header claims 2x2000000000 pixels, over the limit of 16777216"),
+              std::string::npos)
+        << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
 }

@@ -431,9 +431,14 @@ TEST(GxVariantParse, AcceptsTheGrammarAndRefusesTheRest) {
   EXPECT_EQ(parse_gx_variant("t=vertex:mip=lin").mip, GxVariant::Mip::Linear);
   EXPECT_EQ(to_string(parse_gx_variant("t=vertex:mip-bias=0:mip=lin:wrap=clamp")),
             "t=vertex:mip=lin");
+  // Diagonal LOD after the bias; edge, the default, omitted.
+  EXPECT_EQ(to_string(parse_gx_variant("mip-lod=diagonal:mip=near:mip-bias=-0.5:t=vertex")),
+            "t=vertex:mip=near:mip-bias=-0.5:mip-lod=diagonal");
+  EXPECT_EQ(to_string(parse_gx_variant("t=vertex:mip=lin:mip-lod=edge")), "t=vertex:mip=lin");
   for (const char* bad :
        {"t=vertex:mip=trilinear", "t=vertex:mip-bias=1", "t=vertex:mip=lin:mip-bias=4",
-        "t=vertex:mip=lin:mip-bias=-4.5", "t=vertex:mip=lin:mip-bias=x", "t=vertex:wrap=mirror"}) {
+        "t=vertex:mip=lin:mip-bias=-4.5", "t=vertex:mip=lin:mip-bias=x", "t=vertex:wrap=mirror",
+        "t=vertex:mip-lod=diagonal", "t=vertex:mip=lin:mip-lod=diag"}) {
     EXPECT_THROW(parse_gx_variant(bad), InputError) << bad;
   }
   for (const char* bad :

@@ -5,6 +5,7 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <ImfTestFile.h>
 
 #include <algorithm>
@@ -13,6 +14,8 @@
 #include <exception>
 #include <fstream>
 #include <vector>
+
+#include "image/image.h"
 
 namespace lt {
 
@@ -91,6 +94,35 @@ bool plain_rgb_spec(const Imf::Header& header, ImageFileSpec& spec) {
   return true;
 }
 
+// The data window's size from the header alone, before the library's InputFile (or OpenImageIO's)
+// is made, so that no reader is ever sized by a header over the pixel limit. Measured with
+// Debian's OpenEXR 3.1.5: a 2 x 2 file whose windows claim 10^9 rows made InputFile fail reading
+// its chunk table ("Early end of file", 5 MB at most resident), so a short file did end in one
+// line before, but with the library's words, and how much it reserves first is the library's
+// choice; a header claiming more than 2^30 rows it refused as an "invalid display window".
+// Empty when the window is within kMaxImagePixels (image.h), else what is wrong; throws as
+// OpenEXR does on a header it cannot read.
+std::string oversized_header(const std::string& path) {
+  Imf::StdIFStream stream(path.c_str());
+  // The magic number and the version field, 4 bytes each, little-endian [OpenEXR ImfVersion.h].
+  char head[8];
+  stream.read(head, 8);
+  const int version = static_cast<int>(
+      static_cast<unsigned char>(head[4]) | static_cast<unsigned char>(head[5]) << 8 |
+      static_cast<unsigned char>(head[6]) << 16 |
+      static_cast<unsigned>(static_cast<unsigned char>(head[7])) << 24);
+  Imf::Header header;
+  int read_version = version;
+  header.readFrom(stream, read_version);
+  const Imath::Box2i data = header.dataWindow();
+  const long long width = static_cast<long long>(data.max.x) - data.min.x + 1;
+  const long long height = static_cast<long long>(data.max.y) - data.min.y + 1;
+  // An empty window is left to the caller's "image has no pixels".
+  if (width <= 0 || height <= 0 || width <= kMaxImagePixels / height) return "";
+  return "header claims " + std::to_string(width) + "x" + std::to_string(height) +
+         " pixels, over the limit of " + std::to_string(kMaxImagePixels) + " (4096^2) pixels";
+}
+
 }  // namespace
 
 bool has_exr_signature(const std::filesystem::path& path) {
@@ -107,8 +139,11 @@ ExrOpen open_exr(const std::string& path, std::unique_ptr<ImageFileReader>& read
   reader.reset();
   bool tiled = false, deep = false, multipart = false;
   if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multipart)) return ExrOpen::kDeclined;
-  if (tiled || deep || multipart) return ExrOpen::kDeclined;
   try {
+    // Before any reader of either library is made, whatever kind of EXR this is.
+    error = oversized_header(path);
+    if (!error.empty()) return ExrOpen::kFailed;
+    if (tiled || deep || multipart) return ExrOpen::kDeclined;
     auto file = std::make_unique<Imf::InputFile>(path.c_str());
     ImageFileSpec spec;
     if (!plain_rgb_spec(file->header(), spec)) return ExrOpen::kDeclined;

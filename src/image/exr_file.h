@@ -30,7 +30,9 @@ bool has_exr_signature(const std::filesystem::path& path);
 enum class ExrOpen { kOpened, kDeclined, kFailed };
 
 // Opens an EXR for reading. kDeclined (reader null): a kind of EXR this reader leaves to
-// OpenImageIO (see above). kFailed: `error` says why, as "EXR read error: <OpenEXR's message>".
+// OpenImageIO (see above). kFailed: `error` says why, as "EXR read error: <OpenEXR's message>",
+// or "header claims WxH pixels, over the limit ..." for any kind of EXR whose data window is over
+// kMaxImagePixels (image.h), found from the header before either library allocates for it.
 ExrOpen open_exr(const std::string& path, std::unique_ptr<ImageFileReader>& reader,
                  std::string& error);
 

@@ -150,11 +150,11 @@ class PngReader final : public ImageFileReader {
 };
 
 bool write_rows(png_structp png, png_infop info, std::FILE* file, int width, int height,
-                png_bytep* rows) {
+                int colour_type, png_bytep* rows) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_init_io(png, file);
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
-               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               colour_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_write_image(png, rows);
@@ -182,8 +182,10 @@ PngOpen open_png(const std::string& path, bool unassociated_alpha,
   return PngOpen::kOpened;
 }
 
-bool write_png_rgb8(const std::string& path, int width, int height, const uint8_t* rgb,
-                    std::string& error) {
+namespace {
+
+bool write_png8(const std::string& path, int width, int height, const uint8_t* pixels, int channels,
+                std::string& error) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) {
     error = naming("cannot write ", path);
@@ -194,14 +196,28 @@ bool write_png_rgb8(const std::string& path, int width, int height, const uint8_
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   std::vector<png_bytep> rows(static_cast<size_t>(height));
   for (int y = 0; y < height; ++y)
-    rows[y] = const_cast<png_bytep>(rgb + static_cast<size_t>(y) * width * 3);
-  const bool ok = png && info && write_rows(png, info, file, width, height, rows.data());
+    rows[y] = const_cast<png_bytep>(pixels + static_cast<size_t>(y) * width * channels);
+  const int colour_type = channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB;
+  const bool ok =
+      png && info && write_rows(png, info, file, width, height, colour_type, rows.data());
   if (!ok)
     error = png && info ? libpng_error("PNG write error: ", errors) : "out of memory for libpng";
   png_destroy_write_struct(&png, info ? &info : nullptr);
   const bool closed = std::fclose(file) == 0;
   if (ok && !closed) error = naming("cannot finish writing ", path);
   return ok && closed;
+}
+
+}  // namespace
+
+bool write_png_rgb8(const std::string& path, int width, int height, const uint8_t* rgb,
+                    std::string& error) {
+  return write_png8(path, width, height, rgb, 3, error);
+}
+
+bool write_png_rgba8(const std::string& path, int width, int height, const uint8_t* rgba,
+                     std::string& error) {
+  return write_png8(path, width, height, rgba, 4, error);
 }
 
 }  // namespace lt

@@ -37,5 +37,8 @@ PngOpen open_png(const std::string& path, bool unassociated_alpha,
 // Writes 8-bit RGB, rows top first, zlib's default compression, no ancillary chunk.
 bool write_png_rgb8(const std::string& path, int width, int height, const uint8_t* rgb,
                     std::string& error);
+// The same with 8-bit alpha after each pixel's RGB (unassociated, as PNG defines it).
+bool write_png_rgba8(const std::string& path, int width, int height, const uint8_t* rgba,
+                     std::string& error);
 
 }  // namespace lt

@@ -20,7 +20,8 @@ const char* kValid =
     ":lut-format=FMT (i8, i4, ia4, ia8), or lobe=xf-spec; "
     "t=texgen and lobe=xf-spec with an optional :view=object; any of them with :colors=round, "
     ":lights=round-each, :map=FMT (rgba8, rgb565, rgb5a3, cmpr; i8, ia8, ia4, i4; ci4, ci8), "
-    ":mip=lin | near with an optional :mip-bias=B (-4 <= B < 4), :wrap=repeat (or :wrap=clamp), "
+    ":mip=lin | near with an optional :mip-bias=B (-4 <= B < 4) and :mip-lod=diagonal (or "
+    ":mip-lod=edge), :wrap=repeat (or :wrap=clamp), "
     ":base=tev (or :base=xf), :out=xfb (or :out=efb), "
     ":coverage=console (or :coverage=dolphin), :light-range=D (D >= 0), the vertex storage "
     ":vtx=, :nrm=, :clr=, :uv= (e.g. :vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto) and "
@@ -124,6 +125,8 @@ GxVariant parse_gx_variant(const std::string& text) {
       if (!parses_whole(value, b) || !std::isfinite(b) || b < -4 || b >= 4)
         bad("mip-bias=" + value + " is not a LOD bias of -4 <= B < 4 levels");
       v.mip_bias = b;
+    } else if (key == "mip-lod" && first) {
+      v.mip_diagonal = either("diagonal", "edge") == "diagonal";
     } else if (key == "wrap" && first) {
       v.map_repeat = either("repeat", "clamp") == "repeat";
     } else if (key == "out" && first) {
@@ -162,6 +165,8 @@ GxVariant parse_gx_variant(const std::string& text) {
   if (text.empty()) bad("empty variant");
   if (seen.count("mip-bias") && v.mip == GxVariant::Mip::Off)
     bad("mip-bias= biases the LOD of mipmapped maps: give :mip=lin or :mip=near");
+  if (seen.count("mip-lod") && v.mip == GxVariant::Mip::Off)
+    bad("mip-lod= chooses how mipmapped maps take their LOD: give :mip=lin or :mip=near");
   if (v.lobe == GxVariant::Lobe::XfSpec &&
       (seen.count("t") || seen.count("lut") || seen.count("lut-format")))
     bad("lobe=xf-spec uses no texture, so it takes no t=, lut= or lut-format=");
@@ -200,6 +205,7 @@ std::string to_string(const GxVariant& v) {
     const auto r = std::to_chars(buf, buf + sizeof buf, v.mip_bias);
     s += ":mip-bias=" + std::string(buf, r.ptr);
   }
+  if (v.mip_diagonal) s += ":mip-lod=diagonal";
   if (v.map_repeat) s += ":wrap=repeat";
   if (v.out == GxVariant::Output::Xfb) s += ":out=xfb";
   if (v.coverage == CoverageRule::Console) s += ":coverage=console";

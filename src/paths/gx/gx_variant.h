@@ -46,6 +46,9 @@
 //   :mip=near           GX_NEAR_MIP_NEAR (nearest texel of the nearest level)
 //   :mip-bias=B         the LOD bias in levels, -4 <= B < 4 (GX_InitTexObjLOD's lodbias, stored
 //                       in 1/32 level steps; default 0); only with :mip=
+//   :mip-lod=diagonal   GX_InitTexObjLOD's edgelod GX_FALSE: each coordinate's step to the next
+//                       pixel across plus the step down, not the larger of the two (default
+//                       :mip-lod=edge, edgelod GX_TRUE; texture_lod.h quad_lod); only with :mip=
 // and one the maps' wrap:
 //   :wrap=repeat        the thickness maps GX_REPEAT both ways (default :wrap=clamp, GX_CLAMP as
 //                       the reference's CLAMP_TO_EDGE; an albedo map keeps its sampler's wrap);
@@ -123,10 +126,11 @@ struct GxVariant {
   // GX_TF_I8); never RGBA8 or I8 (the parser keeps the default unset, so equal images compare
   // equal).
   std::optional<TexFormat> map_format;
-  // :mip= and :mip-bias= (the maps' mip chains), :wrap= (their wrap mode).
+  // :mip=, :mip-bias= and :mip-lod= (the maps' mip chains), :wrap= (their wrap mode).
   enum class Mip { Off, Near, Linear };
   Mip mip = Mip::Off;
   double mip_bias = 0;
+  bool mip_diagonal = false;  // :mip-lod=diagonal
   bool map_repeat = false;
   Output out = Output::Efb;
   CoverageRule coverage = CoverageRule::Dolphin;

@@ -111,6 +111,7 @@ struct TexturePlan {
     int levels = 1;
     GxConst<NameGroup::TexFilter> min_filter{"GX_LIN_MIP_LIN"};
     float max_lod = 0, bias = 0;
+    bool edge_lod = true;  // GX_InitTexObjLOD's edgelod (false: diagonal LOD, :mip-lod=diagonal)
   };
   std::optional<Mip> mip;
 };

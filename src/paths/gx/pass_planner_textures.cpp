@@ -170,6 +170,7 @@ MapTexture PassPlanner::map_texture(MaterialPlan& mp, const MapTexels& texels,
     if (variant_.mip == GxVariant::Mip::Near) m_plan.min_filter = {"GX_NEAR_MIP_NEAR"};
     m_plan.max_lod = static_cast<float>(o.levels - 1);
     m_plan.bias = static_cast<float>(variant_.mip_bias);
+    m_plan.edge_lod = !variant_.mip_diagonal;
     t.mip = m_plan;
     t.what += ", " + std::to_string(o.levels) + " mip levels (" + m_plan.min_filter.name() + ")";
   }

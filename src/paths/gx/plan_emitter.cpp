@@ -171,8 +171,10 @@ void texture(Writer& w, const TexturePlan& t) {
     w.call("GX_InitTexObjLOD",
            {self, gx(t.mip->min_filter), gx(GxConst<NG::TexFilter>{"GX_LINEAR"}), Arg::f32(0.0f),
             Arg::f32(t.mip->max_lod), Arg::f32(t.mip->bias), gx(GxConst<NG::Bool>{"GX_FALSE"}),
-            gx(GxConst<NG::Bool>{"GX_TRUE"}), gx(GxConst<NG::Anisotropy>{"GX_ANISO_1"})},
-           "LOD range 0 .. the last level, edge LOD");
+            gx(t.mip->edge_lod ? GxConst<NG::Bool>{"GX_TRUE"} : GxConst<NG::Bool>{"GX_FALSE"}),
+            gx(GxConst<NG::Anisotropy>{"GX_ANISO_1"})},
+           t.mip->edge_lod ? "LOD range 0 .. the last level, edge LOD"
+                           : "LOD range 0 .. the last level, diagonal LOD");
   w.call("GX_LoadTexObj", {self, gx(t.map)});
 }
 
