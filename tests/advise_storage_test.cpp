@@ -2,7 +2,8 @@
 // the storages of kStorages, each rendered; under a loose budget the storage advised is the one
 // of fewest FIFO bytes a frame as `ltrender budget --path gx` counts them (run apart, here), and
 // each storage's bytes in the advice are the budget's; under 0 LSB no variant holds, so no
-// storage is advised. Small renders (48 pixels wide): the search, not the image, is under test.
+// storage is advised; the picked storage's error is advise's as render_scene and compare_images
+// measure it apart. Small renders (48 pixels wide): the search, not the image, is under test.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "advise/storage_advice.h"
+#include "advise_error_check.h"
 #include "core/build_paths.h"
 #include "test_util.h"
 
@@ -63,6 +65,14 @@ TEST(AdviseStorage, ALooseBudgetPicksTheStorageOfFewestFifoBytesAndZeroLsbPicksN
   }
   EXPECT_FALSE(expected.empty()) << "a quantised storage sends fewer bytes than F32";
   EXPECT_EQ(m["storage"]["pick"], expected);
+  // The picked storage's error, measured again outside advise (advise_error_check.h).
+  std::size_t measured = 0;
+  for (const nlohmann::json& o : options) {
+    if (o["storage"] != expected) continue;
+    test::expect_advise_error_is_measured_again(kScene, loose, o["variant"], o["error"]);
+    ++measured;
+  }
+  EXPECT_EQ(measured, 1u);
   // The F32 option renders the pick itself: its error is the pick's in the search.
   for (const nlohmann::json& c : m["candidates"]) {
     if (c["variant"] == m["pick"]) EXPECT_EQ(options[0]["error"]["max"], c["error"]["max"]);

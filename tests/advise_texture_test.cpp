@@ -2,7 +2,8 @@
 // with each format of kGreyMapFormats (with the I8 LUT) and the LUT in I4, each rendered; under a
 // loose budget the format advised is the one of fewest MEM1 bytes (texels and palette), then
 // fewest TMEM bytes, each as `ltrender budget --path gx --json` counts them (run apart, here);
-// under a mean budget between two formats' errors, a format over it is never the pick. Small
+// under a mean budget between two formats' errors, a format over it is never the pick; the
+// picked format's error is advise's as render_scene and compare_images measure it apart. Small
 // renders (48 pixels wide): the search, not the image, is under test.
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <tuple>
 
 #include "advise/texture_advice.h"
+#include "advise_error_check.h"
 #include "core/build_paths.h"
 #include "test_util.h"
 
@@ -82,6 +84,14 @@ TEST(AdviseTexture, ALooseBudgetPicksTheFormatOfFewestBytesAndAMeanBudgetLeavesT
   EXPECT_EQ(m["textures"]["pick"]["lut_format"], expected_lut);
   EXPECT_EQ(m["textures"]["pick"]["mem1_bytes"], std::get<0>(best));
   EXPECT_NE(expected_map, "i8") << "a 4-bit map holds the material within 255 LSB in fewer bytes";
+  // The picked format's error, measured again outside advise (advise_error_check.h).
+  std::size_t measured = 0;
+  for (const nlohmann::json& o : options) {
+    if (o["variant"] != m["textures"]["pick"]["variant"]) continue;
+    test::expect_advise_error_is_measured_again(kMapScene, loose, o["variant"], o["error"]);
+    ++measured;
+  }
+  EXPECT_EQ(measured, 1u);
 
   // A mean budget between the formats' lowest and highest mean errors: the picked format is
   // within it.
