@@ -70,13 +70,14 @@ FifoLog for_dolphin_animation(FifoLog log);
 // Many frames judged at one Dolphin start (the Dolphin tests): for_dolphin_animation's layout and
 // dump rule (frame k of K is dump D - 2 - K + k), but the lead-in and the trailing frames are
 // blank: GX_Init's registers, the clear and the display copy, nothing drawn. Dolphin then draws
-// each judged frame once instead of K + 4 times' worth of K frames (a seeded scene's frame is
-// ~16 MB of FIFO). A blank frame keeps a copy's place among the video fields: the FIFO player
-// spreads every frame, whatever its size, over one frame's emulated time [DHW FifoPlayer.cpp
-// WriteFifo: elapsed cycles = bytes written * cycles per frame / the frame's FIFO size], and it
-// ends with a display copy as a drawn frame does, so it is dumped as one. Measured: every Dolphin
-// test's frames (37 logs, 320x240) come back at the same dumps as with copies. Users' logs keep
-// the copies (for_dolphin, for_dolphin_animation): a log opened in Dolphin shows its frame.
+// K frames, not K + 4 (a seeded scene's frame is ~16 MB of FIFO). A blank frame keeps a copy's
+// place among the video fields: the FIFO player spreads every frame, whatever its size, over one
+// frame's emulated time [DHW FifoPlayer.cpp WriteFifo: elapsed cycles = bytes written * cycles per
+// frame / the frame's FIFO size], and it ends with a display copy as a drawn frame does, so it is
+// dumped as one. Measured: the 38 Dolphin tests that judge frames (one log each, 320x240) pass with
+// it, each frame at the dump the count gives, and dolphin_pictures checks the blank dumps are where
+// it puts them. Users' logs keep the copies (for_dolphin, for_dolphin_animation): a log opened in
+// Dolphin shows its frame.
 FifoLog for_dolphin_judging(FifoLog log, FrameSize size);
 
 }  // namespace lt::gx::fifo
