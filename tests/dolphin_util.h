@@ -111,16 +111,22 @@ struct JudgedRow {
 inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
                                                        const std::vector<JudgedFrame>& frames,
                                                        const std::string& label) {
-  std::vector<Scene> scenes;
-  for (const JudgedFrame& f : frames) scenes.push_back(scene_on_camera_path(scene, f.path_frame));
+  // Frame k's scene: `scene` itself at path frame 0, else a moved copy (a seeded scene's meshes
+  // are megabytes: copied only where the camera moves).
+  std::vector<Scene> moved;
+  moved.reserve(frames.size());  // no reallocation: scene_of points into it
+  std::vector<const Scene*> scene_of;
+  for (const JudgedFrame& f : frames) {
+    if (f.path_frame != 0) moved.push_back(scene_on_camera_path(scene, f.path_frame));
+    scene_of.push_back(f.path_frame != 0 ? &moved.back() : &scene);
+  }
   std::vector<gx::ScenePrograms> programs;
   for (size_t k = 0; k < frames.size(); ++k)
-    programs.push_back(gx::scene_programs_for(scenes[k], gx::parse_gx_variant(frames[k].variant),
+    programs.push_back(gx::scene_programs_for(*scene_of[k], gx::parse_gx_variant(frames[k].variant),
                                               frames[k].program_file));
   std::vector<gx::fifo::FrameInput> inputs;
   for (size_t k = 0; k < frames.size(); ++k)
-    inputs.push_back(
-        {programs[k].variant, &programs[k], frames[k].path_frame == 0 ? nullptr : &scenes[k]});
+    inputs.push_back({programs[k].variant, &programs[k], scene_of[k]});
   const std::vector<Image> dolphin = dolphin_pictures(scene, inputs);
   std::vector<JudgedRow> rows;
   if (dolphin.size() != frames.size()) {
@@ -131,8 +137,8 @@ inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
   for (size_t k = 0; k < frames.size(); ++k) {
     PathOptions options;
     options.program_file = frames[k].program_file;
-    const Image ours = render_scene(scenes[k], "gx", frames[k].variant + ":out=xfb", kDolphinWidth,
-                                    kDolphinHeight, options);
+    const Image ours = render_scene(*scene_of[k], "gx", frames[k].variant + ":out=xfb",
+                                    kDolphinWidth, kDolphinHeight, options);
     const std::string name =
         frames[k].variant + (frames[k].program_file.empty() ? "" : " --program (edited)") +
         (frames[k].path_frame == 0

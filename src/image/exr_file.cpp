@@ -97,11 +97,11 @@ bool plain_rgb_spec(const Imf::Header& header, ImageFileSpec& spec) {
 // The data window's size from the header alone, before the library's InputFile (or OpenImageIO's)
 // is made, so that no reader is ever sized by a header over the pixel limit. Measured with
 // Debian's OpenEXR 3.1.5: a 2 x 2 file whose windows claim 10^9 rows made InputFile fail reading
-// its chunk table ("Early end of file", 5 MB at most resident), so a short file did end in one
-// line before, but with the library's words, and how much it reserves first is the library's
-// choice; a header claiming more than 2^30 rows it refused as an "invalid display window".
-// Empty when the window is within kMaxImagePixels (image.h), else what is wrong; throws as
-// OpenEXR does on a header it cannot read.
+// its chunk table ("Early end of file"; a scratch probe, not kept, saw little memory taken), so a
+// short file did end in one line before, but with the library's words, and how much it reserves
+// first is the library's choice; a header claiming more than 2^30 rows it refused as an "invalid
+// display window". Empty when the window is within kMaxImagePixels (image.h), else what is wrong;
+// throws as OpenEXR does on a header it cannot read.
 std::string oversized_header(const std::string& path) {
   Imf::StdIFStream stream(path.c_str());
   // The magic number and the version field, 4 bytes each, little-endian [OpenEXR ImfVersion.h].
