@@ -219,14 +219,19 @@ TEST(DolphinPlayer, ADirectoryIsRefusedBeforeAnythingStarts) {
   EXPECT_TRUE(scratch.tmp_is_empty());
 }
 
+// The deadlines and graces below are short: the stand-ins never dump a frame, so any deadline
+// meets them, and each second here is a second of the suite's wall time spent waiting.
 TEST(DolphinPlayer, DeadlineKillsAProgramThatIgnoresSigintAndItsChildren) {
   SKIP_WITHOUT_DOLPHIN();
   Scratch scratch;
-  const auto got = play_stand_in(scratch, "trap '' INT\nsleep 600 &\nwait\nwait\n", 2);
-  EXPECT_NE(got.what.find("dolphin: no frame dumped within 2 s"), std::string::npos) << got.what;
-  // The deadline, then SIGINT's 3 s of grace, then SIGKILL.
-  EXPECT_GE(got.took, std::chrono::seconds(2));
-  EXPECT_LT(got.took, std::chrono::seconds(8));
+  DolphinOptions options =
+      stand_in(scratch, "dolphin", "trap '' INT\nsleep 600 &\nwait\nwait\n", 0.5);
+  options.stop_grace_seconds = 0.5;
+  const auto got = failed_play(options);
+  EXPECT_NE(got.what.find("dolphin: no frame dumped within 0.5 s"), std::string::npos) << got.what;
+  // The deadline, then SIGINT's grace, which the script ignores, then SIGKILL.
+  EXPECT_GE(got.took, std::chrono::milliseconds(1000));
+  EXPECT_LT(got.took, std::chrono::seconds(4));
   expect_nothing_left(scratch);
 }
 
@@ -235,9 +240,13 @@ TEST(DolphinPlayer, DeadlineStopsWhatAProgramLeftAfterItsCleanExit) {
   Scratch scratch;
   // SIGINT ends the script at once; its background `sleep` (which ignores SIGINT, as background
   // jobs of a script do) stays unless the whole group is killed.
-  const auto got = play_stand_in(scratch, "trap 'exit 0' INT\nsleep 600 &\nwait\n", 2);
-  EXPECT_NE(got.what.find("no frame dumped within 2 s"), std::string::npos) << got.what;
-  EXPECT_LT(got.took, std::chrono::seconds(5));
+  DolphinOptions options =
+      stand_in(scratch, "dolphin", "trap 'exit 0' INT\nsleep 600 &\nwait\n", 0.5);
+  options.stop_grace_seconds = 2;
+  const auto got = failed_play(options);
+  EXPECT_NE(got.what.find("no frame dumped within 0.5 s"), std::string::npos) << got.what;
+  // Not the deadline and the whole grace: the script's exit ends the play's wait at once.
+  EXPECT_LT(got.took, std::chrono::milliseconds(2500));
   expect_nothing_left(scratch);
 }
 

@@ -105,54 +105,88 @@ struct JudgedRow {
   PictureDifference difference;
 };
 
-// Plays `frames` of `scene` in one Dolphin start (one FIFO log) and holds each dump to ltrender's
-// `:out=xfb` picture of the same frame: zero pixels may differ. Prints one table row a frame
-// (`| label | variant | covered | differing | max |`: docs/dolphin-judge.md is made from them).
-inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
-                                                       const std::vector<JudgedFrame>& frames,
-                                                       const std::string& label) {
-  // Frame k's scene: `scene` itself at path frame 0, else a moved copy (a seeded scene's meshes
-  // are megabytes: copied only where the camera moves).
+// The frames of one scene in a log that may hold several (expect_dolphins_pictures below), and
+// the label its table rows and failures carry.
+struct JudgedScene {
+  const Scene* scene = nullptr;
+  std::vector<JudgedFrame> frames;
+  std::string label;
+};
+
+// Plays the frames of every one of `scenes` in one Dolphin start (one FIFO log: each frame is
+// self-contained, so frames of other scenes can follow each other) and holds each dump to
+// ltrender's `:out=xfb` picture of the same frame: zero pixels may differ. Prints one table row
+// a frame (`| label | variant | covered | differing | max |`: docs/dolphin-judge.md is made from
+// them). One start for many scenes: a Dolphin start and stop is ~0.7 s of the suite's time
+// whatever the log holds (docs/testing.md "Test time"). The rows of scene s are rows[s].
+inline std::vector<std::vector<JudgedRow>> expect_dolphins_pictures(
+    const std::vector<JudgedScene>& scenes) {
+  struct Frame {
+    const Scene* scene;
+    const JudgedFrame* judged;
+    const std::string* label;
+    size_t scene_index;
+  };
+  // Frame k's scene: the judged scene itself at path frame 0, else a moved copy (a seeded
+  // scene's meshes are megabytes: copied only where the camera moves).
+  size_t moves = 0;
+  for (const JudgedScene& js : scenes)
+    for (const JudgedFrame& f : js.frames) moves += f.path_frame != 0;
   std::vector<Scene> moved;
-  moved.reserve(frames.size());  // no reallocation: scene_of points into it
-  std::vector<const Scene*> scene_of;
-  for (const JudgedFrame& f : frames) {
-    if (f.path_frame != 0) moved.push_back(scene_on_camera_path(scene, f.path_frame));
-    scene_of.push_back(f.path_frame != 0 ? &moved.back() : &scene);
+  moved.reserve(moves);  // no reallocation: frames point into it
+  std::vector<Frame> frames;
+  for (size_t s = 0; s < scenes.size(); ++s) {
+    for (const JudgedFrame& f : scenes[s].frames) {
+      if (f.path_frame != 0) moved.push_back(scene_on_camera_path(*scenes[s].scene, f.path_frame));
+      frames.push_back(
+          {f.path_frame != 0 ? &moved.back() : scenes[s].scene, &f, &scenes[s].label, s});
+    }
   }
   std::vector<gx::ScenePrograms> programs;
-  for (size_t k = 0; k < frames.size(); ++k)
-    programs.push_back(gx::scene_programs_for(*scene_of[k], gx::parse_gx_variant(frames[k].variant),
-                                              frames[k].program_file));
+  programs.reserve(frames.size());
+  for (const Frame& f : frames)
+    programs.push_back(gx::scene_programs_for(*f.scene, gx::parse_gx_variant(f.judged->variant),
+                                              f.judged->program_file));
   std::vector<gx::fifo::FrameInput> inputs;
   for (size_t k = 0; k < frames.size(); ++k)
-    inputs.push_back({programs[k].variant, &programs[k], scene_of[k]});
-  const std::vector<Image> dolphin = dolphin_pictures(scene, inputs);
-  std::vector<JudgedRow> rows;
+    inputs.push_back({programs[k].variant, &programs[k], frames[k].scene});
+  std::vector<std::vector<JudgedRow>> rows(scenes.size());
+  if (frames.empty()) {
+    ADD_FAILURE() << "no frame to judge";
+    return rows;
+  }
+  const std::vector<Image> dolphin = dolphin_pictures(*frames.front().scene, inputs);
   if (dolphin.size() != frames.size()) {
     ADD_FAILURE() << "Dolphin gave " << dolphin.size() << " pictures for " << frames.size()
                   << " frames";
     return rows;
   }
   for (size_t k = 0; k < frames.size(); ++k) {
+    const JudgedFrame& f = *frames[k].judged;
     PathOptions options;
-    options.program_file = frames[k].program_file;
-    const Image ours = render_scene(*scene_of[k], "gx", frames[k].variant + ":out=xfb",
-                                    kDolphinWidth, kDolphinHeight, options);
+    options.program_file = f.program_file;
+    const Image ours = render_scene(*frames[k].scene, "gx", f.variant + ":out=xfb", kDolphinWidth,
+                                    kDolphinHeight, options);
     const std::string name =
-        frames[k].variant + (frames[k].program_file.empty() ? "" : " --program (edited)") +
-        (frames[k].path_frame == 0
-             ? ""
-             : " (camera path frame " + std::to_string(frames[k].path_frame) + ")");
+        f.variant + (f.program_file.empty() ? "" : " --program (edited)") +
+        (f.path_frame == 0 ? "" : " (camera path frame " + std::to_string(f.path_frame) + ")");
     const JudgedRow row{covered_pixels(ours), picture_difference(ours, dolphin[k])};
+    const std::string& label = *frames[k].label;
     std::printf("| %s | %s | %zu | %zu | %d |\n", label.c_str(), name.c_str(), row.covered,
                 row.difference.differ, row.difference.max);
     EXPECT_EQ(row.difference.differ, 0u)
         << label << ", " << name << ": first at " << row.difference.first_x << ","
         << row.difference.first_y << ", max " << row.difference.max << " LSB";
-    rows.push_back(row);
+    rows[frames[k].scene_index].push_back(row);
   }
   return rows;
+}
+
+// The same for the frames of one scene.
+inline std::vector<JudgedRow> expect_dolphins_pictures(const Scene& scene,
+                                                       const std::vector<JudgedFrame>& frames,
+                                                       const std::string& label) {
+  return expect_dolphins_pictures(std::vector<JudgedScene>{{&scene, frames, label}}).front();
 }
 
 }  // namespace lt::test

@@ -29,10 +29,6 @@ namespace {
 // What errors name as their "file": the judge, not one of the user's files.
 constexpr const char* kWho = "dolphin";
 
-// SIGINT asks Dolphin to stop cleanly (nogui's handler requests a shutdown); what has not ended
-// after this is killed.
-constexpr auto kDolphinGrace = std::chrono::seconds(3);
-
 // A temporary directory for one play, removed at the end unless LTRENDER_KEEP_DOLPHIN_DIR=1.
 class SessionDir {
  public:
@@ -168,6 +164,8 @@ using PrepareLog = std::function<void(const std::filesystem::path& dff_in_sessio
 std::vector<Image> play(const PrepareLog& prepare_log, const DolphinOptions& options) {
   LT_CHECK(std::isfinite(options.deadline_seconds) && options.deadline_seconds > 0,
            "the Dolphin deadline is checked by the caller");
+  LT_CHECK(std::isfinite(options.stop_grace_seconds) && options.stop_grace_seconds >= 0,
+           "the grace after SIGINT is set by the caller");
   // Both before anything is made, so a missing program leaves nothing behind.
   const std::filesystem::path dolphin = require_executable(options.executable, "dolphin-emu");
   const std::filesystem::path xvfb = require_executable(options.xvfb, "xvfb");
@@ -209,7 +207,8 @@ std::vector<Image> play(const PrepareLog& prepare_log, const DolphinOptions& opt
   }
 
   const bool ended = emulator->wait_until(deadline);
-  emulator->stop(SIGINT, kDolphinGrace);
+  emulator->stop(SIGINT, std::chrono::duration_cast<std::chrono::milliseconds>(
+                             std::chrono::duration<double>(options.stop_grace_seconds)));
   display.reset();
   return frames_or_why_not(ended, emulator->wait_status(), session.path(), options);
 }

@@ -37,6 +37,9 @@ struct DolphinOptions {
   // Wall-clock bound on the whole play, the X server's start included. Past it Dolphin gets
   // SIGINT (its clean stop), then SIGKILL.
   double deadline_seconds = 60;
+  // Then (or after the last frame) Dolphin gets SIGINT, which its nogui front end answers with a
+  // clean shutdown; whatever of the play has not ended this many seconds later is killed.
+  double stop_grace_seconds = 3;
   std::string executable = "/usr/games/dolphin-emu-nogui";
   std::string xvfb = "Xvfb";  // a name looked up in $PATH, or a path
 };

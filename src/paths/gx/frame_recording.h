@@ -33,8 +33,8 @@ void check_frame_size(FrameSize size, const std::string& file,
                       const std::string& height_key = "height");
 
 // One frame of the log: the programs a variant draws the scene with, and the frame's own scene
-// where it moves (an animation: the camera and lights of render/camera_path.h; the objects and
-// materials must be the record's, only where they are seen from and lit changes).
+// where it is another (an animation: the camera and lights of render/camera_path.h; or another
+// scene altogether, as the Dolphin tests put many scenes in one log).
 struct FrameInput {
   GxVariant variant;
   const ScenePrograms* programs = nullptr;
@@ -43,8 +43,7 @@ struct FrameInput {
 
 // The frames in order, each self-contained (it writes GX_Init's state, the camera, then every
 // register of every pass), with the header snapshot GX_Init's state (GxState{} and GX_Init's
-// other registers). Throws InputError when the textures do not fit the memory map, or a frame's
-// scene has other objects or materials than `scene`.
+// other registers). Throws InputError when the textures do not fit the memory map.
 FifoLog record_frames(const Scene& scene, const std::vector<FrameInput>& frames, FrameSize size);
 
 // The log Dolphin's FIFO player shows every frame of: Dolphin presents a frame's XFB copy when
