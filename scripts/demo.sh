@@ -32,6 +32,10 @@ step() {
   step_no=$((step_no + 1))
   echo "run.sh: step $step_no of $steps ($((SECONDS - started)) s in): $*" >&2
 }
+# The Wii port's vertices as a game stores them (s16 positions, s8 normals, RGB565 colours,
+# s16 texture coordinates, an indexed display list: docs/porting-to-the-wii.md), a row beside
+# gx's F32 immediate default in every bench of the demo scenes: report.md's "The console's bytes".
+stored_list=gx:t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:uv=s16/auto:draw=list
 mkdir -p out out/regress
 if $full; then
   # Local thickness for the demo scenes that read "thickness": "vertex" (issue 3): the same bake
@@ -42,13 +46,14 @@ if $full; then
   # Every demo scene through every path and variant (the orthographic one is where the combiners'
   # cube-map lobe is exact), timed to the CI standard.
   step "bench: every demo scene, path and variant, precise timing"
-  "$bin" bench scenes/*.json scenes/ortho/*.json --precise -o out "${args[@]}"
+  "$bin" bench scenes/*.json scenes/ortho/*.json --precise --add-variant "$stored_list" -o out \
+    "${args[@]}"
 else
   # One job a core (bench --jobs, docs/bench.md "Jobs"): each scene's bench pinned to a core of
   # its own, the scenes shared out between them; one report.
   step "bench: every demo scene through every path, the story's variants, quick timing"
   "$bin" bench scenes/*.json scenes/ortho/*.json --variants story --quick --jobs "$jobs" \
-    -o out "${args[@]}"
+    --add-variant "$stored_list" -o out "${args[@]}"
 fi
 # The talk's parameter figures rebuilt on the teapot (issue 13, scenes/figures/): one row per
 # figure in out/figures/contact.png, its left and right scene side by side (fig14 ambient,

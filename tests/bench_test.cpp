@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "advise_error_check.h"
+#include "core/error.h"
 #include "core/fixed.h"
 #include "load/load_scene.h"
 #include "render/session.h"
@@ -234,6 +236,87 @@ TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
 
 namespace lt {
 namespace {
+
+// `bench --add-variant`: a gx variant no list holds (positions s16 with 8 fractional bits,
+// normals s8) is a row beside the default's, with the console's bytes of its own storage and
+// the error of its own render. The bytes by hand: a direct vertex sends its position as three
+// s16 (6 bytes, not 12) and its normal as three s8 (3, not 12), 15 bytes less a vertex, and the
+// FIFO carries 15 bytes less for each vertex the XF receives. The error measured again outside
+// the bench (advise_error_check.h: render_scene and compare_images, as the bench states it
+// measures a gx row: 8-bit frame, float reference, covered pixels).
+TEST(BenchAddedVariant, AStoredGxVariantIsARowWithItsOwnBytesAndError) {
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  BenchOptions o;
+  o.scenes = {dir / "quad.json"};
+  o.out_dir = dir / "out";
+  o.paths = {"gx"};
+  o.variants = VariantSelection::Defaults;
+  o.added_variants = {parse_added_variant("gx:t=vertex:vtx=s16/8:nrm=s8")};
+  o.frames = 10;
+  o.warmup = 0;
+  o.rounds = 1;
+  o.min_time_s = 0;
+  o.max_time_s = 0;
+  o.wide_width = 64;
+  o.wide_height = 36;
+  o.quiet = true;
+  const std::vector<BenchRow> rows = run_bench(o);
+  ASSERT_EQ(rows.size(), 2u);  // gx's default, then the added one (flat times, but no row)
+  const BenchRow& f32 = rows[0];
+  const BenchRow& stored = rows[1];
+  EXPECT_EQ(f32.variant, "t=vertex");
+  EXPECT_EQ(stored.variant, "t=vertex:vtx=s16/8:nrm=s8");
+  ASSERT_TRUE(f32.console && stored.console);
+  EXPECT_EQ(f32.console->vertex_bytes - stored.console->vertex_bytes, 15u);
+  EXPECT_EQ(stored.console->xf_vertices, f32.console->xf_vertices);
+  EXPECT_EQ(f32.console->fifo_bytes - stored.console->fifo_bytes,
+            15u * stored.console->xf_vertices);
+  ASSERT_TRUE(stored.error);
+  test::expect_advise_error_is_measured_again(
+      dir / "quad.json", nlohmann::json{{"width", 48}, {"height", 32}}, stored.variant,
+      nlohmann::json{{"max", stored.error->max_lsb}, {"mean", stored.error->mean_lsb}});
+  // report.md's console table has the row.
+  write_bench_reports(o, rows);
+  const std::string md = test::read_file(o.out_dir / "report.md");
+  EXPECT_NE(md.find("| quad | gx | t=vertex:vtx=s16/8:nrm=s8 | " +
+                    std::to_string(stored.console->vertex_bytes) + " | "),
+            std::string::npos)
+      << md;
+}
+
+// What --add-variant refuses, naming itself and the text: no path, an unknown path, a variant
+// the path refuses; a row the bench makes anyway, or the same one twice (before anything is
+// written: load_bench_inputs); and through the command, exit 2 with nothing written.
+TEST(BenchAddedVariant, RefusesWhatIsNoNewRow) {
+  for (const char* bad : {"t=vertex", "nope:t=vertex", "gx:t=bogus", "gx:"}) {
+    try {
+      parse_added_variant(bad);
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "--add-variant") << bad;
+      EXPECT_EQ(e.where(), bad);
+    }
+  }
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  BenchOptions o;
+  o.scenes = {dir / "quad.json"};
+  o.paths = {"gx"};
+  o.variants = VariantSelection::Defaults;
+  o.added_variants = {parse_added_variant("gx:t=vertex")};
+  EXPECT_THROW(load_bench_inputs(o), InputError);  // the default: a row already
+  o.added_variants = {parse_added_variant("gx:t=vertex:lut=64")};
+  EXPECT_NO_THROW(load_bench_inputs(o));  // listed, but --variants default leaves it out
+  o.added_variants.push_back(o.added_variants.front());
+  EXPECT_THROW(load_bench_inputs(o), InputError);
+  const fs::path out = dir / "out";
+  const auto r = test::run_ltrender("bench " + (dir / "quad.json").string() +
+                                    " --paths gx --add-variant gx:t=vertex -o " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--add-variant:gx:t=vertex: a row already"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
 
 // A bad scene anywhere in the list is reported (exit 2, one line) before anything is written.
 TEST(BenchCli, BadSceneWritesNothing) {

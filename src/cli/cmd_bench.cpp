@@ -97,6 +97,13 @@ Action add_bench(CLI::App& app) {
                   "Which variants of each path: all (default), default (each path's first), "
                   "story (the default and those the docs compare it with: ./run.sh's run)")
       ->check(CLI::IsMember(variant_selections()));
+  auto added = std::make_shared<std::vector<std::string>>();
+  sub->add_option("--add-variant", *added,
+                  "PATH:VARIANT, a row for a variant the path does not list (its name ends at "
+                  "the first ':'), e.g. gx:t=vertex:vtx=s16/auto:nrm=s8:clr=rgb565:draw=list; "
+                  "repeatable")
+      ->allow_extra_args(false)
+      ->take_all();
   auto compare_with = std::make_shared<std::string>();
   sub->add_option("--compare", *compare_with,
                   "An earlier report.json: rows whose ratio intervals do not overlap are listed "
@@ -132,9 +139,11 @@ Action add_bench(CLI::App& app) {
                   "arbfp: a profile (ps_2_0 ...) its programs must fit; materials over it are "
                   "drawn in additive passes (the cost column says how many)");
   return [o, scenes, paths, out, lp_threads, cpu_threads, pin_core, compare_with, apply_timing,
-          variants, jobs, role]() -> int {
+          variants, jobs, role, added]() -> int {
     apply_timing();
     o->variants = variant_selections().at(*variants);
+    o->added_variants.clear();
+    for (const std::string& text : *added) o->added_variants.push_back(parse_added_variant(text));
     // A line redrawn in place means nothing in a log: only a person at a terminal gets it.
     o->live_progress = ::isatty(STDERR_FILENO) == 1 && !role->is_job();
     // Before any thread or context exists: what is started later inherits the core. A parent

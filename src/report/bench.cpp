@@ -81,32 +81,42 @@ std::string scene_name(const fs::path& p) {
   return p.stem().string();
 }
 
-// One row a scene will have: a path and one of its variants.
+// One row a scene will have: a path and one of its variants (listed or added).
 struct PlannedRow {
   const PathInfo* path;
-  const VariantInfo* variant;
+  std::string variant;
 };
 
-// The rows of a scene: each selected variant of each path asked for, except those the scene
-// refuses (noted with the reason).
+// The rows of a scene: each selected variant of each path asked for, then each added one,
+// except those the scene refuses (noted with the reason).
 std::vector<PlannedRow> plan_rows(const Scene& scene, const std::string& sname,
                                   const std::vector<const PathInfo*>& paths, const BenchOptions& o,
                                   BenchProgress& progress) {
-  std::vector<PlannedRow> planned;
+  std::vector<PlannedRow> candidates;
   for (const PathInfo* p : paths) {
-    for (const VariantInfo& v : p->variants) {
-      if (!selected(*p, v, o.variants)) continue;
-      // A variant that cannot be exact for this scene (gx t=texgen under perspective) is
-      // no row: render would refuse it too.
-      const std::string why = p->refusal(scene, v.name);
-      if (!why.empty()) {
-        progress.note("bench: " + sname + ": " + p->name + " " + v.name + " skipped: " + why);
-        continue;
-      }
-      planned.push_back({p, &v});
+    for (const VariantInfo& v : p->variants)
+      if (selected(*p, v, o.variants)) candidates.push_back({p, v.name});
+  }
+  for (const AddedVariant& a : o.added_variants)
+    candidates.push_back({&find_path(a.path), a.variant});
+  std::vector<PlannedRow> planned;
+  for (PlannedRow& row : candidates) {
+    // A variant that cannot be exact for this scene (gx t=texgen under perspective) is no row:
+    // render would refuse it too.
+    const std::string why = row.path->refusal(scene, row.variant);
+    if (!why.empty()) {
+      progress.note("bench: " + sname + ": " + row.path->name + " " + row.variant +
+                    " skipped: " + why);
+      continue;
     }
+    planned.push_back(std::move(row));
   }
   return planned;
+}
+
+// Whether `paths` (--paths; empty: every path) asks for `path`.
+bool path_asked(const std::vector<std::string>& paths, const std::string& path) {
+  return paths.empty() || std::find(paths.begin(), paths.end(), path) != paths.end();
 }
 
 // Pass 2 of run_bench, at 1280x720: timing only, each path in interleaved pairs with flat in the
@@ -267,8 +277,38 @@ FrameTiming summarize_frames(std::vector<double> frame_ms) {
   return t;
 }
 
+AddedVariant parse_added_variant(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
+    throw InputError("--add-variant", text, "give PATH:VARIANT, e.g. gx:t=vertex:draw=list");
+  const std::string path = text.substr(0, colon), variant = text.substr(colon + 1);
+  try {
+    return {find_path(path).name, find_path(path).parse_variant(variant)};
+  } catch (const InputError& e) {
+    // The path's own words, under this option's name (they name --path or --variant).
+    throw InputError("--add-variant", text, e.what_only());
+  }
+}
+
 std::vector<Scene> load_bench_inputs(const BenchOptions& o) {
   for (const std::string& name : o.paths) find_path(name);  // unknown names are input errors
+  // An added variant that is a row already would be measured twice under one name (and one
+  // image file): refused, as is the same one added twice.
+  for (std::size_t i = 0; i < o.added_variants.size(); ++i) {
+    const AddedVariant& a = o.added_variants[i];
+    const std::string given = a.path + ":" + a.variant;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (o.added_variants[j].path == a.path && o.added_variants[j].variant == a.variant)
+        throw InputError("--add-variant", given, "given twice");
+    }
+    const PathInfo& p = find_path(a.path);
+    if (!path_asked(o.paths, p.name)) continue;
+    for (const VariantInfo& v : p.variants) {
+      if (v.name == a.variant && selected(p, v, o.variants))
+        throw InputError("--add-variant", given,
+                         "a row already: --variants selects this listed variant of " + p.name);
+    }
+  }
   std::vector<Scene> scenes;
   for (const fs::path& scene_path : o.scenes)
     scenes.push_back(load_scene(scene_path, o.scene_options));
@@ -278,9 +318,7 @@ std::vector<Scene> load_bench_inputs(const BenchOptions& o) {
 std::vector<BenchRow> run_bench(const BenchOptions& o) {
   std::vector<const PathInfo*> paths;
   for (const PathInfo& p : all_paths()) {
-    if (o.paths.empty() || std::find(o.paths.begin(), o.paths.end(), p.name) != o.paths.end()) {
-      paths.push_back(&p);
-    }
+    if (path_asked(o.paths, p.name)) paths.push_back(&p);
   }
   // The baseline is always measured, whatever --paths says: every ratio needs it.
   const PathInfo& flat = path_with_role(PathRole::Baseline);
@@ -316,18 +354,18 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
       // The same at 8 bits, for the report page (a browser shows no EXR): what each card flips to.
       write_image(o.out_dir / ground_truth_image(sname, ".png"), ref_image);
       for (const auto& [p, v] : planned[si]) {
-        progress.step(sname + ", " + p->name + " " + v->name);
+        progress.step(sname + ", " + p->name + " " + v);
         BenchRow row;
         row.scene = sname;
         row.path = p->name;
-        row.variant = v->name;
-        auto path = session.build(*p, v->name, profile_options(*p, o));
+        row.variant = v;
+        auto path = session.build(*p, v, profile_options(*p, o));
         row.at_scene_size = time_frames(*path, o);
         row.cost = path->cost();
         if (p->writes_fifo_log)
-          row.console = console_bytes(p->budget(scene, v->name, profile_options(*p, o).profile));
+          row.console = console_bytes(p->budget(scene, v, profile_options(*p, o).profile));
         const Image img = path->result();
-        const std::string base = sname + "__" + file_name_safe(p->name + "_" + v->name);
+        const std::string base = sname + "__" + file_name_safe(p->name + "_" + v);
         row.image = "images/" + base + ".png";
         row.width = img.width;
         row.height = img.height;

@@ -33,11 +33,23 @@ enum class VariantSelection { All, Defaults, Story };
 const std::map<std::string, VariantSelection>& variant_selections();
 bool selected(const PathInfo& path, const VariantInfo& variant, VariantSelection selection);
 
+// A variant a path does not list, given to bench by name (`bench --add-variant PATH:VARIANT`):
+// gx's stored vertex layouts, say, whose combinations no list can hold. Its rows are made as a
+// listed variant's are.
+struct AddedVariant {
+  std::string path, variant;  // variant: canonical (PathInfo::parse_variant)
+};
+// "gx:t=vertex:vtx=s16/auto" -> {"gx", its canonical spelling}: the path's name ends at the
+// first ':'. Throws InputError naming --add-variant and the text for an unknown path or a
+// variant the path refuses.
+AddedVariant parse_added_variant(const std::string& text);
+
 struct BenchOptions {
   std::vector<std::filesystem::path> scenes;
   SceneOptions scene_options;      // --lights
   std::vector<std::string> paths;  // empty: every path
   VariantSelection variants = VariantSelection::All;
+  std::vector<AddedVariant> added_variants;  // --add-variant: rows besides the selected ones
   std::filesystem::path out_dir;
   int frames = 10;  // >= 10 (metrics.md); at 1280x720, the least number of interleaved pairs
   int warmup = 2;   // at least; at 1280x720 warm-up goes on until the frame time settles
@@ -93,8 +105,9 @@ struct BenchRow {
 // Sets rounds, min_time_s, target_interval, max_time_s and timing_mode to the mode's values.
 void set_timing_mode(BenchOptions& options, TimingMode mode);
 
-// The scenes, loaded, after checking every --paths name: what run_bench reads before it writes
-// anything (and `bench --jobs` before it starts a job). Throws InputError.
+// The scenes, loaded, after checking every --paths name and that no added variant is a row the
+// bench makes anyway: what run_bench reads before it writes anything (and `bench --jobs` before
+// it starts a job). Throws InputError.
 std::vector<Scene> load_bench_inputs(const BenchOptions& options);
 
 std::vector<BenchRow> run_bench(const BenchOptions& options);

@@ -100,6 +100,32 @@ std::string timing_summary(const BenchOptions& o) {
   return s.str();
 }
 
+// Whether some row is a console path's, with its bytes (console_bytes.h).
+bool has_console_rows(const std::vector<BenchRow>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return r.console; });
+}
+
+// The console's bytes of the rows that have them, beside their error: the cost axis a porter
+// reads for the storage and formats of a console path (docs/bench.md).
+std::string console_markdown(const std::vector<BenchRow>& rows) {
+  if (!has_console_rows(rows)) return "";
+  std::ostringstream s;
+  s << "\n## The console's bytes\n\nWhat `ltrender budget SCENE --path P --variant V` counts "
+       "for each console row, a frame: counts, not time (the console's time is not modelled). "
+       "MEM1 = vertex arrays + display lists + textures + palettes.\n\n"
+    << "| scene | path | variant | bytes a vertex | MEM1 bytes | FIFO bytes a frame | XF "
+       "vertices a frame | triangles | max LSB | mean LSB |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& r : rows) {
+    if (!r.console) continue;
+    const ConsoleBytes& c = *r.console;
+    s << "| " << r.scene << " | " << r.path << " | " << r.variant << " | " << c.vertex_bytes
+      << " | " << c.mem1_bytes() << " | " << c.fifo_bytes << " | " << c.xf_vertices << " | "
+      << c.triangles << " | " << error_cell(r, true) << " | " << error_cell(r, false) << " |\n";
+  }
+  return s.str();
+}
+
 std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
   std::ostringstream s;
   s << "# ltrender bench\n\n"
@@ -140,6 +166,7 @@ std::string markdown(const BenchOptions& o, const std::vector<BenchRow>& rows) {
     << ", counted from the built programs and the pixels and vertices drawn (the same on every "
        "machine): pixels x fragment ALU+TEX (arbfp), combiner stages (combiners), TEV stages and "
        "vertices x XF lights (gx), CPU light evaluations (reference, half). GLSL has no count.\n";
+  s << console_markdown(rows);
   s << "\n![speed against error](chart.svg)\n\n![work against error](chart_work.svg)\n\n"
        "Contact sheet: `contact.png` (one row per scene: "
        "the reference, then each path's render followed by its error heatmap, in the table's "
@@ -359,9 +386,6 @@ ChartAxis work_axis(const BenchOptions& o) {
 // The console's bytes (console_bytes.h), for the rows of a console path: FIFO bytes a frame, what
 // the CPU writes to the GP every frame, the figure every way of sending vertices has (docs/bench.md
 // says why this one and not MEM1). Counts, not time: the console's time is not modelled.
-bool has_console_rows(const std::vector<BenchRow>& rows) {
-  return std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return r.console; });
-}
 ChartAxis console_axis() {
   return {"Console bytes",
           // Short enough for the chart's width, as the other two axes' lines are.
