@@ -40,19 +40,26 @@ TEST(Bench, SummarizeFramesTakesMedianAndMin) {
   EXPECT_EQ(even.median_ms, 3.5);
 }
 
-TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
-  test::TempDir dir;
-  write_quad_scene(dir.path());
+// A bench of quad.json in `dir` into dir/out that checks rows, not figures: the fewest frames,
+// the pair count deciding the time (no minimum, no more for the interval), a small wide size.
+BenchOptions rows_only_options(const fs::path& dir) {
   BenchOptions o;
   o.scenes = {dir / "quad.json"};
   o.out_dir = dir / "out";
   o.frames = 10;
   o.warmup = 1;
-  o.min_time_s = 0;  // the pair count decides: this test checks the rows, not their figures
+  o.min_time_s = 0;
   o.max_time_s = 0;
   o.wide_width = 64;
   o.wide_height = 36;
   o.quiet = true;
+  return o;
+}
+
+TEST(Bench, WritesOneRowPerPathVariantAndEveryReport) {
+  test::TempDir dir;
+  write_quad_scene(dir.path());
+  const BenchOptions o = rows_only_options(dir.path());
   const auto rows = run_bench(o);
   // One row per variant the scene allows (gx refuses t=texgen and lobe=xf-spec under a
   // perspective camera: render would refuse them too).
@@ -247,20 +254,11 @@ namespace {
 TEST(BenchAddedVariant, AStoredGxVariantIsARowWithItsOwnBytesAndError) {
   test::TempDir dir;
   write_quad_scene(dir.path());
-  BenchOptions o;
-  o.scenes = {dir / "quad.json"};
-  o.out_dir = dir / "out";
+  BenchOptions o = rows_only_options(dir.path());
   o.paths = {"gx"};
   o.variants = VariantSelection::Defaults;
   o.added_variants = {parse_added_variant("gx:t=vertex:vtx=s16/8:nrm=s8")};
-  o.frames = 10;
-  o.warmup = 0;
   o.rounds = 1;
-  o.min_time_s = 0;
-  o.max_time_s = 0;
-  o.wide_width = 64;
-  o.wide_height = 36;
-  o.quiet = true;
   const std::vector<BenchRow> rows = run_bench(o);
   ASSERT_EQ(rows.size(), 2u);  // gx's default, then the added one (flat times, but no row)
   const BenchRow& f32 = rows[0];
