@@ -9,12 +9,12 @@
 #include <bit>
 
 #include "core/error.h"
-#include "load/load_scene.h"
-#include "paths/gx/generator.h"
 #include "gx/program/interpreter.h"
 #include "gx/program/parser.h"
-#include "paths/gx/scene_pass_programs.h"
 #include "gx/program/printer.h"
+#include "load/load_scene.h"
+#include "paths/gx/generator.h"
+#include "paths/gx/scene_pass_programs.h"
 #include "scene/scene.h"
 #include "test_util.h"
 
@@ -313,6 +313,21 @@ TEST(GxNames, CollidingMaterialsRenderExportAndReadBackToTheSameImage) {
   EXPECT_EQ(by_material[1].at(0).name, "ltrender_Material_20_2_pass0");
   EXPECT_EQ(by_material[0].at(0).state.lighting.material[0], (Color8{230, 51, 26, 255}));
   EXPECT_EQ(by_material[1].at(0).state.lighting.material[1], (Color8{26, 204, 77, 255}));
+}
+
+// A pass's t is one light's in the module's C (its figures) and in the emulator and the FIFO log
+// (its number): sent_t_light holds them to one number. The planner's own passes agree (every
+// module test); a plan whose second pass sends the first light's t is a bug, stopped.
+TEST(GxPlanDeathTest, APassSendingAnotherLightsTIsABug) {
+  const ScenePlan plan = plan_scene(load_scene(test::source_dir() / "scenes/three_point_blob.json"),
+                                    parse_gx_variant("t=vertex"));
+  const MaterialPlan& planned = plan.materials.front();
+  ASSERT_GE(planned.passes.size(), 2u);
+  ASSERT_TRUE(planned.passes[1].vertex.t);
+  EXPECT_EQ(sent_t_light(planned, 1), 1u);
+  MaterialPlan swapped = planned;
+  swapped.passes[1].figures.light = 0;
+  EXPECT_DEATH(sent_t_light(swapped, 1), "sends light 0's t");
 }
 
 }  // namespace

@@ -239,6 +239,14 @@ struct ScenePlan {
   std::vector<MaterialPlan> materials;  // the materials some object uses, in scene order
 };
 
+// The light whose t pass `pass` of `m` sends (the pass must send t): the module's C fills t for
+// this light. The emulator and the FIFO log, which also draw users' programs that name no light,
+// take a pass's number as its light's (VertexStream::t_per_light indexed by pass:
+// frame_recording.cpp, scene_vertices.cpp, vertex_stage.cpp). The planner makes the two one
+// number by giving a material that sends t one pass a light, in the scene's order; a plan where
+// they differ is a bug, stopped here rather than exported.
+size_t sent_t_light(const MaterialPlan& m, size_t pass);
+
 // A number in a comment or note, as an ostream prints a double ("0.25", "1e+18").
 std::string note_number(double v);
 

@@ -420,4 +420,13 @@ void PassPlanner::light_stages(PassPlan& p, const PassChoice& c, const Transluce
   p.stages.back().frame_scale = TevStagePlan::FrameScale::Diffuse;
 }
 
+size_t sent_t_light(const MaterialPlan& m, size_t pass) {
+  LT_CHECK(pass < m.passes.size() && m.passes[pass].vertex.t, "the pass sends no t");
+  LT_CHECK(m.passes[pass].figures.light == pass,
+           "pass " + std::to_string(pass) + " of " + m.name + " sends light " +
+               std::to_string(m.passes[pass].figures.light) +
+               "'s t, which the emulator would take for light " + std::to_string(pass) + "'s");
+  return pass;
+}
+
 }  // namespace lt::gx

@@ -302,7 +302,7 @@ std::string material_functions(const Scene& scene, const MaterialPlan& m, const 
     const PassPlan& p = m.passes[i];
     o << "  " << pass_function_name(m.c_name, static_cast<int>(i)) << "(&state[" << i << "]);\n";
     if (p.vertex.t)
-      o << "  " << id << "_fill_t(view, lights, " << p.figures.light << ", mesh, t_scratch);\n";
+      o << "  " << id << "_fill_t(view, lights, " << sent_t_light(m, i) << ", mesh, t_scratch);\n";
     o << "  ltr_draw_mesh(mesh, " << p.vertex.colour << ", " << (p.vertex.t ? "t_scratch" : "0")
       << ", " << p.vertex.uv << ");\n";
   }

@@ -261,7 +261,7 @@ std::string stored_meshes_c(const Scene& scene, const ScenePlan& plan, const GxV
       for (size_t i : objects) {
         const std::string draw = "&ltrender_stored_draws[" + std::to_string(draw_of[i][p]) + "]";
         if (m.passes[p].vertex.t)
-          out << "  ltrender_" << m.c_name << "_fill_t(view, lights, " << m.passes[p].figures.light
+          out << "  ltrender_" << m.c_name << "_fill_t(view, lights, " << sent_t_light(m, p)
               << ", &objects[" << i << "], ltrender_t_scratch);\n"
               << "  ltr_stored_write_t(" << draw << ", ltrender_t_scratch);\n";
         out << "  ltr_stored_draw_object(view, " << draw << ");\n";
