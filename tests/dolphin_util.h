@@ -59,15 +59,19 @@ inline std::vector<Image> dolphin_pictures(const Scene& scene,
 }
 
 // Dolphin's picture of frame k = `scenes[k]` through `variants[k]`, all in one log (as
-// dolphin_pictures; `scenes` at the Dolphin size, the first one the log's scene).
+// dolphin_pictures; `scenes` at the Dolphin size, the first one the log's scene). A frame with a
+// non-empty `program_files[k]` draws that program file instead of the generated programs, read
+// as `export --format dff --program` reads it (gx_path.cpp fifo_log: scene_programs_for).
 inline std::vector<Image> dolphin_pictures_of(const std::vector<Scene>& scenes,
-                                              const std::vector<std::string>& variants) {
+                                              const std::vector<std::string>& variants,
+                                              const std::vector<std::string>& program_files = {}) {
   std::vector<gx::ScenePrograms> programs;
   for (size_t k = 0; k < scenes.size(); ++k)
-    programs.push_back(gx::scene_programs_for(scenes[k], gx::parse_gx_variant(variants[k]), ""));
+    programs.push_back(gx::scene_programs_for(scenes[k], gx::parse_gx_variant(variants[k]),
+                                              program_files.empty() ? "" : program_files[k]));
   std::vector<gx::fifo::FrameInput> inputs;
   for (size_t k = 0; k < scenes.size(); ++k)
-    inputs.push_back({gx::parse_gx_variant(variants[k]), &programs[k], &scenes[k]});
+    inputs.push_back({programs[k].variant, &programs[k], &scenes[k]});
   return dolphin_pictures(scenes.front(), inputs);
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "gx/texture_unit.h"
+#include "gx_program_util.h"
 #include "load/load_scene.h"
 #include "render/session.h"
 #include "scene/scene_parse.h"
@@ -36,16 +37,10 @@ Scene uv_quad_scene(const test::TempDir& dir, bool uvs) {
   return scene;
 }
 
-std::string byte_array(const std::string& name, const std::vector<gx::u8>& bytes) {
-  std::string s = "u8 " + name + "[" + std::to_string(bytes.size()) + "] ATTRIBUTE_ALIGNED(32) = {";
-  for (size_t i = 0; i < bytes.size(); ++i) s += (i ? ", " : "") + std::to_string(bytes[i]);
-  return s + "};\n";
-}
-
 // One stage showing GX_TEXMAP1's texel (GX_REPLACE: TEXC, TEXA) at the UV in GX_VA_TEX0, every
 // face drawn (GX_Init's GX_CULL_BACK would cull the quad, wound as GL's front face).
 std::string map_program(const std::vector<gx::u8>& tiles, const std::string& format) {
-  return byte_array("map", tiles) + R"(GXTexObj tex;
+  return test::c_byte_array("map", tiles) + R"(GXTexObj tex;
 GX_SetCullMode(GX_CULL_NONE);
 GX_ClearVtxDesc();
 GX_SetVtxDesc(GX_VA_POS, GX_DIRECT);
@@ -191,7 +186,7 @@ std::string ci4_program(int entries, const std::string& load_tlut) {
                 load_tlut +
                 "GX_InitTexObjCI(&tex, map, 2, 2, GX_TF_CI4, GX_CLAMP, GX_CLAMP, GX_FALSE, "
                 "GX_TLUT0);");
-  return byte_array("palette", palette) + "GXTlutObj pal;\n" + p;
+  return test::c_byte_array("palette", palette) + "GXTlutObj pal;\n" + p;
 }
 
 TEST(GxMapProgram, Ci4MapReadsItsIa8PaletteThroughTheTlut) {

@@ -66,6 +66,12 @@ TEST_P(GxModuleTpl, HoldsTheTexturesTheEmulatorLoadsByteForByte) {
         if (!x.tlut.empty()) {
           EXPECT_EQ(static_cast<u8>(x.tlut_format), t->tlut_format);
         }
+        // libogc's TPL_GetTexture passes a chain's header "edge LOD" byte to GX_InitTexObjLOD
+        // as its max anisotropy [OGC tpl.c L241-248], so a TPL read alone must carry the
+        // anisotropy the --format c program's own GX_InitTexObjLOD sets.
+        if (x.levels > 1 && t->lod) {
+          EXPECT_EQ(x.edge_lod, t->lod->max_aniso) << p.name;
+        }
         ++loads[k];
         found = true;
       }

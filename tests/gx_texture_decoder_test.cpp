@@ -104,7 +104,7 @@ TEST(GxTextureDecoder, RGB5A3PicksItsModePerTexel) {
   const TextureView t = texture_view(TexFormat::RGB5A3, 4, 4, d);
   EXPECT_EQ(decode_texel(t, 0, 0), (Color8{173, 24, 255, 255}));  // 10101 -> 10101101 = 173
   EXPECT_EQ(decode_texel(t, 1, 0), (Color8{204, 51, 255, 182}));  // 12*17, 3*17, 15*17; a 5
-  EXPECT_EQ(decode_texel(t, 2, 0), (Color8{0, 0, 0, 0}));          // all zero: transparent black
+  EXPECT_EQ(decode_texel(t, 2, 0), (Color8{0, 0, 0, 0}));         // all zero: transparent black
 }
 
 TEST(GxTextureDecoder, ColourIndexedTexelsLookUpTheirTlut) {
@@ -121,32 +121,43 @@ TEST(GxTextureDecoder, ColourIndexedTexelsLookUpTheirTlut) {
   std::vector<u8> ci4(32, 0);
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x)
-      ci4[static_cast<size_t>((y * 8 + x) / 2)] |= static_cast<u8>(x % 2 == 0 ? ((x + y) & 15) << 4
-                                                                          : (x + y) & 15);
+      ci4[static_cast<size_t>((y * 8 + x) / 2)] |=
+          static_cast<u8>(x % 2 == 0 ? ((x + y) & 15) << 4 : (x + y) & 15);
   const TlutView t565{TlutFormat::RGB5A3, rgb5a3}, tia{TlutFormat::IA8, ia8};
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) {
       const int k = (x + y) & 15;
       const u8 g = bits5_to_8(k);
-      EXPECT_EQ(decode_texel(texture_view(TexFormat::CI4, 8, 8, ci4), x, y, &t565), (Color8{g, g, g, 255}));
+      EXPECT_EQ(decode_texel(texture_view(TexFormat::CI4, 8, 8, ci4), x, y, &t565),
+                (Color8{g, g, g, 255}));
       const u8 i = static_cast<u8>(k * 10);
       EXPECT_EQ(decode_texel(texture_view(TexFormat::CI4, 8, 8, ci4), x, y, &tia),
                 (Color8{i, i, i, static_cast<u8>(255 - k)}));
     }
   // CI8 8x4: byte per texel; CI14X2 4x4: the big-endian u16's low 14 bits, the top two ignored.
   std::vector<u8> ci8(32, 0), ci14(32, 0), big(16384 * 2, 0);
-  ci8[9] = 200;                       // texel (1, 1)
-  ci14[2 * 5] = 0xC0 | 0x3F;          // texel (1, 1): 0xFFFE & 0x3FFF = 0x3FFE
+  ci8[9] = 200;               // texel (1, 1)
+  ci14[2 * 5] = 0xC0 | 0x3F;  // texel (1, 1): 0xFFFE & 0x3FFF = 0x3FFE
   ci14[2 * 5 + 1] = 0xFE;
   std::vector<u8> tl256(256 * 2, 0);
   tl256[400] = 0xF8;  // entry 200 = RGB565 pure red
   big[2 * 0x3FFE] = 0x00;
   big[2 * 0x3FFE + 1] = 0x1F;  // entry 0x3FFE = RGB565 pure blue
   const TlutView tl{TlutFormat::RGB565, tl256}, tb{TlutFormat::RGB565, big};
-  EXPECT_EQ(decode_texel(texture_view(TexFormat::CI8, 8, 4, ci8), 1, 1, &tl), (Color8{255, 0, 0, 255}));
+  EXPECT_EQ(decode_texel(texture_view(TexFormat::CI8, 8, 4, ci8), 1, 1, &tl),
+            (Color8{255, 0, 0, 255}));
   EXPECT_EQ(decode_texel(texture_view(TexFormat::CI14X2, 4, 4, ci14), 1, 1, &tb),
             (Color8{0, 0, 255, 255}));
   EXPECT_EQ(largest_index(texture_view(TexFormat::CI14X2, 4, 4, ci14)), 0x3FFE);
+  // CI14X2 8x8: four 4x4 tiles of 32 bytes, two a row; texel (5, 6) is tile 3 (byte 96), tile
+  // texel (1, 2), 2 * (2 * 4 + 1) = 18 bytes in: bytes 114-115. 0x4321 & 0x3FFF = 801, an entry
+  // of pure green (0x07E0); read little-endian it would be 0x2143, a black entry.
+  std::vector<u8> ci14_tiles(128, 0);
+  ci14_tiles[114] = 0x43, ci14_tiles[115] = 0x21;
+  big[2 * 801] = 0x07, big[2 * 801 + 1] = 0xE0;
+  EXPECT_EQ(decode_texel(texture_view(TexFormat::CI14X2, 8, 8, ci14_tiles), 5, 6, &tb),
+            (Color8{0, 255, 0, 255}));
+  EXPECT_EQ(largest_index(texture_view(TexFormat::CI14X2, 8, 8, ci14_tiles)), 801);
   EXPECT_EQ(largest_index(texture_view(TexFormat::CI4, 8, 8, ci4)), 14);
 }
 

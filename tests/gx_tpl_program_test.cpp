@@ -12,6 +12,7 @@
 #include "gx/program/parser.h"
 #include "gx/program/printer.h"
 #include "gx/tpl_file.h"
+#include "gx_program_util.h"
 #include "load/load_scene.h"
 #include "paths/gx/generator.h"
 #include "paths/gx/gx_variant.h"
@@ -122,9 +123,8 @@ TEST(GxTplProgram, TheObjectTakesTheHeaderAndTheProgramsLaterCallsWin) {
   t.wrap_t = 2;                                                               // GX_MIRROR
   for (int k = 0; k < 64; ++k) t.data.push_back(static_cast<u8>(3 * k + 1));  // two 4x4 tiles
   const std::vector<u8> tpl = write_tpl({t});
-  std::string array = "u8 maps_tpl[" + std::to_string(tpl.size()) + "] ATTRIBUTE_ALIGN(32) = {";
-  for (size_t k = 0; k < tpl.size(); ++k) array += (k ? ", " : "") + std::to_string(tpl[k]);
-  array += "};\nTPLFile tpl;\nGXTexObj tex;\nTPL_OpenTPLFromMemory(&tpl, maps_tpl, " +
+  std::string array = test::c_byte_array("maps_tpl", tpl);
+  array += "TPLFile tpl;\nGXTexObj tex;\nTPL_OpenTPLFromMemory(&tpl, maps_tpl, " +
            std::to_string(tpl.size()) + ");\nTPL_GetTexture(&tpl, 0, &tex);\n";
   auto loaded = [&](const std::string& then) {
     const ProgramFile f = parse_program(array + then + "GX_LoadTexObj(&tex, GX_TEXMAP2);\n", "p.c");

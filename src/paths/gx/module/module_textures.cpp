@@ -32,12 +32,17 @@ TplTexture planned_tpl_texture(const MaterialPlan& m, const TexturePlan& t) {
   out.min_filter = out.mag_filter = 1;
   if (t.mip) {
     // A mip chain (:mip=): max LOD = levels - 1 in the header makes TPL_GetTexture call
-    // GX_InitTexObj with mipmaps on and GX_InitTexObjLOD with the header's filters, bias and edge
-    // LOD [OGC tpl.c L241-250]; the program's own GX_InitTexObjLOD after it sets the same.
+    // GX_InitTexObj with mipmaps on and GX_InitTexObjLOD with the header's filters and bias
+    // [OGC tpl.c L241-250]; the program's own GX_InitTexObjLOD after it sets every field.
     out.levels = t.mip->levels;
     out.min_filter = static_cast<u32>(t.mip->min_filter.value());
     out.lod_bias = t.mip->bias;
-    out.edge_lod = 1;
+    // The header's "edge LOD" byte cannot carry :mip-lod=: libogc passes it to GX_InitTexObjLOD
+    // as the max anisotropy and its bias clamp (bias > 0) as the edge LOD flag [OGC tpl.c
+    // L242-248, GX_InitTexObjLOD(..., biasclamp, biasclamp, edgelod)]. So it holds the
+    // anisotropy the program's own call sets, GX_ANISO_1 (0): a TPL read alone then differs
+    // from the module only where libogc derives the flags from the bias.
+    out.edge_lod = 0;
   }
   if (t.tlut) {
     out.tlut_format = static_cast<TlutFormat>(t.tlut->format.value());
