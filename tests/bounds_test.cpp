@@ -91,7 +91,7 @@ class Bounded : public ::testing::TestWithParam<BoundCase> {};
 
 // The scene of a case, read once a process: a batch runs every path and variant of a scene in a
 // row, and each read its meshes again (a demo scene's PLY and OpenMesh's build of it).
-const Scene& demo_scene(const std::string& file) {
+const Scene& bounded_scene(const std::string& file) {
   static std::map<std::string, Scene> loaded;
   auto it = loaded.find(file);
   if (it == loaded.end()) it = loaded.emplace(file, load_scene(test::source_dir() / file)).first;
@@ -100,7 +100,7 @@ const Scene& demo_scene(const std::string& file) {
 
 TEST_P(Bounded, WithinItsRowOfTheReference) {
   const BoundCase& c = GetParam();
-  const Scene& scene = demo_scene(c.scene_file);
+  const Scene& scene = bounded_scene(c.scene_file);
   // A variant that cannot be exact here is refused by render (tested in gx_path_test.cpp).
   if (const std::string why = refusal(c, scene); !why.empty()) GTEST_SKIP() << why;
   const BoundRow* row = find_row(c.path, c.variant, stem(c.scene_file));
