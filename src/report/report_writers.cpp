@@ -250,8 +250,17 @@ std::string svg_chart(const std::vector<BenchRow>& rows, const ChartAxis& axis) 
     it->mean_sum += r.error->mean_lsb;
     ++it->n;
   }
-  // The list of numbered points beside the plot sets the height when it is the longer.
-  const double W = 1100, L = 70, R = 270, T = 40, B = 60;
+  // The list of numbered points beside the plot sets the height when it is the longer, and
+  // the width when an entry is longer than its column holds (an added variant spells out every
+  // axis: bench --add-variant gx:t=vertex:vtx=s16/auto:...): the plot keeps its 760 pixels.
+  // ~6.5 pixels a character of 11-pixel DejaVu Sans (the widest of its lower case and digits);
+  // the report page's self-test measures the drawn text against the chart's width.
+  std::size_t longest_entry = 0;
+  for (const Point& p : points)
+    longest_entry = std::max(longest_entry, p.path.size() + p.variant.size() + 5);
+  const double L = 70, T = 40, B = 60;
+  const double R = std::max(270.0, 16 + 6.5 * static_cast<double>(longest_entry) + 10);
+  const double W = L + 760 + R;
   const double H = std::max(600.0, T + 20 + 15.0 * static_cast<double>(points.size()) + B);
   const double y_floor = 0.1;
   double lx0 = 1e30, lx1 = -1e30, ymax = 1;
@@ -280,7 +289,9 @@ std::string svg_chart(const std::vector<BenchRow>& rows, const ChartAxis& axis) 
     if (colour.count(name)) colour[name] = palette[i % 8];
   }
   std::ostringstream s;
+  // The viewBox lets the report page scale a chart wider than its column down to fit.
   s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H
+    << "' viewBox='0 0 " << W << " " << H
     << "' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' "
        "fill='white'/>\n"
     << "<text x='" << L << "' y='18' font-size='14'>" << axis.title

@@ -189,9 +189,16 @@ function selftest() {
   result.charts = Array.from(document.querySelectorAll('figure.chart svg')).map(svg => {
     const box = svg.getBoundingClientRect();
     const title = svg.querySelector('text');
+    // Text the chart cuts off at its right edge (a legend entry longer than its column).
+    const chartWidth = svg.width.baseVal.value;
+    const cut = Array.from(svg.querySelectorAll('text')).filter(t => {
+      const b = t.getBBox();
+      return b.x + b.width > chartWidth;
+    }).map(t => t.textContent);
     return {
       title: title ? title.textContent : '',
       points: svg.querySelectorAll('[data-label]').length,
+      cut_text: cut,
       width: Math.round(box.width),
       height: Math.round(box.height),
     };
