@@ -283,7 +283,8 @@ AddedVariant parse_added_variant(const std::string& text) {
     throw InputError("--add-variant", text, "give PATH:VARIANT, e.g. gx:t=vertex:draw=list");
   const std::string path = text.substr(0, colon), variant = text.substr(colon + 1);
   try {
-    return {find_path(path).name, find_path(path).parse_variant(variant)};
+    const PathInfo& p = find_path(path);
+    return {p.name, p.parse_variant(variant)};
   } catch (const InputError& e) {
     // The path's own words, under this option's name (they name --path or --variant).
     throw InputError("--add-variant", text, e.what_only());
